@@ -1,0 +1,3 @@
+from geardesign.cli import main
+
+main()

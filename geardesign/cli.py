@@ -1,0 +1,216 @@
+"""The ``geardesign`` command line: a thin layer over :mod:`geardesign.core`.
+
+Exit codes: 0 computed and every error-severity check passed; 1 computed but a check
+failed (the report is still printed in full); 2 the input could not be used (one line per
+problem on stderr, nothing written); 3 an internal error (a bug: please report it).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+from enum import Enum
+from pathlib import Path
+from typing import List, Optional
+
+import typer
+
+from geardesign import __version__
+from geardesign.core import registry
+from geardesign.core.errors import InputError
+
+app = typer.Typer(
+    add_completion=False,
+    no_args_is_help=True,
+    pretty_exceptions_enable=False,
+    rich_markup_mode=None,
+    help="Design calculations for mechanical drives. A spec file (TOML) describes the design; "
+         "geardesign checks it, computes and reports. Exit codes: 0 pass, 1 a design check "
+         "failed, 2 unusable input.",
+)
+
+
+class Format(str, Enum):
+    table = "table"
+    json = "json"
+    markdown = "markdown"
+
+
+FORMAT_HELP = ("Output format. Default: table on a terminal, json when stdout is a pipe or "
+               "file; with --output, taken from the file extension (.json, .md, else table).")
+
+
+def _err(line: str) -> None:
+    sys.stderr.write(line + "\n")
+
+
+def _choose_format(fmt: Optional[Format], output: Optional[Path]) -> str:
+    if fmt is not None:
+        return fmt.value
+    if output is not None:
+        suffix = output.suffix.lower()
+        return {".json": "json", ".md": "markdown", ".markdown": "markdown"}.get(suffix, "table")
+    return "table" if sys.stdout.isatty() else "json"
+
+
+def _compute_all(paths: List[Path], expect_kind: Optional[str]):
+    results, problems = [], []
+    for path in paths:
+        try:
+            results.append(registry.run(path, expect_kind))
+        except InputError as exc:
+            problems.extend(p.line(str(path)) for p in exc.problems)
+    return results, problems
+
+
+def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quiet: bool,
+          expect_kind: Optional[str] = None) -> None:
+    from geardesign.core.render import render, write_atomic
+
+    results, problems = _compute_all(paths, expect_kind)
+    if problems:
+        for line in problems:
+            _err(line)
+        raise typer.Exit(2)
+    fmt_name = _choose_format(fmt, output)
+    to_terminal = output is None and sys.stdout.isatty()
+    color = to_terminal and not os.environ.get("NO_COLOR")
+    width = None
+    if to_terminal:
+        import shutil
+
+        width = shutil.get_terminal_size((120, 40)).columns
+    text = render(results, fmt_name, color=color, width=width)
+    code = max(r.exit_code for r in results)
+    if output is not None:
+        try:
+            write_atomic(output, text)
+        except OSError as exc:
+            _err(f"{output}: cannot write ({exc.strerror})")
+            raise typer.Exit(2)
+        if not quiet:
+            verdicts = ", ".join(f"{r.source}: {r.verdict}" for r in results)
+            _err(f"wrote {output} ({verdicts})")
+    elif not quiet:
+        sys.stdout.write(text)
+    raise typer.Exit(code)
+
+
+OPT_FORMAT = typer.Option(None, "--format", "-f", help=FORMAT_HELP, case_sensitive=False)
+OPT_OUTPUT = typer.Option(None, "--output", "-o", help="Write the report to FILE (atomically).",
+                          dir_okay=False)
+OPT_QUIET = typer.Option(False, "--quiet", "-q",
+                         help="No report on stdout and no notes on stderr; the exit code tells "
+                              "the verdict (input errors are still printed).")
+ARG_SPECS = typer.Argument(..., help="Spec file(s), TOML.", show_default=False)
+
+
+def _version(value: bool) -> None:
+    if value:
+        sys.stdout.write(f"geardesign {__version__}\n")
+        raise typer.Exit(0)
+
+
+@app.callback()
+def _main(version: bool = typer.Option(False, "--version", callback=_version, is_eager=True,
+                                       help="Print the version and exit.")) -> None:
+    """geardesign: design calculations for mechanical drives."""
+
+
+@app.command("run")
+def run_cmd(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
+            output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET) -> None:
+    """Compute one or more specs, dispatching on each spec's `kind`."""
+    _emit(specs, format, output, quiet)
+
+
+def _kind_command(kind: str, summary: str):
+    def command(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
+                output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET) -> None:
+        _emit(specs, format, output, quiet, expect_kind=kind)
+
+    command.__doc__ = f"Compute {kind} spec(s): {summary}."
+    return command
+
+
+_registered = False
+
+
+def _register_kinds() -> None:
+    global _registered
+    if not _registered:
+        for calc in registry.all_calculators():
+            app.command(calc.kind)(_kind_command(calc.kind, calc.summary))
+        _registered = True
+
+
+@app.command("list")
+def list_cmd() -> None:
+    """List the calculators: kind, what it does, standards used."""
+    calcs = registry.all_calculators()
+    width = max(len(c.kind) for c in calcs)
+    for c in calcs:
+        sys.stdout.write(f"{c.kind:<{width}}  {c.summary} [{', '.join(c.methods)}]\n")
+
+
+def _calculator(kind: str) -> registry.Calculator:
+    if kind not in registry.KINDS:
+        import difflib
+
+        close = difflib.get_close_matches(kind, list(registry.KINDS), 1, 0.6)
+        hint = f' (did you mean "{close[0]}"?)' if close else ""
+        known = ", ".join(registry.KINDS)
+        _err(f'geardesign: unknown calculator "{kind}"{hint}; known: {known}')
+        raise typer.Exit(2)
+    return registry.get(kind)
+
+
+@app.command("template")
+def template_cmd(kind: str = typer.Argument(..., help="Calculator kind, e.g. spur.")) -> None:
+    """Print a complete commented example spec."""
+    from geardesign.core.spec import template
+
+    sys.stdout.write(template(_calculator(kind).schema))
+
+
+@app.command("schema")
+def schema_cmd(kind: str = typer.Argument(..., help="Calculator kind, e.g. spur.")) -> None:
+    """Print the JSON Schema of a calculator's spec (units in the descriptions)."""
+    from geardesign.core.spec import json_schema
+
+    sys.stdout.write(json.dumps(json_schema(_calculator(kind).schema), indent=2,
+                                ensure_ascii=False) + "\n")
+
+
+@app.command("validate")
+def validate_cmd(specs: List[Path] = ARG_SPECS, quiet: bool = OPT_QUIET) -> None:
+    """Check spec file(s) without reporting results: exit 0 if usable, 2 if not."""
+    results, problems = _compute_all(specs, None)
+    for line in problems:
+        _err(line)
+    if problems:
+        raise typer.Exit(2)
+    if not quiet:
+        for r in results:
+            sys.stdout.write(f"{r.source}: ok ({r.kind})\n")
+
+
+def main() -> None:
+    """Console entry point: never a traceback for the user."""
+    _register_kinds()
+    try:
+        app()
+    except SystemExit:
+        raise
+    except KeyboardInterrupt:
+        _err("geardesign: interrupted")
+        sys.exit(130)
+    except BrokenPipeError:
+        sys.exit(0)
+    except Exception as exc:  # pragma: no cover - a bug
+        if os.environ.get("GEARDESIGN_DEBUG"):
+            raise
+        _err(f"geardesign: internal error: {type(exc).__name__}: {exc} "
+             f"(please report it; set GEARDESIGN_DEBUG=1 for the traceback)")
+        sys.exit(3)

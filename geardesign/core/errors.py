@@ -1,0 +1,64 @@
+"""Input problems: what makes a spec unusable (exit code 2).
+
+Every problem is reported on one line, ``FILE: key.path = value: what is allowed``.  The
+calculators raise :class:`InputError` for rules that involve several keys (for example a
+centre distance smaller than the gears allow); the schema layer collects single-key
+problems itself.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+_MISSING = object()
+
+
+def format_value(value: Any) -> str:
+    """Show a value the way it would be written in TOML."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str):
+        return '"' + value.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    if isinstance(value, float):
+        return repr(value)
+    if isinstance(value, dict):
+        return "{...}"
+    if isinstance(value, list):
+        return "[...]" if value else "[]"
+    return str(value)
+
+
+@dataclass(frozen=True)
+class Problem:
+    """One reason why an input cannot be used.
+
+    ``key`` is the dotted key path (``gear.z1``); ``value`` the offending value, or
+    ``Problem.NO_VALUE`` when the key is missing or the problem concerns the whole file.
+    """
+
+    key: str
+    message: str
+    value: Any = _MISSING
+
+    NO_VALUE = _MISSING
+
+    def line(self, source: str) -> str:
+        where = f"{source}: " if source else ""
+        if not self.key:
+            return f"{where}{self.message}"
+        if self.value is _MISSING:
+            return f"{where}{self.key}: {self.message}"
+        return f"{where}{self.key} = {format_value(self.value)}: {self.message}"
+
+
+class InputError(Exception):
+    """The input cannot be used; carries one or more :class:`Problem` lines."""
+
+    def __init__(self, problems: list[Problem] | Problem):
+        self.problems = [problems] if isinstance(problems, Problem) else list(problems)
+        super().__init__("; ".join(p.line("") for p in self.problems))
+
+    @classmethod
+    def at(cls, key: str, value: Any, message: str) -> "InputError":
+        return cls(Problem(key, message, value))

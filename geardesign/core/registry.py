@@ -1,0 +1,100 @@
+"""The calculators, by ``kind``, and running a spec file through one of them.
+
+Adding a calculator: write a package ``geardesign/<kind>/`` whose ``__init__`` exposes
+``CALCULATOR = Calculator(...)`` and add its module path to :data:`KINDS`.
+"""
+
+from __future__ import annotations
+
+import difflib
+import importlib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable
+
+from geardesign.core.errors import InputError, Problem
+from geardesign.core.result import Result, Row
+from geardesign.core.spec import SpecSchema, ValidatedSpec, iter_fields, load_toml, validate
+
+KINDS: dict[str, str] = {
+    "spur": "geardesign.spur",
+}
+
+
+@dataclass(frozen=True)
+class Calculator:
+    """A calculator: its spec schema and a pure ``compute(spec) -> Result``."""
+
+    kind: str
+    summary: str
+    methods: tuple[str, ...]
+    schema: SpecSchema
+    compute: Callable[[ValidatedSpec], Result]
+
+    def new_result(self, spec: ValidatedSpec) -> Result:
+        """An empty result that echoes the inputs (assumed defaults marked)."""
+        assumed = set(spec.assumed)
+        rows = [
+            Row(key, value, field.unit if field.type in ("number", "integer") else None,
+                field.symbol or key.rsplit(".", 1)[-1], field.description, "", key in assumed)
+            for key, field, value in iter_fields(self.schema.root, spec.data)
+            if key != "kind"
+        ]
+        return Result(self.kind, spec.data.get("title"), list(self.methods), spec.data, rows,
+                      source=spec.source)
+
+
+def known_kinds() -> list[str]:
+    return list(KINDS)
+
+
+def get(kind: str) -> Calculator:
+    return importlib.import_module(KINDS[kind]).CALCULATOR
+
+
+def all_calculators() -> list[Calculator]:
+    return [get(k) for k in KINDS]
+
+
+def _kind_problem(value: object) -> Problem:
+    known = ", ".join(f'"{k}"' for k in KINDS)
+    if isinstance(value, str):
+        close = difflib.get_close_matches(value, list(KINDS), 1, 0.6)
+        hint = f' (did you mean "{close[0]}"?)' if close else ""
+        return Problem("kind", f"unknown calculator{hint}; known: {known}", value)
+    return Problem("kind", f"must be one of {known}", value)
+
+
+def load(path: Path, expect_kind: str | None = None) -> tuple[Calculator, ValidatedSpec]:
+    """Read and validate a spec file; raise :class:`InputError` with every problem."""
+    calc, spec = load_data(load_toml(path), str(path), expect_kind)
+    spec.base_dir = Path(path).resolve().parent
+    return calc, spec
+
+
+def load_data(data: dict, source: str = "",
+              expect_kind: str | None = None) -> tuple[Calculator, ValidatedSpec]:
+    """Validate an already parsed spec (a dict as from TOML)."""
+    if "kind" not in data:
+        known = ", ".join(f'"{k}"' for k in KINDS)
+        raise InputError(Problem("kind", f"missing; required: one of {known} (the calculator)"))
+    kind = data["kind"]
+    if kind not in KINDS:
+        raise InputError(_kind_problem(kind))
+    if expect_kind is not None and kind != expect_kind:
+        raise InputError(Problem(
+            "kind", f'this is a {kind} spec; use "geardesign {kind}" or "geardesign run"', kind))
+    calc = get(kind)
+    return calc, validate(calc.schema, data, source=source)
+
+
+def run(path: Path, expect_kind: str | None = None) -> Result:
+    """Compute a spec file."""
+    calc, spec = load(path, expect_kind)
+    return calc.compute(spec)
+
+
+def run_data(data: dict, source: str = "") -> Result:
+    """Compute a spec given as a dict (library use and tests)."""
+    calc, spec = load_data(data, source)
+    return calc.compute(spec)

@@ -1,0 +1,196 @@
+"""Renderers: one for all calculators.  ``json`` (the result document), ``markdown`` and
+``table`` (rich, coloured on a terminal).  Rounding happens here and only here."""
+
+from __future__ import annotations
+
+import io
+import json
+import math
+import os
+import tempfile
+from pathlib import Path
+from typing import Any
+
+from geardesign import __version__
+from geardesign.core.result import Check, Result, Row
+
+FORMATS = ("table", "json", "markdown")
+
+_STATUS = {  # (failed?, severity) -> (mark, word, rich style)
+    (False, "error"): ("✔", "ok", "green"),
+    (False, "warning"): ("✔", "ok", "green"),
+    (False, "info"): ("ℹ", "info", "cyan"),
+    (True, "error"): ("✘", "FAIL", "bold red"),
+    (True, "warning"): ("⚠", "warn", "yellow"),
+    (True, "info"): ("ℹ", "info", "cyan"),
+}
+
+
+def fmt(value: Any) -> str:
+    """Round a value for display (6 significant digits)."""
+    if value is None:
+        return "—"
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        if not math.isfinite(value):
+            return "—"
+        if value == 0:
+            return "0"
+        text = f"{value:.6g}"
+        if "e" in text and 1e-4 <= abs(value) < 1e9:
+            text = f"{value:.6f}".rstrip("0").rstrip(".")
+        return text
+    if isinstance(value, (list, tuple)):
+        return ", ".join(fmt(v) for v in value)
+    return str(value)
+
+
+def _status(c: Check) -> tuple[str, str, str]:
+    return _STATUS[(not c.passed, c.severity)]
+
+
+def verdict_line(r: Result) -> str:
+    if r.failed:
+        codes = ", ".join(c.code for c in r.failed)
+        return f"✘ FAIL: {len(r.failed)} check(s) failed: {codes}"
+    extra = f" ({len(r.warnings)} warning(s))" if r.warnings else ""
+    return f"✔ PASS: every check passed{extra}"
+
+
+def _header(r: Result) -> str:
+    title = f" — {r.title}" if r.title else ""
+    src = f" [{r.source}]" if r.source else ""
+    return f"geardesign {__version__} · {r.kind}{title}{src}"
+
+
+# --------------------------------------------------------------------------- json
+
+
+def to_json(results: list[Result]) -> str:
+    docs = [r.document() for r in results]
+    payload = docs[0] if len(docs) == 1 else docs
+    return json.dumps(payload, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+
+
+# --------------------------------------------------------------------------- markdown
+
+
+def _md_escape(text: str) -> str:
+    return str(text).replace("|", "\\|")
+
+
+def _md_rows(rows: list[Row], with_source: bool) -> list[str]:
+    head = "| symbol | name | value | unit |" + (" source |" if with_source else "")
+    sep = "|---|---|---:|---|" + ("---|" if with_source else "")
+    out = [head, sep]
+    for row in rows:
+        value = fmt(row.value) + (" *(assumed)*" if row.assumed else "")
+        line = (f"| {_md_escape(row.symbol)} | {_md_escape(row.name)} | {_md_escape(value)} | "
+                f"{_md_escape(row.unit or '')} |")
+        if with_source:
+            line += f" {_md_escape(row.source)} |"
+        out.append(line)
+    return out
+
+
+def to_markdown(results: list[Result]) -> str:
+    lines: list[str] = []
+    for r in results:
+        lines.append(f"# {_header(r)}")
+        lines.append("")
+        lines.append("Methods: " + ", ".join(r.methods))
+        lines.append("")
+        lines.append("## Inputs")
+        lines.append("")
+        lines += _md_rows(r.input_rows, with_source=False)
+        for sec in r.sections:
+            lines += ["", f"## {sec.title}", ""]
+            lines += _md_rows(sec.rows, with_source=True)
+        lines += ["", "## Checks", "", "| status | code | message |", "|---|---|---|"]
+        for c in r.checks:
+            mark, word, _ = _status(c)
+            lines.append(f"| {mark} {word} | {c.code} | {_md_escape(c.message)} |")
+        lines += ["", f"**{verdict_line(r)}**", ""]
+    return "\n".join(lines)
+
+
+# --------------------------------------------------------------------------- table
+
+
+def to_table(results: list[Result], color: bool, width: int | None = None) -> str:
+    """Rich tables; ``color`` only on a terminal."""
+    from rich import box
+    from rich.console import Console
+    from rich.table import Table
+    from rich.text import Text
+
+    buf = io.StringIO()
+    console = Console(file=buf, force_terminal=color, no_color=not color, width=width or 120,
+                      highlight=False, emoji=False, soft_wrap=False)
+
+    def rows_table(title: str, rows: list[Row], with_source: bool) -> Table:
+        t = Table(title=title, title_justify="left", title_style="bold", box=box.SIMPLE_HEAD,
+                  show_edge=False, pad_edge=False)
+        t.add_column("symbol", no_wrap=True)
+        t.add_column("name")
+        t.add_column("value", justify="right", no_wrap=True)
+        t.add_column("unit", no_wrap=True)
+        t.add_column("source" if with_source else "", style="dim")
+        for row in rows:
+            note = row.source if with_source else ("assumed" if row.assumed else "")
+            value = fmt(row.value) + ("*" if row.assumed else "")
+            t.add_row(row.symbol, row.name, value, row.unit or "", note)
+        return t
+
+    for i, r in enumerate(results):
+        if i:
+            console.print()
+        console.print(Text(_header(r), style="bold"))
+        console.print("Methods: " + ", ".join(r.methods))
+        console.print()
+        console.print(rows_table("Inputs  (* assumed default)", r.input_rows, with_source=False))
+        console.print()
+        for sec in r.sections:
+            console.print(rows_table(sec.title, sec.rows, with_source=True))
+            console.print()
+        t = Table(title="Checks", title_justify="left", title_style="bold", box=box.SIMPLE_HEAD,
+                  show_edge=False, pad_edge=False)
+        t.add_column("", no_wrap=True)
+        t.add_column("code", no_wrap=True)
+        t.add_column("message")
+        for c in r.checks:
+            mark, word, style = _status(c)
+            t.add_row(Text(f"{mark} {word}", style=style), Text(c.code, style=style), c.message)
+        console.print(t)
+        style = "bold red" if r.failed else "bold green"
+        console.print(Text(verdict_line(r), style=style))
+    return buf.getvalue()
+
+
+def render(results: list[Result], fmt_name: str, color: bool = False, width: int | None = None) -> str:
+    if fmt_name == "json":
+        return to_json(results)
+    if fmt_name == "markdown":
+        return to_markdown(results)
+    return to_table(results, color=color, width=width)
+
+
+def write_atomic(path: Path, text: str) -> None:
+    """Write ``text`` to ``path`` through a temporary file and a rename, so that a reader
+    never sees half a file and a failed run leaves the old file untouched."""
+    path = Path(path)
+    directory = path.parent if str(path.parent) else Path(".")
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
+            fh.write(text)
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise

@@ -1,0 +1,160 @@
+"""The result model shared by every calculator, and the JSON document built from it.
+
+A calculator returns a :class:`Result`: the echoed inputs (with assumed defaults marked),
+ordered sections of rows (symbol, name, value, unit, source), and checks.  The JSON
+document of ``../DESIGN.md`` and all report formats are derived from this one object.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+from geardesign import __version__
+
+SEVERITIES = ("error", "warning", "info")
+
+
+@dataclass(frozen=True)
+class Row:
+    """One reported quantity."""
+
+    key: str
+    value: Any
+    unit: str | None = None
+    symbol: str = ""
+    name: str = ""
+    source: str = ""
+    assumed: bool = False
+
+
+@dataclass
+class Section:
+    key: str
+    title: str
+    rows: list[Row] = field(default_factory=list)
+
+    def add(self, key: str, value: Any, unit: str | None = "-", symbol: str = "", name: str = "",
+            source: str = "") -> None:
+        """Add a row; angles may be given in ``rad`` and are reported in degrees."""
+        if unit == "rad" and isinstance(value, (int, float)):
+            value, unit = math.degrees(value), "deg"
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            unit = None
+        self.rows.append(Row(key, value, unit, symbol or key, name, source))
+
+
+@dataclass(frozen=True)
+class Check:
+    """A design check.  ``severity`` is ``error`` (fails the design), ``warning`` or
+    ``info``; ``message`` says what is wrong and what to change."""
+
+    code: str
+    severity: str
+    passed: bool
+    message: str
+    value: float | None = None
+    limit: float | None = None
+    source: str = ""
+
+    def __post_init__(self) -> None:
+        if self.severity not in SEVERITIES:
+            raise ValueError(f"check {self.code}: severity {self.severity!r}")
+
+
+def check(code: str, ok: bool, severity: str, fail_message: str, pass_message: str,
+          value: float | None = None, limit: float | None = None, source: str = "") -> Check:
+    """Build a :class:`Check` from a condition, with one message for each outcome."""
+    return Check(code, severity, bool(ok), pass_message if ok else fail_message,
+                 _clean(value), _clean(limit), source)
+
+
+def _clean(v: Any) -> Any:
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    return v
+
+
+@dataclass
+class Result:
+    kind: str
+    title: str | None
+    methods: list[str]
+    inputs: dict
+    input_rows: list[Row]
+    sections: list[Section] = field(default_factory=list)
+    checks: list[Check] = field(default_factory=list)
+    source: str = ""
+
+    def section(self, key: str, title: str) -> Section:
+        for s in self.sections:
+            if s.key == key:
+                return s
+        s = Section(key, title)
+        self.sections.append(s)
+        return s
+
+    @property
+    def failed(self) -> list[Check]:
+        return [c for c in self.checks if not c.passed and c.severity == "error"]
+
+    @property
+    def warnings(self) -> list[Check]:
+        return [c for c in self.checks if not c.passed and c.severity == "warning"]
+
+    @property
+    def verdict(self) -> str:
+        return "fail" if self.failed else "pass"
+
+    @property
+    def exit_code(self) -> int:
+        return 1 if self.failed else 0
+
+    def document(self) -> dict:
+        """The JSON result document (``DESIGN.md``, "JSON result document")."""
+        units: dict[str, str] = {}
+        for row in self.input_rows:
+            if row.unit is not None and _is_number(row.value):
+                units["inputs." + row.key] = row.unit
+        results: dict[str, dict] = {}
+        for sec in self.sections:
+            block = results.setdefault(sec.key, {})
+            for row in sec.rows:
+                block[row.key] = _clean(row.value)
+                if row.unit is not None and _is_number(row.value):
+                    units[f"results.{sec.key}.{row.key}"] = row.unit
+        return {
+            "geardesign": __version__,
+            "kind": self.kind,
+            "title": self.title,
+            "methods": list(self.methods),
+            "inputs": _drop_none(self.inputs),
+            "assumed": [r.key for r in self.input_rows if r.assumed],
+            "results": results,
+            "units": units,
+            "checks": [
+                {
+                    "code": c.code,
+                    "severity": c.severity,
+                    "passed": c.passed,
+                    "message": c.message,
+                    "value": c.value,
+                    "limit": c.limit,
+                    "source": c.source,
+                }
+                for c in self.checks
+            ],
+            "verdict": self.verdict,
+        }
+
+
+def _drop_none(d: Any) -> Any:
+    """Inputs echo: leave out optional keys that were not given and have no default."""
+    if isinstance(d, dict):
+        return {k: _drop_none(v) for k, v in d.items() if v is not None}
+    return d
+
+
+def _is_number(v: Any) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool)

@@ -1,0 +1,359 @@
+"""Geometry of an external spur or helical involute gear pair (GOST 16532-70).
+
+Pure functions on plain data.  Lengths in mm, angles in radians.  Index 1 is the pinion,
+2 the wheel.  The planetary, PZDN and drive calculators call these functions for every
+external mesh; nothing here knows about spec files.
+
+References
+----------
+GOST 16532-70 "Cylindrical involute external gear pairs. Calculation of geometry";
+GOST 13755-81 basic rack; ISO 21771:2007 (same quantities, ISO notation);
+``shared/methods/spur_helical.md`` §8.2 and ``standards_check.md`` §2.6.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from geardesign.involute import inv, inv_inverse
+
+
+class GeometryError(ValueError):
+    """The input admits no gear pair (e.g. inv α_tw <= 0, tip inside the base circle).
+
+    ``code`` names the rule; the calculator turns it into an input error naming the keys.
+    """
+
+    def __init__(self, code: str, message: str, value: float | None = None,
+                 limit: float | None = None):
+        super().__init__(message)
+        self.code = code
+        self.value = value
+        self.limit = limit
+
+
+@dataclass(frozen=True)
+class BasicRack:
+    """Basic rack profile (GOST 13755-81: α = 20°, h_a* = 1, c* = 0.25, ρ_f* = 0.38).
+
+    Parameters
+    ----------
+    alpha_n : profile (normal pressure) angle α [rad].
+    h_a : addendum coefficient h_a*.
+    c : bottom clearance coefficient c*.
+    rho_f : fillet radius coefficient ρ_f* of the rack (the tip radius of the generating
+        rack that cuts the gear's root).
+    """
+
+    alpha_n: float
+    h_a: float = 1.0
+    c: float = 0.25
+    rho_f: float = 0.38
+
+    @property
+    def h_straight(self) -> float:
+        """Height above the datum line, in modules, of the end of the straight flank of the
+        generating rack: ``h_l* − h_a* = (h_a* + c*) − ρ_f*(1 − sin α)``.
+
+        For GOST 13755-81 this is 1.25 − 0.38·(1 − sin 20°) = 1.000 = h_a*, the "boundary
+        height" used by GOST 16532-70 in x_min and in the form-point radius.
+        (``shared/methods/spur_helical.md`` §8.2 item 10; ``standards_check.md`` §2.6.)
+        """
+        return self.h_a + self.c - self.rho_f * (1.0 - math.sin(self.alpha_n))
+
+
+@dataclass(frozen=True)
+class PairInput:
+    """Data of an external pair.  ``beta`` is the reference helix angle [rad] (0 = spur);
+    ``b_w`` the working face width [mm]."""
+
+    m_n: float
+    z1: int
+    z2: int
+    x1: float
+    x2: float
+    beta: float
+    b_w: float
+    rack: BasicRack
+
+
+@dataclass(frozen=True)
+class GearGeometry:
+    """Per-gear results (mm and rad)."""
+
+    z: int
+    x: float
+    d: float          # reference diameter
+    d_b: float        # base diameter
+    d_w: float        # working (pitch) diameter
+    d_a: float        # tip diameter
+    d_f: float        # root diameter
+    h: float          # tooth depth
+    alpha_a: float    # transverse pressure angle at the tip
+    rho_a: float      # radius of curvature of the profile at the tip
+    rho_p: float      # radius of curvature at the lower point of active profile
+    rho_l: float      # radius of curvature at the form (limit) point of the involute
+    d_l: float        # form circle diameter (start of the involute made by the rack)
+    d_p: float        # diameter of the lower point of active profile
+    x_min: float      # least shift without undercut
+    s_n: float        # normal tooth thickness on the reference circle (arc)
+    s_an: float       # normal tooth thickness at the tip (arc)
+    k: int            # number of teeth spanned for W
+    W: float          # base tangent length over k teeth (normal section)
+    d_W: float        # diameter at which the calliper touches the flanks
+
+
+@dataclass(frozen=True)
+class PairGeometry:
+    """Pair results (mm and rad); ``g1``/``g2`` the pinion and the wheel."""
+
+    inp: PairInput
+    u: float
+    m_t: float
+    alpha_t: float
+    beta_b: float
+    alpha_tw: float
+    a: float
+    a_w: float
+    x_sum: float
+    y: float
+    dy: float
+    g_w: float        # length N1N2 of the line of action between tangency points
+    g_alpha: float    # length of the active line of action
+    p_bt: float       # transverse base pitch
+    p_bn: float       # normal base pitch
+    eps_alpha: float
+    eps_alpha_z: float  # ε_α from the tooth-number form, equal to eps_alpha
+    eps_beta: float
+    eps_gamma: float
+    c_12: float       # radial clearance, pinion tip to wheel root
+    c_21: float       # radial clearance, wheel tip to pinion root
+    g1: GearGeometry
+    g2: GearGeometry
+
+    @property
+    def gears(self) -> tuple[GearGeometry, GearGeometry]:
+        return self.g1, self.g2
+
+
+# ----------------------------------------------------------------------------- pieces
+
+
+def transverse_angles(alpha_n: float, beta: float) -> tuple[float, float]:
+    """Transverse pressure angle and base helix angle.
+
+    .. math:: \\tan α_t = \\tan α / \\cos β, \\qquad \\sin β_b = \\sin β \\cos α
+
+    GOST 16532-70, table 1; ISO 21771:2007.
+    """
+    alpha_t = math.atan(math.tan(alpha_n) / math.cos(beta))
+    beta_b = math.asin(math.sin(beta) * math.cos(alpha_n))
+    return alpha_t, beta_b
+
+
+def working_pressure_angle(x_sum: float, z1: int, z2: int, alpha_n: float, alpha_t: float) -> float:
+    """Working transverse pressure angle α_tw from the sum of shifts.
+
+    .. math:: \\operatorname{inv} α_{tw} = \\frac{2 x_Σ \\tan α}{z_1 + z_2} + \\operatorname{inv} α_t
+
+    Solved to 1e-12 rad by :func:`geardesign.involute.inv_inverse`.
+
+    Raises
+    ------
+    GeometryError ``INV_ALPHA_TW`` if inv α_tw <= 0 (the shifts are too negative).
+
+    References: GOST 16532-70, table 1 (x_Σ given).
+    """
+    value = 2.0 * x_sum * math.tan(alpha_n) / (z1 + z2) + inv(alpha_t)
+    if value <= 0.0:
+        # least x_Σ with inv α_tw > 0
+        limit = -inv(alpha_t) * (z1 + z2) / (2.0 * math.tan(alpha_n))
+        raise GeometryError("INV_ALPHA_TW", f"inv α_tw = {value:.6g} <= 0", x_sum, limit)
+    return inv_inverse(value)
+
+
+def shift_sum_for_center_distance(a_w: float, m_n: float, z1: int, z2: int, alpha_n: float,
+                                  beta: float) -> tuple[float, float]:
+    """Sum of shifts x_Σ and α_tw for a given centre distance (reverse task).
+
+    .. math:: \\cos α_{tw} = \\frac{a \\cos α_t}{a_w}, \\qquad
+              x_Σ = \\frac{(z_1+z_2)(\\operatorname{inv} α_{tw} - \\operatorname{inv} α_t)}{2 \\tan α}
+
+    Raises
+    ------
+    GeometryError ``CENTER_DISTANCE_TOO_SMALL`` if a_w <= a·cos α_t = (d_b1 + d_b2)/2:
+    the base circles would overlap.
+
+    References: GOST 16532-70, table 1 (a_w given); method note §8.2 item 3.
+    """
+    alpha_t, _ = transverse_angles(alpha_n, beta)
+    a = 0.5 * m_n * (z1 + z2) / math.cos(beta)
+    a_min = a * math.cos(alpha_t)
+    if a_w <= a_min * (1.0 + 1e-9):
+        raise GeometryError("CENTER_DISTANCE_TOO_SMALL",
+                            f"a_w must exceed (d_b1 + d_b2)/2 = {a_min:.4f} mm", a_w, a_min)
+    alpha_tw = math.acos(a * math.cos(alpha_t) / a_w)
+    x_sum = (z1 + z2) * (inv(alpha_tw) - inv(alpha_t)) / (2.0 * math.tan(alpha_n))
+    return x_sum, alpha_tw
+
+
+def span_teeth_ideal(z: int, x: float, m_n: float, alpha_n: float, alpha_t: float,
+                     beta_b: float, d: float, d_b: float) -> float:
+    """Real-valued number of teeth spanned for which the calliper touches the flanks on the
+    circle d + 2x·m_n (mid-height of the tooth):
+
+    .. math::
+        k_{id} = \\frac{z}{π}\\Big[\\frac{\\tan α_x}{\\cos^2 β_b}
+            - \\frac{2x\\tan α}{z} - \\operatorname{inv} α_t\\Big] + 0.5,
+        \\qquad \\cos α_x = \\frac{d_b}{d + 2 x m_n}
+
+    References: GOST 16532-70 (base tangent length); DIN 3960:1987 §3.6.  The cos²β_b
+    follows because the calliper faces are normal to the base helix: the contact point
+    rolls W·cos β_b/2 from the tangency line (KISSsoft agrees, ``tests/reference``;
+    the ZPCIL program, ``standards_check.md``, uses cos β_b).
+    """
+    cos_ax = d_b / (d + 2.0 * x * m_n)
+    if cos_ax >= 1.0:
+        return 1.0
+    tan_ax = math.tan(math.acos(cos_ax))
+    return z / math.pi * (tan_ax / math.cos(beta_b) ** 2 - 2.0 * x * math.tan(alpha_n) / z
+                          - inv(alpha_t)) + 0.5
+
+
+def base_tangent_length(z: int, x: float, m_n: float, alpha_n: float, alpha_t: float,
+                        beta_b: float, d: float, d_b: float, k: int) -> tuple[int, float, float]:
+    """Base tangent length (span) W over k teeth, in the normal section, and the diameter
+    d_W on which the calliper touches the flanks.
+
+    .. math::
+        W = m_n \\cos α \\,[π(k - 0.5) + 2x \\tan α + z \\operatorname{inv} α_t],
+        \\qquad \\tan α_W = \\frac{W \\cos^2 β_b}{z m_n \\cos α},
+        \\quad d_W = \\frac{d_b}{\\cos α_W}
+
+    Returns ``(k, W, d_W)``.
+
+    References: GOST 16532-70 (base tangent length); ZPCIL ``GEOM.h``
+    (``standards_check.md`` §2.6); d_W as KISSsoft's d_MWk (DIN 3960).
+    """
+    W = m_n * math.cos(alpha_n) * (math.pi * (k - 0.5) + 2.0 * x * math.tan(alpha_n) + z * inv(alpha_t))
+    tan_aw = W * math.cos(beta_b) ** 2 / (z * m_n * math.cos(alpha_n))
+    return k, W, d_b * math.sqrt(1.0 + tan_aw * tan_aw)
+
+
+def span_measurable(W: float, d_W: float, d_low: float, d_a: float, beta_b: float,
+                    b_w: float) -> bool:
+    """A span can be measured if the calliper touches the flanks between the lower point
+    of the active profile (``d_low``) and the tip, and, for helical gears, the face is wider
+    than W·sin β_b (both anvils on the same teeth).  GOST 16532-70; DIN 3960 §3.6."""
+    ok = d_low - 1e-9 <= d_W <= d_a + 1e-9
+    return ok and (beta_b == 0.0 or b_w > W * math.sin(beta_b))
+
+
+def choose_span_teeth(z: int, x: float, m_n: float, alpha_n: float, alpha_t: float,
+                      beta_b: float, d: float, d_b: float, d_low: float, d_a: float,
+                      b_w: float) -> tuple[int, float, float]:
+    """Number of teeth spanned: the integer nearest to :func:`span_teeth_ideal` (a half
+    rounded down, as in the published span tables: z = 18, α = 20° gives k = 2) for which
+    :func:`span_measurable` holds, trying the next nearest when it does not (a narrow
+    helical gear needs a smaller k).  If none of the six nearest is measurable the nearest
+    is returned and the span check of the calculator warns.  Returns ``(k, W, d_W)``."""
+    k_id = span_teeth_ideal(z, x, m_n, alpha_n, alpha_t, beta_b, d, d_b)
+    candidates = sorted(range(1, max(z, 2)), key=lambda k: (abs(k - k_id), k))[:6]
+    for k in candidates:
+        k, W, d_W = base_tangent_length(z, x, m_n, alpha_n, alpha_t, beta_b, d, d_b, k)
+        if span_measurable(W, d_W, d_low, d_a, beta_b, b_w):
+            return k, W, d_W
+    return base_tangent_length(z, x, m_n, alpha_n, alpha_t, beta_b, d, d_b, candidates[0])
+
+
+# ----------------------------------------------------------------------------- the pair
+
+
+def pair_geometry(p: PairInput) -> PairGeometry:
+    """Complete geometry of an external pair from module, tooth numbers and shifts.
+
+    Formulas (GOST 16532-70, table 1; method note §8.2):
+
+    * m_t = m_n/cos β; d = z·m_t; d_b = d·cos α_t; a = (d1 + d2)/2; u = z2/z1
+    * inv α_tw = 2x_Σ tan α/(z1 + z2) + inv α_t;  a_w = a·cos α_t / cos α_tw
+    * y = (a_w − a)/m_n; Δy = x_Σ − y (tip shortening, ≥ 0)
+    * d_w1 = 2a_w/(u + 1); d_w2 = 2a_w·u/(u + 1)
+    * d_a = d + 2(h_a* + x − Δy)m_n; d_f = d − 2(h_a* + c* − x)m_n
+    * ρ_a = ½ d_b tan α_a, cos α_a = d_b/d_a; g_w = a_w sin α_tw = ρ_1 + ρ_2
+    * lower active points ρ_p1 = g_w − ρ_a2, ρ_p2 = g_w − ρ_a1
+    * form points ρ_l = ½ d sin α_t − (h_l* − h_a* − x)m_n / sin α_t
+    * x_min = h_l* − h_a* − z sin²α_t/(2 cos β)
+    * ε_α = (ρ_a1 + ρ_a2 − g_w)/p_bt, p_bt = π m_t cos α_t;
+      equally [z1(tan α_a1 − tan α_tw) + z2(tan α_a2 − tan α_tw)]/(2π)
+    * ε_β = b_w sin β/(π m_n); ε_γ = ε_α + ε_β
+    * s_n = m_n(π/2 + 2x tan α); s_an = d_a[(π/2 + 2x tan α)/z + inv α_t − inv α_a]·cos β_a,
+      tan β_a = tan β·d_a/d (GOST 16532-70 table 2/5; ZPCIL ``GEOM.h``)
+
+    Raises
+    ------
+    GeometryError if inv α_tw <= 0 or a tip circle lies inside its base circle.
+    """
+    rack = p.rack
+    alpha_n = rack.alpha_n
+    alpha_t, beta_b = transverse_angles(alpha_n, p.beta)
+    m_t = p.m_n / math.cos(p.beta)
+    u = p.z2 / p.z1
+    x_sum = p.x1 + p.x2
+    alpha_tw = working_pressure_angle(x_sum, p.z1, p.z2, alpha_n, alpha_t)
+    d1, d2 = p.z1 * m_t, p.z2 * m_t
+    a = 0.5 * (d1 + d2)
+    a_w = a * math.cos(alpha_t) / math.cos(alpha_tw)
+    y = (a_w - a) / p.m_n
+    dy = x_sum - y
+    g_w = a_w * math.sin(alpha_tw)
+    p_bt = math.pi * m_t * math.cos(alpha_t)
+    p_bn = math.pi * p.m_n * math.cos(alpha_n)
+    d_w = (2.0 * a_w / (u + 1.0), 2.0 * a_w * u / (u + 1.0))
+    hl = rack.h_straight  # h_l* − h_a* in GOST 16532 notation (1.0 for the GOST 13755 rack)
+    sin_at = math.sin(alpha_t)
+
+    partial = []
+    for i, (z, x, d) in enumerate(((p.z1, p.x1, d1), (p.z2, p.x2, d2))):
+        d_b = d * math.cos(alpha_t)
+        d_a = d + 2.0 * (rack.h_a + x - dy) * p.m_n
+        d_f = d - 2.0 * (rack.h_a + rack.c - x) * p.m_n
+        if d_a <= d_b:
+            raise GeometryError(f"TIP_INSIDE_BASE_{i + 1}",
+                                f"tip circle d_a{i + 1} = {d_a:.4f} mm lies inside the base circle "
+                                f"d_b{i + 1} = {d_b:.4f} mm", d_a, d_b)
+        alpha_a = math.acos(d_b / d_a)
+        rho_a = 0.5 * d_b * math.tan(alpha_a)
+        rho_l = 0.5 * d * sin_at - (hl - x) * p.m_n / sin_at
+        x_min = hl - z * sin_at ** 2 / (2.0 * math.cos(p.beta))
+        s_n = p.m_n * (0.5 * math.pi + 2.0 * x * math.tan(alpha_n))
+        beta_a = math.atan(math.tan(p.beta) * d_a / d)
+        s_an = d_a * ((0.5 * math.pi + 2.0 * x * math.tan(alpha_n)) / z + inv(alpha_t) - inv(alpha_a)) \
+            * math.cos(beta_a)
+        partial.append(dict(z=z, x=x, d=d, d_b=d_b, d_w=d_w[i], d_a=d_a, d_f=d_f, h=0.5 * (d_a - d_f),
+                            alpha_a=alpha_a, rho_a=rho_a, rho_l=rho_l, x_min=x_min, s_n=s_n,
+                            s_an=s_an))
+    r1, r2 = partial
+    r1["rho_p"] = g_w - r2["rho_a"]
+    r2["rho_p"] = g_w - r1["rho_a"]
+    for r in partial:
+        r["d_l"] = 2.0 * math.hypot(0.5 * r["d_b"], max(r["rho_l"], 0.0))
+        r["d_p"] = 2.0 * math.hypot(0.5 * r["d_b"], r["rho_p"])
+        r["k"], r["W"], r["d_W"] = choose_span_teeth(
+            r["z"], r["x"], p.m_n, alpha_n, alpha_t, beta_b, r["d"], r["d_b"],
+            max(r["d_p"], r["d_l"]), r["d_a"], p.b_w)
+    g1, g2 = GearGeometry(**r1), GearGeometry(**r2)
+
+    g_alpha = g1.rho_a + g2.rho_a - g_w
+    eps_alpha = g_alpha / p_bt
+    eps_alpha_z = (p.z1 * (math.tan(g1.alpha_a) - math.tan(alpha_tw))
+                   + p.z2 * (math.tan(g2.alpha_a) - math.tan(alpha_tw))) / (2.0 * math.pi)
+    eps_beta = p.b_w * math.sin(p.beta) / (math.pi * p.m_n)
+    return PairGeometry(
+        inp=p, u=u, m_t=m_t, alpha_t=alpha_t, beta_b=beta_b, alpha_tw=alpha_tw, a=a, a_w=a_w,
+        x_sum=x_sum, y=y, dy=dy, g_w=g_w, g_alpha=g_alpha, p_bt=p_bt, p_bn=p_bn,
+        eps_alpha=eps_alpha, eps_alpha_z=eps_alpha_z, eps_beta=eps_beta,
+        eps_gamma=eps_alpha + eps_beta,
+        c_12=a_w - 0.5 * (g1.d_a + g2.d_f), c_21=a_w - 0.5 * (g2.d_a + g1.d_f),
+        g1=g1, g2=g2,
+    )
