@@ -25,7 +25,9 @@ def format_value(value: Any) -> str:
     if isinstance(value, dict):
         return "{...}"
     if isinstance(value, list):
-        return "[...]" if value else "[]"
+        if len(value) <= 6 and not any(isinstance(v, (dict, list)) for v in value):
+            return "[" + ", ".join(format_value(v) for v in value) + "]"
+        return f"[... {len(value)} items]"
     return str(value)
 
 

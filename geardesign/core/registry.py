@@ -1,7 +1,10 @@
 """The calculators, by ``kind``, and running a spec file through one of them.
 
 Adding a calculator: write a package ``geardesign/<kind>/`` whose ``__init__`` exposes
-``CALCULATOR = Calculator(...)`` and add its module path to :data:`KINDS`.
+``CALCULATOR = Calculator(...)`` with ``kind`` equal to the package name.  Calculators are
+found by their package: :data:`KINDS` lists the subpackages of ``geardesign`` (all but
+:data:`NOT_CALCULATORS`) without importing them, so running one spec imports only its own
+calculator.
 """
 
 from __future__ import annotations
@@ -16,9 +19,25 @@ from geardesign.core.errors import InputError, Problem
 from geardesign.core.result import Result, Row
 from geardesign.core.spec import SpecSchema, ValidatedSpec, iter_fields, load_toml, validate
 
-KINDS: dict[str, str] = {
-    "spur": "geardesign.spur",
-}
+NOT_CALCULATORS = {"core", "materials"}
+"""Subpackages of ``geardesign`` that are shared code, not calculators."""
+
+ORDER = ("spur", "bearing", "worm", "planetary", "novikov", "epicycle_rim", "pzdn", "drive")
+"""Listing order of the calculators; others follow alphabetically."""
+
+
+def _discover() -> dict[str, str]:
+    import pkgutil
+
+    import geardesign
+
+    names = [m.name for m in pkgutil.iter_modules(geardesign.__path__)
+             if m.ispkg and m.name not in NOT_CALCULATORS and not m.name.startswith("_")]
+    names.sort(key=lambda n: (ORDER.index(n) if n in ORDER else len(ORDER), n))
+    return {n: f"geardesign.{n}" for n in names}
+
+
+KINDS: dict[str, str] = _discover()
 
 
 @dataclass(frozen=True)
@@ -35,7 +54,7 @@ class Calculator:
         """An empty result that echoes the inputs (assumed defaults marked)."""
         assumed = set(spec.assumed)
         rows = [
-            Row(key, value, field.unit if field.type in ("number", "integer") else None,
+            Row(key, value, field.unit if field.numeric else None,
                 field.symbol or key.rsplit(".", 1)[-1], field.description, "", key in assumed)
             for key, field, value in iter_fields(self.schema.root, spec.data)
             if key != "kind"

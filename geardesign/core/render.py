@@ -44,6 +44,8 @@ def fmt(value: Any) -> str:
             text = f"{value:.6f}".rstrip("0").rstrip(".")
         return text
     if isinstance(value, (list, tuple)):
+        if len(value) > 8 or any(isinstance(v, (list, tuple)) for v in value):
+            return f"[{len(value)} values, see JSON]"
         return ", ".join(fmt(v) for v in value)
     return str(value)
 

@@ -38,9 +38,15 @@ class Section:
     def add(self, key: str, value: Any, unit: str | None = "-", symbol: str = "", name: str = "",
             source: str = "") -> None:
         """Add a row; angles may be given in ``rad`` and are reported in degrees."""
-        if unit == "rad" and isinstance(value, (int, float)):
-            value, unit = math.degrees(value), "deg"
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
+        if unit == "rad":
+            if isinstance(value, (list, tuple)):
+                value = [math.degrees(v) for v in value]
+            elif isinstance(value, (int, float)):
+                value = math.degrees(value)
+            unit = "deg"
+        if isinstance(value, tuple):
+            value = list(value)
+        if not _is_number(value) and not _is_number_list(value):
             unit = None
         self.rows.append(Row(key, value, unit, symbol or key, name, source))
 
@@ -71,8 +77,11 @@ def check(code: str, ok: bool, severity: str, fail_message: str, pass_message: s
 
 
 def _clean(v: Any) -> Any:
+    """JSON has no NaN or infinity: an undefined number is reported as null."""
     if isinstance(v, float) and not math.isfinite(v):
         return None
+    if isinstance(v, (list, tuple)):
+        return [_clean(x) for x in v]
     return v
 
 
@@ -115,14 +124,14 @@ class Result:
         """The JSON result document (``DESIGN.md``, "JSON result document")."""
         units: dict[str, str] = {}
         for row in self.input_rows:
-            if row.unit is not None and _is_number(row.value):
+            if row.unit is not None and (_is_number(row.value) or _is_number_list(row.value)):
                 units["inputs." + row.key] = row.unit
         results: dict[str, dict] = {}
         for sec in self.sections:
             block = results.setdefault(sec.key, {})
             for row in sec.rows:
                 block[row.key] = _clean(row.value)
-                if row.unit is not None and _is_number(row.value):
+                if row.unit is not None and (_is_number(row.value) or _is_number_list(row.value)):
                     units[f"results.{sec.key}.{row.key}"] = row.unit
         return {
             "geardesign": __version__,
@@ -158,3 +167,9 @@ def _drop_none(d: Any) -> Any:
 
 def _is_number(v: Any) -> bool:
     return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def _is_number_list(v: Any) -> bool:
+    """A list of numbers (a curve, a time history): its unit applies to every element."""
+    return isinstance(v, list) and bool(v) and all(
+        _is_number(x) or _is_number_list(x) or x is None for x in v)

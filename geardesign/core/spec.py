@@ -32,7 +32,9 @@ class _Required:
 REQUIRED: Any = _Required()
 """Marks a field without a default: the spec must give it."""
 
-_TYPES = ("number", "integer", "string", "boolean")
+_TYPES = ("number", "integer", "string", "boolean", "array")
+_NOUNS = {"number": ("a number", "numbers"), "integer": ("an integer", "integers"),
+          "string": ("a string", "strings"), "boolean": ("true or false", "booleans")}
 
 
 @dataclass(frozen=True)
@@ -42,7 +44,9 @@ class Field:
     Parameters
     ----------
     key : TOML key.
-    type : ``"number"`` (int or float accepted), ``"integer"``, ``"string"`` or ``"boolean"``.
+    type : ``"number"`` (int or float accepted), ``"integer"``, ``"string"``, ``"boolean"``, or
+        ``"array"``: a list whose elements have the type ``items`` and obey the bounds and
+        choices below, with ``min_items``/``max_items`` elements.
     description : what the value means, in a few words (shown in reports and templates).
     unit : unit of a numeric value (``"mm"``, ``"deg"``, ``"-"`` for dimensionless).
     symbol : the standard's symbol, e.g. ``"m_n"``.
@@ -67,12 +71,28 @@ class Field:
     choices: tuple | None = None
     example: Any = None
     hint: str = ""
+    items: str = "number"
+    min_items: int = 1
+    max_items: int | None = None
 
     def __post_init__(self) -> None:
-        if self.type not in _TYPES:
-            raise ValueError(f"field {self.key}: unknown type {self.type!r}")
-        if self.type in ("number", "integer") and self.unit is None:
+        if self.type not in _TYPES or self.items not in _NOUNS:
+            raise ValueError(f"field {self.key}: unknown type {self.type!r}/{self.items!r}")
+        if self.numeric and self.unit is None:
             object.__setattr__(self, "unit", "-")
+
+    @property
+    def numeric(self) -> bool:
+        """Numbers or a list of numbers (then the unit applies to every element)."""
+        return self.type in ("number", "integer") or (
+            self.type == "array" and self.items in ("number", "integer"))
+
+    @property
+    def element(self) -> "Field":
+        """The rule of one element of an array field."""
+        return Field(self.key, self.items, self.description, self.unit, default=None,
+                     minimum=self.minimum, maximum=self.maximum, gt=self.gt, lt=self.lt,
+                     choices=self.choices)
 
     @property
     def required(self) -> bool:
@@ -80,14 +100,20 @@ class Field:
 
     def rule(self) -> str:
         """The allowed values in words: ``an integer >= 5``, ``a number > 0``, ..."""
+        if self.type == "array":
+            count = (f"{self.min_items} to {self.max_items}" if self.max_items is not None
+                     else f"at least {self.min_items}")
+            element = self.element.rule()
+            for single, plural in _NOUNS.values():
+                if element.startswith(single):
+                    element = plural + element[len(single):]
+                    break
+            if element.startswith("one of"):
+                element = "values, each " + element
+            return f"a list of {count} {element}"
         if self.choices is not None:
             return "one of " + ", ".join(format_value(c) for c in self.choices)
-        noun = {
-            "number": "a number",
-            "integer": "an integer",
-            "string": "a string",
-            "boolean": "true or false",
-        }[self.type]
+        noun = _NOUNS[self.type][0]
         bounds = []
         if self.minimum is not None:
             bounds.append(f">= {_num(self.minimum)}")
@@ -106,6 +132,18 @@ class Field:
     def check(self, value: Any) -> tuple[Any, str | None]:
         """Return ``(normalised value, None)`` or ``(None, message)``."""
         bad = f"must be {self.rule()}"
+        if self.type == "array":
+            if not isinstance(value, list) or len(value) < self.min_items or (
+                    self.max_items is not None and len(value) > self.max_items):
+                return None, bad
+            element = self.element
+            out = []
+            for v in value:
+                v, message = element.check(v)
+                if message:
+                    return None, bad
+                out.append(v)
+            return out, None
         if self.type == "boolean":
             return (value, None) if isinstance(value, bool) else (None, bad)
         if self.type == "string":
@@ -157,6 +195,29 @@ class Table:
             if f.key == key:
                 return f
         return None
+
+
+@dataclass(frozen=True)
+class TableList:
+    """An array of tables (``[[load.spectrum]]``), each validated against ``item``.
+
+    ``examples`` are the entries written in the template (by default one entry of the
+    fields' examples).
+    """
+
+    key: str
+    description: str
+    item: Table
+    required: bool = True
+    min_items: int = 1
+    max_items: int | None = None
+    examples: tuple = ()
+    hint: str = ""
+
+    def rule(self) -> str:
+        count = (f"{self.min_items} to {self.max_items}" if self.max_items is not None
+                 else f"at least {self.min_items}")
+        return f"{count} [[{self.key}]] tables"
 
 
 @dataclass(frozen=True)
@@ -216,6 +277,27 @@ def _validate_table(table: Table, data: Any, path: str, problems: list, assumed:
             problems.append(Problem(_join(path, key), msg, value))
     for member in table.fields:
         key = _join(path, member.key)
+        if isinstance(member, TableList):
+            if member.key not in data:
+                if member.required:
+                    problems.append(Problem(
+                        key, f"missing; required: {member.rule()} ({member.description})"))
+                else:
+                    out[member.key] = None
+                continue
+            value = data[member.key]
+            n = len(value) if isinstance(value, list) else -1
+            if (not isinstance(value, list) or not all(isinstance(v, dict) for v in value)
+                    or n < member.min_items
+                    or (member.max_items is not None and n > member.max_items)):
+                problems.append(Problem(
+                    key, f"must be {member.rule()} ({member.description})", value))
+                continue
+            out[member.key] = [
+                _validate_table(member.item, v, f"{key}[{i}]", problems, assumed)
+                for i, v in enumerate(value)
+            ]
+            continue
         if isinstance(member, Table):
             if member.key not in data and not member.implicit:
                 if member.required:
@@ -290,7 +372,10 @@ def iter_fields(table: Table, data: dict | None, path: str = "") -> Iterator[tup
         return
     for member in table.fields:
         key = _join(path, member.key)
-        if isinstance(member, Table):
+        if isinstance(member, TableList):
+            for i, item in enumerate(data.get(member.key) or ()):
+                yield from iter_fields(member.item, item, f"{key}[{i}]")
+        elif isinstance(member, Table):
             yield from iter_fields(member, data.get(member.key), key)
         elif data.get(member.key) is not None:
             yield key, member, data[member.key]
@@ -300,15 +385,21 @@ def iter_fields(table: Table, data: dict | None, path: str = "") -> Iterator[tup
 
 
 def _field_schema(f: Field) -> dict:
-    js: dict = {}
-    if f.type == "number":
-        js["type"] = "number"
-    elif f.type == "integer":
-        js["type"] = "integer"
-    elif f.type == "string":
-        js["type"] = "string"
-    else:
-        js["type"] = "boolean"
+    if f.type == "array":
+        js = {"type": "array", "items": _field_schema(f.element), "minItems": f.min_items}
+        if f.max_items is not None:
+            js["maxItems"] = f.max_items
+        js["items"].pop("description", None)
+        desc = (f"{f.symbol}: " if f.symbol else "") + f.description
+        if f.unit and f.numeric:
+            desc += f" [{f.unit}]"
+            js["x-unit"] = f.unit
+            js["items"].pop("x-unit", None)
+        js["description"] = desc + (f". {f.hint}" if f.hint else "")
+        if not f.required and f.default is not None:
+            js["default"] = f.default
+        return js
+    js: dict = {"type": f.type}
     desc = f.description
     if f.symbol:
         desc = f"{f.symbol}: {desc}"
@@ -338,9 +429,15 @@ def _table_schema(t: Table) -> dict:
     props = {}
     required = []
     for m in t.fields:
-        props[m.key] = _table_schema(m) if isinstance(m, Table) else _field_schema(m)
-        if (isinstance(m, Table) and m.required and not m.implicit) or (
-                isinstance(m, Field) and m.required):
+        if isinstance(m, TableList):
+            props[m.key] = {"type": "array", "description": m.description,
+                            "items": _table_schema(m.item), "minItems": m.min_items}
+            if m.max_items is not None:
+                props[m.key]["maxItems"] = m.max_items
+        else:
+            props[m.key] = _table_schema(m) if isinstance(m, Table) else _field_schema(m)
+        if (isinstance(m, (Table, TableList)) and m.required and not getattr(m, "implicit", False)) \
+                or (isinstance(m, Field) and m.required):
             required.append(m.key)
     js = {"type": "object", "description": t.description + (f". {t.hint}" if t.hint else "")}
     js["properties"] = props
@@ -377,14 +474,14 @@ def _comment(f: Field) -> str:
     if f.symbol:
         parts.append(f.symbol + ":")
     parts.append(f.description)
-    if f.unit and f.unit != "-" and f.type in ("number", "integer"):
+    if f.unit and f.unit != "-" and f.numeric:
         parts.append(f"[{f.unit}]")
     text = " ".join(parts)
     if f.required:
         text += f"; required, {f.rule()}"
     elif f.default is not None:
         text += f"; default {_toml_value(f.default)}"
-        if f.choices is not None or f.type in ("number", "integer"):
+        if f.choices is not None or f.numeric:
             text += f", {f.rule()}"
     else:
         text += f"; optional, {f.rule()}"
@@ -393,9 +490,17 @@ def _comment(f: Field) -> str:
     return text
 
 
+def _field_line(f: Field, value: Any = None, comments: bool = True) -> str:
+    """``key = value  # comment``; a field without a value is written commented out."""
+    comment = f"  # {_comment(f)}" if comments else ""
+    if value is not None:
+        return f"{f.key} = {_toml_value(value)}{comment}"
+    if f.default is not None and f.default is not REQUIRED:
+        return f"# {f.key} = {_toml_value(f.default)}{comment}"
+    return f"# {f.key} ={comment}"
+
+
 def _template_table(t: Table, path: str, lines: list[str]) -> None:
-    scalars = [m for m in t.fields if isinstance(m, Field)]
-    tables = [m for m in t.fields if isinstance(m, Table)]
     if path:
         lines.append("")
         optional = " (optional table)" if not t.required or t.implicit else ""
@@ -403,19 +508,29 @@ def _template_table(t: Table, path: str, lines: list[str]) -> None:
         if t.hint:
             lines.append(f"# {t.hint}")
         lines.append(f"[{path}]")
-    for f in scalars:
-        if not path and f.key == "kind":
-            lines.append(f"kind = {_toml_value(f.example)}")
-            continue
-        comment = _comment(f)
-        if f.example is not None:
-            lines.append(f"{f.key} = {_toml_value(f.example)}  # {comment}")
-        elif f.default is not None and f.default is not REQUIRED:
-            lines.append(f"# {f.key} = {_toml_value(f.default)}  # {comment}")
-        else:
-            lines.append(f"# {f.key} =   # {comment}")
-    for sub in tables:
-        _template_table(sub, _join(path, sub.key), lines)
+    for f in t.fields:
+        if isinstance(f, Field):
+            if not path and f.key == "kind":
+                lines.append(f"kind = {_toml_value(f.example)}")
+            else:
+                lines.append(_field_line(f, f.example))
+    for sub in t.fields:
+        sub_path = _join(path, sub.key)
+        if isinstance(sub, TableList):
+            examples = sub.examples or ({f.key: f.example for f in sub.item.fields
+                                         if isinstance(f, Field) and f.example is not None},)
+            lines.append("")
+            lines.append(f"# {sub.description}: {sub.rule()}"
+                         + ("" if sub.required else " (optional)"))
+            if sub.hint:
+                lines.append(f"# {sub.hint}")
+            for i, example in enumerate(examples):
+                lines.append(f"[[{sub_path}]]")
+                for f in sub.item.fields:
+                    if f.key in example or i == 0:
+                        lines.append(_field_line(f, example.get(f.key), comments=(i == 0)))
+        elif isinstance(sub, Table):
+            _template_table(sub, sub_path, lines)
 
 
 def template(schema: SpecSchema) -> str:
