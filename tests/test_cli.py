@@ -7,6 +7,7 @@ import sys
 import pytest
 
 from geardesign import __version__
+from geardesign.core.registry import KINDS
 from tests.helpers_cli import cli, cli_process
 
 GOOD = """kind = "spur"
@@ -146,7 +147,8 @@ def test_template_is_a_valid_spec(tmp_path):
     code, out, err = cli("run", path, "--format", "json")
     assert code == 0, err
     doc = json.loads(out)
-    assert doc["inputs"]["gear"]["z1"] == 32
+    assert doc["inputs"]["gear"]["z1"] == 25
+    assert doc["verdict"] == "pass" and "contact" in doc["results"]
 
 
 def test_schema_comes_from_the_same_definitions(tmp_path):
@@ -155,6 +157,7 @@ def test_schema_comes_from_the_same_definitions(tmp_path):
     gear = schema["properties"]["gear"]
     assert gear["additionalProperties"] is False
     assert set(gear["required"]) == {"module", "z1", "z2", "face_width"}
+    assert schema["allOf"] == [{"oneOf": [{"required": ["gear"]}, {"required": ["design"]}]}]
     assert gear["properties"]["z1"] == {
         "type": "integer", "description": "z1: number of teeth, pinion [-]", "x-unit": "-",
         "minimum": 5, "maximum": 1000}
@@ -171,7 +174,8 @@ def test_schema_comes_from_the_same_definitions(tmp_path):
 def test_unknown_kind_for_template():
     code, out, err = cli("template", "spurr")
     assert code == 2 and out == ""
-    assert err == 'geardesign: unknown calculator "spurr" (did you mean "spur"?); known: spur\n'
+    assert err == ('geardesign: unknown calculator "spurr" (did you mean "spur"?); known: '
+                   + ", ".join(KINDS) + "\n")
 
 
 def test_real_process_json_only_on_stdout_and_no_heavy_imports(good):

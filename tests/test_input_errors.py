@@ -3,7 +3,10 @@ no traceback; nothing written."""
 
 import pytest
 
+from geardesign.core.registry import KINDS
 from tests.helpers_cli import cli, cli_process
+
+KNOWN = ", ".join(f'"{k}"' for k in KINDS)
 
 GOOD = """kind = "spur"
 [gear]
@@ -77,15 +80,16 @@ CASES = [
      ["s.toml: gear.x1 = -1.0: the tip circle of gear 1 (d_a = 15.4528 mm) lies inside its "
       "base circle (d_b = 15.4904 mm): no involute flank; increase x1 or z1"]),
     ("missing table", 'kind = "spur"\n',
-     ["s.toml: gear: missing table [gear] (gear pair (external, spur or helical))"]),
+     ["s.toml: give exactly one of [gear] (gear pair (external, spur or helical)) or [design] "
+      "(design mode: propose a pair for the load, then check it); the spec has neither"]),
     ("table given a value", GOOD.replace('kind = "spur"\n', 'kind = "spur"\nload = 5\n'),
      ["s.toml: load = 5: must be a table [load] (operating data)"]),
     ("unknown top-level key", GOOD.replace('kind = "spur"\n', 'kind = "spur"\ntitel = "x"\n'),
      ['s.toml: titel = "x": unknown key in the top level (did you mean "title"?)']),
     ("unknown kind", GOOD.replace('"spur"', '"spurr"'),
-     ['s.toml: kind = "spurr": unknown calculator (did you mean "spur"?); known: "spur"']),
+     ['s.toml: kind = "spurr": unknown calculator (did you mean "spur"?); known: ' + KNOWN]),
     ("no kind", GOOD.replace('kind = "spur"\n', ""),
-     ['s.toml: kind: missing; required: one of "spur" (the calculator)']),
+     ['s.toml: kind: missing; required: one of ' + KNOWN + ' (the calculator)']),
     ("negative speed", GOOD + "[load]\nspeed1 = -100.0\n",
      ["s.toml: load.speed1 = -100.0: must be a number > 0 and <= 1000000 (min^-1)"]),
     ("not TOML", "kind = spur\n",

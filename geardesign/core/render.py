@@ -39,10 +39,7 @@ def fmt(value: Any) -> str:
             return "—"
         if value == 0:
             return "0"
-        text = f"{value:.6g}"
-        if "e" in text and 1e-4 <= abs(value) < 1e9:
-            text = f"{value:.6f}".rstrip("0").rstrip(".")
-        return text
+        return f"{value:.6g}"
     if isinstance(value, (list, tuple)):
         if len(value) > 8 or any(isinstance(v, (list, tuple)) for v in value):
             return f"[{len(value)} values, see JSON]"

@@ -159,9 +159,11 @@ class Result:
 
 
 def _drop_none(d: Any) -> Any:
-    """Inputs echo: leave out optional keys that were not given and have no default."""
+    """Inputs echo: leave out optional keys that were not given and have no default, and
+    tables left empty by that."""
     if isinstance(d, dict):
-        return {k: _drop_none(v) for k, v in d.items() if v is not None}
+        out = {k: _drop_none(v) for k, v in d.items() if v is not None}
+        return {k: v for k, v in out.items() if v != {}}
     return d
 
 

@@ -228,6 +228,9 @@ class SpecSchema:
     description: str
     tables: tuple
     title_example: str = ""
+    one_of: tuple = ()
+    """Groups of top-level tables of which exactly one must be given, e.g.
+    ``(("gear", "design"),)``."""
 
     @property
     def root(self) -> Table:
@@ -334,6 +337,12 @@ def validate(schema: SpecSchema, data: dict, source: str = "") -> ValidatedSpec:
     problems: list[Problem] = []
     assumed: list[str] = []
     out = _validate_table(schema.root, data, "", problems, assumed)
+    for group in schema.one_of:
+        present = [k for k in group if k in data]
+        if len(present) != 1:
+            names = " or ".join(f"[{k}] ({schema.root.member(k).description})" for k in group)
+            what = "both" if len(present) > 1 else "neither"
+            problems.append(Problem("", f"give exactly one of {names}; the spec has {what}"))
     if problems:
         raise InputError(problems)
     return ValidatedSpec(out, assumed, source)
@@ -457,6 +466,8 @@ def json_schema(schema: SpecSchema) -> dict:
         **js,
     }
     js["properties"]["kind"]["const"] = schema.kind
+    if schema.one_of:
+        js["allOf"] = [{"oneOf": [{"required": [k]} for k in group]} for group in schema.one_of]
     return js
 
 
@@ -500,7 +511,9 @@ def _field_line(f: Field, value: Any = None, comments: bool = True) -> str:
     return f"# {f.key} ={comment}"
 
 
-def _template_table(t: Table, path: str, lines: list[str]) -> None:
+def _template_table(t: Table, path: str, lines: list[str], alternatives: dict | None = None
+                    ) -> None:
+    alternatives = alternatives or {}
     if path:
         lines.append("")
         optional = " (optional table)" if not t.required or t.implicit else ""
@@ -530,6 +543,15 @@ def _template_table(t: Table, path: str, lines: list[str]) -> None:
                     if f.key in example or i == 0:
                         lines.append(_field_line(f, example.get(f.key), comments=(i == 0)))
         elif isinstance(sub, Table):
+            if sub.key in alternatives:
+                first = alternatives[sub.key]
+                alt: list[str] = []
+                _template_table(sub, sub_path, alt)
+                lines.append("")
+                lines.append(f"# Instead of [{first}]: [{sub.key}] ({sub.description}).")
+                lines.extend(("# " + line if line and not line.startswith("#") else line)
+                             for line in alt[1:])
+                continue
             _template_table(sub, sub_path, lines)
 
 
@@ -540,5 +562,6 @@ def template(schema: SpecSchema) -> str:
         "# Units are fixed per quantity (mm, deg, N, N*m, MPa, min^-1, kW, h).",
         "# Keys shown commented out take the default given; uncomment to change them.",
     ]
-    _template_table(schema.root, "", lines)
+    alternatives = {k: group[0] for group in schema.one_of for k in group[1:]}
+    _template_table(schema.root, "", lines, alternatives)
     return "\n".join(lines) + "\n"

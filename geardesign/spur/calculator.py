@@ -190,11 +190,140 @@ def add_geometry_rows(res: Result, g: PairGeometry, how: str) -> None:
           S.G16532_SPAN)
 
 
+def _strength_inputs(spec: ValidatedSpec, gear: dict):
+    """Materials, duty and setting of the strength calculation, or ``None`` for a
+    geometry-only spec.  Missing pieces are input errors naming the key."""
+    from geardesign.materials.gear_steel import resolve
+    from geardesign.spur.loads import Block, torque_from_power
+    from geardesign.spur.strength.rating import Duty, Life, Setting
+
+    d = spec.data
+    load, mat = d["load"], d["material"]
+    torque_given = load is not None and (load["torque1"] is not None or load["power"] is not None)
+    if mat is None:
+        if torque_given:
+            raise InputError(Problem("material", "missing table [material.pinion] and "
+                                     "[material.wheel]: required with load.torque1 or load.power "
+                                     "for the strength calculation"))
+        return None
+    if load is None:
+        raise InputError(Problem("load", "missing table [load] (speed1, torque1, life_hours): "
+                                 "required with [material]"))
+    if load["torque1"] is not None and load["power"] is not None:
+        raise InputError.at("load.power", load["power"], "give torque1 or power, not both")
+    if not torque_given:
+        raise InputError(Problem("load.torque1", "missing; required with [material]: the nominal "
+                                 "pinion torque in N*m (or load.power in kW)"))
+    if load["life_hours"] is None:
+        raise InputError(Problem("load.life_hours", "missing; required with [material]: the "
+                                 "required life in hours"))
+    if gear["bearing_scheme"] is None:
+        where = "design" if d["design"] is not None else "gear"
+        raise InputError(Problem(f"{where}.bearing_scheme", "missing; required for the strength "
+                                 "calculation: 1…7 as in the GOST 21354-87 chart (see "
+                                 "geardesign template spur)"))
+    T1 = load["torque1"] if load["torque1"] is not None else torque_from_power(load["power"],
+                                                                               load["speed1"])
+    if load["peak_torque1"] is not None and load["peak_torque1"] < T1:
+        raise InputError.at("load.peak_torque1", load["peak_torque1"],
+                            f"smaller than the nominal torque T1 = {_fmt(T1)} N*m; give the "
+                            f"largest short-time torque")
+    blocks = ()
+    if load["spectrum"]:
+        if load["regime"] is not None:
+            raise InputError.at("load.regime", load["regime"], "give a regime or a spectrum, "
+                                "not both")
+        total = sum(b["time_share"] for b in load["spectrum"])
+        if abs(total - 1.0) > 1e-6:
+            raise InputError.at("load.spectrum", load["spectrum"],
+                                f"the time shares add up to {total:.6g}; they must add up to 1")
+        if max(b["torque_ratio"] for b in load["spectrum"]) < 1.0 - 1e-9:
+            raise InputError.at("load.spectrum", load["spectrum"],
+                                "no block has torque_ratio = 1: torque1 must be the torque of the "
+                                "largest long-acting block")
+        blocks = tuple(Block(b["torque_ratio"], b["time_share"], b["speed_ratio"])
+                       for b in load["spectrum"])
+    regime = load["regime"]
+    if regime is None and not blocks:
+        regime = "0"
+        load["regime"] = "0"
+        spec.assumed.append("load.regime")
+    mats = (resolve(mat["pinion"], "material.pinion"), resolve(mat["wheel"], "material.wheel"))
+    life = Life(load["life_hours"], (load["meshes_pinion"], load["meshes_wheel"]),
+                regime if not blocks else None, blocks)
+    duty = Duty(T1, load["speed1"], load["application_factor"], load["peak_torque1"],
+                load["reverse_torque_ratio"], life)
+    setting = Setting(gear["accuracy_grade"], gear["tip_relief"], gear["bearing_scheme"],
+                      (mat["pinion"]["roughness_Ra"], mat["wheel"]["roughness_Ra"]),
+                      dict(d["factors"] or {}), d["options"]["contact_model"],
+                      d["options"]["crowning"])
+    return mats, duty, setting
+
+
+_SECTIONS = {"forces": "Loads and forces", "life": "Life and load cycles",
+             "factors": "Load factors", "contact": "Contact fatigue",
+             "bending": "Bending fatigue", "static": "Peak (static) load"}
+
+
+#: Defaults that only the strength calculation uses: not echoed for a geometry-only spec.
+STRENGTH_ONLY = ("gear.accuracy_grade", "gear.tip_relief", "load.application_factor",
+                 "load.meshes_pinion", "load.meshes_wheel", "load.reverse_torque_ratio",
+                 "options.method", "options.contact_model")
+
+
+def _drop_unused_defaults(spec: ValidatedSpec, paths: tuple[str, ...]) -> None:
+    """Remove assumed defaults that the calculation did not use from the inputs echo."""
+    for path in paths:
+        if path in spec.assumed:
+            spec.assumed.remove(path)
+            table, key = path.split(".")
+            if spec.data.get(table) is not None:
+                spec.data[table].pop(key, None)
+
+
+def add_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inputs) -> None:
+    """Rate the pair (``inputs`` from :func:`_strength_inputs`); add rows and checks."""
+    from geardesign.spur.checks import strength_checks
+    from geardesign.spur.strength import method
+
+    mats, duty, setting = inputs
+    rating = method(spec.data["options"]["method"]).rate(geom, mats, duty, setting)
+    res.methods.append(spec.data["options"]["method"])
+    sec = res.section("materials", "Materials")
+    for k, m in enumerate(mats, 1):
+        sec.add(f"material{k}", m.label, None, f"mat{k}", ("pinion", "wheel")[k - 1],
+                "library" if not m.given else "library + spec")
+        sec.add(f"HB{k}", m.HB, "HB", f"HB{k}", "surface hardness in HB (converted)",
+                "GOST 21354-87 (ZPCIL fit)")
+        if m.sigma_T is not None:
+            sec.add(f"sigma_T{k}", m.sigma_T, "MPa", f"σ_T{k}", "yield strength of the blank",
+                    "spec" if "sigma_T" in m.given else "library")
+    for row in rating.rows:
+        res.section(row.section, _SECTIONS[row.section]).add(
+            row.key, row.value, row.unit, row.symbol, row.name, row.source)
+    res.checks.extend(strength_checks(rating.v, mats, geom.inp.beta > 0, setting.grade,
+                                      duty.T_peak is not None))
+
+
 def compute(spec: ValidatedSpec) -> Result:
     from geardesign.spur import CALCULATOR
 
-    geom, how = solve_geometry(spec)
+    if spec.data["design"] is not None:
+        from geardesign.spur.design import design_pair
+
+        geom, how, gear, notes = design_pair(spec)
+    else:
+        gear = spec.data["gear"]
+        geom, how = solve_geometry(spec)
+        notes = None
+    strength = _strength_inputs(spec, gear)
+    if strength is None:
+        _drop_unused_defaults(spec, STRENGTH_ONLY)
     res = CALCULATOR.new_result(spec)
+    if notes is not None:
+        sec = res.section("design", "Design proposal")
+        for row in notes:
+            sec.add(*row)
     add_geometry_rows(res, geom, how)
 
     sl = sliding_at_ends(geom)
@@ -219,5 +348,7 @@ def compute(spec: ValidatedSpec) -> Result:
         k.add("v_s_A", v.v_s_A, "m/s", "v_s(A)", "sliding velocity at A (approach)", S.SLIDING)
         k.add("v_s_E", v.v_s_E, "m/s", "v_s(E)", "sliding velocity at E (recess)", S.SLIDING)
 
-    res.checks.extend(geometry_checks(geom, sl, spec.data["gear"]["allow_undercut"]))
+    res.checks.extend(geometry_checks(geom, sl, gear["allow_undercut"]))
+    if strength is not None:
+        add_strength(res, geom, spec, strength)
     return res

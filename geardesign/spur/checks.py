@@ -162,3 +162,90 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
             f"span W{idx} over k{idx} = {gear.k} teeth measurable (contact on d = "
             f"{gear.d_W:.3f} mm)", gear.d_W, None, S.G16532_SPAN))
     return out
+
+
+# ----------------------------------------------------------------------------- strength
+
+HB_DIFFERENCE_MIN = 20.0   # HB, pinion harder than the wheel for running-in (soft pairs)
+
+
+def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool) -> list[Check]:
+    """Checks of a GOST 21354-87 rating ``v`` (the :class:`Rating` values by key).
+
+    Contact: σ_H <= σ_HP of the pair; bending: S_F >= S_Fmin per gear (σ_F <= σ_FP); peak
+    loads: σ_Hmax <= σ_HPmax and σ_Fmax <= σ_FPmax per gear.  The advice uses the scaling
+    of the formulas: σ_H ∝ a_w^(-3/2) at a fixed ψ_ba and ∝ b_w^(-1/2); σ_F ∝ 1/(b_w·m_n).
+    """
+    src = "GOST 21354-87"
+    out: list[Check] = []
+    sH, sHP = v["sigma_H"], v["sigma_HP"]
+    r = sH / sHP
+    gov = 1 if v["sigma_HP1"] <= v["sigma_HP2"] else 2
+    who = ("pinion", "wheel")[gov - 1]
+    out.append(check(
+        "CONTACT_FATIGUE", sH <= sHP * (1 + 1e-12), "error",
+        f"contact stress σ_H = {sH:.0f} MPa exceeds σ_HP = {sHP:.0f} MPa by {100 * (r - 1):.1f} % "
+        f"(S_H{gov} = {v[f'S_H{gov}']:.2f} < {v[f'S_H{gov}_min']:.2f}, {who}): increase the "
+        f"centre distance by {100 * (r ** (2 / 3) - 1):.1f} % or the face width by "
+        f"{100 * (r * r - 1):.0f} %, or use a harder {who} material",
+        f"σ_H = {sH:.0f} MPa <= σ_HP = {sHP:.0f} MPa ({100 * (1 - r):.1f} % reserve; S_H1 = "
+        f"{v['S_H1']:.2f}, S_H2 = {v['S_H2']:.2f})", sH, sHP, src))
+    for k in (1, 2):
+        who = ("pinion", "wheel")[k - 1]
+        S, Smin = v[f"S_F{k}"], v[f"S_F{k}_min"]
+        sF, sFP = v[f"sigma_F{k}"], v[f"sigma_FP{k}"]
+        out.append(check(
+            f"BENDING_FATIGUE_{('PINION', 'WHEEL')[k - 1]}", S >= Smin * (1 - 1e-12), "error",
+            f"{who} root stress σ_F{k} = {sF:.0f} MPa exceeds σ_FP{k} = {sFP:.0f} MPa (S_F{k} = "
+            f"{S:.2f} < {Smin:.2f}): increase the module by {100 * (sF / sFP - 1):.0f} % "
+            f"(same centre distance, fewer teeth) or the face width as much, or use a material "
+            f"with a higher σ_Flim",
+            f"{who}: σ_F{k} = {sF:.0f} MPa <= σ_FP{k} = {sFP:.0f} MPa (S_F{k} = {S:.2f} >= "
+            f"{Smin:.2f})", S, Smin, src))
+    if peak_given:
+        sHm = v["sigma_Hmax"]
+        lim = min(v["sigma_HPmax1"], v["sigma_HPmax2"])
+        out.append(check(
+            "STATIC_CONTACT", sHm <= lim, "error",
+            f"contact stress at the peak torque σ_Hmax = {sHm:.0f} MPa exceeds σ_HPmax = "
+            f"{lim:.0f} MPa: limit the peak torque to {v['T_peak'] * (lim / sHm) ** 2:.0f} N·m "
+            f"(e.g. a slip coupling), or enlarge the gears",
+            f"σ_Hmax = {sHm:.0f} MPa <= σ_HPmax = {lim:.0f} MPa", sHm, lim, src))
+        for k in (1, 2):
+            who = ("pinion", "wheel")[k - 1]
+            sFm, limF = v[f"sigma_Fmax{k}"], v[f"sigma_FPmax{k}"]
+            out.append(check(
+                f"STATIC_BENDING_{('PINION', 'WHEEL')[k - 1]}", sFm <= limF, "error",
+                f"{who} root stress at the peak torque σ_Fmax{k} = {sFm:.0f} MPa exceeds "
+                f"σ_FPmax{k} = {limF:.0f} MPa: limit the peak torque to "
+                f"{v['T_peak'] * limF / sFm:.0f} N·m or increase the module",
+                f"{who}: σ_Fmax{k} = {sFm:.0f} MPa <= σ_FPmax{k} = {limF:.0f} MPa", sFm, limF,
+                src))
+    else:
+        out.append(check(
+            "STATIC_NOT_CHECKED", False, "info",
+            "no peak torque given (load.peak_torque1): the static contact and bending checks "
+            "were not made", "", None, None, src))
+    for k, mat in enumerate(mats, 1):
+        for w in mat.warnings:
+            out.append(check(f"HARDNESS_RANGE_{('PINION', 'WHEEL')[k - 1]}", False, "warning", w,
+                             "", None, None, src))
+    m1, m2 = mats
+    if m1.soft and m2.soft:
+        d = m1.HB - m2.HB
+        out.append(check(
+            "HARDNESS_DIFFERENCE", d >= HB_DIFFERENCE_MIN, "warning",
+            f"the pinion is only {d:.0f} HB harder than the wheel: soft pairs run in best with "
+            f"the pinion {HB_DIFFERENCE_MIN:.0f}…50 HB harder; raise the pinion hardness",
+            f"pinion {d:.0f} HB harder than the wheel (>= {HB_DIFFERENCE_MIN:.0f} HB for running-in)",
+            d, HB_DIFFERENCE_MIN, "design practice"))
+    from geardesign.spur.strength.tables import V_MAX
+
+    vmax = V_MAX["helical" if helical else "spur"][grade]
+    out.append(check(
+        "VELOCITY_GRADE", v["v_H"] <= vmax, "warning",
+        f"circumferential velocity {v['v_H']:.1f} m/s is above {vmax:g} m/s for accuracy grade "
+        f"{grade} {'helical' if helical else 'spur'} gears: choose a finer grade (smaller number)",
+        f"v = {v['v_H']:.2f} m/s <= {vmax:g} m/s for grade {grade}", v["v_H"], vmax,
+        "handbook (GOST 1643-81 grades)"))
+    return out

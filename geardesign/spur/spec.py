@@ -1,22 +1,40 @@
 """The ``kind = "spur"`` spec: keys, units, ranges and defaults (the single definition used
-for validation, ``geardesign schema spur`` and ``geardesign template spur``)."""
+for validation, ``geardesign schema spur`` and ``geardesign template spur``).
+
+Modes: a spec with ``[gear]`` checks a given pair (geometry; with ``[material]`` and a
+torque also the strength); a spec with ``[design]`` proposes a pair for a torque and
+ratio and then checks it.
+"""
 
 from __future__ import annotations
 
-from geardesign.core.spec import REQUIRED, Field, SpecSchema, Table
+from geardesign.core.spec import Field, SpecSchema, Table, TableList
+from geardesign.spur.strength import METHODS
+from geardesign.spur.strength import tables as T
+
+ACCURACY = Field("accuracy_grade", "integer", "accuracy grade (GOST 1643-81 smoothness norm)",
+                 symbol="n_st", default=8, minimum=6, maximum=11)
+TIP_RELIEF = Field("tip_relief", "boolean", "teeth with tip relief (lower dynamic load)",
+                   default=False)
+SCHEME = Field("bearing_scheme", "integer",
+               "arrangement of the gears on their shafts, GOST 21354-87 chart 1…7 (for K_Hβ)",
+               default=None, minimum=1, maximum=7,
+               hint="; ".join(f"{k}: {v}" for k, v in T.SCHEMES.items())
+               + "; required for the strength calculation", example=5)
+PRESSURE_ANGLE = Field("pressure_angle", "number", "normal pressure angle of the basic rack",
+                       "deg", "α", default=20.0, gt=10, lt=35)
 
 GEAR = Table("gear", "gear pair (external, spur or helical)", (
-    Field("module", "number", "normal module", "mm", "m_n", gt=0, maximum=100, example=5.0,
+    Field("module", "number", "normal module", "mm", "m_n", gt=0, maximum=100, example=4.0,
           hint="GOST 9563 series preferred"),
     Field("z1", "integer", "number of teeth, pinion", symbol="z1", minimum=5, maximum=1000,
-          example=32),
+          example=25),
     Field("z2", "integer", "number of teeth, wheel", symbol="z2", minimum=5, maximum=1000,
-          example=33),
-    Field("pressure_angle", "number", "normal pressure angle of the basic rack", "deg", "α",
-          default=20.0, gt=10, lt=35),
+          example=100),
+    PRESSURE_ANGLE,
     Field("helix_angle", "number", "reference helix angle, 0 for spur gears", "deg", "β",
           default=0.0, minimum=0, lt=45),
-    Field("face_width", "number", "working face width", "mm", "b_w", gt=0, example=15.0),
+    Field("face_width", "number", "working face width", "mm", "b_w", gt=0, example=63.0),
     Field("x1", "number", "profile shift coefficient, pinion", symbol="x1", default=None,
           minimum=-1.0, maximum=2.0,
           hint="default 0 without center_distance; with center_distance, x2 = x_Σ − x1"),
@@ -33,7 +51,29 @@ GEAR = Table("gear", "gear pair (external, spur or helical)", (
     Field("allow_undercut", "boolean",
           "accept an undercut tooth (deliberate, e.g. a small pinion): the check only warns",
           default=False),
-))
+    ACCURACY,
+    TIP_RELIEF,
+    SCHEME,
+), required=False)
+
+DESIGN = Table("design", "design mode: propose a pair for the load, then check it", (
+    Field("ratio", "number", "required gear ratio z2/z1", symbol="u", minimum=1.0, maximum=12.5,
+          example=4.0),
+    Field("ratio_tolerance", "number", "allowed deviation of the ratio", "%", default=4.0,
+          gt=0, maximum=10),
+    Field("psi_ba", "number", "face width ratio b_w/a_w (GOST 2185 series)", symbol="ψ_ba",
+          default=0.315, choices=T.PSI_BA),
+    Field("helix_angle", "number", "helix angle to aim at, 0 for spur gears", "deg", "β",
+          default=0.0, minimum=0, maximum=40),
+    Field("z1_min", "integer", "fewest pinion teeth", symbol="z1_min", default=17, minimum=8,
+          maximum=60),
+    Field("center_distance_series", "integer", "GOST 2185 series of a_w: 1 only, or 1 and 2",
+          default=2, minimum=1, maximum=2),
+    PRESSURE_ANGLE,
+    ACCURACY,
+    TIP_RELIEF,
+    SCHEME,
+), required=False)
 
 RACK = Table("rack", "basic rack (GOST 13755-81)", (
     Field("addendum_coef", "number", "addendum coefficient", symbol="h_a*", default=1.0,
@@ -44,15 +84,120 @@ RACK = Table("rack", "basic rack (GOST 13755-81)", (
           symbol="ρ_f*", default=0.38, minimum=0, maximum=1.0),
 ), required=False, implicit=True)
 
+BLOCK = Table("spectrum", "load block", (
+    Field("torque_ratio", "number", "torque of the block over the nominal torque T1",
+          symbol="T_i/T1", gt=0, maximum=1.0, example=1.0),
+    Field("time_share", "number", "share of the life spent in the block", symbol="t_i/L_h",
+          gt=0, maximum=1.0, example=1.0),
+    Field("speed_ratio", "number", "speed of the block over the nominal speed", symbol="n_i/n1",
+          default=1.0, gt=0, maximum=10.0),
+))
+
 LOAD = Table("load", "operating data", (
-    Field("speed1", "number", "pinion speed", "min^-1", "n1", gt=0, maximum=1e6, example=1000.0),
-), required=False, hint="gives the pitch-line and sliding velocities")
+    Field("speed1", "number", "pinion speed", "min^-1", "n1", gt=0, maximum=1e6, example=960.0),
+    Field("torque1", "number", "nominal pinion torque: the largest long-acting torque", "N*m",
+          "T1", default=None, gt=0, maximum=1e8, example=250.0,
+          hint="or give power; required for the strength calculation"),
+    Field("power", "number", "transmitted power (instead of torque1)", "kW", "P", default=None,
+          gt=0, maximum=1e6),
+    Field("application_factor", "number",
+          "application factor: 1 uniform, 1.25 light shocks, 1.5 moderate, 1.75-2.25 heavy",
+          symbol="K_A", default=1.0, minimum=1.0, maximum=3.0),
+    Field("peak_torque1", "number", "largest short-time pinion torque, for the static checks",
+          "N*m", "T_max", default=None, gt=0, maximum=1e9, example=500.0),
+    Field("life_hours", "number", "required life", "h", "L_h", default=None, gt=0, maximum=1e7,
+          example=20000.0, hint="required for the strength calculation"),
+    Field("regime", "string", "typical load regime of GOST 21354-87 (instead of a spectrum): "
+          + ", ".join(f"{k} {v}" for k, v in T.REGIME_NAMES.items()),
+          default=None, choices=T.REGIMES, hint='"0" when neither regime nor spectrum is given'),
+    Field("meshes_pinion", "integer", "meshes per revolution of the pinion", symbol="c1",
+          default=1, minimum=1, maximum=20),
+    Field("meshes_wheel", "integer", "meshes per revolution of the wheel", symbol="c2",
+          default=1, minimum=1, maximum=20),
+    Field("reverse_torque_ratio", "number",
+          "reversed torque over T1 for teeth loaded both ways (0: one-way loading)",
+          symbol="T_rev/T1", default=0.0, minimum=0.0, maximum=1.0),
+    TableList("spectrum", "load spectrum (instead of a regime)", BLOCK, required=False,
+              examples=({"torque_ratio": 1.0, "time_share": 0.3},
+                        {"torque_ratio": 0.6, "time_share": 0.5},
+                        {"torque_ratio": 0.3, "time_share": 0.2, "speed_ratio": 1.0}),
+              hint="the time shares must add up to 1; torque1 is the largest block"),
+), required=False, hint="speed1 alone gives the velocities; torque1 (or power) and life_hours "
+                        "with [material] give the strength")
+
+
+def _material(who: str) -> Table:
+    return Table(who, f"material of the {who}", (
+        Field("grade", "string", "steel grade from the library: 45, 40Kh, 40KhN, 35KhM, 30KhGSA, "
+              "20Kh, 18KhGT, 20KhN3A, 12KhN3A, 38Kh2MYuA", default=None, example="40Kh",
+              hint="leave out to give the properties yourself"),
+        Field("treatment", "string", "heat treatment", example="improved",
+              choices=("normalized", "improved", "through_hardened", "induction", "carburized",
+                       "nitrided")),
+        Field("hardness_HB", "number", "surface hardness (normalized, improved)", "HB",
+              default=None, minimum=100, maximum=700, example=280.0 if who == "pinion" else 250.0),
+        Field("hardness_HRC", "number",
+              "surface hardness (through_hardened, induction, carburized)", "HRC", default=None,
+              minimum=20, maximum=70),
+        Field("hardness_HV", "number", "surface hardness (nitrided)", "HV", default=None,
+              minimum=100, maximum=1200),
+        Field("core_HRC", "number", "core hardness (nitrided: σ_Flim = 12·HRC_core + 290)",
+              "HRC", default=None, minimum=10, maximum=60),
+        Field("roughness_Ra", "number", "flank roughness Ra", "um", "Ra", default=1.25, gt=0,
+              maximum=40),
+        Field("root_ground", "boolean", "root ground after hardening (then q_F = 6)",
+              default=False),
+        Field("blank", "string", "blank", default="forging", choices=("forging", "rolled",
+                                                                     "casting")),
+        Field("E", "number", "Young's modulus", "MPa", "E", default=None, gt=0, maximum=1e6),
+        Field("nu", "number", "Poisson's ratio", symbol="ν", default=None, minimum=0, lt=0.5),
+        Field("sigma_T", "number", "yield strength of the blank", "MPa", "σ_T", default=None,
+              gt=0, maximum=5000),
+        Field("sigma_Hlim", "number", "contact endurance limit", "MPa", "σ_Hlim", default=None,
+              gt=0, maximum=5000),
+        Field("sigma_Flim", "number", "bending endurance limit", "MPa", "σ_Flim", default=None,
+              gt=0, maximum=3000),
+        Field("S_H", "number", "required contact safety factor", symbol="S_Hmin", default=None,
+              minimum=1.0, maximum=5.0),
+        Field("S_F", "number", "required bending safety factor", symbol="S_Fmin", default=None,
+              minimum=1.0, maximum=5.0),
+        Field("sigma_HPmax", "number", "allowable contact stress at the peak load", "MPa",
+              "σ_HPmax", default=None, gt=0, maximum=10000),
+        Field("sigma_FSt", "number", "limit bending stress at the peak load", "MPa", "σ_FSt",
+              default=None, gt=0, maximum=10000),
+    ))
+
+
+MATERIAL = Table("material", "materials (for the strength calculation)",
+                 (_material("pinion"), _material("wheel")), required=False)
+
+_FACTOR_NAMES = (
+    ("K_Hv", "dynamic factor, contact"), ("K_Hbeta", "face load factor, contact"),
+    ("K_Halpha", "transverse load factor, contact"), ("K_Fv", "dynamic factor, bending"),
+    ("K_Fbeta", "face load factor, bending"), ("K_Falpha", "transverse load factor, bending"),
+    ("Z_E", "elasticity factor [√MPa]"), ("Z_R1", "roughness factor, pinion"),
+    ("Z_R2", "roughness factor, wheel"), ("Y_FS1", "tooth form factor, pinion"),
+    ("Y_FS2", "tooth form factor, wheel"), ("Y_R", "root surface factor (1 if not given)"),
+)
+FACTORS = Table("factors", "load and strength factors given instead of computed", tuple(
+    Field(key, "number", name, symbol=key.replace("beta", "β").replace("alpha", "α"),
+          default=None, gt=0, maximum=1000) for key, name in _FACTOR_NAMES
+), required=False, hint="each given factor replaces the computed one and is marked in the report")
+
+OPTIONS = Table("options", "calculation options", (
+    Field("method", "string", "strength method", default="GOST 21354-87",
+          choices=tuple(METHODS)),
+    Field("contact_model", "string", "extra contact stress model, informative: the n = 0.7 "
+          "deformation law of Popov et al. 2017", default="hertz", choices=("hertz", "popov_n07")),
+    Field("crowning", "number", "crowning depth of the pinion at the face ends (informative "
+          "point-contact stress)", "mm", "ΔS", default=None, gt=0, maximum=1.0),
+), required=False, implicit=True)
 
 SCHEMA = SpecSchema(
     kind="spur",
-    description="external spur/helical gear pair, geometry to GOST 16532-70",
-    tables=(GEAR, RACK, LOAD),
-    title_example="Spur pair 32/33, m = 5",
+    description="external spur/helical gear pair: geometry (GOST 16532-70) and strength "
+                "(GOST 21354-87)",
+    tables=(GEAR, DESIGN, RACK, LOAD, MATERIAL, FACTORS, OPTIONS),
+    title_example="Reducer stage 25/100, m = 4",
+    one_of=(("gear", "design"),),
 )
-
-__all__ = ["SCHEMA", "REQUIRED"]

@@ -1,0 +1,179 @@
+"""Design mode: propose an external pair for a torque, a ratio and two materials
+(GOST 21354-87 design formula, GOST 2185 centre distances, GOST 9563 modules), then leave
+the full check to the calculator.
+
+Procedure (GOST 21354-87 design calculation, as in the handbooks):
+
+1. Preliminary allowable contact stress σ_HP = σ_Hlim·Z_N·0.9/S_H per gear (Z_R·Z_v·Z_X
+   taken as 0.9, method note §8.5), the pair value as in the check.
+2. K_Hβ from the chart at ψ_bd = ψ_ba(u + 1)/2.
+3. a_w = K_a(u + 1)·∛(T1·K_Hβ/(ψ_ba·u·σ_HP²)), rounded up to the GOST 2185 series.
+4. For each GOST 9563 module from 0.01·a_w up: z_Σ = ⌊2a_w cos β/m⌋, z1 = round(z_Σ/(u+1))
+   (at least z1_min), z2 = z_Σ − z1; helical: β = arccos(m z_Σ/(2a_w)) exactly; spur:
+   x_Σ from a_w, split for equal sliding.  b_w = ψ_ba·a_w.
+5. The first candidate that passes every error check of the full rating is proposed;
+   if none does, the next centre distance of the series is tried (up to six steps).
+"""
+
+from __future__ import annotations
+
+import math
+
+from geardesign.core.errors import InputError, Problem
+from geardesign.core.spec import ValidatedSpec
+from geardesign.spur.geometry import (
+    BasicRack, GeometryError, PairGeometry, PairInput, pair_geometry,
+    shift_sum_for_center_distance)
+from geardesign.spur.kinematics import balanced_shift_split, sliding_at_ends
+from geardesign.spur.loads import cycles, equivalent_cycles
+from geardesign.spur.strength import gost21354 as G
+from geardesign.spur.strength import tables as T
+
+MODULE_MIN_RATIO = 0.01   # m >= 0.01·a_w (handbook range 0.01…0.02 a_w, hardened up to 0.0315)
+MODULE_MAX_RATIO = 0.0315
+A_W_STEPS = 6
+
+
+def _series(which: int) -> list[float]:
+    values = list(T.CENTER_DISTANCES_1)
+    if which == 2:
+        values += list(T.CENTER_DISTANCES_2)
+    return sorted(values)
+
+
+def preliminary_sigma_hp(mats, duty, u: float) -> list[float]:
+    """Allowable contact stress of each gear for the design formula (step 1 above)."""
+    life = duty.life
+    n = (duty.n1, duty.n1 / u)
+    out = []
+    for i, mat in enumerate(mats):
+        if life.blocks:
+            N = equivalent_cycles(n[i], life.c[i], life.L_h, life.blocks, 3.0)
+        else:
+            N = T.MU_H[life.regime] * cycles(n[i], life.c[i], life.L_h)
+        out.append(mat.sigma_Hlim * G.z_n(G.n_hg(mat.HB), N, mat.Z_N_max) * 0.9 / mat.S_H)
+    return out
+
+
+def design_pair(spec: ValidatedSpec):
+    """Return ``(geometry, how the shifts were set, gear settings, proposal rows)``."""
+    from geardesign.spur.calculator import _strength_inputs
+    from geardesign.spur.checks import geometry_checks, strength_checks
+    from geardesign.spur.strength import method
+
+    rate = method(spec.data["options"]["method"]).rate
+
+    d = spec.data
+    des = dict(d["design"])
+    des["allow_undercut"] = False
+    if d["material"] is None:
+        raise InputError(Problem("material", "missing table [material.pinion] and "
+                                 "[material.wheel]: the design mode sizes the pair for them"))
+    inputs = _strength_inputs(spec, des)
+    mats, duty, setting = inputs
+    r = d["rack"]
+    rack = BasicRack(math.radians(des["pressure_angle"]), r["addendum_coef"], r["clearance_coef"],
+                     r["root_radius_coef"])
+    u_req = des["ratio"]
+    beta0 = math.radians(des["helix_angle"])
+    helical = des["helix_angle"] > 0.0
+    psi_ba = des["psi_ba"]
+
+    s1, s2 = preliminary_sigma_hp(mats, duty, u_req)
+    sigma_HP = G.sigma_hp_pair(s1, s2, helical)
+    soft_pair = min(m.HB for m in mats) <= 350.0
+    psi_bd = psi_ba * (u_req + 1.0) / 2.0
+    K_Hb = G.k_h_beta(setting.scheme, psi_bd, soft_pair)
+    a_est = G.center_distance_estimate(duty.T1 * duty.K_A, u_req, K_Hb, psi_ba, sigma_HP, helical)
+    series = [a for a in _series(des["center_distance_series"]) if a >= a_est * (1 - 1e-9)]
+    if not series:
+        raise InputError.at("design.ratio", u_req,
+                            f"the estimated centre distance {a_est:.0f} mm exceeds the GOST 2185 "
+                            f"series; split the drive into stages")
+
+    tried = 0
+    best = None
+    for a_w in series[:A_W_STEPS]:
+        m_lo, m_hi = MODULE_MIN_RATIO * a_w, MODULE_MAX_RATIO * a_w
+        modules = [m for m in sorted(T.MODULES_1) if m_lo - 1e-9 <= m <= m_hi + 1e-9]
+        for m in modules:
+            cand = _candidate(a_w, m, u_req, des, beta0, helical, psi_ba, rack)
+            if cand is None:
+                continue
+            tried += 1
+            p, how = cand
+            try:
+                g = pair_geometry(p)
+            except GeometryError:
+                continue
+            ok = not [c for c in geometry_checks(g, sliding_at_ends(g), False)
+                      if not c.passed and c.severity == "error"]
+            rating = rate(g, mats, duty, setting)
+            checks = strength_checks(rating.v, mats, helical, setting.grade,
+                                     duty.T_peak is not None)
+            ok = ok and not [c for c in checks if not c.passed and c.severity == "error"]
+            best = (g, how, a_w, m)
+            if ok:
+                return _result(g, how, des, a_est, a_w, sigma_HP, K_Hb, u_req, tried, True)
+    if best is None:
+        raise InputError.at("design.ratio", u_req,
+                            "no pair of standard module and whole tooth numbers fits this ratio "
+                            "within the tolerance; widen design.ratio_tolerance or lower "
+                            "design.z1_min")
+    g, how, a_w, m = best
+    return _result(g, how, des, a_est, a_w, sigma_HP, K_Hb, u_req, tried, False)
+
+
+def _candidate(a_w: float, m: float, u: float, des: dict, beta0: float, helical: bool,
+               psi_ba: float, rack: BasicRack):
+    z_sum = int(math.floor(2.0 * a_w * math.cos(beta0) / m + 1e-9))
+    z1 = max(int(round(z_sum / (u + 1.0))), des["z1_min"])
+    z2 = z_sum - z1
+    if z2 < z1 or abs(z2 / z1 - u) / u * 100.0 > des["ratio_tolerance"]:
+        return None
+    b_w = float(math.ceil(psi_ba * a_w))
+    if helical:
+        c = m * z_sum / (2.0 * a_w)
+        if c >= 1.0:
+            return None
+        beta = math.acos(c)
+        return PairInput(m, z1, z2, 0.0, 0.0, beta, b_w, rack), "x1 = x2 = 0 (β fitted to a_w)"
+    try:
+        x_sum, _ = shift_sum_for_center_distance(a_w, m, z1, z2, rack.alpha_n, 0.0)
+    except GeometryError:
+        return None
+    if abs(x_sum) < 1e-9:
+        return PairInput(m, z1, z2, 0.0, 0.0, 0.0, b_w, rack), "x1 = x2 = 0"
+    base = PairInput(m, z1, z2, 0.0, 0.0, 0.0, b_w, rack)
+    try:
+        x1 = balanced_shift_split(base, x_sum)
+    except GeometryError:
+        return None
+    return PairInput(m, z1, z2, x1, x_sum - x1, 0.0, b_w, rack), "equal specific sliding"
+
+
+def _result(g: PairGeometry, how: str, des: dict, a_est: float, a_w: float, sigma_HP: float,
+            K_Hb: float, u_req: float, tried: int, ok: bool):
+    p = g.inp
+    gear = dict(des)
+    rows = [
+        ("sigma_HP_design", sigma_HP, "MPa", "σ_HP'", "preliminary allowable contact stress "
+         "(Z_R·Z_v·Z_X = 0.9)", "GOST 21354-87"),
+        ("K_Hbeta_design", K_Hb, "-", "K_Hβ'", "face load factor at ψ_bd = ψ_ba(u+1)/2",
+         "GOST 21354-87 chart"),
+        ("a_w_estimate", a_est, "mm", "a_w'", "design centre distance K_a(u+1)∛(T1K_Hβ/(ψ_ba u σ_HP²))",
+         "GOST 21354-87"),
+        ("a_w_proposed", a_w, "mm", "a_w", "proposed centre distance (GOST 2185 series)",
+         "GOST 2185-66"),
+        ("module_proposed", p.m_n, "mm", "m_n", "proposed module (GOST 9563 series)",
+         "GOST 9563-60"),
+        ("z1_proposed", p.z1, "-", "z1", "pinion teeth", "design"),
+        ("z2_proposed", p.z2, "-", "z2", "wheel teeth", "design"),
+        ("helix_angle_proposed", p.beta, "rad", "β", "helix angle", "design"),
+        ("face_width_proposed", p.b_w, "mm", "b_w", "face width ψ_ba·a_w", "GOST 2185-66"),
+        ("ratio_error", (p.z2 / p.z1 - u_req) / u_req * 100.0, "%", "Δu", "ratio deviation",
+         "design"),
+        ("candidates", tried, "-", "", "candidate pairs rated", "design"),
+        ("proposal_passes", ok, None, "", "the proposal passes every error check", "design"),
+    ]
+    return g, how, gear, rows
