@@ -125,12 +125,12 @@ def run_cmd(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT
     _emit(specs, format, output, quiet)
 
 
-def _kind_command(kind: str, summary: str):
+def _kind_command(kind: str):
     def command(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
                 output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET) -> None:
         _emit(specs, format, output, quiet, expect_kind=kind)
 
-    command.__doc__ = f"Compute {kind} spec(s): {summary}."
+    command.__doc__ = f"Compute {kind} spec(s) (see `geardesign list`)."
     return command
 
 
@@ -140,8 +140,9 @@ _registered = False
 def _register_kinds() -> None:
     global _registered
     if not _registered:
-        for calc in registry.all_calculators():
-            app.command(calc.kind)(_kind_command(calc.kind, calc.summary))
+        # by name only: a calculator's modules are imported when a spec of its kind runs
+        for kind in registry.known_kinds():
+            app.command(kind)(_kind_command(kind))
         _registered = True
 
 
