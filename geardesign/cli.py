@@ -18,7 +18,7 @@ import typer
 
 from geardesign import __version__
 from geardesign.core import registry
-from geardesign.core.errors import InputError
+from geardesign.core.errors import InputError, Problem
 
 app = typer.Typer(
     add_completion=False,
@@ -54,21 +54,31 @@ def _choose_format(fmt: Optional[Format], output: Optional[Path]) -> str:
     return "table" if sys.stdout.isatty() else "json"
 
 
-def _compute_all(paths: List[Path], expect_kind: Optional[str]):
+def _compute_all(paths: List[Path], expect_kind: Optional[str], mode: Optional[str] = None):
+    """Compute every spec; ``mode`` (from ``--select``/``--design``) overrides the spec's
+    top-level ``mode`` key for calculators that have one."""
     results, problems = [], []
     for path in paths:
         try:
-            results.append(registry.run(path, expect_kind))
+            calc, spec = registry.load(path, expect_kind)
+            if mode is not None:
+                field = calc.schema.root.member("mode")
+                if field is None or mode not in (field.choices or ()):
+                    raise InputError(Problem("", f"--{mode} does not apply to a {calc.kind} spec"))
+                spec.data["mode"] = mode
+                if "mode" in spec.assumed:
+                    spec.assumed.remove("mode")
+            results.append(calc.compute(spec))
         except InputError as exc:
             problems.extend(p.line(str(path)) for p in exc.problems)
     return results, problems
 
 
 def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quiet: bool,
-          expect_kind: Optional[str] = None) -> None:
+          expect_kind: Optional[str] = None, mode: Optional[str] = None) -> None:
     from geardesign.core.render import render, write_atomic
 
-    results, problems = _compute_all(paths, expect_kind)
+    results, problems = _compute_all(paths, expect_kind, mode)
     if problems:
         for line in problems:
             _err(line)
@@ -104,6 +114,9 @@ OPT_QUIET = typer.Option(False, "--quiet", "-q",
                          help="No report on stdout and no notes on stderr; the exit code tells "
                               "the verdict (input errors are still printed).")
 ARG_SPECS = typer.Argument(..., help="Spec file(s), TOML.", show_default=False)
+OPT_SELECT = typer.Option(False, "--select",
+                          help="Selection mode, as mode = \"select\" in the spec (bearing: the "
+                               "smallest catalogue bearing that meets the required life).")
 
 
 def _version(value: bool) -> None:
@@ -120,15 +133,17 @@ def _main(version: bool = typer.Option(False, "--version", callback=_version, is
 
 @app.command("run")
 def run_cmd(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
-            output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET) -> None:
+            output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET,
+            select: bool = OPT_SELECT) -> None:
     """Compute one or more specs, dispatching on each spec's `kind`."""
-    _emit(specs, format, output, quiet)
+    _emit(specs, format, output, quiet, mode="select" if select else None)
 
 
 def _kind_command(kind: str):
     def command(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
-                output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET) -> None:
-        _emit(specs, format, output, quiet, expect_kind=kind)
+                output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET,
+                select: bool = OPT_SELECT) -> None:
+        _emit(specs, format, output, quiet, expect_kind=kind, mode="select" if select else None)
 
     command.__doc__ = f"Compute {kind} spec(s) (see `geardesign list`)."
     return command

@@ -193,3 +193,15 @@ def test_real_process_json_only_on_stdout_and_no_heavy_imports(good):
     assert proc.stderr.strip() == "HEAVY="
     proc = cli_process("run", good, "--format", "json")
     assert proc.returncode == 0 and json.loads(proc.stdout)["verdict"] == "pass"
+
+
+def test_select_option(tmp_path, good):
+    from tests.conftest import SPECS
+
+    text = (SPECS / "bearing_select.toml").read_text(encoding="utf-8")
+    path = tmp_path / "b.toml"
+    path.write_text(text.replace('mode = "select"', 'mode = "check"'), encoding="utf-8")
+    code, out, _ = cli("bearing", path, "--select", "--format", "json")
+    assert "selection" in json.loads(out)["results"]
+    code, out, err = cli("run", good, "--select")
+    assert code == 2 and out == "" and err.strip().endswith("--select does not apply to a spur spec")
