@@ -141,14 +141,15 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
         for row in rows:
             note = row.source if with_source else ("assumed" if row.assumed else "")
             value = fmt(row.value) + ("*" if row.assumed else "")
-            t.add_row(row.symbol, row.name, value, row.unit or "", note)
+            t.add_row(Text(row.symbol), Text(row.name), Text(value), Text(row.unit or ""),
+                      Text(note))
         return t
 
     for i, r in enumerate(results):
         if i:
             console.print()
         console.print(Text(_header(r), style="bold"))
-        console.print("Methods: " + ", ".join(r.methods))
+        console.print(Text("Methods: " + ", ".join(r.methods)))
         console.print()
         console.print(rows_table("Inputs  (* assumed default)", r.input_rows, with_source=False))
         console.print()
@@ -162,7 +163,8 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
         t.add_column("message")
         for c in r.checks:
             mark, word, style = _status(c)
-            t.add_row(Text(f"{mark} {word}", style=style), Text(c.code, style=style), c.message)
+            t.add_row(Text(f"{mark} {word}", style=style), Text(c.code, style=style),
+                      Text(c.message))
         console.print(t)
         style = "bold red" if r.failed else "bold green"
         console.print(Text(verdict_line(r), style=style))
