@@ -111,6 +111,31 @@ def hrc_from_hv(hv: float) -> float:
     return 0.5 * (lo + hi)
 
 
+@dataclass(frozen=True)
+class TreatmentLimits:
+    """The GOST 21354-87 data of a treatment class at a hardness (no grade needed)."""
+
+    sigma_Hlim: float
+    sigma_Flim: float
+    S_H: float
+    S_F: float
+    Z_N_max: float
+    gamma_A: float
+    q_F: int
+
+
+def treatment_limits(treatment: str, HB: float) -> TreatmentLimits:
+    """Endurance limits and required safety factors of a homogeneous treatment
+    (``normalized``, ``improved``) at a Brinell hardness, from ``gear_steel.toml``: used by
+    calculators that borrow the GOST 21354-87 allowables (e.g. Novikov gears)."""
+    t = library()["treatment"][treatment]
+    if t["hardness"] != "HB":
+        raise ValueError(f"treatment {treatment!r} is not rated by HB")
+    values = {"HB": HB}
+    return TreatmentLimits(linear(t["sigma_Hlim"], values), linear(t["sigma_Flim"], values),
+                           t["S_H"], t["S_F"], t["Z_N_max"], t["gamma_A"], int(t["q_F"]))
+
+
 # --- the material -----------------------------------------------------------------------
 
 

@@ -59,15 +59,19 @@ def z_eps(eps_alpha: float, eps_beta: float) -> float:
 
 
 def sigma_h(Z_E: float, Z_H: float, Z_eps: float, F_t: float, K_H: float, u: float,
-            b_w: float, d1: float) -> float:
-    """Contact stress σ_H [MPa] of an external pair.
+            b_w: float, d1: float, internal: bool = False) -> float:
+    """Contact stress σ_H [MPa] of an external (or internal) pair.
 
-    .. math:: σ_H = Z_E Z_H Z_ε \\sqrt{\\frac{F_{tH} K_H (u + 1)}{b_w d_1 u}}
+    .. math:: σ_H = Z_E Z_H Z_ε \\sqrt{\\frac{F_{tH} K_H (u \\pm 1)}{b_w d_1 u}}
 
-    F_tH = 2000·T1/d1 [N] at the reference circle, K_H = K_A K_Hv K_Hβ K_Hα, b_w [mm].
-    References: GOST 21354-87; ZPCIL ``CONTAU.h`` (``FTH = 2000*TQ/D1``, ``DSH = D1``).
+    F_tH = 2000·T1/d1 [N] at the reference circle, K_H = K_A K_Hv K_Hβ K_Hα, b_w [mm];
+    "+" for an external pair, "−" for an internal pair (``internal=True``, u = z2/z1 of
+    the internal gear over the pinion): the reduced curvature of concave and convex flanks.
+    References: GOST 21354-87; ZPCIL ``CONTAU.h`` (``FTH = 2000*TQ/D1``, ``DSH = D1``);
+    ISO 6336-2 §5 (u < 0 for internal gears); ``planetary.md`` D.5.
     """
-    return Z_E * Z_H * Z_eps * math.sqrt(F_t * K_H * (u + 1.0) / (b_w * d1 * u))
+    s = -1.0 if internal else 1.0
+    return Z_E * Z_H * Z_eps * math.sqrt(F_t * K_H * (u + s) / (b_w * d1 * u))
 
 
 def n_hg(HB: float) -> float:
@@ -151,6 +155,23 @@ def y_fs(z_v_: float, x: float) -> float:
     References: GOST 21354-87 (chart); ``standards_check.md`` §1 (Y_FS rows).
     """
     return 3.47 + 13.2 / z_v_ - 29.7 * x / z_v_ + 0.092 * x * x
+
+
+def y_fs_internal(x: float) -> float:
+    """Tooth form factor Y_FS of an internal gear: the rack limit (z_v -> ∞) of
+    :func:`y_fs`.
+
+    .. math:: Y_{FS} = 3.47 + 0.092 x^2
+
+    x in the GOST 19274-73 sign (positive: thinner internal teeth).  The GOST 21354-87
+    chart of Y_FS for internal teeth could not be consulted (``standards_check.md`` §6):
+    an internal tooth is wider at its root than the basic-rack tooth, so the rack value
+    overestimates the root stress.  KISSsoft (ISO 6336-3 method B, shaper-cut rings)
+    prints Y_F·Y_S = 2.71 and 2.81 for the NREL 5 MW stage-1 and stage-2 rings, where
+    this gives 3.49 and 3.47: conservative by about 25 %.  An approximation, to be
+    replaced by the standard's chart; a designer may give Y_FS directly.
+    """
+    return 3.47 + 0.092 * x * x
 
 
 def y_beta(eps_beta: float, beta: float) -> float:
@@ -288,6 +309,13 @@ def base_pitch_deviation(m: float, d: float, grade: int) -> float:
     """Limit base pitch deviation f_pb [µm] (GOST 1643-81 tolerance as fitted by ZPCIL
     ``FPB.h``): f_pb = (1.25m + 0.31√d + 16)·0.94·1.4^(n − 8)."""
     return (1.25 * m + 0.31 * math.sqrt(d) + 16.0) * 0.94 * 1.4 ** (grade - 8)
+
+
+def tooth_direction_tolerance(b: float, grade: int) -> float:
+    """Tooth direction tolerance F_β [µm] for the contact-norm grade (GOST 1643-81 as
+    fitted by ZPCIL ``FCBE.h``, used by its K_Hβ routine ``AKHB0.h``):
+    F_β = (2√b + 10)·1.4^(n − 8), b the face width [mm]."""
+    return (2.0 * math.sqrt(b) + 10.0) * 1.4 ** (grade - 8)
 
 
 def k_alpha(eps_alpha: float, eps_beta: float, c_gamma: float, b_w: float, f_pb: float,
