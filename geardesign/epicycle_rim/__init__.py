@@ -1,0 +1,22 @@
+"""Ring gear (epicycle) rim of a planetary train: probabilistic fatigue of the thin rim and
+parametric resonance of the ring.
+
+Modules: :mod:`.stress` (fillet and rim stresses, mean-stress correction), :mod:`.endurance`
+(part endurance limit by GOST 25.504-82, scatter, probability, life), :mod:`.mesh` (planet
+positions, mesh phases, stiffness pulsation), :mod:`.mathieu` (Mathieu/Ince-Strutt,
+Floquet), :mod:`.resonance` (resonance frequencies and speeds), :mod:`.rim` (thin-rim
+factors), :mod:`.checks`, :mod:`.spec`, :mod:`.calculator`.
+"""
+
+from geardesign.core.registry import Calculator
+from geardesign.epicycle_rim.calculator import compute
+from geardesign.epicycle_rim.spec import SCHEMA
+
+CALCULATOR = Calculator(
+    kind="epicycle_rim",
+    summary="ring-gear rim: probabilistic fatigue of the thin rim, parametric resonance",
+    methods=("GOST 25.504-82 (Serensen-Kogaev)", "Gutyria et al. 2017",
+             "Yaglinskyi et al. 2017", "Mathieu/Floquet"),
+    schema=SCHEMA,
+    compute=compute,
+)
