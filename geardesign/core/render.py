@@ -135,7 +135,7 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
                   show_edge=False, pad_edge=False)
         t.add_column("symbol", no_wrap=True)
         t.add_column("name")
-        t.add_column("value", justify="right", no_wrap=True)
+        t.add_column("value", justify="right", overflow="fold", max_width=40)
         t.add_column("unit", no_wrap=True)
         t.add_column("source" if with_source else "", style="dim")
         for row in rows:

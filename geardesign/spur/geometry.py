@@ -152,6 +152,18 @@ def transverse_angles(alpha_n: float, beta: float) -> tuple[float, float]:
     return alpha_t, beta_b
 
 
+def undercut_shift_limit(z: int, alpha_t: float, beta: float, rack: BasicRack) -> float:
+    """Least profile shift without undercut when cut by the rack (or a rack-like tool).
+
+    .. math:: x_{min} = (h_l^* - h_a^*) - \\frac{z \\sin^2 α_t}{2 \\cos β}
+
+    h_l* − h_a* = :attr:`BasicRack.h_straight` (1 for GOST 13755-81).
+    References: GOST 16532-70 (quality checks); ZPCIL ``GEOM.h`` (``standards_check.md``
+    §2.6).  The worm calculator uses it for the wheel's mid-plane (β = 0, α_t = α_x).
+    """
+    return rack.h_straight - z * math.sin(alpha_t) ** 2 / (2.0 * math.cos(beta))
+
+
 def working_pressure_angle(x_sum: float, z1: int, z2: int, alpha_n: float, alpha_t: float) -> float:
     """Working transverse pressure angle α_tw from the sum of shifts.
 
@@ -325,7 +337,7 @@ def pair_geometry(p: PairInput) -> PairGeometry:
         alpha_a = math.acos(d_b / d_a)
         rho_a = 0.5 * d_b * math.tan(alpha_a)
         rho_l = 0.5 * d * sin_at - (hl - x) * p.m_n / sin_at
-        x_min = hl - z * sin_at ** 2 / (2.0 * math.cos(p.beta))
+        x_min = undercut_shift_limit(z, alpha_t, p.beta, rack)
         s_n = p.m_n * (0.5 * math.pi + 2.0 * x * math.tan(alpha_n))
         beta_a = math.atan(math.tan(p.beta) * d_a / d)
         s_an = d_a * ((0.5 * math.pi + 2.0 * x * math.tan(alpha_n)) / z + inv(alpha_t) - inv(alpha_a)) \

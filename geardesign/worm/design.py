@@ -1,0 +1,94 @@
+"""Design mode: propose the centre distance and a standard (m, q, x) set for a torque, a
+ratio and a wheel material (method note ``shared/methods/worm_wave_clutch_geneva.md``
+§A+.4 "design centre distance" and §A+.9; GOST 2144-76 series).
+
+Pure functions; the contact-stress design formula itself is
+:func:`geardesign.worm.strength.required_center_distance`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from geardesign.worm import tables
+from geardesign.worm.geometry import X_MAX, shift_for_center_distance
+
+STIFFNESS_Q_RATIO = 0.212
+"""q >= 0.212·z2 keeps the worm stiff enough (Dunaev & Lelikov; method note §A+.1)."""
+
+PREFERRED_SHIFT = (-0.5, 0.7)
+"""Preferred range of the wheel shift (method note §A+.9; GOST 19650-97 allows ±1)."""
+
+
+def starts_for_ratio(u: float) -> int:
+    """Worm starts for a ratio: 4 for u <= 14, 2 for 14 < u <= 30, 1 above (method note
+    §A+.1; the Pascal program splits at 16 and 32)."""
+    if u <= 14.0:
+        return 4
+    if u <= 30.0:
+        return 2
+    return 1
+
+
+def default_q(z2: int) -> float:
+    """Smallest first-row diameter factor (GOST 19672-74) with q >= 0.212·z2, at most 25."""
+    need = STIFFNESS_Q_RATIO * z2
+    for q in tables.series()["q_1"]:
+        if q >= need - 1e-9:
+            return q
+    return tables.series()["q_1"][-1]
+
+
+def round_up_center_distance(a_w: float, rows: str = "first") -> float | None:
+    """The next GOST 2144-76 centre distance >= ``a_w`` (first row, or both rows), None when
+    ``a_w`` exceeds the series."""
+    s = tables.series()
+    values = list(s["center_distance_1"])
+    if rows == "both":
+        values = sorted(values + list(s["center_distance_2"]))
+    for v in values:
+        if v >= a_w - 1e-9:
+            return v
+    return None
+
+
+def is_standard_pair(m: float, q: float) -> tuple[bool, bool, bool]:
+    """(m in a GOST 19672-74 module row, q in a q row, (m, q) a recommended pair)."""
+    s = tables.series()
+    m_ok = any(abs(m - v) < 1e-9 for v in s["module_1"] + s["module_2"])
+    q_ok = any(abs(q - v) < 1e-9 for v in s["q_1"] + s["q_2"])
+    rec = tables.recommended_q(m)
+    return m_ok, q_ok, rec is not None and any(abs(q - v) < 1e-9 for v in rec)
+
+
+@dataclass(frozen=True)
+class Proposal:
+    m: float
+    q: float
+    x: float
+    standard: bool   # m and q from the series with |x| <= 1
+
+
+def choose_module(a_w: float, z2: int, q0: float, q_fixed: bool) -> Proposal:
+    """Standard module and diameter factor for the centre distance ``a_w``.
+
+    Every (m, q) of the GOST 19672-74 rows (only q = q0 when ``q_fixed``) with
+    |x| <= 1, x = a_w/m − 0.5 (q + z2), is ranked: first-row m, first-row q, a recommended
+    pair, x within −0.5 ... +0.7, q closest to q0, smallest |x|.  Without any, the module
+    m = 2 a_w/(q0 + z2) with x = 0 is returned as not standard.
+    """
+    s = tables.series()
+    best = None
+    for m in s["module_1"] + s["module_2"]:
+        for q in ([q0] if q_fixed else s["q_1"] + s["q_2"]):
+            x = shift_for_center_distance(a_w, m, q, z2)
+            if abs(x) > X_MAX:
+                continue
+            _, _, rec = is_standard_pair(m, q)
+            score = (m not in s["module_1"], q not in s["q_1"], not rec,
+                     not PREFERRED_SHIFT[0] <= x <= PREFERRED_SHIFT[1], abs(q - q0), abs(x))
+            if best is None or score < best[0]:
+                best = (score, Proposal(m, q, x, True))
+    if best is None:
+        return Proposal(2.0 * a_w / (q0 + z2), q0, 0.0, False)
+    return best[1]
