@@ -54,13 +54,21 @@ class Calculator:
         """An empty result that echoes the inputs (assumed defaults marked)."""
         assumed = set(spec.assumed)
         rows = [
-            Row(key, value, field.unit if field.numeric else None,
-                field.symbol or key.rsplit(".", 1)[-1], field.description, "", key in assumed)
+            Row(key, value, field.unit if field.numeric else None, _symbol(key, field.symbol),
+                field.description, "", key in assumed)
             for key, field, value in iter_fields(self.schema.root, spec.data)
             if key != "kind"
         ]
         return Result(self.kind, spec.data.get("title"), list(self.methods), spec.data, rows,
                       source=spec.source)
+
+
+def _symbol(key: str, symbol: str) -> str:
+    """The report symbol of an input: its own, prefixed by the item of an array of tables
+    it belongs to (``stage[1].name``)."""
+    head, _, last = key.rpartition(".")
+    symbol = symbol or last
+    return f"{head}.{symbol}" if "[" in head else symbol
 
 
 def known_kinds() -> list[str]:

@@ -95,24 +95,40 @@ def _md_rows(rows: list[Row], with_source: bool) -> list[str]:
     return out
 
 
-def to_markdown(results: list[Result]) -> str:
+def _md_table(t) -> list[str]:
+    heads = [h + (f" [{u}]" if u not in (None, "-") else "") for _, h, u in t.columns]
+    out = ["| " + " | ".join(_md_escape(h) for h in heads) + " |",
+           "|" + "---|" * len(t.columns)]
+    for row in t.rows:
+        out.append("| " + " | ".join(_md_escape(fmt(row.get(k))) for k, _, _ in t.columns) + " |")
+    return out
+
+
+def to_markdown(results: list[Result], level: int = 1) -> str:
     lines: list[str] = []
+    h = "#" * level
     for r in results:
-        lines.append(f"# {_header(r)}")
+        lines.append(f"{h} {_header(r)}")
         lines.append("")
         lines.append("Methods: " + ", ".join(r.methods))
         lines.append("")
-        lines.append("## Inputs")
+        lines.append(f"{h}# Inputs")
         lines.append("")
         lines += _md_rows(r.input_rows, with_source=False)
+        for t in r.tables:
+            lines += ["", f"{h}# {t.title}", ""]
+            lines += _md_table(t)
         for sec in r.sections:
-            lines += ["", f"## {sec.title}", ""]
+            lines += ["", f"{h}# {sec.title}", ""]
             lines += _md_rows(sec.rows, with_source=True)
-        lines += ["", "## Checks", "", "| status | code | message |", "|---|---|---|"]
+        lines += ["", f"{h}# Checks", "", "| status | code | message |", "|---|---|---|"]
         for c in r.checks:
             mark, word, _ = _status(c)
             lines.append(f"| {mark} {word} | {c.code} | {_md_escape(c.message)} |")
         lines += ["", f"**{verdict_line(r)}**", ""]
+        for _, title, part in r.parts:
+            lines += [f"{h}# {title}", ""]
+            lines.append(to_markdown([part], level + 1))
     return "\n".join(lines)
 
 
@@ -145,14 +161,24 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
                       Text(note))
         return t
 
-    for i, r in enumerate(results):
-        if i:
-            console.print()
+    def data_table(t) -> Table:
+        tab = Table(title=t.title, title_justify="left", title_style="bold", box=box.SIMPLE_HEAD,
+                    show_edge=False, pad_edge=False)
+        for _, head, unit in t.columns:
+            tab.add_column(head + (f" [{unit}]" if unit not in (None, "-") else ""))
+        for row in t.rows:
+            tab.add_row(*(Text(fmt(row.get(k))) for k, _, _ in t.columns))
+        return tab
+
+    def one(r: Result) -> None:
         console.print(Text(_header(r), style="bold"))
         console.print(Text("Methods: " + ", ".join(r.methods)))
         console.print()
         console.print(rows_table("Inputs  (* assumed default)", r.input_rows, with_source=False))
         console.print()
+        for t in r.tables:
+            console.print(data_table(t))
+            console.print()
         for sec in r.sections:
             console.print(rows_table(sec.title, sec.rows, with_source=True))
             console.print()
@@ -168,6 +194,15 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
         console.print(t)
         style = "bold red" if r.failed else "bold green"
         console.print(Text(verdict_line(r), style=style))
+        for _, title, part in r.parts:
+            console.print()
+            console.rule(Text(title))
+            one(part)
+
+    for i, r in enumerate(results):
+        if i:
+            console.print()
+        one(r)
     return buf.getvalue()
 
 

@@ -51,6 +51,18 @@ class Section:
         self.rows.append(Row(key, value, unit, symbol or key, name, source))
 
 
+@dataclass
+class DataTable:
+    """A table of records (e.g. one row per stage of a drive): ``columns`` are
+    ``(key, header, unit)``; each row is a dict by column key.  In JSON it is
+    ``results.<key>`` = a list of objects, with units ``results.<key>[].<column>``."""
+
+    key: str
+    title: str
+    columns: list
+    rows: list = field(default_factory=list)
+
+
 @dataclass(frozen=True)
 class Check:
     """A design check.  ``severity`` is ``error`` (fails the design), ``warning`` or
@@ -95,6 +107,10 @@ class Result:
     sections: list[Section] = field(default_factory=list)
     checks: list[Check] = field(default_factory=list)
     source: str = ""
+    tables: list[DataTable] = field(default_factory=list)
+    parts: list = field(default_factory=list)
+    """Nested results ``(key, title, Result)``, e.g. the stages of a drive: reported after
+    this one, and in JSON under ``results.<key>`` as full documents."""
 
     def section(self, key: str, title: str) -> Section:
         for s in self.sections:
@@ -106,6 +122,8 @@ class Result:
 
     @property
     def failed(self) -> list[Check]:
+        """Failed error checks.  A result with parts carries a check of its own for each
+        failing part (so that the summary names it)."""
         return [c for c in self.checks if not c.passed and c.severity == "error"]
 
     @property
@@ -133,6 +151,13 @@ class Result:
                 block[row.key] = _clean(row.value)
                 if row.unit is not None and (_is_number(row.value) or _is_number_list(row.value)):
                     units[f"results.{sec.key}.{row.key}"] = row.unit
+        for t in self.tables:
+            results[t.key] = [{k: _clean(row.get(k)) for k, _, _ in t.columns} for row in t.rows]
+            for k, _, unit in t.columns:
+                if unit is not None:
+                    units[f"results.{t.key}[].{k}"] = unit
+        for key, _, part in self.parts:
+            results.setdefault(key, []).append(part.document())
         return {
             "geardesign": __version__,
             "kind": self.kind,

@@ -189,6 +189,9 @@ class Table:
     required: bool = True
     hint: str = ""
     implicit: bool = False
+    open: bool = False
+    """An open table keeps keys it does not declare, unvalidated (e.g. a drive stage: its
+    own calculator validates them)."""
 
     def member(self, key: str) -> "Field | Table | None":
         for f in self.fields:
@@ -213,6 +216,8 @@ class TableList:
     max_items: int | None = None
     examples: tuple = ()
     hint: str = ""
+    in_template: bool = True
+    """False: the template names the table in a comment instead of writing an example."""
 
     def rule(self) -> str:
         count = (f"{self.min_items} to {self.max_items}" if self.max_items is not None
@@ -268,7 +273,9 @@ def _validate_table(table: Table, data: Any, path: str, problems: list, assumed:
     out: dict = {}
     known = [m.key for m in table.fields]
     for key, value in data.items():
-        if key not in known:
+        if key not in known and table.open:
+            out[key] = value
+        elif key not in known:
             close = difflib.get_close_matches(key, known, 1, 0.6) or [
                 k for k in known if k.lower() == key.lower()
             ]
@@ -452,7 +459,7 @@ def _table_schema(t: Table) -> dict:
     js["properties"] = props
     if required:
         js["required"] = required
-    js["additionalProperties"] = False
+    js["additionalProperties"] = bool(t.open)
     return js
 
 
@@ -511,6 +518,34 @@ def _field_line(f: Field, value: Any = None, comments: bool = True) -> str:
     return f"# {f.key} ={comment}"
 
 
+def _template_items(sub: TableList, path: str, lines: list[str]) -> None:
+    """``[[path]]`` entries of an array of tables, from its examples; tables nested in an
+    item are written after it (open tables only as a header and a comment)."""
+    if not sub.in_template:
+        lines.append("")
+        lines.append(f"# [[{path}]]: {sub.description} ({sub.rule()}, optional). {sub.hint}")
+        return
+    examples = sub.examples or ({f.key: f.example for f in sub.item.fields
+                                 if isinstance(f, Field) and f.example is not None},)
+    lines.append("")
+    lines.append(f"# {sub.description}: {sub.rule()}" + ("" if sub.required else " (optional)"))
+    if sub.hint:
+        lines.append(f"# {sub.hint}")
+    for i, example in enumerate(examples):
+        lines.append(f"[[{path}]]")
+        for f in sub.item.fields:
+            if isinstance(f, Field) and (f.key in example or i == 0):
+                lines.append(_field_line(f, example.get(f.key), comments=(i == 0)))
+        for f in sub.item.fields:
+            if isinstance(f, TableList):
+                _template_items(f, f"{path}.{f.key}", lines)
+            elif isinstance(f, Table) and (f.required or f.fields):
+                lines.append(f"[{path}.{f.key}]  # {f.description}")
+                for g in f.fields:
+                    if isinstance(g, Field):
+                        lines.append(_field_line(g, g.example))
+
+
 def _template_table(t: Table, path: str, lines: list[str], alternatives: dict | None = None
                     ) -> None:
     alternatives = alternatives or {}
@@ -530,18 +565,7 @@ def _template_table(t: Table, path: str, lines: list[str], alternatives: dict | 
     for sub in t.fields:
         sub_path = _join(path, sub.key)
         if isinstance(sub, TableList):
-            examples = sub.examples or ({f.key: f.example for f in sub.item.fields
-                                         if isinstance(f, Field) and f.example is not None},)
-            lines.append("")
-            lines.append(f"# {sub.description}: {sub.rule()}"
-                         + ("" if sub.required else " (optional)"))
-            if sub.hint:
-                lines.append(f"# {sub.hint}")
-            for i, example in enumerate(examples):
-                lines.append(f"[[{sub_path}]]")
-                for f in sub.item.fields:
-                    if f.key in example or i == 0:
-                        lines.append(_field_line(f, example.get(f.key), comments=(i == 0)))
+            _template_items(sub, sub_path, lines)
         elif isinstance(sub, Table):
             if sub.key in alternatives:
                 first = alternatives[sub.key]

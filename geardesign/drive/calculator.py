@@ -1,0 +1,292 @@
+"""``kind = "drive"``: a whole drive, motor to output.
+
+Torque, speed and power are carried from stage to stage with each stage's efficiency;
+every stage is computed by its own calculator (:mod:`.stages`); shafts on two bearings get
+their reactions from the gear forces (:mod:`.shafts`) and each bearing its life from the
+bearing calculator; the bearings' system life follows.  If the driven machine's torque is
+given, the stages are rated for it (the torque is carried back to the motor, which is then
+checked); otherwise for the motor's nominal torque.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+from geardesign.core.errors import InputError, Problem
+from geardesign.core.registry import run_data
+from geardesign.core.result import DataTable, Result, check
+from geardesign.core.spec import ValidatedSpec, load_toml
+from geardesign.drive import split as SPLIT
+from geardesign.drive.shafts import reactions
+from geardesign.drive.stages import ADAPTERS, Duty, StageRun
+
+DRIVE_KEYS = ("name", "file", "efficiency")
+
+
+def _torque_from_power(P: float, n: float) -> float:
+    from geardesign.spur.loads import torque_from_power
+
+    return torque_from_power(P, n)
+
+
+def resolve_stages(stages: list, base: Path | None, where: str = "stage",
+                   chain: tuple = ()) -> list[tuple[str, str, dict, float | None]]:
+    """Stage specs in order: ``(where, name, data, efficiency)``.  A ``file`` is read
+    relative to ``base``; a stage file that is itself a drive contributes its stages (in
+    place).  Missing files and cycles of references are input errors."""
+    out = []
+    for i, st in enumerate(stages):
+        key = f"{where}[{i}]"
+        name = st.get("name") or f"stage {len(out) + 1}"
+        extra = {k: v for k, v in st.items() if k not in DRIVE_KEYS and v is not None}
+        if st.get("file") is not None:
+            if set(extra) - {"kind"}:
+                raise InputError.at(f"{key}.file", st["file"], "give a file or the stage's "
+                                    "tables inline, not both")
+            path = Path(st["file"])
+            if not path.is_absolute() and base is not None:
+                path = base / path
+            path = path.resolve()
+            if path in chain:
+                raise InputError.at(f"{key}.file", st["file"],
+                                    "the stage files refer to each other in a cycle: "
+                                    + " -> ".join(p.name for p in chain + (path,)))
+            try:
+                data = load_toml(path)
+            except InputError as exc:
+                raise InputError.at(f"{key}.file", st["file"],
+                                    f"{exc.problems[0].message} ({path})") from None
+            if data.get("kind") == "drive":
+                inner = data.get("stage") or []
+                out += resolve_stages(inner, path.parent, f"{key}→{path.name}:stage",
+                                      chain + (path,))
+                continue
+            out.append((f"{key} ({path.name})", name, data, st.get("efficiency")))
+        else:
+            if st.get("kind") is None:
+                raise InputError(Problem(f"{key}.kind", "missing; give the stage's calculator "
+                                         "(kind = \"spur\", \"worm\", \"novikov\") and its "
+                                         "tables, or file = a spec file"))
+            if st["kind"] == "drive":
+                raise InputError.at(f"{key}.kind", "drive", "an inline stage cannot be a "
+                                    "drive; refer to the drive's file instead")
+            out.append((key, name, extra, st.get("efficiency")))
+    return out
+
+
+def _run_chain(stages, T1: float, n1: float, duty: Duty) -> list[StageRun]:
+    runs = []
+    T, n = T1, n1
+    for where, _, data, eta in stages:
+        kind = data.get("kind")
+        if kind not in ADAPTERS:
+            raise InputError.at(f"{where}: kind", kind, "not a drive stage; stages can be "
+                                + ", ".join(f'"{k}"' for k in ADAPTERS))
+        run = ADAPTERS[kind](data, T, n, duty, eta, where)
+        runs.append(run)
+        T, n = run.T_out, run.n_out
+    return runs
+
+
+def compute(spec: ValidatedSpec) -> Result:
+    from geardesign.drive import CALCULATOR
+
+    d = spec.data
+    motor, load = d["motor"], d["load"]
+    res = CALCULATOR.new_result(spec)
+    if motor["power"] is None and motor["torque"] is None:
+        raise InputError(Problem("motor.power", "missing; give the motor's power (kW) or "
+                                 "torque (N*m)"))
+    if motor["power"] is not None and motor["torque"] is not None:
+        raise InputError.at("motor.torque", motor["torque"], "give power or torque, not both")
+    n_m = motor["speed"]
+    T_m = motor["torque"] if motor["torque"] is not None else _torque_from_power(motor["power"],
+                                                                                n_m)
+    stages = resolve_stages(d["stage"] or [], spec.base_dir)
+    split = d["split"]
+    if not stages and split is None:
+        raise InputError(Problem("stage", "missing; give the stages ([[stage]]) or a ratio "
+                                 "split request ([split])"))
+    sec = res.section("drive", "Drive")
+    sec.add("T_m", T_m, "N*m", "T_m", "motor nominal torque", "motor")
+    sec.add("P_m", T_m * n_m * math.pi / 30000.0, "kW", "P_m", "motor nominal power", "motor")
+
+    if split is not None:
+        _add_split(res, split, n_m, load, stages)
+    if not stages:
+        return res
+
+    duty = Duty(load["life_hours"], load["regime"], load["application_factor"],
+                motor["peak_ratio"])
+    if load["torque"] is not None:
+        # first pass for the ratios and efficiencies, then rate for the machine's torque
+        probe = _run_chain(stages, T_m, n_m, duty)
+        factor = math.prod(r.ratio * r.efficiency for r in probe)
+        T_in = load["torque"] / factor
+        runs = _run_chain(stages, T_in, n_m, duty)
+    else:
+        T_in = T_m
+        runs = _run_chain(stages, T_in, n_m, duty)
+
+    u = math.prod(r.ratio for r in runs)
+    eta = math.prod(r.efficiency for r in runs)
+    out = runs[-1]
+    sec.add("u", u, "-", "u", "overall ratio", "stages")
+    sec.add("eta", eta, "-", "η", "overall efficiency (gear meshes)", "stages")
+    sec.add("T_in", T_in, "N*m", "T_in", "input torque the stages are rated for", "drive")
+    sec.add("T_out", out.T_out, "N*m", "T_out", "output torque", "drive")
+    sec.add("n_out", out.n_out, "min^-1", "n_out", "output speed", "drive")
+    sec.add("P_out", out.T_out * out.n_out * math.pi / 30000.0, "kW", "P_out", "output power",
+            "drive")
+    res.tables.append(DataTable("stages", "Stages", [
+        ("stage", "stage", None), ("name", "name", None), ("kind", "type", None),
+        ("ratio", "u", "-"), ("efficiency", "η", "-"), ("T_in", "T_in", "N*m"),
+        ("n_in", "n_in", "min^-1"), ("T_out", "T_out", "N*m"), ("n_out", "n_out", "min^-1"),
+        ("margin", "worst S/S_min", "-"), ("margin_of", "of", None), ("verdict", "verdict", None),
+    ], [dict(stage=i + 1, name=st[1], kind=r.result.kind, ratio=r.ratio, efficiency=r.efficiency,
+             T_in=r.T_in, n_in=r.n_in, T_out=r.T_out, n_out=r.n_out, margin=r.margin,
+             margin_of=r.margin_of, verdict=r.result.verdict)
+        for i, (st, r) in enumerate(zip(stages, runs))]))
+
+    for i, (st, r) in enumerate(zip(stages, runs), 1):
+        res.parts.append(("stage_reports", f"Stage {i}: {st[1]} ({r.result.kind})", r.result))
+        failed = [c.code for c in r.result.failed]
+        res.checks.append(check(
+            f"STAGE_{i}", not failed, "error",
+            f"stage {i} \"{st[1]}\" ({r.result.kind}) fails {', '.join(failed)}: see its report "
+            f"below for what to change",
+            f"stage {i} \"{st[1]}\" ({r.result.kind}) passes (worst margin {r.margin:.2f}, "
+            f"{r.margin_of})", r.margin, 1.0, "stage calculator"))
+
+    if load["torque"] is not None:
+        res.checks.append(check(
+            "MOTOR_TORQUE", T_in <= T_m * (1 + 1e-9), "error",
+            f"the machine needs {T_in:.1f} N·m at the motor, more than its nominal {T_m:.1f} N·m "
+            f"({100 * (T_in / T_m - 1):.0f} % over): choose a motor of at least "
+            f"{T_in * n_m * math.pi / 30000.0:.2f} kW or raise the overall ratio",
+            f"the machine needs {T_in:.1f} N·m at the motor, within its nominal {T_m:.1f} N·m "
+            f"({100 * T_in / T_m:.0f} %)", T_in, T_m, "drive"))
+    if load["speed"] is not None:
+        dev = (out.n_out - load["speed"]) / load["speed"] * 100.0
+        res.checks.append(check(
+            "OUTPUT_SPEED", abs(dev) <= load["speed_tolerance"], "error",
+            f"output speed {out.n_out:.2f} min⁻¹ is {dev:+.1f} % off the required "
+            f"{load['speed']:g} min⁻¹ (tolerance ±{load['speed_tolerance']:g} %): change the "
+            f"stage ratios to an overall u = {n_m / load['speed']:.3f}",
+            f"output speed {out.n_out:.2f} min⁻¹ within ±{load['speed_tolerance']:g} % of "
+            f"{load['speed']:g} min⁻¹ ({dev:+.2f} %)", dev, load["speed_tolerance"], "drive"))
+
+    if d["shaft"]:
+        _shafts(res, d["shaft"], runs, n_m, load["life_hours"])
+    return res
+
+
+def _shaft_rotation(runs: list[StageRun]) -> list[int]:
+    """Sense of rotation of shafts 1…N+1 (+1 for the motor shaft): an external mesh
+    reverses it; a worm stage's crossed axes keep the sign by convention."""
+    s = [1]
+    for r in runs:
+        s.append(-s[-1] if r.reverses else s[-1])
+    return s
+
+
+def _shafts(res: Result, shafts: list, runs: list[StageRun], n_m: float, L_h: float) -> None:
+    from geardesign.bearing.life import system_life
+
+    rot = _shaft_rotation(runs)
+    speeds = [n_m] + [r.n_out for r in runs]
+    rows, lives, balls = [], [], []
+    for k, sh in enumerate(shafts):
+        idx = sh["index"]
+        key = f"shaft[{k}]"
+        if idx > len(runs) + 1:
+            raise InputError.at(f"{key}.index", idx, f"the drive has {len(runs) + 1} shafts "
+                                f"(1 … {len(runs) + 1})")
+        if sh["bearing_b"] == sh["bearing_a"]:
+            raise InputError.at(f"{key}.bearing_b", sh["bearing_b"],
+                                "the two bearings must be at different positions")
+        loads = []
+        for j, g in enumerate(sh["gear"]):
+            st = g["stage"]
+            if st == idx:
+                which = 0            # input member of stage idx
+            elif st == idx - 1:
+                which = 1            # output member of stage idx-1
+            else:
+                raise InputError.at(f"{key}.gear[{j}].stage", st,
+                                    f"shaft {idx} carries stage {idx - 1} (output) and stage "
+                                    f"{idx} (input) only")
+            if st > len(runs):
+                raise InputError.at(f"{key}.gear[{j}].stage", st,
+                                    f"the drive has {len(runs)} stages")
+            loads.append(runs[st - 1].gear_load(which, g["position"], math.radians(g["mate_angle"]),
+                                                g["axial_sign"]))
+        R = reactions(sh["bearing_a"], sh["bearing_b"], loads, rot[idx - 1])
+        name = sh["name"] or f"shaft {idx}"
+        for side in ("a", "b"):
+            F_r = R.F_rA if side == "a" else R.F_rB
+            F_a = R.axial if sh["fixed"] == side else 0.0
+            data = {"kind": "bearing", "method": sh["method"], "bearing": dict(sh[f"support_{side}"]),
+                    "load": {"F_r": F_r, "F_a": F_a, "speed": speeds[idx - 1]},
+                    "requirements": {"life": L_h}}
+            if sh.get("lubrication"):
+                data["lubrication"] = dict(sh["lubrication"])
+            try:
+                br = run_data(data, f"{key}.support_{side}")
+            except InputError as exc:
+                raise InputError([Problem(f"{key}.support_{side}: {p.key}", p.message, p.value)
+                                  for p in exc.problems]) from None
+            v = {}
+            for section in br.document()["results"].values():
+                if isinstance(section, dict):
+                    v.update(section)
+            life = v.get("L_sah", v.get("L_nmh", v.get("L10h")))
+            lives.append(life)
+            balls.append("ball" in str(v.get("type", "ball")))
+            rows.append(dict(shaft=idx, bearing=side.upper(), designation=v.get("designation"),
+                             F_r=F_r, F_a=F_a, n=speeds[idx - 1], life=life,
+                             verdict=br.verdict))
+            res.parts.append(("bearing_reports", f"{name}, bearing {side.upper()}", br))
+            failed = [c.code for c in br.failed]
+            res.checks.append(check(
+                f"BEARING_{idx}{side.upper()}", not failed, "error",
+                f"{name}, bearing {side.upper()} fails {', '.join(failed)} (F_r = {F_r:.0f} N, "
+                f"F_a = {F_a:.0f} N): see its report below",
+                f"{name}, bearing {side.upper()}: life {life:.0f} h (F_r = {F_r:.0f} N, "
+                f"F_a = {F_a:.0f} N)", life, L_h, "bearing calculator"))
+    res.tables.append(DataTable("bearings", "Bearings", [
+        ("shaft", "shaft", None), ("bearing", "bearing", None),
+        ("designation", "designation", None), ("F_r", "F_r", "N"), ("F_a", "F_a", "N"),
+        ("n", "n", "min^-1"), ("life", "life", "h"), ("verdict", "verdict", None)], rows))
+    slope = 10.0 / 9.0 if any(balls) else 9.0 / 8.0
+    L_sys = system_life(lives, slope)
+    sec = res.section("drive", "Drive")
+    sec.add("L_system", L_sys, "h", "L_sys", f"system life of the {len(lives)} bearings "
+            f"(Weibull slope {slope:.3f})", "Lundberg–Palmgren")
+    res.checks.append(check(
+        "BEARING_SYSTEM_LIFE", L_sys >= L_h, "warning",
+        f"the {len(lives)} bearings together reach {L_sys:.0f} h at 90 % reliability, below the "
+        f"required {L_h:g} h: one of them fails early with that probability; take larger "
+        f"bearings for the shortest lives",
+        f"system life of the {len(lives)} bearings {L_sys:.0f} h >= {L_h:g} h", L_sys, L_h,
+        "Lundberg–Palmgren"))
+
+
+def _add_split(res: Result, split: dict, n_m: float, load: dict, stages) -> None:
+    u = split["ratio"]
+    if u is None:
+        if load["speed"] is None:
+            raise InputError(Problem("split.ratio", "missing; give the overall ratio, or "
+                                     "load.speed (then u = motor speed / load.speed)"))
+        u = n_m / load["speed"]
+    kinds = split["kinds"] or [st[2].get("kind") for st in stages]
+    if not kinds:
+        raise InputError(Problem("split.kinds", "missing; give the kinds of the stages"))
+    try:
+        ratios = SPLIT.split_ratio(u, kinds, split["rule"])
+    except ValueError as exc:
+        raise InputError.at("split.kinds", kinds, str(exc)) from None
+    res.tables.append(DataTable("split", f"Ratio split ({split['rule']}), u = {u:.4g}", [
+        ("stage", "stage", None), ("kind", "type", None), ("ratio", "proposed u", "-")],
+        [dict(stage=i + 1, kind=k, ratio=r) for i, (k, r) in enumerate(zip(kinds, ratios))]))

@@ -1,0 +1,104 @@
+"""The ``kind = "drive"`` spec."""
+
+from __future__ import annotations
+
+from geardesign.core.spec import Field, SpecSchema, Table, TableList
+from geardesign.spur.strength.tables import REGIMES
+
+STAGE_KINDS = ("spur", "worm", "novikov", "drive")
+
+MOTOR = Table("motor", "the driving motor", (
+    Field("power", "number", "nominal power", "kW", "P_m", default=None, gt=0, maximum=1e5,
+          example=7.5, hint="or torque"),
+    Field("torque", "number", "nominal torque (instead of power)", "N*m", "T_m", default=None,
+          gt=0, maximum=1e7),
+    Field("speed", "number", "nominal speed", "min^-1", "n_m", gt=0, maximum=1e5,
+          example=1455.0),
+    Field("peak_ratio", "number",
+          "largest short-time torque over the nominal (starting torque), for the static checks",
+          symbol="T_max/T", default=None, minimum=1.0, maximum=5.0, example=2.0),
+))
+
+LOAD = Table("load", "the driven machine and the duty", (
+    Field("torque", "number", "torque the driven machine needs at the output shaft; the stages "
+          "are rated for it (else for the motor's nominal torque)", "N*m", "T_out", default=None,
+          gt=0, maximum=1e8),
+    Field("speed", "number", "required output speed", "min^-1", "n_out", default=None, gt=0,
+          maximum=1e5),
+    Field("speed_tolerance", "number", "allowed deviation of the output speed", "%",
+          default=4.0, gt=0, maximum=20),
+    Field("life_hours", "number", "required life of every stage and bearing", "h", "L_h", gt=0,
+          maximum=1e7, example=20000.0),
+    Field("regime", "string", "typical load regime (GOST 21354-87) of the stages that do not "
+          "give their own", default="0", choices=REGIMES),
+    Field("application_factor", "number", "application factor K_A of the stages that do not "
+          "give their own", symbol="K_A", default=1.0, minimum=1.0, maximum=3.0),
+))
+
+STAGE = Table("stage", "a stage, from the input", (
+    Field("name", "string", "name of the stage", default=None),
+    Field("file", "string", "spec file of the stage, relative to this drive spec", default=None),
+    Field("kind", "string", "calculator of an inline stage (its tables follow: [stage.gear], ...)",
+          default=None, choices=STAGE_KINDS),
+    Field("efficiency", "number", "efficiency of the stage (else the calculator's, or 0.98 for "
+          "a cylindrical stage)", symbol="η", default=None, gt=0, maximum=1.0),
+), open=True)
+
+GEAR_ON_SHAFT = Table("gear", "a gear on the shaft", (
+    Field("stage", "integer", "stage of the gear: the shaft's index (its input member) or the "
+          "index − 1 (its output member)", minimum=1, maximum=50, example=1),
+    Field("position", "number", "position of the gear mid-plane along the shaft", "mm", "z",
+          minimum=-1e5, maximum=1e5, example=60.0),
+    Field("mate_angle", "number", "direction from this shaft's axis to the mating gear's axis",
+          "deg", "θ", default=0.0, minimum=-360.0, maximum=360.0),
+    Field("axial_sign", "integer", "direction of the gear's axial force: +1 towards bearing B, "
+          "-1 towards A", default=1, choices=(-1, 1)),
+))
+
+SHAFT = Table("shaft", "a shaft on two bearings", (
+    Field("index", "integer", "shaft number: shaft i carries the output of stage i−1 and the "
+          "input of stage i (1: motor side)", minimum=1, maximum=51, example=1),
+    Field("name", "string", "name of the shaft", default=None),
+    Field("bearing_a", "number", "position of bearing A along the shaft", "mm", "z_A",
+          default=0.0, minimum=-1e5, maximum=1e5),
+    Field("bearing_b", "number", "position of bearing B along the shaft", "mm", "z_B",
+          minimum=-1e5, maximum=1e5, example=160.0),
+    Field("fixed", "string", "bearing that takes the axial load", default="a", choices=("a", "b")),
+    Field("method", "string", "bearing life method (see geardesign schema bearing)",
+          default="gost18855_94", choices=("gost18855_94", "iso281_2007")),
+    TableList("gear", "gears on the shaft", GEAR_ON_SHAFT, max_items=4),
+    Table("support_a", "bearing A: the [bearing] table of the bearing calculator (designation, "
+          "or type and ratings)", (), open=True),
+    Table("support_b", "bearing B, as support_a", (), open=True),
+    Table("lubrication", "lubrication of both bearings (ISO 281:2007 method), as in the "
+          "bearing calculator", (), required=False, open=True),
+))
+
+SPLIT = Table("split", "ratio split helper: proposed stage ratios for an overall ratio", (
+    Field("ratio", "number", "overall ratio wanted (else motor speed / load.speed)", symbol="u",
+          default=None, minimum=1.0, maximum=1e5, example=20.0),
+    Field("kinds", "array", "kinds of the stages, from the input", items="string",
+          choices=("spur", "novikov", "worm"), default=None, min_items=1, max_items=6,
+          example=["spur", "spur"]),
+    Field("rule", "string", "splitting rule", default="developed", choices=("equal", "developed"),
+          hint='"developed": two cylindrical stages, u1 = 1.25·sqrt(u); "equal": u^(1/n)'),
+), required=False)
+
+SCHEMA = SpecSchema(
+    kind="drive",
+    description="a whole drive: motor, stages, shafts and bearings",
+    tables=(MOTOR, LOAD,
+            TableList("stage", "the stages, from the motor to the output", STAGE,
+                      required=False, max_items=20,
+                      examples=({"name": "reducer stage",
+                                 "file": "specs/spur_reducer_through_hardened.toml"},),
+                      hint="a stage is file = a spec of any stage kind (relative to this spec), "
+                           "or kind = ... with the stage's tables inline"),
+            TableList("shaft", "shafts on two bearings: bearing loads and lives", SHAFT,
+                      required=False, max_items=21, in_template=False,
+                      hint="keys: index, bearing_a, bearing_b, fixed, method, [[shaft.gear]] "
+                           "(stage, position, mate_angle, axial_sign), [shaft.support_a], "
+                           "[shaft.support_b]; see specs/drive_two_stage_reducer.toml"),
+            SPLIT),
+    title_example="Two-stage reducer, 7.5 kW, 1455/58 min^-1",
+)

@@ -1,0 +1,185 @@
+"""Drive stages: how each calculator is run as a stage of a drive.
+
+A stage adapter puts the stage's input torque and speed (and the drive's life, regime,
+application factor and peak torque, where the stage spec does not give its own) into the
+stage spec, runs the stage's own calculator, and reads back the ratio, the efficiency,
+the output torque and speed, the mesh forces on the input and output members (for the
+shafts) and the worst safety margin.  No formula of a calculator is repeated here.
+"""
+
+from __future__ import annotations
+
+import copy
+from dataclasses import dataclass
+
+from geardesign.core.errors import InputError, Problem
+from geardesign.core.registry import load_data
+from geardesign.core.result import Result
+from geardesign.drive.shafts import GearLoad
+
+#: Efficiency of a closed cylindrical (spur, helical, Novikov) stage when the spec gives
+#: none, without bearing losses: handbook 0.97–0.98 (Dunaev & Lelikov, table 1.1; verify).
+ETA_CYLINDRICAL = 0.98
+
+WORM_ITERATIONS = 4
+
+
+@dataclass(frozen=True)
+class Duty:
+    L_h: float
+    regime: str
+    K_A: float
+    peak_ratio: float | None
+
+
+@dataclass(frozen=True)
+class Member:
+    """Mesh forces on a stage's input or output member (N) at radius r (mm)."""
+
+    F_t: float
+    F_r: float
+    F_a: float
+    r: float
+
+
+@dataclass
+class StageRun:
+    result: Result
+    ratio: float
+    efficiency: float
+    efficiency_source: str
+    T_in: float
+    n_in: float
+    T_out: float
+    n_out: float
+    members: tuple[Member, Member]
+    margin: float | None
+    margin_of: str
+    reverses: bool                 # output turns opposite to the input (external mesh)
+
+    def gear_load(self, which: int, z: float, mate_angle: float, axial_sign: int) -> GearLoad:
+        m = self.members[which]
+        return GearLoad(m.F_t, m.F_r, m.F_a, m.r, z, mate_angle, driving=(which == 0),
+                        axial_sign=axial_sign)
+
+
+def _values(doc: dict) -> dict:
+    out = {}
+    for section in doc["results"].values():
+        if isinstance(section, dict):
+            out.update(section)
+    return out
+
+
+def _named(exc: InputError, where: str) -> InputError:
+    return InputError([Problem(f"{where}: {p.key}" if p.key else where, p.message, p.value)
+                       for p in exc.problems])
+
+
+def _run(data: dict, where: str) -> Result:
+    """Validate and compute a stage spec; problems name the stage."""
+    try:
+        calc, spec = load_data(data, where)
+        return calc.compute(spec)
+    except InputError as exc:
+        raise _named(exc, where) from None
+
+
+def _validate(data: dict, where: str) -> None:
+    try:
+        load_data(copy.deepcopy(data), where)
+    except InputError as exc:
+        raise _named(exc, where) from None
+
+
+def _put(table: dict, key: str, value) -> None:
+    if table.get(key) is None and value is not None:
+        table[key] = value
+
+
+def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
+             where: str) -> StageRun:
+    d = copy.deepcopy(data)
+    load = d.setdefault("load", {})
+    load["torque1"], load["speed1"] = T_in, n_in
+    load.pop("power", None)
+    _put(load, "life_hours", duty.L_h)
+    _put(load, "application_factor", duty.K_A)
+    if not load.get("spectrum"):
+        _put(load, "regime", duty.regime)
+    if duty.peak_ratio is not None:
+        _put(load, "peak_torque1", T_in * duty.peak_ratio)
+    _validate(d, where)
+    if d.get("material") is None:
+        raise InputError(Problem(f"{where}: material", "missing table [material.pinion] and "
+                                 "[material.wheel]: a drive rates every stage for strength"))
+    res = _run(d, where)
+    v = _values(res.document())
+    u = v["u"]
+    e, src = (eta, "spec") if eta is not None else (ETA_CYLINDRICAL, "assumed (handbook)")
+    margins = {k: v[k] / v[f"{k}_min"] for k in ("S_H1", "S_H2", "S_F1", "S_F2")}
+    worst = min(margins, key=margins.get)
+    F_t, F_r, F_a = v["F_t"], v["F_r"], v["F_a"]
+    return StageRun(res, u, e, src, T_in, n_in, T_in * u * e, n_in / u,
+                    (Member(F_t, F_r, F_a, v["d_w1"] / 2), Member(F_t, F_r, F_a, v["d_w2"] / 2)),
+                    margins[worst], worst, True)
+
+
+def run_novikov(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
+                where: str) -> StageRun:
+    d = copy.deepcopy(data)
+    gear = d.get("gear") or {}
+    u = gear["z2"] / gear["z1"] if "z1" in gear and "z2" in gear else None
+    if u is None:
+        raise InputError(Problem(f"{where}: gear.z1", "missing; the drive needs the tooth "
+                                 "numbers of the Novikov stage"))
+    e, src = (eta, "spec") if eta is not None else (ETA_CYLINDRICAL, "assumed (handbook)")
+    load = d.setdefault("load", {})
+    load["torque2"], load["speed1"] = T_in * u * e, n_in
+    _put(load, "life", duty.L_h)
+    _put(load, "application_factor", duty.K_A)
+    res = _run(d, where)
+    v = _values(res.document())
+    margins = {"S_H": v["S_H"] / v["S_H_min"], "S_F1": v["S_F1"] / v["S_F_min"],
+               "S_F2": v["S_F2"] / v["S_F_min"]}
+    worst = min(margins, key=margins.get)
+    F_t, F_r, F_a = v["F_t"], v["F_r"], v["F_a"]
+    return StageRun(res, v["u"], e, src, T_in, n_in, T_in * v["u"] * e, n_in / v["u"],
+                    (Member(F_t, F_r, F_a, v["d1"] / 2), Member(F_t, F_r, F_a, v["d2"] / 2)),
+                    margins[worst], worst, True)
+
+
+def run_worm(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
+             where: str) -> StageRun:
+    """The worm calculator takes the wheel torque: iterate T2 until the worm torque it
+    reports equals the stage's input torque (the efficiency depends on the sliding speed,
+    so a few steps settle it)."""
+    d = copy.deepcopy(data)
+    gear = d.get("gear") or {}
+    if "z1" not in gear or "z2" not in gear:
+        raise InputError(Problem(f"{where}: gear.z2", "missing; the drive needs the starts and "
+                                 "the wheel teeth of the worm stage"))
+    u = gear["z2"] / gear["z1"]
+    load = d.setdefault("load", {})
+    load["speed1"] = n_in
+    _put(load, "life", duty.L_h)
+    T2 = T_in * u * (eta if eta is not None else 0.8)
+    res = None
+    for _ in range(WORM_ITERATIONS):
+        load["torque2"] = T2
+        res = _run(d, where)
+        v = _values(res.document())
+        if abs(v["T1"] - T_in) <= 1e-9 * T_in:
+            break
+        T2 *= T_in / v["T1"]
+    e = eta if eta is not None else v["eta"]
+    src = "spec" if eta is not None else "worm calculator"
+    margins = {"S_H": v["S_H"], "S_F": v["S_F"]}
+    worst = min(margins, key=margins.get)
+    worm = Member(v["F_t1"], v["F_r"], v["F_t2"], v["d_w1"] / 2)
+    wheel = Member(v["F_t2"], v["F_r"], v["F_t1"], v["d2"] / 2)
+    return StageRun(res, u, e, src, T_in, n_in, T_in * u * e, n_in / u, (worm, wheel),
+                    margins[worst], worst, False)
+
+
+ADAPTERS = {"spur": run_spur, "worm": run_worm, "novikov": run_novikov}
