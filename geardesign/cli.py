@@ -74,8 +74,26 @@ def _compute_all(paths: List[Path], expect_kind: Optional[str], mode: Optional[s
     return results, problems
 
 
+def _write_plot(results: list, plot: Path) -> None:
+    """``--plot FILE``: the start-up transient of the one result that has a time history
+    (a pzdn spec with [startup]); written atomically, matplotlib imported only here."""
+    from geardesign.pzdn.plot import PlotError, write_plot
+
+    with_history = [r for r in results if any(s.key == "history" for s in r.sections)]
+    if len(with_history) != 1:
+        _err(f"{plot}: --plot needs exactly one spec with a start-up time history (a pzdn "
+             f"spec with [startup] and history_points >= 2); {len(with_history)} given")
+        raise typer.Exit(2)
+    try:
+        write_plot(with_history[0], plot)
+    except PlotError as exc:
+        _err(f"{plot}: {exc}")
+        raise typer.Exit(2)
+
+
 def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quiet: bool,
-          expect_kind: Optional[str] = None, mode: Optional[str] = None) -> None:
+          expect_kind: Optional[str] = None, mode: Optional[str] = None,
+          plot: Optional[Path] = None) -> None:
     from geardesign.core.render import render, write_atomic
 
     results, problems = _compute_all(paths, expect_kind, mode)
@@ -83,6 +101,8 @@ def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quie
         for line in problems:
             _err(line)
         raise typer.Exit(2)
+    if plot is not None:
+        _write_plot(results, plot)
     fmt_name = _choose_format(fmt, output)
     to_terminal = output is None and sys.stdout.isatty()
     color = to_terminal and not os.environ.get("NO_COLOR")
@@ -114,6 +134,9 @@ OPT_QUIET = typer.Option(False, "--quiet", "-q",
                          help="No report on stdout and no notes on stderr; the exit code tells "
                               "the verdict (input errors are still printed).")
 ARG_SPECS = typer.Argument(..., help="Spec file(s), TOML.", show_default=False)
+OPT_PLOT = typer.Option(None, "--plot", help="Write the start-up transient of a pzdn spec "
+                        "with [startup] to FILE (.png or .svg; needs matplotlib).",
+                        dir_okay=False)
 OPT_SELECT = typer.Option(False, "--select",
                           help="Selection mode, as mode = \"select\" in the spec (bearing: the "
                                "smallest catalogue bearing that meets the required life).")
@@ -134,16 +157,17 @@ def _main(version: bool = typer.Option(False, "--version", callback=_version, is
 @app.command("run")
 def run_cmd(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
             output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET,
-            select: bool = OPT_SELECT) -> None:
+            select: bool = OPT_SELECT, plot: Optional[Path] = OPT_PLOT) -> None:
     """Compute one or more specs, dispatching on each spec's `kind`."""
-    _emit(specs, format, output, quiet, mode="select" if select else None)
+    _emit(specs, format, output, quiet, mode="select" if select else None, plot=plot)
 
 
 def _kind_command(kind: str):
     def command(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
                 output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET,
-                select: bool = OPT_SELECT) -> None:
-        _emit(specs, format, output, quiet, expect_kind=kind, mode="select" if select else None)
+                select: bool = OPT_SELECT, plot: Optional[Path] = OPT_PLOT) -> None:
+        _emit(specs, format, output, quiet, expect_kind=kind, mode="select" if select else None,
+              plot=plot)
 
     command.__doc__ = f"Compute {kind} spec(s) (see `geardesign list`)."
     return command

@@ -189,6 +189,8 @@ def _drop_none(d: Any) -> Any:
     if isinstance(d, dict):
         out = {k: _drop_none(v) for k, v in d.items() if v is not None}
         return {k: v for k, v in out.items() if v != {}}
+    if isinstance(d, list):
+        return [_drop_none(v) for v in d]
     return d
 
 

@@ -389,6 +389,20 @@ def sigma_fp_max(sigma_FSt: float, Y_X: float, Y_z: float) -> float:
 # ----------------------------------------------------------------------------- design
 
 
+def module_estimate(T1: float, K_Fbeta: float, Y_FS: float, psi_bd: float, z1: int,
+                    sigma_FP: float, K_m: float = 14.0) -> float:
+    """Design module of a spur pair from the bending strength of the weaker gear [mm].
+
+    .. math:: m = K_m \\sqrt[3]{\\frac{K_{Fβ} T_1 Y_{FS}}{ψ_{bd} z_1^2 σ_{FP}}}
+
+    T1 [N·m] the pinion torque, Y_FS and σ_FP of the gear with the larger Y_FS/σ_FP,
+    ψ_bd = b_w/d1; K_m = 14 for spur gears with T1 in N·m (1.4 with T1 in N·mm; textbook
+    form of the GOST 21354-87 design calculation, as used by the KO-2 thesis, seed 000
+    L1132-1136; verify).
+    """
+    return K_m * (K_Fbeta * T1 * Y_FS / (psi_bd * z1 * z1 * sigma_FP)) ** (1.0 / 3.0)
+
+
 def center_distance_estimate(T1: float, u: float, K_Hbeta: float, psi_ba: float,
                              sigma_HP: float, helical: bool) -> float:
     """Design centre distance of an external steel pair [mm].

@@ -1,0 +1,24 @@
+"""PZDN — the device reducing start-up dynamic loads of knitting-machine drives: a safety
+elastic gear coupling whose elastic element is a cylindrical torsion spring (KO-2 thesis,
+method note ``shared/methods/pzdn.md``).
+
+Modules: :mod:`.spring` (torsion spring sizing, methods A and B), :mod:`.startup` (closed
+form of the three-mass start-up, corrected), :mod:`.simulate` (its numerical integration
+with torque rise, motor characteristic, damping and sticking masses; scipy inside),
+:mod:`.regression` (KO-2 regression), :mod:`.coupling` (the coupling gear, rated by the
+spur calculator), :mod:`.plot` (optional matplotlib plot), :mod:`.spec`,
+:mod:`.calculator`.
+"""
+
+from geardesign.core.registry import Calculator
+from geardesign.pzdn.calculator import compute
+from geardesign.pzdn.spec import SCHEMA
+
+CALCULATOR = Calculator(
+    kind="pzdn",
+    summary="PZDN torsion-spring coupling of knitting-machine drives: spring sizing, coupling "
+            "gear, three-mass start-up dynamics, KO-2 regression",
+    methods=("KO-2 thesis (Lopukhov), corrected", "EN 13906-3", "Shigley §10-12"),
+    schema=SCHEMA,
+    compute=compute,
+)

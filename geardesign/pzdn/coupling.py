@@ -1,0 +1,96 @@
+"""The open spur gear of the PZDN coupling (KO-2 thesis §2.1, method note ``pzdn.md`` §5):
+rated by the spur calculator, not by a second copy of the gear formulas.
+
+The thesis sizes the mesh with a course-book procedure (module from the bending strength,
+check of σ_F and σ_H).  The module estimate is the spur strength code's bending design
+formula, and the check itself is a ``kind = "spur"``
+spec built from the PZDN spec and run through :func:`geardesign.core.registry.run_data`:
+geometry to GOST 16532-70, σ_H and σ_F to GOST 21354-87, with the thesis' load factors
+passed as overrides when given.  The torque of the coupling is shared by the planet meshes:
+the pinion torque per mesh is T/n_w (torque on the pinion) or T/(n_w·u) (torque on the
+wheel); the thesis' F_t = 2T/(n_w·d2) = 210.48 N is the second case.
+"""
+
+from __future__ import annotations
+
+import math
+
+from geardesign.core.errors import InputError, Problem
+from geardesign.spur.strength.gost21354 import module_estimate as _gost_module_estimate
+
+
+# The module estimate is the spur strength code's (GOST 21354-87 bending design formula):
+# the thesis prints m = 2.086 mm for T = 48.6 N·m, K_Fβ = 1.37, Y_F2 = 3.612, ψ_bd = 0.4,
+# z1 = 20, [σ]_F2 = 180 MPa; these inputs give 2.84 mm (tests/reference/pzdn).
+module_estimate = _gost_module_estimate
+
+
+def pinion_torque(T: float, on: str, planets: int, u: float) -> float:
+    """Pinion torque of one mesh [N·m]: T/n_w when T acts on the pinion, T/(n_w·u) when on
+    the wheel (load shared equally by the n_w planet meshes; thesis F_t = 2T/(n_w·d2),
+    seed l. 1195-1201)."""
+    return T / planets if on == "pinion" else T / (planets * u)
+
+
+_MATERIAL_KEYS = ("grade", "treatment", "hardness_HB", "hardness_HRC", "blank", "sigma_T",
+                  "sigma_Hlim", "sigma_Flim", "S_H", "S_F")
+_FACTOR_KEYS = ("K_Hv", "K_Hbeta", "K_Fv", "K_Fbeta", "Y_FS1", "Y_FS2")
+
+
+def spur_spec(g: dict, module: float, face_width: float, T1: float,
+              T1_peak: float | None) -> dict:
+    """The ``kind = "spur"`` spec of the coupling gear (a dict as from TOML)."""
+    gear = {"module": module, "z1": g["z1"], "z2": g["z2"], "face_width": face_width,
+            "x1": g["x1"], "x2": g["x2"], "accuracy_grade": g["accuracy_grade"],
+            "bearing_scheme": g["bearing_scheme"]}
+    load = {"speed1": g["speed"], "torque1": T1, "life_hours": g["life_hours"]}
+    if T1_peak is not None:
+        load["peak_torque1"] = T1_peak
+    mats = {}
+    for who in ("pinion", "wheel"):
+        mats[who] = {k: v for k, v in g[who].items() if k in _MATERIAL_KEYS and v is not None}
+    spec = {"kind": "spur", "title": "PZDN coupling gear", "gear": gear, "load": load,
+            "material": mats}
+    factors = {k: v for k, v in (g.get("factors") or {}).items() if v is not None}
+    if factors:
+        spec["factors"] = factors
+    return spec
+
+
+def _pzdn_key(key: str) -> str:
+    """Map a key path of the generated spur spec back to the pzdn spec."""
+    for spur, ours in (("material.pinion.", "coupling_gear.pinion."),
+                       ("material.wheel.", "coupling_gear.wheel."),
+                       ("factors.", "coupling_gear.factors."), ("gear.", "coupling_gear."),
+                       ("load.torque1", "coupling_gear.torque"),
+                       ("load.peak_torque1", "coupling_gear.peak_torque"),
+                       ("load.speed1", "coupling_gear.speed"), ("load.", "coupling_gear.")):
+        if key.startswith(spur):
+            return ours + key[len(spur):]
+    return "coupling_gear" + (f" ({key})" if key else "")
+
+
+def rate(spec: dict):
+    """Run the spur calculator on ``spec``; its input problems are reported against the
+    pzdn keys."""
+    from geardesign.core.registry import run_data
+
+    try:
+        return run_data(spec, "coupling gear")
+    except InputError as exc:
+        raise InputError([Problem(_pzdn_key(p.key), p.message, p.value)
+                          for p in exc.problems]) from None
+
+
+def weaker_gear(Y_F: tuple[float, float], sigma_FP: tuple[float, float]) -> int:
+    """Index (0 pinion, 1 wheel) of the gear with the larger Y_F/[σ]_F (thesis: compare
+    [σ]_F/Y_F, the smaller is weaker; seed l. 1113-1128)."""
+    return 0 if Y_F[0] / sigma_FP[0] >= Y_F[1] / sigma_FP[1] else 1
+
+
+def round_module(m: float, series: tuple[float, ...]) -> float:
+    """The first module of the series >= m (GOST 9563-60, rounded up as in the thesis)."""
+    for v in sorted(series):
+        if v >= m - 1e-12:
+            return v
+    return math.ceil(m)
