@@ -2,6 +2,11 @@
 safety factor, computed from the pure functions of :mod:`.gost21354` or taken from the
 spec where the designer overrides it.
 
+An internal pair (:class:`geardesign.spur.internal.InternalPairGeometry`, whose attribute
+``internal`` is true) is rated by the same function: σ_H then uses (u − 1), the internal
+gear's tooth form factor is :func:`.gost21354.y_fs_internal`, and the reduced radius of
+curvature of the informative contact rows is ρ1ρ2/(ρ2 − ρ1).
+
 The result is a list of :class:`Value` rows (grouped by section) so that the report and
 the JSON carry each quantity with its symbol, unit, source and whether it was given.
 """
@@ -40,6 +45,10 @@ class Duty:
     T_peak: float | None = None
     reverse_ratio: float = 0.0
     life: Life = field(default_factory=lambda: Life(1.0))
+    reverse_ratios: tuple[float, float] | None = None
+    """Reversed torque ratio per gear (pinion, wheel) when they differ, e.g. a planet
+    loaded on both flanks (1.0) meshing a sun loaded on one (0.0); ``None``: both gears
+    take ``reverse_ratio``."""
 
 
 @dataclass(frozen=True)
@@ -93,7 +102,10 @@ def _informative_contact(r: Rating, g: PairGeometry, F_n: float, sigma_H: float,
 
     p = g.inp
     rho = [0.5 * gear.d_w * math.sin(g.alpha_tw) / math.cos(g.beta_b) for gear in (g.g1, g.g2)]
-    rho_w = rho[0] * rho[1] / (rho[0] + rho[1])
+    if getattr(g, "internal", False):
+        rho_w = rho[0] * rho[1] / (rho[1] - rho[0])
+    else:
+        rho_w = rho[0] * rho[1] / (rho[0] + rho[1])
     b_line = p.b_w / math.cos(g.beta_b)
     mats = (m1.E, m1.nu, m2.E, m2.nu)
     src = "Popov et al. 2017"
@@ -120,6 +132,7 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
     r = Rating()
     p = g.inp
     helical = p.beta > 0.0
+    internal = getattr(g, "internal", False)
     u = g.u
     m1, m2 = mats
     gears = (g.g1, g.g2)
@@ -232,8 +245,9 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
                 "zone factor", SRC)
     r.put("contact", "Z_eps", Z_eps, "-", "Z_ε", "contact ratio factor", SRC)
     sigma_H = r.put("contact", "sigma_H",
-                    G.sigma_h(Z_E, Z_H, Z_eps, F_tH, K_H, u, p.b_w, g.g1.d), "MPa", "σ_H",
-                    "contact stress", SRC)
+                    G.sigma_h(Z_E, Z_H, Z_eps, F_tH, K_H, u, p.b_w, g.g1.d, internal), "MPa",
+                    "σ_H", "contact stress" + (" (internal pair, u − 1)" if internal else ""),
+                    SRC)
     if s.contact_model == "popov_n07" or s.crowning:
         _informative_contact(r, g, f.F_n * K_H, sigma_H, m1, m2, s)
     sigma_HP = []
@@ -277,8 +291,13 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
         zv = gear.z / math.cos(p.beta) ** 3
         r.put("bending", f"z_v{k}", zv, "-", f"z_v{k}", f"virtual number of teeth z/cos³β, {who}",
               SRC)
-        YFS = _factor(r, s, "bending", f"Y_FS{k}", lambda: G.y_fs(zv, gear.x), f"Y_FS{k}",
-                      f"tooth form factor, {who}", SRC)
+        if internal and k == 2:
+            YFS = _factor(r, s, "bending", "Y_FS2", lambda: G.y_fs_internal(gear.x), "Y_FS2",
+                          "tooth form factor, internal gear (rack limit, approximate)",
+                          SRC + " (rack limit)")
+        else:
+            YFS = _factor(r, s, "bending", f"Y_FS{k}", lambda: G.y_fs(zv, gear.x), f"Y_FS{k}",
+                          f"tooth form factor, {who}", SRC)
         sF = r.put("bending", f"sigma_F{k}",
                    G.sigma_f(F_tH, K_F, p.b_w, p.m_n, YFS, Y_beta, Y_eps), "MPa", f"σ_F{k}",
                    f"root bending stress, {who}", SRC)
@@ -292,7 +311,8 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
                    f"life factor, bending (q_F = {mat.q_F}), {who}", SRC)
         YX = r.put("bending", f"Y_X{k}", G.y_x(gear.d), "-", f"Y_X{k}",
                    f"size factor, bending, {who}", SRC)
-        YA = r.put("bending", f"Y_A{k}", G.y_a(mat.gamma_A, duty.reverse_ratio), "-", f"Y_A{k}",
+        rev = duty.reverse_ratio if duty.reverse_ratios is None else duty.reverse_ratios[i]
+        YA = r.put("bending", f"Y_A{k}", G.y_a(mat.gamma_A, rev), "-", f"Y_A{k}",
                    f"reversed-load factor, {who}", SRC)
         limit = mat.sigma_Flim * YN * Y_delta * Y_R * YX * YA
         r.put("bending", f"sigma_FP{k}", limit / mat.S_F, "MPa", f"σ_FP{k}",

@@ -1,0 +1,23 @@
+"""Planetary trains 2K-H (simple and stepped planet) and 3K: Willis kinematics, assembly
+conditions, geometry of every external and internal mesh with shifts, efficiency and
+self-locking, strength of every mesh to GOST 21354-87 (through the spur rating),
+diagnostic frequencies, and a synthesis mode.
+
+Modules: :mod:`.kinematics`, :mod:`.assembly`, :mod:`.geometry`, :mod:`.efficiency`,
+:mod:`.strength`, :mod:`.synthesis` (pure functions), :mod:`.checks`, :mod:`.spec`,
+:mod:`.calculator`.  Internal-gear geometry is shared code:
+:mod:`geardesign.spur.internal`.
+"""
+
+from geardesign.core.registry import Calculator
+from geardesign.planetary.calculator import compute
+from geardesign.planetary.spec import SCHEMA
+
+CALCULATOR = Calculator(
+    kind="planetary",
+    summary="planetary train 2K-H/3K: kinematics, assembly, geometry with shifts, "
+            "efficiency, self-locking, strength, frequencies, synthesis",
+    methods=("Willis method", "GOST 16532-70", "GOST 19274-73", "Matusevich et al. 2017"),
+    schema=SCHEMA,
+    compute=compute,
+)
