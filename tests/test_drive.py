@@ -177,3 +177,13 @@ def test_template_runs(tmp_path):
         path.unlink()
     assert code == 0, err
     assert json.loads(out)["results"]["split"]
+
+
+def test_planetary_stage():
+    doc = run(SPECS / "drive_planetary_spur.toml").document()
+    s1, s2 = doc["results"]["stages"]
+    plan = doc["results"]["stage_reports"][0]
+    assert s1["kind"] == "planetary" and s1["ratio"] == pytest.approx(5.0)
+    assert s1["efficiency"] == pytest.approx(plan["results"]["efficiency"]["eta"])
+    assert plan["inputs"]["operation"]["torque"] == pytest.approx(s1["T_in"])
+    assert s2["T_in"] == pytest.approx(s1["T_out"])

@@ -66,7 +66,7 @@ def resolve_stages(stages: list, base: Path | None, where: str = "stage",
         else:
             if st.get("kind") is None:
                 raise InputError(Problem(f"{key}.kind", "missing; give the stage's calculator "
-                                         "(kind = \"spur\", \"worm\", \"novikov\") and its "
+                                         "(kind = \"spur\", \"worm\", \"novikov\", \"planetary\") and its "
                                          "tables, or file = a spec file"))
             if st["kind"] == "drive":
                 raise InputError.at(f"{key}.kind", "drive", "an inline stage cannot be a "

@@ -5,7 +5,7 @@ from __future__ import annotations
 from geardesign.core.spec import Field, SpecSchema, Table, TableList
 from geardesign.spur.strength.tables import REGIMES
 
-STAGE_KINDS = ("spur", "worm", "novikov", "drive")
+STAGE_KINDS = ("spur", "worm", "novikov", "planetary", "drive")
 
 MOTOR = Table("motor", "the driving motor", (
     Field("power", "number", "nominal power", "kW", "P_m", default=None, gt=0, maximum=1e5,

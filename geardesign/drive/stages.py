@@ -182,4 +182,43 @@ def run_worm(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
                     margins[worst], worst, False)
 
 
-ADAPTERS = {"spur": run_spur, "worm": run_worm, "novikov": run_novikov}
+def run_planetary(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
+                  where: str) -> StageRun:
+    """A planetary train as a stage: the drive sets the input member's speed and torque.
+    Its shafts are coaxial and the planets balance the radial mesh forces (with equal
+    load sharing), so the stage puts no radial or axial load on the shafts."""
+    d = copy.deepcopy(data)
+    op = d.setdefault("operation", {})
+    op["speed"], op["torque"] = n_in, T_in
+    op.pop("power", None)
+    st = d.get("strength")
+    if st is not None:
+        _put(st, "life_hours", duty.L_h)
+        _put(st, "application_factor", duty.K_A)
+        _put(st, "regime", duty.regime)
+        if duty.peak_ratio is not None:
+            _put(st, "peak_torque", T_in * duty.peak_ratio)
+    res = _run(d, where)
+    doc = res.document()
+    r = doc["results"]
+    ops = doc["inputs"]["operation"]
+    n_out = r["kinematics"][f"n_{ops['output']}"]
+    T_out = abs(r["power"][f"T_{ops['output']}"])
+    e = eta if eta is not None else r["efficiency"]["eta"]
+    src = "spec" if eta is not None else "planetary calculator"
+    if eta is not None:
+        T_out = T_in * abs(n_in / n_out) * eta
+    margins = {}
+    for mesh in ("sun_planet", "planet_ring"):
+        v = r.get(f"strength_{mesh}")
+        if v:
+            for k in ("S_H1", "S_H2", "S_F1", "S_F2"):
+                margins[f"{mesh}.{k}"] = v[k] / v[f"{k}_min"]
+    worst = min(margins, key=margins.get) if margins else ""
+    zero = Member(0.0, 0.0, 0.0, 0.0)
+    return StageRun(res, abs(n_in / n_out), e, src, T_in, n_in, T_out, abs(n_out), (zero, zero),
+                    margins.get(worst), worst, n_out * n_in < 0)
+
+
+ADAPTERS = {"spur": run_spur, "worm": run_worm, "novikov": run_novikov,
+            "planetary": run_planetary}
