@@ -17,7 +17,7 @@ import math
 from geardesign.core.result import Check, check
 from geardesign.planetary import sources as S
 from geardesign.planetary.geometry import Mesh
-from geardesign.spur.checks import CLEARANCE_WARN, EPS_MIN, EPS_WARN
+from geardesign.spur.checks import CLEARANCE_WARN, EPS_MIN, EPS_WARN, interference_check
 
 NAMES = {"sun": "sun", "planet": "planet", "planet2": "second planet crown", "ring": "ring",
          "ring2": "second ring"}
@@ -94,24 +94,11 @@ def mesh_checks(meshes: list[Mesh], sliding_max: float) -> list[Check]:
                 f"{mn}: {sym} = {eps:.3f} >= {EPS_WARN}", eps, EPS_WARN, S.PRACTICE))
         g1, g2 = g.g1, g.g2
         if not sp.internal:
-            for i, (gear, own, mate) in enumerate(((g1, p1, p2), (g2, p2, p1))):
-                if gear.rho_p <= 0.0:
-                    ok, msg = False, (
-                        f"{mn}: the {NAMES[mate]} tip reaches beyond the {NAMES[own]}'s tangency "
-                        f"point (ρ_p = {gear.rho_p:.3f} mm <= 0): the teeth cannot mesh; increase "
-                        f"shift.{own} or teeth.{own}, or reduce shift.{mate}")
-                elif gear.rho_p < gear.rho_l - 1e-9:
-                    ok, msg = False, (
-                        f"involute interference at the {NAMES[own]} root ({mn}): the "
-                        f"{NAMES[mate]} tip works below the {NAMES[own]}'s form circle (ρ_p = "
-                        f"{gear.rho_p:.3f} mm < ρ_l = {gear.rho_l:.3f} mm); increase shift.{own} "
-                        f"or reduce shift.{mate}")
-                else:
-                    ok, msg = True, ""
-                out.append(check(
-                    f"{code}_INTERFERENCE_{own.upper()}", ok, "error", msg,
-                    f"{mn}: no interference at the {NAMES[own]} root (ρ_p = {gear.rho_p:.3f} mm "
-                    f">= ρ_l = {gear.rho_l:.3f} mm)", gear.rho_p, gear.rho_l, S.G16532))
+            for gear, own, mate in ((g1, p1, p2), (g2, p2, p1)):
+                out.append(interference_check(
+                    f"{code}_INTERFERENCE_{own.upper()}", gear, NAMES[own], NAMES[mate], "",
+                    f"increase shift.{own} or teeth.{own}, or reduce shift.{mate}",
+                    f"increase shift.{own} or reduce shift.{mate}", prefix=f"{mn}: "))
         else:
             out.extend(_internal_checks(g, code, mn, p1, p2))
         c = min(g.c_12, g.c_21)

@@ -5,9 +5,9 @@ file.  matplotlib is an optional extra: it is imported only here, inside
 
 from __future__ import annotations
 
-import os
-import tempfile
 from pathlib import Path
+
+from geardesign.core.render import atomic_path
 
 FORMATS = (".png", ".svg")
 
@@ -71,19 +71,6 @@ def write_plot(result_or_data, path) -> Path:
     ax2.grid(True, linewidth=0.3)
     if ax2.lines:
         ax2.legend(loc="best", fontsize=8)
-    directory = path.parent if str(path.parent) else Path(".")
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=path.suffix, dir=directory)
-    os.close(fd)
-    try:
+    with atomic_path(path) as tmp:
         fig.savefig(tmp, format=path.suffix.lower()[1:])
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)   # an ordinary file, not mkstemp's 0600
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise
     return path

@@ -29,6 +29,29 @@ _NAMES = ("pinion", "wheel")
 _SUFFIX = ("PINION", "WHEEL")
 
 
+def interference_check(code: str, gear, own: str, mate: str, index: str, advice_tangency: str,
+                       advice_form: str, prefix: str = "") -> Check:
+    """Involute interference at the root of ``gear`` (GOST 16532-70 quality check): the
+    lower point of active profile must lie on the generated involute, ρ_p >= ρ_l, and
+    before the tangency point, ρ_p > 0.  ``own``/``mate`` name the gears, ``index`` the
+    symbol suffix, the advice phrases say what to change; ``prefix`` names the mesh."""
+    if gear.rho_p <= 0.0:
+        ok, msg = False, (
+            f"{prefix}the {mate} tip reaches beyond the {own}'s tangency point "
+            f"(ρ_p{index} = {gear.rho_p:.3f} mm <= 0): the teeth cannot mesh; {advice_tangency}")
+    elif gear.rho_p < gear.rho_l - 1e-9:
+        ok, msg = False, (
+            f"{prefix}involute interference at the {own} root: the {mate} tip works below "
+            f"the {own}'s form circle (ρ_p{index} = {gear.rho_p:.3f} mm < ρ_l{index} = "
+            f"{gear.rho_l:.3f} mm); {advice_form}")
+    else:
+        ok, msg = True, ""
+    return check(
+        code, ok, "error", msg,
+        f"{prefix}no interference at the {own} root (ρ_p{index} = {gear.rho_p:.3f} mm >= "
+        f"ρ_l{index} = {gear.rho_l:.3f} mm)", gear.rho_p, gear.rho_l, S.G16532)
+
+
 def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = False) -> list[Check]:
     p = g.inp
     m = p.m_n
@@ -87,23 +110,11 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
                 f"(case-hardened teeth need {TIP_THICKNESS_HARD}·m_n)",
                 gear.s_an, TIP_THICKNESS_MIN * m, S.G16532))
         # -- involute interference: the mate's tip must work on the involute
-        if gear.rho_p <= 0.0:
-            ok, msg = False, (
-                f"the {_NAMES[1 - i]} tip reaches beyond the {n}'s tangency point "
-                f"(ρ_p{idx} = {gear.rho_p:.3f} mm <= 0): the teeth cannot mesh; increase "
-                f"x{idx} or z{idx}, or reduce x{mate_idx}")
-        elif gear.rho_p < gear.rho_l - 1e-9:
-            ok, msg = False, (
-                f"involute interference at the {n} root: the {_NAMES[1 - i]} tip works below "
-                f"the {n}'s form circle (ρ_p{idx} = {gear.rho_p:.3f} mm < ρ_l{idx} = "
-                f"{gear.rho_l:.3f} mm); increase x{idx}, reduce x{mate_idx} or the addendum "
-                f"coefficient, or increase z{idx}")
-        else:
-            ok, msg = True, ""
-        out.append(check(
-            f"INTERFERENCE_{suf}", ok, "error", msg,
-            f"no interference at the {n} root (ρ_p{idx} = {gear.rho_p:.3f} mm >= ρ_l{idx} = "
-            f"{gear.rho_l:.3f} mm)", gear.rho_p, gear.rho_l, S.G16532))
+        out.append(interference_check(
+            f"INTERFERENCE_{suf}", gear, n, _NAMES[1 - i], str(idx),
+            f"increase x{idx} or z{idx}, or reduce x{mate_idx}",
+            f"increase x{idx}, reduce x{mate_idx} or the addendum coefficient, or increase "
+            f"z{idx}"))
         out.append(check(
             f"ROOT_DIAMETER_{suf}", gear.d_f > 0.0, "error",
             f"{n} root diameter d_f{idx} = {gear.d_f:.3f} mm <= 0: no gear body; increase "

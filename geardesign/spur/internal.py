@@ -82,8 +82,9 @@ class ShaperCutter:
 
 
 @dataclass(frozen=True)
-class InternalPairInput:
-    """Data of an internal pair.
+class InternalPairInput(PairInput):
+    """Data of an internal pair: the fields of :class:`PairInput`, then the internal
+    gear's own.
 
     Parameters
     ----------
@@ -105,14 +106,6 @@ class InternalPairInput:
         rack (a larger form circle than any shaper gives).
     """
 
-    m_n: float
-    z1: int
-    z2: int
-    x1: float
-    x2: float
-    beta: float
-    b_w: float
-    rack: BasicRack
     ring_rack: BasicRack | None = None
     k2: float = 0.0
     pinion: GearGeometry | None = None

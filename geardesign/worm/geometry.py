@@ -20,7 +20,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from geardesign.spur.geometry import BasicRack, transverse_angles, undercut_shift_limit
+from geardesign.spur.geometry import (
+    BasicRack, GeometryError, transverse_angles, undercut_shift_limit)
 from geardesign.worm import tables
 
 WORM_TYPES = ("ZA", "ZI", "ZN1", "ZK1")
@@ -36,16 +37,9 @@ FACE_WIDTH_RATIO = {1: 0.75, 2: 0.75, 3: 0.75, 4: 0.67}
 Pascal program PrCH4: ``Round(0.75*da1)``, ``Round(0.67*da1)``)."""
 
 
-class WormGeometryError(ValueError):
+class WormGeometryError(GeometryError):
     """The input admits no worm pair; ``code`` names the rule, ``value``/``limit`` the
     numbers (the calculator turns it into an input error naming the keys)."""
-
-    def __init__(self, code: str, message: str, value: float | None = None,
-                 limit: float | None = None):
-        super().__init__(message)
-        self.code = code
-        self.value = value
-        self.limit = limit
 
 
 @dataclass(frozen=True)
