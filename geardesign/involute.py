@@ -32,9 +32,9 @@ def inv_inverse(value: float, tol: float = 1e-12) -> float:
     .. math:: θ_{k+1} = θ_k - \\frac{\\tan θ_k - θ_k - v}{\\tan^2 θ_k},
               \\qquad θ_0 = (3v)^{1/3}
 
-    The start value is the first term of the series inv θ = θ³/3 + 2θ⁵/15 + …, from which
-    the iteration converges monotonically (f is convex on (0, π/2)); a few steps reach
-    |Δθ| < ``tol``.
+    The start value is the first term of the series inv θ = θ³/3 + 2θ⁵/15 + …; a few
+    steps reach |Δθ| < ``tol``.  Each step is kept inside the bracket of the root (a step
+    that leaves it is replaced by bisection), so values near π/2 converge too.
 
     Parameters
     ----------
@@ -56,15 +56,22 @@ def inv_inverse(value: float, tol: float = 1e-12) -> float:
     """
     if not value > 0.0 or not math.isfinite(value):
         raise ValueError(f"inv θ = {value!r}: the inverse involute needs a value > 0")
-    theta = (3.0 * value) ** (1.0 / 3.0)
-    theta = min(theta, 1.5)
-    for _ in range(100):
+    # Newton safeguarded by the bracket [lo, hi]: a step that leaves it is replaced by
+    # bisection, so the iteration cannot jump past π/2 (large values) or below 0.
+    lo, hi = 0.0, 0.5 * math.pi
+    theta = min((3.0 * value) ** (1.0 / 3.0), 1.5)
+    for _ in range(200):
         t = math.tan(theta)
-        step = (t - theta - value) / (t * t)
+        f = t - theta - value
+        if f > 0.0:
+            hi = theta
+        else:
+            lo = theta
+        step = f / (t * t)
+        if abs(step) < tol:
+            return theta - step
         theta_new = theta - step
-        if theta_new <= 0.0:
-            theta_new = theta / 2.0
-        if abs(theta_new - theta) < tol:
-            return theta_new
+        if not lo < theta_new < hi:
+            theta_new = 0.5 * (lo + hi)
         theta = theta_new
     raise ValueError(f"inverse involute of {value!r} did not converge")

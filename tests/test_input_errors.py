@@ -147,3 +147,9 @@ def test_no_traceback_in_a_real_process(tmp_path):
     assert proc.stdout == ""
     assert "Traceback" not in proc.stderr
     assert len(proc.stderr.strip().splitlines()) == 1
+
+
+def test_centre_distance_beyond_any_shift(tmp_path):
+    lines = run_bad(tmp_path, GOOD + "center_distance = 2000.0\n")
+    assert lines == ["s.toml: gear.center_distance = 2000.0: needs x1 + x2 = 2794.266, outside "
+                     "what two shifts of −1…2 can give (-2…4); choose a_w nearer to a = 60 mm"]

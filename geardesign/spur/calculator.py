@@ -24,6 +24,7 @@ from geardesign.spur.geometry import (
 from geardesign.spur.kinematics import balanced_shift_split, sliding_at_ends, velocities
 
 X_AGREE = 1e-3  # |x1 + x2 − x_Σ(a_w)| accepted when all three are given
+X_SUM_RANGE = (-2.0, 4.0)  # x1 + x2 reachable with each shift in −1…2 (the spec's range)
 
 
 def _fmt(x: float) -> str:
@@ -65,6 +66,12 @@ def pair_input_from_spec(spec: ValidatedSpec) -> tuple[PairInput, str]:
             "gear.center_distance", a_w,
             f"smaller than possible: must exceed (d_b1 + d_b2)/2 = {_fmt(exc.limit)} mm, where "
             f"the base circles touch (x1 + x2 = 0 gives a_w = {_fmt(a)} mm)") from None
+    if not X_SUM_RANGE[0] <= x_sum <= X_SUM_RANGE[1]:
+        a = 0.5 * m * (z1 + z2) / math.cos(beta)
+        raise InputError.at(
+            "gear.center_distance", a_w,
+            f"needs x1 + x2 = {x_sum:.3f}, outside what two shifts of −1…2 can give "
+            f"({X_SUM_RANGE[0]:g}…{X_SUM_RANGE[1]:g}); choose a_w nearer to a = {_fmt(a)} mm")
     if x1 is not None and x2 is not None:
         if split is not None:
             raise InputError.at("gear.shift_split", split,
