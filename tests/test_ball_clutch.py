@@ -193,3 +193,22 @@ def test_hertz_contact_identities():
     assert p0 == pytest.approx(3 * 250.0 / (2 * math.pi * a * a))
     p_conf, _ = ball_contact(250.0, 16.0, 8.4, E)        # conforming socket: lower pressure
     assert p_conf < p0
+
+
+def test_socket_radius_smaller_than_the_ball_is_an_input_error():
+    import tomllib
+
+    from geardesign.core.errors import InputError
+    from geardesign.core.registry import run_data
+    from tests.conftest import SPECS
+
+    data = tomllib.loads((SPECS / "ball_clutch_check.toml").read_text(encoding="utf-8"))
+    d_b = data["safety"]["ball_diameter"]
+    data["safety"]["socket_radius"] = 0.4 * d_b
+    try:
+        run_data(data)
+    except InputError as exc:
+        assert exc.problems[0].line("s.toml").startswith(
+            f"s.toml: safety.socket_radius = {0.4 * d_b!r}: must be larger than the ball radius")
+    else:
+        raise AssertionError("no input error")

@@ -105,6 +105,11 @@ def compute(spec: ValidatedSpec) -> Result:
         raise InputError.at("safety.socket_depth", h_s,
                             f"must be less than the ball radius d_b/2 = {_f(0.5 * d_b)} mm "
                             "(the ball must stay guided while it leaves the socket)")
+    if sa["socket_radius"] is not None and sa["socket_radius"] <= 0.5 * d_b:
+        raise InputError.at("safety.socket_radius", sa["socket_radius"],
+                            f"must be larger than the ball radius d_b/2 = {_f(0.5 * d_b)} mm (a "
+                            "spherical socket holds the ball from outside); omit it for a "
+                            "conical socket")
     pitch = math.pi * d5 / z3
     if pitch <= d_b:
         raise InputError.at("safety.balls", z3,

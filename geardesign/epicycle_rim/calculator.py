@@ -647,7 +647,7 @@ def _resonance(spec: ValidatedSpec, res: Result, angles: list[float], vehicle: d
             fb = M.floquet_band(n, exc.mu, b)
             sec.add(f"a_floquet_n{n}", None if fb is None else list(fb), "-",
                     f"a (Floquet, n = {n})", f"region {n} located by numerical integration "
-                    f"(null: too narrow)", S.FLOQUET)
+                    f"(null: too narrow to bracket)", S.FLOQUET)
             if fb is not None:
                 devs.append(max(abs(fb[0] - b.a_lo), abs(fb[1] - b.a_hi)))
         dev = max(devs, default=0.0)

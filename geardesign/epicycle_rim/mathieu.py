@@ -327,7 +327,9 @@ def floquet_trace_ode(a: float, q: float) -> float:
 def floquet_band(order: int, mu: float, guess: Band) -> tuple[float, float] | None:
     """Region ``order`` along b = μa/2 located independently by the ODE Floquet trace:
     roots of |tr M(a)| − 2 bracketed around the edges of ``guess`` (scipy ``brentq``).
-    None if the region is too narrow to bracket (width < 1e-7 in a).
+    None if the region is too narrow to bracket (width < 1e-7 in a), or if an edge cannot
+    be bracketed (the trace does not change sign within a quarter width of it, as at high
+    orders where the region is extremely thin): the band is then not confirmed.
     """
     from scipy.optimize import brentq
 
@@ -339,6 +341,11 @@ def floquet_band(order: int, mu: float, guess: Band) -> tuple[float, float] | No
     def g(a: float) -> float:
         return abs(floquet_trace_ode(a, 0.5 * mu * a)) - 2.0
 
-    lo = brentq(g, guess.a_lo - d, guess.a_lo + d, xtol=1e-12)
-    hi = brentq(g, guess.a_hi - d, guess.a_hi + d, xtol=1e-12)
-    return lo, hi
+    edges = []
+    for edge in (guess.a_lo, guess.a_hi):
+        a0, a1 = edge - d, edge + d
+        g0, g1 = g(a0), g(a1)
+        if g0 == 0.0 or g1 == 0.0 or (g0 < 0.0) == (g1 < 0.0):
+            return None
+        edges.append(brentq(g, a0, a1, xtol=1e-12))
+    return edges[0], edges[1]

@@ -101,6 +101,12 @@ def _layout(d: dict, train: K.Train) -> PG.Layout:
     cutter = None
     if d["cutter"] is not None:
         c = d["cutter"]
+        rings = [train.teeth(k) for k in (("ring", "ring2") if train.ring2 else ("ring",))]
+        if c["teeth"] + MIN_RING_EXCESS > min(rings):
+            raise InputError.at("cutter.teeth", c["teeth"],
+                                f"a shaper cuts an internal gear only with fewer teeth: at most "
+                                f"{min(rings) - MIN_RING_EXCESS} for the {min(rings)}-tooth ring "
+                                f"(the same rule as for a planet meshing the ring)")
         cutter = I.ShaperCutter(c["teeth"], c["shift"], c["tip_radius_coef"])
     m = tr["module"]
     return PG.Layout(train, m, tr["module2"] or m, math.radians(tr["helix_angle"]),

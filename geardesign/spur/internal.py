@@ -187,6 +187,9 @@ def working_pressure_angle(x_diff: float, z1: int, z2: int, alpha_n: float,
 
     References: GOST 19274-73 (x_d given); ``planetary.md`` D.3; paper (b) eq. (21).
     """
+    if z2 <= z1:
+        raise GeometryError("TEETH_DIFFERENCE", f"z2 = {z2} <= z1 = {z1}: no internal pair",
+                            z2, z1)
     value = 2.0 * x_diff * math.tan(alpha_n) / (z2 - z1) + inv(alpha_t)
     if value <= 0.0:
         limit = -inv(alpha_t) * (z2 - z1) / (2.0 * math.tan(alpha_n))
