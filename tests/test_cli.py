@@ -205,3 +205,26 @@ def test_select_option(tmp_path, good):
     assert "selection" in json.loads(out)["results"]
     code, out, err = cli("run", good, "--select")
     assert code == 2 and out == "" and err.strip().endswith("--select does not apply to a spur spec")
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_every_template_runs_and_matches_its_schema(kind, tmp_path):
+    """Each calculator's template is a complete spec (it computes: exit 0, or 1 where the
+    example is a published design that fails a check) and its JSON Schema accepts it."""
+    from tests.conftest import ROOT
+
+    code, text, _ = cli("template", kind)
+    assert code == 0
+    path = ROOT / f"_template_{kind}_test.toml"   # templates may refer to specs/ files
+    try:
+        path.write_text(text, encoding="utf-8")
+        code, out, err = cli("run", path, "--format", "json")
+    finally:
+        path.unlink()
+    assert code in (0, 1), err
+    assert json.loads(out)["kind"] == kind
+    jsonschema = pytest.importorskip("jsonschema")
+    import tomllib
+
+    code, schema_text, _ = cli("schema", kind)
+    jsonschema.validate(tomllib.loads(text), json.loads(schema_text))
