@@ -29,3 +29,20 @@ def cli(*args: str) -> tuple[int, str, str]:
 def cli_process(*args: str, **kw) -> subprocess.CompletedProcess:
     return subprocess.run([sys.executable, "-m", "geardesign", *map(str, args)],
                           capture_output=True, text=True, **kw)
+
+
+def write_spec(tmp_path, text: str, name: str = "s.toml"):
+    """Write a spec file in ``tmp_path`` and return its path."""
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def run_bad(tmp_path, text: str) -> list[str]:
+    """Run a spec that must be refused: exit 2, nothing on stdout, no traceback; the
+    problem lines with the file written as ``s.toml``."""
+    path = write_spec(tmp_path, text)
+    code, out, err = cli("run", path, "--format", "json")
+    assert code == 2, err
+    assert out == "" and "Traceback" not in err
+    return [line.replace(str(path), "s.toml") for line in err.splitlines()]

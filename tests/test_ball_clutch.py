@@ -7,7 +7,7 @@ import json
 import pytest
 
 from geardesign.core.registry import run_data
-from tests.helpers_cli import cli
+from tests.helpers_cli import cli, write_spec as spec
 
 GOOD = """kind = "ball_clutch"
 [operation]
@@ -30,12 +30,6 @@ active_coils = 4.5
 material = "oil_tempered"
 preload = 5.0
 """
-
-
-def spec(tmp_path, text, name="s.toml"):
-    path = tmp_path / name
-    path.write_text(text, encoding="utf-8")
-    return path
 
 
 def wire(text):

@@ -3,7 +3,7 @@ exit 2, no traceback, nothing on stdout."""
 
 import pytest
 
-from tests.helpers_cli import cli
+from tests.helpers_cli import cli, run_bad
 
 GOOD = """kind = "bearing"
 method = "gost18855_94"
@@ -16,15 +16,6 @@ speed = 1000.0
 """
 ISO = GOOD.replace('"gost18855_94"', '"iso281_2007"')
 SINGLE = "F_r = 3000.0\nF_a = 1000.0\nspeed = 1000.0\n"
-
-
-def run_bad(tmp_path, text):
-    path = tmp_path / "s.toml"
-    path.write_text(text, encoding="utf-8")
-    code, out, err = cli("run", path, "--format", "json")
-    assert code == 2, err
-    assert out == "" and "Traceback" not in err
-    return [line.replace(str(path), "s.toml") for line in err.splitlines()]
 
 
 def rep(old, new, text=GOOD):

@@ -4,7 +4,7 @@ rules from the schema, rules across keys from the calculator."""
 
 import pytest
 
-from tests.helpers_cli import cli, cli_process
+from tests.helpers_cli import cli, cli_process, run_bad
 
 GOOD = '''kind = "epicycle_rim"
 [ring]
@@ -250,15 +250,6 @@ EXPECTED = {
         's.toml: planets.x_planet = -1.0: no sun-planet pair with these shifts (inv α_tw = -0.106419 <= 0); check x_sun and x_planet',
     ],
 }
-
-
-def run_bad(tmp_path, text):
-    path = tmp_path / "s.toml"
-    path.write_text(text, encoding="utf-8")
-    code, out, err = cli("run", path, "--format", "json")
-    assert code == 2, err
-    assert out == "" and "Traceback" not in err
-    return [line.replace(str(path), "s.toml") for line in err.splitlines()]
 
 
 @pytest.mark.parametrize("name", CASES)

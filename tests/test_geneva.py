@@ -9,7 +9,7 @@ import pytest
 
 from geardesign.core.registry import run_data
 from geardesign.geneva import kinematics as K
-from tests.helpers_cli import cli
+from tests.helpers_cli import cli, write_spec as spec
 
 BASE = {"slots": 4, "center_distance": 200.0, "roller_diameter": 20.0, "crank_speed": 30.0}
 
@@ -75,12 +75,6 @@ def test_units_and_array_rendering():
     assert doc["results"]["motion_law"]["phi"][0] == pytest.approx(-45.0)
     from geardesign.core.render import fmt
     assert fmt(doc["results"]["motion_law"]["omega2"]) == "[181 values, see JSON]"
-
-
-def spec(tmp_path, text, name="s.toml"):
-    path = tmp_path / name
-    path.write_text(text, encoding="utf-8")
-    return path
 
 
 GOOD = """kind = "geneva"

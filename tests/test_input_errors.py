@@ -4,7 +4,7 @@ no traceback; nothing written."""
 import pytest
 
 from geardesign.core.registry import KINDS
-from tests.helpers_cli import cli, cli_process
+from tests.helpers_cli import cli, cli_process, run_bad, write_spec as spec
 
 KNOWN = ", ".join(f'"{k}"' for k in KINDS)
 
@@ -17,24 +17,9 @@ face_width = 20.0
 """
 
 
-def spec(tmp_path, text, name="s.toml"):
-    path = tmp_path / name
-    path.write_text(text, encoding="utf-8")
-    return path
-
-
 def replace(old, new):
     assert old in GOOD
     return GOOD.replace(old, new)
-
-
-def run_bad(tmp_path, text):
-    path = spec(tmp_path, text)
-    code, out, err = cli("run", path, "--format", "json")
-    assert code == 2
-    assert out == ""
-    assert "Traceback" not in err
-    return [line.replace(str(path), "s.toml") for line in err.splitlines()]
 
 
 CASES = [

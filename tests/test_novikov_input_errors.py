@@ -4,7 +4,7 @@ across keys of the calculator has its case here."""
 
 import pytest
 
-from tests.helpers_cli import cli
+from tests.helpers_cli import cli, run_bad
 
 GOOD = """kind = "novikov"
 [gear]
@@ -25,16 +25,6 @@ torque2 = 69500.0
 def replace(old, new):
     assert old in GOOD
     return GOOD.replace(old, new)
-
-
-def run_bad(tmp_path, text):
-    path = tmp_path / "s.toml"
-    path.write_text(text, encoding="utf-8")
-    code, out, err = cli("run", path, "--format", "json")
-    assert code == 2
-    assert out == ""
-    assert "Traceback" not in err
-    return [line.replace(str(path), "s.toml") for line in err.splitlines()]
 
 
 CASES = [

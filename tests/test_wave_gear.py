@@ -8,7 +8,7 @@ import pytest
 
 from geardesign.core.registry import run_data
 from geardesign.wave_gear import rim as R
-from tests.helpers_cli import cli
+from tests.helpers_cli import cli, write_spec as spec
 
 GOOD = """kind = "wave_gear"
 [gear]
@@ -19,12 +19,6 @@ rim_thickness = 2.5
 sigma_m1 = 450.0
 K_sigma = 1.6
 """
-
-
-def spec(tmp_path, text, name="s.toml"):
-    path = tmp_path / name
-    path.write_text(text, encoding="utf-8")
-    return path
 
 
 def gear(extra):

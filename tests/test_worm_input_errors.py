@@ -4,7 +4,7 @@ rules and the rules across keys in ``geardesign/worm/calculator.py``)."""
 
 import pytest
 
-from tests.helpers_cli import cli, cli_process
+from tests.helpers_cli import cli, cli_process, run_bad
 
 GOOD = """kind = "worm"
 [gear]
@@ -35,16 +35,6 @@ material = "BrO10N1F1_centrifugal"
 def replace(old, new, text=GOOD):
     assert old in text
     return text.replace(old, new)
-
-
-def run_bad(tmp_path, text):
-    path = tmp_path / "s.toml"
-    path.write_text(text, encoding="utf-8")
-    code, out, err = cli("run", path, "--format", "json")
-    assert code == 2
-    assert out == ""
-    assert "Traceback" not in err
-    return [line.replace(str(path), "s.toml") for line in err.splitlines()]
 
 
 SPECTRUM = "[[load.spectrum]]\ntorque_ratio = {r1}\ntime_share = {s1}\n"
