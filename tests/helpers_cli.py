@@ -46,3 +46,41 @@ def run_bad(tmp_path, text: str) -> list[str]:
     assert code == 2, err
     assert out == "" and "Traceback" not in err
     return [line.replace(str(path), "s.toml") for line in err.splitlines()]
+
+
+def _no_constant(name: str):
+    raise AssertionError(f"{name} in the JSON document")
+
+
+def run_failing(tmp_path, text: str) -> dict:
+    """Run a spec whose design fails: exit 1, nothing on stderr; the JSON document (which
+    must hold no NaN or Infinity)."""
+    import json
+
+    code, out, err = cli("run", write_spec(tmp_path, text), "--format", "json")
+    assert code == 1 and err == "", err
+    doc = json.loads(out, parse_constant=_no_constant)
+    assert doc["verdict"] == "fail"
+    return doc
+
+
+def failed_errors(doc: dict) -> list[dict]:
+    """The failed error-severity checks of a result document."""
+    return [c for c in doc["checks"] if not c["passed"] and c["severity"] == "error"]
+
+
+def changed(base: dict, **changes) -> dict:
+    """A copy of a spec dict with ``table__key=value`` changes (None removes the key)."""
+    import copy
+
+    data = copy.deepcopy(base)
+    for path, value in changes.items():
+        *head, last = path.split("__")
+        node = data
+        for part in head:
+            node = node.setdefault(part, {})
+        if value is None:
+            node.pop(last, None)
+        else:
+            node[last] = value
+    return data

@@ -7,7 +7,7 @@ import json
 import pytest
 
 from geardesign.core.registry import run_data
-from tests.helpers_cli import cli, write_spec as spec
+from tests.helpers_cli import cli, write_spec as spec, run_failing, failed_errors, run_bad
 
 GOOD = """kind = "ball_clutch"
 [operation]
@@ -79,10 +79,7 @@ BAD = [
 @pytest.mark.parametrize("name", [b[0] for b in BAD])
 def test_bad_input_one_line_exit_2(tmp_path, name):
     _, text, expected = next(b for b in BAD if b[0] == name)
-    path = spec(tmp_path, text)
-    code, out, err = cli("run", path, "--format", "json")
-    assert code == 2 and out == "" and "Traceback" not in err
-    assert [line.replace(str(path), "s.toml") for line in err.splitlines()] == expected
+    assert run_bad(tmp_path, text) == expected
 
 
 FAILS = [
@@ -118,13 +115,10 @@ FAILS = [
 @pytest.mark.parametrize("name", [f[0] for f in FAILS])
 def test_design_failures_exit_1(tmp_path, name):
     _, text, codes, message = next(f for f in FAILS if f[0] == name)
-    code, out, err = cli("run", spec(tmp_path, text), "--format", "json")
-    assert code == 1 and err == ""
-    doc = json.loads(out)
-    failed = [c for c in doc["checks"] if not c["passed"] and c["severity"] == "error"]
+    doc = run_failing(tmp_path, text)
+    failed = failed_errors(doc)
     assert [c["code"] for c in failed] == codes
-    assert failed[0]["message"] == message
-    assert "NaN" not in out and "Infinity" not in out
+    assert failed[0]["message"] == message   # run_failing also rejects NaN and Infinity
 
 
 def test_self_locking_reports_null_not_nan(tmp_path):

@@ -3,7 +3,7 @@ exit 2, no traceback, nothing on stdout."""
 
 import pytest
 
-from tests.helpers_cli import cli, run_bad
+from tests.helpers_cli import run_bad
 
 GOOD = """kind = "bearing"
 method = "gost18855_94"

@@ -3,11 +3,10 @@ exit 2; no traceback."""
 
 from __future__ import annotations
 
-import copy
 
 import pytest
 
-from tests.helpers_cli import cli
+from tests.helpers_cli import cli, changed
 
 BASE = {
     "kind": "planetary",
@@ -54,18 +53,8 @@ def to_toml(data: dict) -> str:
 
 
 def spec(**changes) -> dict:
-    """BASE with ``table__key=value`` changes (None removes the key; a dict replaces)."""
-    data = copy.deepcopy(BASE)
-    for path, value in changes.items():
-        *head, last = path.split("__")
-        node = data
-        for part in head:
-            node = node.setdefault(part, {})
-        if value is None:
-            node.pop(last, None)
-        else:
-            node[last] = value
-    return data
+    """BASE with ``table__key=value`` changes (None removes the key)."""
+    return changed(BASE, **changes)
 
 
 def run_bad(tmp_path, data) -> tuple[int, list[str]]:

@@ -1,7 +1,6 @@
 """Spur strength (GOST 21354-87): input rules, design failures, overrides, spectra,
 design mode.  Published values are in tests/reference/spur; these test behaviour."""
 
-import copy
 import json
 
 import pytest
@@ -10,7 +9,7 @@ from geardesign.core.errors import InputError
 from geardesign.core.registry import run_data
 from geardesign.spur.strength import tables as T
 from tests.conftest import flat
-from tests.helpers_cli import cli
+from tests.helpers_cli import cli, changed
 
 BASE = {
     "kind": "spur",
@@ -23,18 +22,9 @@ BASE = {
 }
 
 
-def spec(**changes):
-    data = copy.deepcopy(BASE)
-    for path, value in changes.items():
-        *head, last = path.split("__")
-        node = data
-        for part in head:
-            node = node.setdefault(part, {})
-        if value is None:
-            node.pop(last, None)
-        else:
-            node[last] = value
-    return data
+def spec(**changes) -> dict:
+    """BASE with ``table__key=value`` changes (None removes the key)."""
+    return changed(BASE, **changes)
 
 
 def problems(data):

@@ -8,7 +8,7 @@ import pytest
 
 from geardesign.core.registry import run_data
 from geardesign.wave_gear import rim as R
-from tests.helpers_cli import cli, write_spec as spec
+from tests.helpers_cli import cli, write_spec as spec, run_failing, failed_errors, run_bad
 
 GOOD = """kind = "wave_gear"
 [gear]
@@ -49,10 +49,7 @@ BAD = [
 @pytest.mark.parametrize("name", [b[0] for b in BAD])
 def test_bad_input_one_line_exit_2(tmp_path, name):
     _, text, expected = next(b for b in BAD if b[0] == name)
-    path = spec(tmp_path, text)
-    code, out, err = cli("run", path, "--format", "json")
-    assert code == 2 and out == "" and "Traceback" not in err
-    assert [line.replace(str(path), "s.toml") for line in err.splitlines()] == expected
+    assert run_bad(tmp_path, text) == expected
 
 
 FAILS = [
@@ -70,10 +67,8 @@ FAILS = [
 @pytest.mark.parametrize("name", [f[0] for f in FAILS])
 def test_design_failures_exit_1(tmp_path, name):
     _, text, code_expected, message = next(f for f in FAILS if f[0] == name)
-    code, out, err = cli("run", spec(tmp_path, text), "--format", "json")
-    assert code == 1 and err == ""
-    doc = json.loads(out)
-    failed = [c for c in doc["checks"] if not c["passed"] and c["severity"] == "error"]
+    doc = run_failing(tmp_path, text)
+    failed = failed_errors(doc)
     assert [c["code"] for c in failed] == [code_expected]
     assert failed[0]["message"] == message
 

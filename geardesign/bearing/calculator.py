@@ -254,7 +254,6 @@ def add_rows(res: Result, a: Assessment, info: dict) -> None:
     b, c = a.bearing, a.cond
     gost = c.method == GOST
     src = S.method_source(c.method)
-    ball = L.is_ball(b.kind)
 
     s = res.section("bearing", "Bearing")
     s.add("designation", info["catalogue"].name if info.get("catalogue") else "—", None,

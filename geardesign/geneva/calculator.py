@@ -285,7 +285,6 @@ def _spindle_block(res: Result, spec: ValidatedSpec, law: K.MotionLaw, z: int,
 
 def _checks(spec: ValidatedSpec, geo: K.GenevaGeometry, z: int, k: int, internal: bool,
             d_r: float) -> list:
-    g = spec.data["geneva"]
     out = []
     out.append(check(
         "SLOTS_MIN", z >= 4, "warning",

@@ -30,7 +30,6 @@ Misprints, with the value the tool gives:
   assembly condition (multiples of 4°).
 """
 
-import math
 
 import pytest
 
