@@ -172,16 +172,48 @@ MATERIAL = Table("material", "materials (for the strength calculation)",
                  (_material("pinion"), _material("wheel")), required=False)
 
 _FACTOR_NAMES = (
-    ("K_Hv", "dynamic factor, contact"), ("K_Hbeta", "face load factor, contact"),
-    ("K_Halpha", "transverse load factor, contact"), ("K_Fv", "dynamic factor, bending"),
-    ("K_Fbeta", "face load factor, bending"), ("K_Falpha", "transverse load factor, bending"),
-    ("Z_E", "elasticity factor [√MPa]"), ("Z_R1", "roughness factor, pinion"),
-    ("Z_R2", "roughness factor, wheel"), ("Y_FS1", "tooth form factor, pinion"),
-    ("Y_FS2", "tooth form factor, wheel"), ("Y_R", "root surface factor (1 if not given)"),
+    # key, name, minimum, maximum: each factor's physical domain (a load factor is never
+    # below 1; life, size and surface factors stay within what GOST 21354-87 can produce)
+    ("K_Hv", "dynamic factor, contact", 1.0, 10.0),
+    ("K_Hbeta", "face load factor, contact", 1.0, 10.0),
+    ("K_Halpha", "transverse load factor, contact", 1.0, 10.0),
+    ("K_Fv", "dynamic factor, bending", 1.0, 10.0),
+    ("K_Fbeta", "face load factor, bending", 1.0, 10.0),
+    ("K_Falpha", "transverse load factor, bending", 1.0, 10.0),
+    ("Z_E", "elasticity factor [√MPa]", 50.0, 300.0),
+    ("Z_H", "zone factor", 1.0, 3.5),
+    ("Z_eps", "contact ratio factor", 0.5, 1.0),
+    ("Z_N1", "life factor, contact, pinion", 0.5, 3.0),
+    ("Z_N2", "life factor, contact, wheel", 0.5, 3.0),
+    ("Z_Nmax1", "upper limit of Z_N, pinion", 1.0, 3.0),
+    ("Z_Nmax2", "upper limit of Z_N, wheel", 1.0, 3.0),
+    ("N_HG1", "base number of contact cycles, pinion", 1e5, 1e9),
+    ("N_HG2", "base number of contact cycles, wheel", 1e5, 1e9),
+    ("Z_R1", "roughness factor, pinion", 0.5, 1.2),
+    ("Z_R2", "roughness factor, wheel", 0.5, 1.2),
+    ("Z_v1", "velocity factor, pinion", 0.8, 1.5),
+    ("Z_v2", "velocity factor, wheel", 0.8, 1.5),
+    ("Z_X1", "size factor, contact, pinion", 0.5, 1.2),
+    ("Z_X2", "size factor, contact, wheel", 0.5, 1.2),
+    ("Y_FS1", "tooth form factor, pinion", 2.0, 8.0),
+    ("Y_FS2", "tooth form factor, wheel", 2.0, 8.0),
+    ("Y_R", "root surface factor (1 if not given)", 0.5, 1.5),
+    ("Y_beta", "helix factor", 0.5, 1.0),
+    ("Y_eps", "contact ratio factor, bending", 0.1, 1.0),
+    ("Y_delta", "notch sensitivity factor", 0.5, 1.5),
+    ("N_FG", "base number of bending cycles", 1e5, 1e9),
+    ("Y_N1", "life factor, bending, pinion", 0.5, 4.0),
+    ("Y_N2", "life factor, bending, wheel", 0.5, 4.0),
+    ("Y_X1", "size factor, bending, pinion", 0.5, 1.2),
+    ("Y_X2", "size factor, bending, wheel", 0.5, 1.2),
+    ("Y_A1", "reversed-load factor, pinion", 0.3, 1.0),
+    ("Y_A2", "reversed-load factor, wheel", 0.3, 1.0),
+    ("S_FSt", "safety factor against the static bending limit", 1.0, 5.0),
 )
 FACTORS = Table("factors", "load and strength factors given instead of computed", tuple(
-    Field(key, "number", name, symbol=key.replace("beta", "β").replace("alpha", "α"),
-          default=None, gt=0, maximum=1000) for key, name in _FACTOR_NAMES
+    Field(key, "number", name, symbol=key.replace("beta", "β").replace("alpha", "α")
+          .replace("eps", "ε").replace("delta", "δ"),
+          default=None, minimum=lo, maximum=hi) for key, name, lo, hi in _FACTOR_NAMES
 ), required=False, hint="each given factor replaces the computed one and is marked in the report")
 
 OPTIONS = Table("options", "calculation options", (

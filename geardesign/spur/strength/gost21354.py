@@ -131,9 +131,10 @@ def sigma_hp_pair(s1: float, s2: float, helical: bool) -> float:
     with ε_β ≥ 1: 0.45(σ_HP1 + σ_HP2), not less than σ_HPmin and not more than
     1.25·σ_HPmin.
 
-    References: GOST 21354-87; ZPCIL ``CONTAU.h`` Fortran comment
-    ``SGHP=.45*(SGHP1+SGHP2)`` / ``IF(SGHP.GT.1.25*AU) SGHP=1.25*AU`` (the method note's
-    1.23 is a textbook value; ``standards_check.md`` §1).
+    References: [GOST21354], the simplified rule for helical pairs as printed in the textbook
+    literature (limit 1.23σ_HPmin); the limit 1.25 is the one of the Fortran line
+    ``SGHP=.45*(SGHP1+SGHP2)`` / ``IF(SGHP.GT.1.25*AU)`` that [ZPCIL] ``CONTAU.h`` keeps as a
+    comment only (its active routine ``SGHPBE`` integrates along the contact lines).
     """
     low = min(s1, s2)
     if not helical:
@@ -214,14 +215,17 @@ def y_a(gamma_A: float, reverse_ratio: float) -> float:
     return 1.0 - gamma_A * reverse_ratio
 
 
-def y_n(N_FE: float, q_F: int) -> float:
+N_FG = 4e6
+"""Base number of bending stress cycles N_FG [GOST21354]."""
+
+
+def y_n(N_FE: float, q_F: int, N_FG: float = N_FG) -> float:
     """Life factor for bending Y_N = (N_FG/N_FE)^(1/q_F), N_FG = 4·10⁶, capped at 4 (q_F = 6)
-    or 2.5 (q_F = 9); 1 for N_FE ≥ N_FG.
+    or 2.5 (q_F = 9); 1 for N_FE ≥ N_FG (the standard's variant: no decline beyond N_FG).
 
     References: GOST 21354-87; ZPCIL ``YLIFE.h`` (which continues below 1 beyond N_FG
     with an exponent 0.05, a plant option; GOST keeps Y_N = 1).
     """
-    N_FG = 4e6
     if N_FE >= N_FG:
         return 1.0
     return min((N_FG / N_FE) ** (1.0 / q_F), 4.0 if q_F == 6 else 2.5)
@@ -282,14 +286,25 @@ def k_h_beta(scheme: int, psi_bd: float, run_in: bool) -> float:
     return 1.0 + A * psi_bd + B * psi_bd * psi_bd
 
 
-def k_f_beta(K_Hbeta: float, b_w: float, h: float) -> float:
-    """Face load factor for bending K_Fβ = K_Hβ^N_F, N_F = (b/h)²/(1 + b/h + (b/h)²).
+def n_f(b_w: float, h: float) -> float:
+    """Exponent of the bending face load factor N_F = (b/h)²/(1 + b/h + (b/h)²).
 
-    h = 2m_n for helical gears, 2m_n/ε_α for spur gears.
-    References: ZPCIL ``AKFBTP.h``; ISO 6336-1 (form of N_F); ``standards_check.md`` §1.
+    h = 2m_n for helical gears, 2m_n/ε_α for spur gears [mm]; b_w [mm].
+    References: ZPCIL ``AKFBTP.h``; ISO 6336-1 (form of N_F).
     """
     r = b_w / h
-    return K_Hbeta ** (r * r / (1.0 + r + r * r))
+    return r * r / (1.0 + r + r * r)
+
+
+def k_f_beta(K0_Hbeta: float, b_w: float, h: float) -> float:
+    """Face load factor for bending K_Fβ = (K⁰_Hβ)^N_F (:func:`n_f`).
+
+    K⁰_Hβ is the chart value before running-in (:func:`k_h_beta` with ``run_in=False``):
+    the tooth root does not run in, so the bending factor of a soft pair is raised from the
+    initial face load distribution, not from the run-in K_Hβ (which made K_Fβ 3–13 % low).
+    References: GOST 21354-87 chart relation of K_Fβ to K⁰_Hβ; ZPCIL ``AKFBTP.h``.
+    """
+    return K0_Hbeta ** n_f(b_w, h)
 
 
 def mesh_stiffness(z_v1: float, z_v2: float, x1: float, x2: float) -> float:
@@ -351,9 +366,25 @@ def k_h_alpha_max(eps_alpha: float, eps_beta: float, Z_eps: float) -> float:
 
 
 def k_f_alpha_max(eps_alpha: float, eps_beta: float) -> float:
-    """Upper limit of K_Fα = ε_γ/(0.25ε_α + 0.75) (ISO 6336-1; the GOST program bounds
-    K_Fα only from below)."""
-    return (eps_alpha + eps_beta) / (0.25 * eps_alpha + 0.75)
+    """Upper limit of K_Fα: 1/Y_ε, with the GOST contact ratio factor Y_ε of :func:`y_eps`.
+
+    The bending stress carries K_Fα·Y_ε; their product is the share of F_t taken by one
+    tooth and cannot exceed the whole load, so K_Fα ≤ 1/Y_ε (= ε_α for ε_β > 1).  The
+    ISO 6336-1 limit ε_γ/(0.25ε_α + 0.75) pairs with the ISO factor Y_ε = 0.25 + 0.75/ε_α
+    and must not be used with the GOST Y_ε = 1/ε_α (it let K_Fα·Y_ε reach 1.69).
+    """
+    return 1.0 / y_eps(eps_alpha, eps_beta)
+
+
+def limited(k: float, k_max: float) -> tuple[float, bool]:
+    """A transverse load factor within its limits: min(k, k_max), then never below 1.
+
+    The floor is applied after the cap: the cap 0.95ε_α²/ε_β of K_Hα falls below 1 for wide
+    helical pairs (ε_β > 0.95ε_α²), and a load factor below 1 would rate the pair for less
+    than its load.  Returns the factor and whether the cap was active.
+    """
+    capped = k > k_max
+    return max(1.0, min(k, k_max)), capped
 
 
 # ----------------------------------------------------------------------------- peak loads
@@ -361,7 +392,12 @@ def k_f_alpha_max(eps_alpha: float, eps_beta: float) -> float:
 
 def peak_factor(K: float, T: float, T_max: float) -> float:
     """A face or transverse load factor at the peak torque: (K − 1)·T/T_max + 1.
-    ZPCIL ``SIGMAX.h`` (K_v = 1 at the peak)."""
+    ZPCIL ``SIGMAX.h`` (K_v = 1 at the peak).
+
+    K_Hmax and K_Fmax are products of these factors only: the peak torque T_max is an actual
+    torque, so the application factor K_A does not enter them (with K_A in them the peak
+    stresses grew with K_A although the torque did not).
+    """
     return (K - 1.0) * T / T_max + 1.0
 
 
@@ -375,7 +411,11 @@ def sigma_f_max(sigma_F: float, T: float, T_max: float, K_F: float, K_Fmax: floa
     return sigma_F * T_max * K_Fmax / (T * K_F)
 
 
-def sigma_fp_max(sigma_FSt: float, Y_X: float, Y_z: float) -> float:
+S_FST = 1.75
+"""Safety factor against the static bending limit S_FSt [GOST21354]."""
+
+
+def sigma_fp_max(sigma_FSt: float, Y_X: float, Y_z: float, S_FSt: float = S_FST) -> float:
     """Allowable bending stress under the peak load σ_FPmax = σ_FSt·Y_z·Y_X/S_FSt,
     S_FSt = 1.75 (Y_z: 1 forging, 0.9 rolled, 0.8 casting).
 
@@ -383,7 +423,7 @@ def sigma_fp_max(sigma_FSt: float, Y_X: float, Y_z: float) -> float:
     (S_FSt = 1.75·Y_z) and MATLAB DANNYE (σ_FSt values); the two programs place Y_z
     differently, here it lowers the limit of a weaker blank.
     """
-    return sigma_FSt * Y_z * Y_X / 1.75
+    return sigma_FSt * Y_z * Y_X / S_FSt
 
 
 # ----------------------------------------------------------------------------- design

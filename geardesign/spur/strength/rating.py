@@ -94,6 +94,12 @@ def _factor(r: Rating, s: Setting, section: str, key: str, computed, symbol: str
     return r.put(section, key, value, unit, symbol, name, source)
 
 
+def _given(s: Setting, key: str, computed) -> float:
+    """The value of a factor: the spec's ``[factors]`` entry if given, else computed."""
+    given = s.overrides.get(key)
+    return given if given is not None else computed()
+
+
 def _informative_contact(r: Rating, g: PairGeometry, F_n: float, sigma_H: float,
                          m1: GearMaterial, m2: GearMaterial, s: Setting) -> None:
     """Rows of the nonlinear (n = 0.7) contact model and of a crowned flank (Popov et al.
@@ -171,6 +177,17 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
             N_HE.append(T.MU_H[life.regime] * N_K[i])
             N_FE.append(T.MU_F[mat.q_F][life.regime] * N_K[i])
     how = "spectrum" if life.blocks else f"regime {life.regime}"
+    if not life.blocks:
+        r.put("life", "mu_H", T.MU_H[life.regime], "-", "μ_H",
+              f"equivalence factor, contact, regime {life.regime}", SRC_TABLE)
+        for i, mat in enumerate(mats):
+            r.put("life", f"mu_F{i + 1}", T.MU_F[mat.q_F][life.regime], "-", f"μ_F{i + 1}",
+                  f"equivalence factor, bending (q_F = {mat.q_F}), regime {life.regime}",
+                  SRC_TABLE)
+    else:
+        r.put("life", "damage_sum", "single slope: exponent q_H/2 = 3 (contact) and q_F "
+              "(bending) for every block, no second slope beyond the base number", None, "Σ",
+              "variant of the equivalent-cycle sum", SRC)
     for i in range(2):
         who = ("pinion", "wheel")[i]
         r.put("life", f"N_K{i + 1}", N_K[i], "-", f"N_K{i + 1}",
@@ -192,47 +209,100 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
                           g.a_w, u)
     w_Fv = G.dynamic_load(T.DELTA_F[form], grade, p.m_n, v, g.a_w, u)
     r.put("factors", "w_Hv", w_Hv, "N/mm", "w_Hv", "specific dynamic force, contact", SRC_TABLE)
+    j = G.module_class(p.m_n)
+    r.put("factors", "delta_H", T.DELTA_H[("soft" if soft_pair else "hard", form)], "-", "δ_H",
+          f"tooth form/hardness factor of w_Hv ({form})", SRC_TABLE)
+    r.put("factors", "delta_F", T.DELTA_F[form], "-", "δ_F",
+          f"tooth form factor of w_Fv ({form})", SRC_TABLE)
+    r.put("factors", "g_0", float(T.G0[grade][j]), "-", "g_0",
+          f"pitch deviation factor (grade {grade})", SRC_TABLE)
+    r.put("factors", "w_max", float(T.W_MAX[grade][j]), "N/mm", "w_max",
+          f"upper limit of w_v (grade {grade})", SRC_TABLE)
     r.put("factors", "w_Fv", w_Fv, "N/mm", "w_Fv", "specific dynamic force, bending", SRC_TABLE)
+    r.put("factors", "K_v_variant", "F_t/b_w as computed (no 150 N/mm floor)", None, "K_v",
+          "variant of K_v = 1 + w_v·b_w/(F_t·K_A)", SRC)
     K_Hv = _factor(r, s, "factors", "K_Hv", lambda: G.k_v(w_Hv, p.b_w, F_tH, K_A), "K_Hv",
                    "dynamic factor, contact", SRC)
     K_Fv = _factor(r, s, "factors", "K_Fv", lambda: G.k_v(w_Fv, p.b_w, F_tH, K_A), "K_Fv",
                    "dynamic factor, bending", SRC)
     psi_bd = p.b_w / g.g1.d
+    r.put("factors", "psi_bd", psi_bd, "-", "ψ_bd", "face width ratio b_w/d1 (read in the "
+          "K_Hβ chart)", SRC)
+    K0_Hb = r.put("factors", "K0_Hbeta", G.k_h_beta(s.scheme, psi_bd, False), "-", "K⁰_Hβ",
+                  f"face load factor before running-in (scheme {s.scheme})",
+                  "GOST 21354-87 chart (ZPCIL fit)")
     K_Hb = _factor(r, s, "factors", "K_Hbeta", lambda: G.k_h_beta(s.scheme, psi_bd, soft_pair),
-                   "K_Hβ", f"face load factor, contact (scheme {s.scheme}, ψ_bd = {psi_bd:.3f})",
+                   "K_Hβ", "face load factor, contact" + (" (after running-in: softer gear "
+                   "≤ 350 HB)" if soft_pair else " (no running-in: both gears > 350 HB)"),
                    "GOST 21354-87 chart (ZPCIL fit)")
+    if soft_pair and K0_Hb > 1.0:
+        r.put("factors", "K_Hw", (K_Hb - 1.0) / (K0_Hb - 1.0), "-", "K_Hw",
+              "running-in factor (K_Hβ − 1)/(K⁰_Hβ − 1)", SRC)
     h_eff = 2.0 * p.m_n if helical else 2.0 * p.m_n / g.eps_alpha
-    K_Fb = _factor(r, s, "factors", "K_Fbeta", lambda: G.k_f_beta(K_Hb, p.b_w, h_eff), "K_Fβ",
-                   "face load factor, bending (K_Hβ^N_F)", SRC_ZPCIL)
-    Z_eps = G.z_eps(g.eps_alpha, g.eps_beta if helical else 0.0)
+    N_F = r.put("factors", "N_F", G.n_f(p.b_w, h_eff), "-", "N_F",
+                f"exponent of K_Fβ = (K⁰_Hβ)^N_F (b/h = {p.b_w / h_eff:.3f})", SRC_ZPCIL)
+    K_Fb = _factor(r, s, "factors", "K_Fbeta", lambda: K0_Hb ** N_F, "K_Fβ",
+                   "face load factor, bending (K⁰_Hβ^N_F, before running-in)", SRC_ZPCIL)
+    Z_eps = _given(s, "Z_eps", lambda: G.z_eps(g.eps_alpha, g.eps_beta if helical else 0.0))
+    Y_eps = _given(s, "Y_eps", lambda: G.y_eps(g.eps_alpha, g.eps_beta if helical else 0.0))
     if helical:
         z_v = [gear.z / math.cos(p.beta) ** 3 for gear in gears]
         c_gamma = G.mesh_stiffness(z_v[0], z_v[1], p.x1, p.x2) * (0.75 * g.eps_alpha + 0.25)
         f_pb = math.hypot(*(G.base_pitch_deviation(p.m_n, gear.d, grade) for gear in gears))
         a_alpha = 0.2 if soft_pair else 0.3
+        K_Ha_max = G.k_h_alpha_max(g.eps_alpha, g.eps_beta, Z_eps)
+        K_Fa_max = 1.0 / Y_eps
+        capped = {}
 
         def kha() -> float:
             k = G.k_alpha(g.eps_alpha, g.eps_beta, c_gamma, p.b_w, f_pb, a_alpha, F_tH, K_A,
                           K_Hv, K_Hb)
-            return min(k, G.k_h_alpha_max(g.eps_alpha, g.eps_beta, Z_eps))
+            k, capped["H"] = G.limited(k, K_Ha_max)
+            return k
 
         def kfa() -> float:
             k = G.k_alpha(g.eps_alpha, g.eps_beta, c_gamma, p.b_w, f_pb, 0.4, F_tH, K_A, K_Fv,
                           K_Fb)
-            return min(k, G.k_f_alpha_max(g.eps_alpha, g.eps_beta))
+            k, capped["F"] = G.limited(k, K_Fa_max)
+            return k
 
         r.put("factors", "c_gamma", c_gamma, "N/(mm*um)", "c_γ", "mesh stiffness", SRC_ZPCIL)
         r.put("factors", "f_pb", f_pb, "um", "f_pb", "equivalent base pitch deviation",
               "GOST 1643-81 (ZPCIL fit)")
+        r.put("factors", "K_Halpha_max", K_Ha_max, "-", "K_Hα,max",
+              "upper limit of K_Hα (the factor is never below 1)", SRC_ZPCIL)
+        r.put("factors", "K_Falpha_max", K_Fa_max, "-", "K_Fα,max",
+              "upper limit of K_Fα = 1/Y_ε (K_Fα·Y_ε ≤ 1)", SRC)
         K_Ha = _factor(r, s, "factors", "K_Halpha", kha, "K_Hα", "transverse load factor, contact",
                        SRC_ZPCIL)
         K_Fa = _factor(r, s, "factors", "K_Falpha", kfa, "K_Fα", "transverse load factor, bending",
                        SRC_ZPCIL)
+        for key in ("H", "F"):
+            if key in capped:
+                r.put("factors", f"K_{key}alpha_capped", "yes" if capped[key] else "no", None,
+                      f"K_{key}α at cap", f"K_{key}α limited by its upper limit", SRC)
     else:
         K_Ha = _factor(r, s, "factors", "K_Halpha", 1.0, "K_Hα",
                        "transverse load factor, contact (spur: 1)", SRC)
         K_Fa = _factor(r, s, "factors", "K_Falpha", 1.0, "K_Fα",
                        "transverse load factor, bending (spur: 1)", SRC)
+    def peak_alpha(K_Hb_max: float, K_Fb_max: float, ratio: float) -> tuple[float, float]:
+        """K_Hα and K_Fα at the peak torque: the same formula at the peak load with
+        K_A = K_v = 1 (the peak torque is an actual torque); a given factor is scaled
+        by :func:`.gost21354.peak_factor`."""
+        if not helical:
+            return 1.0, 1.0
+        out = []
+        for key, K, a_al, K_b, cap in (("K_Halpha", K_Ha, a_alpha, K_Hb_max, K_Ha_max),
+                                       ("K_Falpha", K_Fa, 0.4, K_Fb_max, K_Fa_max)):
+            if s.overrides.get(key) is not None:
+                out.append(G.peak_factor(K, 1.0, ratio))
+            else:
+                k = G.k_alpha(g.eps_alpha, g.eps_beta, c_gamma, p.b_w, f_pb, a_al,
+                              F_tH * ratio, 1.0, 1.0, K_b)
+                out.append(G.limited(k, cap)[0])
+        return out[0], out[1]
+
     K_H = r.put("factors", "K_H", K_A * K_Hv * K_Hb * K_Ha, "-", "K_H",
                 "load factor, contact K_A·K_Hv·K_Hβ·K_Hα", SRC)
     K_F = r.put("factors", "K_F", K_A * K_Fv * K_Fb * K_Fa, "-", "K_F",
@@ -241,9 +311,9 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
     # ------------------------------------------------------------------ contact
     Z_E = _factor(r, s, "contact", "Z_E", lambda: G.z_e(m1.E, m1.nu, m2.E, m2.nu), "Z_E",
                   "elasticity factor", SRC, unit="MPa^0.5")
-    Z_H = r.put("contact", "Z_H", G.z_h(g.beta_b, g.alpha_t, g.alpha_tw), "-", "Z_H",
-                "zone factor", SRC)
-    r.put("contact", "Z_eps", Z_eps, "-", "Z_ε", "contact ratio factor", SRC)
+    Z_H = _factor(r, s, "contact", "Z_H", lambda: G.z_h(g.beta_b, g.alpha_t, g.alpha_tw), "Z_H",
+                  "zone factor", SRC)
+    _factor(r, s, "contact", "Z_eps", Z_eps, "Z_ε", "contact ratio factor", SRC)
     sigma_H = r.put("contact", "sigma_H",
                     G.sigma_h(Z_E, Z_H, Z_eps, F_tH, K_H, u, p.b_w, g.g1.d, internal), "MPa",
                     "σ_H", "contact stress" + (" (internal pair, u − 1)" if internal else ""),
@@ -258,16 +328,20 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
               else "spec")
         r.put("contact", f"S_H{k}_min", mat.S_H, "-", f"S_Hmin{k}",
               f"required contact safety factor, {who}", SRC_TABLE)
-        NHG = r.put("contact", f"N_HG{k}", G.n_hg(mat.HB), "-", f"N_HG{k}",
-                    f"base number of contact cycles, {who}", SRC)
-        ZN = r.put("contact", f"Z_N{k}", G.z_n(NHG, N_HE[i], mat.Z_N_max), "-", f"Z_N{k}",
-                   f"life factor, contact, {who}", SRC)
+        NHG = _factor(r, s, "contact", f"N_HG{k}", lambda: G.n_hg(mat.HB), f"N_HG{k}",
+                      f"base number of contact cycles, {who}", SRC)
+        ZNmax = _factor(r, s, "contact", f"Z_Nmax{k}", mat.Z_N_max, f"Z_Nmax{k}",
+                        f"upper limit of Z_N ({'hardened surface' if mat.Z_N_max < 2.6 else 'homogeneous structure'}), {who}", SRC)
+        r.put("contact", f"q_H{k}", 6.0 if N_HE[i] <= NHG else 20.0, "-", f"q_H{k}",
+              f"exponent of the contact fatigue curve in use, {who}", SRC)
+        ZN = _factor(r, s, "contact", f"Z_N{k}", lambda: G.z_n(NHG, N_HE[i], ZNmax), f"Z_N{k}",
+                     f"life factor, contact, {who}", SRC)
         ZR = _factor(r, s, "contact", f"Z_R{k}", lambda: G.z_r(s.Ra[i]), f"Z_R{k}",
                      f"roughness factor (Ra = {s.Ra[i]:g} µm), {who}", SRC_TABLE)
-        ZV = r.put("contact", f"Z_v{k}", G.z_v(v, mat.soft), "-", f"Z_v{k}",
-                   f"velocity factor, {who}", SRC)
-        ZX = r.put("contact", f"Z_X{k}", G.z_x(gears[i].d), "-", f"Z_X{k}",
-                   f"size factor, contact, {who}", SRC)
+        ZV = _factor(r, s, "contact", f"Z_v{k}", lambda: G.z_v(v, mat.soft), f"Z_v{k}",
+                     f"velocity factor, {who}", SRC)
+        ZX = _factor(r, s, "contact", f"Z_X{k}", lambda: G.z_x(gears[i].d), f"Z_X{k}",
+                     f"size factor, contact, {who}", SRC)
         limit = mat.sigma_Hlim * ZN * ZR * ZV * ZX
         sigma_HP.append(r.put("contact", f"sigma_HP{k}", limit / mat.S_H, "MPa", f"σ_HP{k}",
                               f"allowable contact stress, {who}", SRC))
@@ -279,12 +353,14 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
           (" 0.45(σ_HP1 + σ_HP2), ≤ 1.25σ_HPmin" if pair_rule else " (the smaller)"), SRC)
 
     # ------------------------------------------------------------------ bending
-    Y_beta = r.put("bending", "Y_beta", G.y_beta(g.eps_beta, p.beta) if helical else 1.0, "-",
-                   "Y_β", "helix factor", SRC)
-    Y_eps = r.put("bending", "Y_eps", G.y_eps(g.eps_alpha, g.eps_beta if helical else 0.0), "-",
-                  "Y_ε", "contact ratio factor, bending", SRC)
-    Y_delta = r.put("bending", "Y_delta", G.y_delta(p.m_n), "-", "Y_δ",
-                    "notch sensitivity factor", SRC)
+    Y_beta = _factor(r, s, "bending", "Y_beta",
+                     lambda: G.y_beta(g.eps_beta, p.beta) if helical else 1.0, "Y_β",
+                     "helix factor", SRC)
+    _factor(r, s, "bending", "Y_eps", Y_eps, "Y_ε", "contact ratio factor, bending", SRC)
+    Y_delta = _factor(r, s, "bending", "Y_delta", lambda: G.y_delta(p.m_n), "Y_δ",
+                      "notch sensitivity factor", SRC)
+    N_FG = _factor(r, s, "bending", "N_FG", G.N_FG, "N_FG", "base number of bending cycles "
+                   "(Y_N = 1 beyond it: the standard's variant)", SRC)
     Y_R = _factor(r, s, "bending", "Y_R", 1.0, "Y_R", "root surface factor", SRC)
     for i, mat in enumerate(mats):
         k, who, gear = i + 1, ("pinion", "wheel")[i], gears[i]
@@ -307,13 +383,15 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
         r.put("bending", f"S_F{k}_min", mat.S_F, "-", f"S_Fmin{k}",
               f"required bending safety factor, {who}",
               "spec" if "S_F" in mat.given else SRC_TABLE)
-        YN = r.put("bending", f"Y_N{k}", G.y_n(N_FE[i], mat.q_F), "-", f"Y_N{k}",
-                   f"life factor, bending (q_F = {mat.q_F}), {who}", SRC)
-        YX = r.put("bending", f"Y_X{k}", G.y_x(gear.d), "-", f"Y_X{k}",
-                   f"size factor, bending, {who}", SRC)
+        r.put("bending", f"q_F{k}", float(mat.q_F), "-", f"q_F{k}",
+              f"exponent of the bending fatigue curve, {who}", SRC)
+        YN = _factor(r, s, "bending", f"Y_N{k}", lambda: G.y_n(N_FE[i], mat.q_F, N_FG),
+                     f"Y_N{k}", f"life factor, bending (q_F = {mat.q_F}), {who}", SRC)
+        YX = _factor(r, s, "bending", f"Y_X{k}", lambda: G.y_x(gear.d), f"Y_X{k}",
+                     f"size factor, bending, {who}", SRC)
         rev = duty.reverse_ratio if duty.reverse_ratios is None else duty.reverse_ratios[i]
-        YA = r.put("bending", f"Y_A{k}", G.y_a(mat.gamma_A, rev), "-", f"Y_A{k}",
-                   f"reversed-load factor, {who}", SRC)
+        YA = _factor(r, s, "bending", f"Y_A{k}", lambda: G.y_a(mat.gamma_A, rev), f"Y_A{k}",
+                     f"reversed-load factor, {who}", SRC)
         limit = mat.sigma_Flim * YN * Y_delta * Y_R * YX * YA
         r.put("bending", f"sigma_FP{k}", limit / mat.S_F, "MPa", f"σ_FP{k}",
               f"allowable bending stress, {who}", SRC)
@@ -323,9 +401,19 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
     # ------------------------------------------------------------------ peak load
     if duty.T_peak is not None:
         Tm = duty.T_peak
-        K_Hmax = K_A * G.peak_factor(K_Hb, duty.T1, Tm) * G.peak_factor(K_Ha, duty.T1, Tm)
-        K_Fmax = K_A * G.peak_factor(K_Fb, duty.T1, Tm) * G.peak_factor(K_Fa, duty.T1, Tm)
-        r.put("static", "T_peak", Tm, "N*m", "T_max", "peak pinion torque", "spec")
+        K_Hb_max = G.peak_factor(K_Hb, duty.T1, Tm)
+        K_Fb_max = G.peak_factor(K_Fb, duty.T1, Tm)
+        K_Ha_pk, K_Fa_pk = peak_alpha(K_Hb_max, K_Fb_max, Tm / duty.T1)
+        K_Hmax = K_Hb_max * K_Ha_pk
+        K_Fmax = K_Fb_max * K_Fa_pk
+        r.put("static", "T_peak", Tm, "N*m", "T_max", "peak pinion torque (an actual torque: "
+              "K_A does not enter the peak stresses)", "spec")
+        r.put("static", "K_Hmax", K_Hmax, "-", "K_Hmax", "load factor at the peak torque, "
+              "contact (K_v = 1, no K_A)", SRC_ZPCIL)
+        r.put("static", "K_Fmax", K_Fmax, "-", "K_Fmax", "load factor at the peak torque, "
+              "bending (K_v = 1, no K_A)", SRC_ZPCIL)
+        S_FSt = _factor(r, s, "static", "S_FSt", G.S_FST, "S_FSt",
+                        "safety factor against the static bending limit", SRC)
         r.put("static", "sigma_Hmax", G.sigma_h_max(sigma_H, duty.T1, Tm, K_H, K_Hmax),
               "MPa", "σ_Hmax", "contact stress at the peak torque", SRC_ZPCIL)
         for i, mat in enumerate(mats):
@@ -338,7 +426,9 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
             r.put("static", f"sigma_Fmax{k}",
                   G.sigma_f_max(r.v[f"sigma_F{k}"], duty.T1, Tm, K_F, K_Fmax), "MPa",
                   f"σ_Fmax{k}", f"bending stress at the peak torque, {who}", SRC_ZPCIL)
+            r.put("static", f"Y_z{k}", mat.Y_z, "-", f"Y_z{k}",
+                  f"blank factor (forging 1, rolled 0.9, casting 0.8), {who}", SRC)
             r.put("static", f"sigma_FPmax{k}",
-                  G.sigma_fp_max(mat.sigma_FSt, r.v[f"Y_X{k}"], mat.Y_z), "MPa",
+                  G.sigma_fp_max(mat.sigma_FSt, r.v[f"Y_X{k}"], mat.Y_z, S_FSt), "MPa",
                   f"σ_FPmax{k}", f"allowable peak bending stress, {who}", SRC)
     return r
