@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import Callable
 
 from geardesign.core.errors import InputError, Problem
-from geardesign.core.result import Result, Row
+from geardesign.core.result import Result, Row, guard
 from geardesign.core.spec import SpecSchema, ValidatedSpec, iter_fields, load_toml, validate
 
 NOT_CALCULATORS = {"core", "materials"}
@@ -49,6 +49,17 @@ class Calculator:
     methods: tuple[str, ...]
     schema: SpecSchema
     compute: Callable[[ValidatedSpec], Result]
+
+    def __post_init__(self) -> None:
+        # every result passes the one guard of :mod:`geardesign.core.result` (no NaN, no
+        # check judged on infinity, no negative safety factor), whoever computes it
+        compute = self.compute
+
+        def guarded(spec: ValidatedSpec) -> Result:
+            return guard(compute(spec))
+
+        guarded.__doc__ = compute.__doc__
+        object.__setattr__(self, "compute", guarded)
 
     def new_result(self, spec: ValidatedSpec) -> Result:
         """An empty result that echoes the inputs (assumed defaults marked)."""
@@ -106,7 +117,7 @@ def load_data(data: dict, source: str = "",
         known = ", ".join(f'"{k}"' for k in KINDS)
         raise InputError(Problem("kind", f"missing; required: one of {known} (the calculator)"))
     kind = data["kind"]
-    if kind not in KINDS:
+    if not isinstance(kind, str) or kind not in KINDS:
         raise InputError(_kind_problem(kind))
     if expect_kind is not None and kind != expect_kind:
         raise InputError(Problem(

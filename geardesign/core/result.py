@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from geardesign import __version__
+from geardesign.core.errors import InputError, Problem
 
 SEVERITIES = ("error", "warning", "info")
 
@@ -83,9 +84,10 @@ class Check:
 
 def check(code: str, ok: bool, severity: str, fail_message: str, pass_message: str,
           value: float | None = None, limit: float | None = None, source: str = "") -> Check:
-    """Build a :class:`Check` from a condition, with one message for each outcome."""
+    """Build a :class:`Check` from a condition, with one message for each outcome.  A
+    non-finite value or limit is judged by :func:`guard` when the result is finished."""
     return Check(code, severity, bool(ok), pass_message if ok else fail_message,
-                 _clean(value), _clean(limit), source)
+                 value, limit, source)
 
 
 def _clean(v: Any) -> Any:
@@ -108,6 +110,8 @@ class Result:
     checks: list[Check] = field(default_factory=list)
     source: str = ""
     tables: list[DataTable] = field(default_factory=list)
+    undefined: list = field(default_factory=list)
+    """Result keys whose value is unbounded (reported as null and "—"); set by :func:`guard`."""
     parts: list = field(default_factory=list)
     """Nested results ``(key, title, Result)``, e.g. the stages of a drive: reported after
     this one, and in JSON under ``results.<key>`` as full documents."""
@@ -180,7 +184,100 @@ class Result:
                 for c in self.checks
             ],
             "verdict": self.verdict,
+            **({"undefined": list(self.undefined)} if self.undefined else {}),
         }
+
+
+class ResultDomainError(InputError):
+    """The inputs lead to a value the method cannot give: NaN, a check judged on an
+    unbounded number, an impossible negative (a safety factor, a life, a contact ratio)."""
+
+
+_NONNEG_PREFIXES = ("S_", "L10", "L_", "eps_alpha", "eps_gamma", "life")
+"""Result keys that can never be negative: safety factors, lives, contact ratios."""
+
+
+def _nonneg(key: str) -> bool:
+    return key.startswith(_NONNEG_PREFIXES) and not key.endswith("_min")
+
+
+def _scan(value: Any) -> str | None:
+    """``"nan"``, ``"inf"`` or ``None`` for a value or a (nested) list of values."""
+    if isinstance(value, float):
+        if value != value:
+            return "nan"
+        if math.isinf(value):
+            return "inf"
+        return None
+    if isinstance(value, (list, tuple)):
+        found = None
+        for v in value:
+            f = _scan(v)
+            if f == "nan":
+                return f
+            found = found or f
+        return found
+    return None
+
+
+def _has_negative(value: Any) -> bool:
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return value < 0
+    if isinstance(value, (list, tuple)):
+        return any(_has_negative(v) for v in value)
+    return False
+
+
+def _refuse(what: str, where: str, how: str) -> ResultDomainError:
+    return ResultDomainError(Problem(
+        "", f"the inputs give {how} {what} ({where}), which the method cannot compute: "
+            f"check the input values and their units"))
+
+
+def guard(res: "Result") -> "Result":
+    """The one place where a finished result is checked before anyone sees it.
+
+    * NaN in a check value or limit, or in a row or table cell of a design that passes every
+      check, refuses the input (exit 2) naming the quantity; in a design that already fails
+      a check (e.g. sliding at a contact point that interference puts inside the base
+      circle) the value is reported as undefined, as below;
+    * a safety factor, a life or a contact ratio below zero refuses the input likewise;
+    * a check whose value or limit is infinite cannot pass: it is refused as above;
+    * an infinite row value (a life that is unbounded, an angle at a point that does not
+      exist) is reported as undefined: null in JSON, "—" in the report, and its key is
+      listed under ``undefined`` in the document, so that it is never silent.
+    """
+    undefined = []
+    failing = bool(res.failed)
+    for sec in res.sections:
+        for row in sec.rows:
+            where = f"results.{sec.key}.{row.key}"
+            found = _scan(row.value)
+            if found == "nan" and not failing:
+                raise _refuse(row.symbol or row.key, where, "an undefined (NaN)")
+            if found:
+                undefined.append(where)
+            if _nonneg(row.key) and _has_negative(row.value):
+                raise _refuse(row.symbol or row.key, where, "a negative")
+    for t in res.tables:
+        for i, row in enumerate(t.rows):
+            for k, _, _ in t.columns:
+                found = _scan(row.get(k))
+                where = f"results.{t.key}[{i}].{k}"
+                if found == "nan" and not failing:
+                    raise _refuse(k, where, "an undefined (NaN)")
+                if found:
+                    undefined.append(where)
+    for c in res.checks:
+        for what in ("value", "limit"):
+            found = _scan(getattr(c, what))
+            if found == "nan":
+                raise _refuse(f"{what} of check {c.code}", "checks", "an undefined (NaN)")
+            if found == "inf" and c.passed and c.severity != "info":
+                raise _refuse(f"{what} of check {c.code}", "checks",
+                              "an unbounded (infinite)")
+    res.undefined = undefined
+    return res
 
 
 def _drop_none(d: Any) -> Any:
