@@ -45,6 +45,18 @@ def _err(line: str) -> None:
     sys.stderr.write(line + "\n")
 
 
+MAX_PROBLEM_LINES = 20
+"""Input problems printed at most; the rest are counted (a spec with millions of unknown
+keys still gives a short answer)."""
+
+
+def _report_problems(problems: list[str]) -> None:
+    for line in problems[:MAX_PROBLEM_LINES]:
+        _err(line)
+    if len(problems) > MAX_PROBLEM_LINES:
+        _err(f"... and {len(problems) - MAX_PROBLEM_LINES} more problems")
+
+
 def _choose_format(fmt: Optional[Format], output: Optional[Path]) -> str:
     if fmt is not None:
         return fmt.value
@@ -98,8 +110,7 @@ def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quie
 
     results, problems = _compute_all(paths, expect_kind, mode)
     if problems:
-        for line in problems:
-            _err(line)
+        _report_problems(problems)
         raise typer.Exit(2)
     if plot is not None:
         _write_plot(results, plot)
@@ -227,9 +238,8 @@ def schema_cmd(kind: str = typer.Argument(..., help="Calculator kind, e.g. spur.
 def validate_cmd(specs: List[Path] = ARG_SPECS, quiet: bool = OPT_QUIET) -> None:
     """Check spec file(s) without reporting results: exit 0 if usable, 2 if not."""
     results, problems = _compute_all(specs, None)
-    for line in problems:
-        _err(line)
     if problems:
+        _report_problems(problems)
         raise typer.Exit(2)
     if not quiet:
         for r in results:

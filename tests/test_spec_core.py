@@ -37,7 +37,7 @@ def test_array_and_table_list_rules():
         "f.toml: blocks[0].torque = -1: must be a number > 0 (N*m)"]
     assert problems({"kind": "x", "rim": {"angles": []}, "blocks": 5}) == [
         "f.toml: rim.angles = []: must be a list of 1 to 12 numbers >= 0 and < 360 (deg)",
-        "f.toml: blocks = 5: must be at least 1 [[blocks]] tables (load blocks)"]
+        "f.toml: blocks = 5: must be 1 to 1000 [[blocks]] tables (load blocks)"]
 
 
 def test_defaults_and_echo():

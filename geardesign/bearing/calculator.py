@@ -370,10 +370,10 @@ def _suggestion(a: Assessment, info: dict, blocks: list, cond: Conditions) -> st
     for row in CAT.candidates(a.bearing.kind, d):
         if row.C_r <= a.bearing.C_r:
             continue
-        cand = _catalogue_bearing(row, a.bearing)
         try:
+            cand = _with_c_u(_catalogue_bearing(row, a.bearing), cond)
             x = assess(cand, blocks, cond)
-        except L.BearingError:
+        except (L.BearingError, InputError):
             continue
         if x.passes:
             return f"; the catalogue {row.name} would give {_h(x.life_h)} h"

@@ -472,9 +472,10 @@ def spectrum_mean(P: list, n: list, t: list, p: float) -> SpectrumResult:
     dmg = [Pj ** p * r for Pj, r in zip(P, rev)]
     total_rev = sum(rev)
     total_t = sum(t)
-    P_m = (sum(dmg) / total_rev) ** (1.0 / p)
+    total_dmg = sum(dmg)
+    P_m = (total_dmg / total_rev) ** (1.0 / p)
     return SpectrumResult(P_m, total_rev / total_t, [r / total_rev for r in rev],
-                          [d / sum(dmg) for d in dmg])
+                          [d / total_dmg if total_dmg > 0.0 else 0.0 for d in dmg])
 
 
 def miner_hours(block_hours: list, t: list) -> float:

@@ -11,6 +11,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from geardesign.core.text import escape_controls
+
 _MISSING = object()
 
 
@@ -19,7 +21,9 @@ def format_value(value: Any) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, str):
-        return '"' + value.replace("\\", "\\\\").replace('"', '\\"') + '"'
+        if len(value) > 60:
+            value = value[:57] + "..."
+        return '"' + escape_controls(value.replace("\\", "\\\\").replace('"', '\\"')) + '"'
     if isinstance(value, float):
         return repr(value)
     if isinstance(value, dict):
@@ -46,12 +50,15 @@ class Problem:
     NO_VALUE = _MISSING
 
     def line(self, source: str) -> str:
-        where = f"{source}: " if source else ""
+        """The problem as one line: control characters of the file name, key, value and
+        message are escaped (:func:`geardesign.core.text.escape_controls`)."""
+        where = f"{escape_controls(source)}: " if source else ""
+        key, message = escape_controls(self.key), escape_controls(self.message)
         if not self.key:
-            return f"{where}{self.message}"
+            return f"{where}{message}"
         if self.value is _MISSING:
-            return f"{where}{self.key}: {self.message}"
-        return f"{where}{self.key} = {format_value(self.value)}: {self.message}"
+            return f"{where}{key}: {message}"
+        return f"{where}{key} = {format_value(self.value)}: {message}"
 
 
 class InputError(Exception):

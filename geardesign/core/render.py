@@ -14,6 +14,7 @@ from typing import Any, Iterator
 
 from geardesign import __version__
 from geardesign.core.result import Check, Result, Row
+from geardesign.core.text import escape_controls
 
 FORMATS = ("table", "json", "markdown")
 
@@ -45,7 +46,7 @@ def fmt(value: Any) -> str:
         if len(value) > 8 or any(isinstance(v, (list, tuple)) for v in value):
             return f"[{len(value)} values, see JSON]"
         return ", ".join(fmt(v) for v in value)
-    return str(value)
+    return escape_controls(str(value))
 
 
 def _status(c: Check) -> tuple[str, str, str]:
@@ -61,8 +62,8 @@ def verdict_line(r: Result) -> str:
 
 
 def _header(r: Result) -> str:
-    title = f" — {r.title}" if r.title else ""
-    src = f" [{r.source}]" if r.source else ""
+    title = f" — {escape_controls(r.title)}" if r.title else ""
+    src = f" [{escape_controls(r.source)}]" if r.source else ""
     return f"geardesign {__version__} · {r.kind}{title}{src}"
 
 
@@ -79,7 +80,7 @@ def to_json(results: list[Result]) -> str:
 
 
 def _md_escape(text: str) -> str:
-    return str(text).replace("|", "\\|")
+    return escape_controls(str(text)).replace("|", "\\|")
 
 
 def _md_rows(rows: list[Row], with_source: bool) -> list[str]:
@@ -128,7 +129,7 @@ def to_markdown(results: list[Result], level: int = 1) -> str:
             lines.append(f"| {mark} {word} | {c.code} | {_md_escape(c.message)} |")
         lines += ["", f"**{verdict_line(r)}**", ""]
         for _, title, part in r.parts:
-            lines += [f"{h}# {title}", ""]
+            lines += [f"{h}# {escape_controls(title)}", ""]
             lines.append(to_markdown([part], level + 1))
     return "\n".join(lines)
 
@@ -191,13 +192,13 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
         for c in r.checks:
             mark, word, style = _status(c)
             t.add_row(Text(f"{mark} {word}", style=style), Text(c.code, style=style),
-                      Text(c.message))
+                      Text(escape_controls(c.message)))
         console.print(t)
         style = "bold red" if r.failed else "bold green"
         console.print(Text(verdict_line(r), style=style))
         for _, title, part in r.parts:
             console.print()
-            console.rule(Text(title))
+            console.rule(Text(escape_controls(title)))
             one(part)
 
     for i, r in enumerate(results):
@@ -218,17 +219,64 @@ def render(results: list[Result], fmt_name: str, color: bool = False, width: int
 @contextmanager
 def atomic_path(path: Path) -> Iterator[Path]:
     """A temporary path beside ``path`` to write to; on success it replaces ``path`` in one
-    rename (a reader never sees half a file), on failure it is removed and ``path`` is
-    left as it was.  The file gets the ordinary permissions (umask), not mkstemp's 0600."""
+    rename (a reader never sees half a file), on failure or a signal it is removed and
+    ``path`` is left as it was.
+
+    * A symbolic link is followed: the file it points to is replaced, the link stays.
+    * An existing file keeps its permission bits; a new one gets the ordinary permissions
+      (umask), not mkstemp's 0600.
+    * The data are flushed to disk (fsync) before the rename.
+    * A path that exists and is not a regular file (``/dev/null``, a FIFO, a terminal) is
+      written directly: it is never replaced by a regular file.
+    """
+    import signal
+    import stat
+
     path = Path(path)
+    if path.is_symlink():
+        path = path.resolve()
+    try:
+        st = os.stat(path)
+    except FileNotFoundError:
+        st = None
+    if st is not None and not stat.S_ISREG(st.st_mode):
+        if stat.S_ISDIR(st.st_mode):
+            raise IsADirectoryError(21, "Is a directory", str(path))
+        yield path
+        return
     directory = path.parent if str(path.parent) else Path(".")
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
     os.close(fd)
+
+    def _on_signal(signum, frame):  # remove the temporary file, then die of the signal
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        signal.signal(signum, signal.SIG_DFL)
+        os.kill(os.getpid(), signum)
+
+    handled = (signal.SIGTERM, signal.SIGHUP, signal.SIGINT)
+    previous = {}
     try:
+        for sig in handled:
+            try:
+                previous[sig] = signal.signal(sig, _on_signal)
+            except ValueError:  # not the main thread: no handlers
+                pass
         yield Path(tmp)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
+        if st is not None:
+            mode = stat.S_IMODE(st.st_mode)
+        else:
+            umask = os.umask(0)
+            os.umask(umask)
+            mode = 0o666 & ~umask
+        os.chmod(tmp, mode)
+        fd = os.open(tmp, os.O_RDONLY)
+        try:
+            os.fsync(fd)
+        finally:
+            os.close(fd)
         os.replace(tmp, path)
     except BaseException:
         try:
@@ -236,6 +284,9 @@ def atomic_path(path: Path) -> Iterator[Path]:
         except OSError:
             pass
         raise
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
 
 
 def write_atomic(path: Path, text: str) -> None:

@@ -22,6 +22,7 @@ from pathlib import Path
 from typing import Any, Iterator
 
 from geardesign.core.errors import InputError, Problem, format_value
+from geardesign.core.text import escape_controls
 
 
 class _Required:
@@ -31,6 +32,15 @@ class _Required:
 
 REQUIRED: Any = _Required()
 """Marks a field without a default: the spec must give it."""
+
+MAX_SPEC_BYTES = 4 * 1024 * 1024
+"""A spec file larger than this is refused before it is parsed (real specs are a few kB)."""
+MAX_ARRAY = 10_000
+"""Elements of an array field, unless the field says otherwise (time histories, tables)."""
+MAX_TABLES = 1_000
+"""Entries of an array of tables (spectrum blocks, stages), unless the schema says otherwise."""
+MAX_STRING = 1_000
+"""Characters of a string value (titles, names)."""
 
 _TYPES = ("number", "integer", "string", "boolean", "array")
 _NOUNS = {"number": ("a number", "numbers"), "integer": ("an integer", "integers"),
@@ -78,6 +88,8 @@ class Field:
     def __post_init__(self) -> None:
         if self.type not in _TYPES or self.items not in _NOUNS:
             raise ValueError(f"field {self.key}: unknown type {self.type!r}/{self.items!r}")
+        if self.type == "array" and self.max_items is None:
+            object.__setattr__(self, "max_items", MAX_ARRAY)
         if self.numeric and self.unit is None:
             object.__setattr__(self, "unit", "-")
 
@@ -149,6 +161,8 @@ class Field:
         if self.type == "string":
             if not isinstance(value, str):
                 return None, bad
+            if len(value) > MAX_STRING:
+                return None, f"must be a string of at most {MAX_STRING} characters"
         elif self.type == "integer":
             if isinstance(value, bool) or not isinstance(value, int):
                 return None, bad
@@ -218,6 +232,10 @@ class TableList:
     hint: str = ""
     in_template: bool = True
     """False: the template names the table in a comment instead of writing an example."""
+
+    def __post_init__(self) -> None:
+        if self.max_items is None:
+            object.__setattr__(self, "max_items", MAX_TABLES)
 
     def rule(self) -> str:
         count = (f"{self.min_items} to {self.max_items}" if self.max_items is not None
@@ -358,25 +376,69 @@ def validate(schema: SpecSchema, data: dict, source: str = "") -> ValidatedSpec:
 def load_toml(path: Path) -> dict:
     """Read a TOML spec file; problems become one-line :class:`InputError` messages."""
     try:
-        import tomllib
-    except ModuleNotFoundError:  # pragma: no cover - Python < 3.11
-        import tomli as tomllib  # type: ignore[no-redef]
-    try:
-        raw = path.read_bytes()
+        raw = _read_regular(path, MAX_SPEC_BYTES)
     except FileNotFoundError:
         raise InputError(Problem("", "file not found")) from None
     except IsADirectoryError:
         raise InputError(Problem("", "is a directory, not a spec file")) from None
+    except SpecFileError as exc:
+        raise InputError(Problem("", f"cannot be used: {exc}")) from None
     except OSError as exc:
         raise InputError(Problem("", f"cannot be read ({exc.strerror})")) from None
     try:
         text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
         raise InputError(Problem("", f"not UTF-8 text (byte {exc.start})")) from None
+    return parse_toml(text)
+
+
+def parse_toml(text: str) -> dict:
+    """Parse TOML text; a syntax error or nesting deeper than the parser can follow is one
+    :class:`InputError` line."""
+    try:
+        import tomllib
+    except ModuleNotFoundError:  # pragma: no cover - Python < 3.11
+        import tomli as tomllib  # type: ignore[no-redef]
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise InputError(Problem("", f"not valid TOML: {exc}")) from None
+        raise InputError(Problem("", f"not valid TOML: {escape_controls(str(exc))}")) from None
+    except RecursionError:
+        raise InputError(Problem("", "arrays or tables nested too deeply to be a spec")) from None
+
+
+class SpecFileError(OSError):
+    """A path that is not a regular file of a sensible size."""
+
+
+def _read_regular(path: Path, limit: int) -> bytes:
+    """The bytes of a regular file of at most ``limit`` bytes.  The file type is checked on
+    the open descriptor before anything is read, so a FIFO or a device never blocks and is
+    never read without bound."""
+    import os
+    import stat
+
+    fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+    try:
+        st = os.fstat(fd)
+        if stat.S_ISDIR(st.st_mode):
+            raise IsADirectoryError(path)
+        if not stat.S_ISREG(st.st_mode):
+            raise SpecFileError("not a regular file")
+        if st.st_size > limit:
+            raise SpecFileError(f"larger than {limit // (1024 * 1024)} MiB; a spec is a few kB")
+        chunks, total = [], 0
+        while True:
+            chunk = os.read(fd, 65536)
+            if not chunk:
+                break
+            total += len(chunk)
+            if total > limit:
+                raise SpecFileError(f"larger than {limit // (1024 * 1024)} MiB; a spec is a few kB")
+            chunks.append(chunk)
+        return b"".join(chunks)
+    finally:
+        os.close(fd)
 
 
 # --------------------------------------------------------------------------- walking

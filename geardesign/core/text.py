@@ -1,0 +1,30 @@
+"""Text that reaches a person: control characters are shown, never obeyed.
+
+Spec files are written by people and by programs; a key, a value or a title may carry a
+newline, an ESC sequence or a bidirectional override.  Every human-facing output (input
+error lines, the table, Markdown, HTML and CSV reports) passes such text through
+:func:`escape_controls`, so that one problem stays one line and no spec can move the
+cursor, recolour the terminal or reorder what is shown.
+"""
+
+from __future__ import annotations
+
+import re
+
+_CONTROLS = re.compile(
+    "[\x00-\x1f\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069\u2028\u2029]")
+
+
+def _escape(m: re.Match) -> str:
+    c = m.group(0)
+    return f"\\x{ord(c):02x}" if ord(c) < 0x100 else f"\\u{ord(c):04x}"
+
+
+def escape_controls(s: str) -> str:
+    """``s`` with C0/C1 controls, DEL, bidi marks/overrides and line/paragraph separators
+    written as ``\\xNN`` / ``\\uNNNN``.
+
+    >>> escape_controls("a\\nb\\x1b[31m")
+    'a\\\\x0ab\\\\x1b[31m'
+    """
+    return _CONTROLS.sub(_escape, s)
