@@ -47,7 +47,7 @@ CASES = [
      ['s.toml: requirements.reliability = 99.5: GOST 18855-94 tabulates a1 only up to 99 %; '
       'use method = "iso281_2007" for up to 99.95 %']),
     ("a_ISO without viscosity", ISO + '[lubrication]\ncontamination = "normal"\n',
-     ["s.toml: lubrication.viscosity: missing; required: a number > 0 and <= 100000 (mm^2/s) "
+     ["s.toml: lubrication.viscosity: missing; required: a number >= 0.01 and <= 100000 (mm^2/s) "
       "(kinematic viscosity at the operating temperature)"]),
     ("a_ISO without contamination", ISO + "[lubrication]\nviscosity = 20.0\n",
      ['s.toml: lubrication.contamination: missing; give contamination (one of "extreme", '

@@ -30,7 +30,7 @@ def replace(old, new):
 CASES = [
     # --- single-key rules (schema)
     ("module 0", replace("module = 10.0", "module = 0.0"),
-     ["s.toml: gear.module = 0.0: must be a number > 0 and <= 50 (mm)"]),
+     ["s.toml: gear.module = 0.0: must be a number >= 0.05 and <= 50 (mm)"]),
     ("z1 below 6", replace("z1 = 12", "z1 = 5"),
      ["s.toml: gear.z1 = 5: must be an integer >= 6 and <= 1000"]),
     ("helix angle 45", replace("helix_angle = 22.747", "helix_angle = 45.0"),
@@ -38,7 +38,7 @@ CASES = [
     ("helix angle 0", replace("helix_angle = 22.747", "helix_angle = 0.0"),
      ["s.toml: gear.helix_angle = 0.0: must be a number > 0 and < 45 (deg)"]),
     ("face width 0", replace("face_width = 190.0", "face_width = 0.0"),
-     ["s.toml: gear.face_width = 0.0: must be a number > 0 and <= 5000 (mm)"]),
+     ["s.toml: gear.face_width = 0.0: must be a number >= 0.001 and <= 5000 (mm)"]),
     ("shift above the Y_v domain", replace("face_width = 190.0",
                                            "face_width = 190.0\nx1 = 0.4\nx2 = -0.4"),
      ["s.toml: gear.x1 = 0.4: must be a number >= -0.5 and <= 0.3"]),
@@ -72,11 +72,11 @@ CASES = [
                                            "torque2 = 69500.0\napplication_factor = 0.5"),
      ["s.toml: load.application_factor = 0.5: must be a number >= 1 and <= 4"]),
     ("torque missing", replace("torque2 = 69500.0\n", ""),
-     ["s.toml: load.torque2: missing; required: a number > 0 and <= 100000000 (N*m) "
+     ["s.toml: load.torque2: missing; required: a number >= 1e-06 and <= 100000000 (N*m) "
       "(torque on the driven wheel)"]),
     ("unknown key", replace("face_width", "facewidth"),
      ['s.toml: gear.facewidth = 190.0: unknown key in [gear] (did you mean "face_width"?)',
-      "s.toml: gear.face_width: missing; required: a number > 0 and <= 5000 (mm) "
+      "s.toml: gear.face_width: missing; required: a number >= 0.001 and <= 5000 (mm) "
       "(working face width)"]),
     ("no material table", replace("[material.pinion]\nhardness = 302\n[material.wheel]\n"
                                   "hardness = 269\n", ""),

@@ -107,7 +107,7 @@ EXPECTED = {
         's.toml: spring[1].name = "a": spring[0] has the same name; give each spring its own name',
     ],
     'schema_motor_speed': [
-        's.toml: motor.speed = 0.0: must be a number > 0 and <= 100000 (min^-1)',
+        's.toml: motor.speed = 0.0: must be a number >= 0.001 and <= 100000 (min^-1)',
     ],
     'sigma_both': [
         's.toml: spring[0].sigma_over_tau = 1.5: give sigma_allow or sigma_over_tau (× tau_allow), not both',
@@ -218,7 +218,7 @@ EXPECTED = {
         's.toml: regression.pzdn_stiffness: missing; give the PZDN stiffness pzdn_stiffness (and drive_stiffness in series), or the link stiffness C12',
     ],
     'schema_torque': [
-        's.toml: spring[0].torque = -1.0: must be a number > 0 and <= 1000000 (N*m)',
+        's.toml: spring[0].torque = -1.0: must be a number >= 1e-06 and <= 1000000 (N*m)',
     ],
     'schema_curv': [
         's.toml: spring[0].curvature_factor = "wahll": must be one of "seed", "wahl", "en13906" (did you mean "wahl"?)',
@@ -230,7 +230,7 @@ EXPECTED = {
         's.toml: spring[0].material = "steel65": must be one of "music_wire", "hard_drawn", "oil_tempered", "chrome_vanadium", "chrome_silicon", "stainless_302", "60S2A", "65G"',
     ],
     'schema_slot': [
-        's.toml: spring[0].slot_arms = [80.0]: must be a list of 2 to 2 numbers > 0 and <= 10000 (mm)',
+        's.toml: spring[0].slot_arms = [80.0]: must be a list of 2 to 2 numbers >= 0.001 and <= 10000 (mm)',
     ],
     'schema_coils': [
         's.toml: spring[0].coils = 0: must be a number >= 0.5 and <= 1000',
@@ -242,7 +242,7 @@ EXPECTED = {
         's.toml: startup.method = "rk4": must be one of "closed_form", "ode", "both"',
     ],
     'schema_J': [
-        's.toml: startup.J1 = 0.0: must be a number > 0 and <= 1000000 (kg*m^2)',
+        's.toml: startup.J1 = 0.0: must be a number >= 1e-09 and <= 1000000 (kg*m^2)',
     ],
     'schema_zeta': [
         's.toml: startup.damping_ratio = -0.1: must be a number >= 0 and <= 2',
@@ -260,7 +260,7 @@ EXPECTED = {
         's.toml: coupling_gear.torque_on = "sun": must be one of "wheel", "pinion"',
     ],
     'schema_reg': [
-        's.toml: regression.pzdn_stiffness = 0.0: must be a number > 0 and <= 1000000000 (N*m/rad)',
+        's.toml: regression.pzdn_stiffness = 0.0: must be a number >= 1e-06 and <= 1000000000 (N*m/rad)',
     ],
 }
 

@@ -34,7 +34,7 @@ def test_array_and_table_list_rules():
                      "blocks": [{"torque": -1, "share": 1}]}) == [
         "f.toml: rim.angles = [0, 120, 400]: must be a list of 1 to 12 numbers >= 0 and < 360 "
         "(deg)",
-        "f.toml: blocks[0].torque = -1: must be a number > 0 (N*m)"]
+        "f.toml: blocks[0].torque = -1: must be a number >= 1e-06 and <= 1000000000 (N*m)"]
     assert problems({"kind": "x", "rim": {"angles": []}, "blocks": 5}) == [
         "f.toml: rim.angles = []: must be a list of 1 to 12 numbers >= 0 and < 360 (deg)",
         "f.toml: blocks = 5: must be 1 to 1000 [[blocks]] tables (load blocks)"]

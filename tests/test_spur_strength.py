@@ -68,7 +68,7 @@ RULES = [
     ("hardness impossible", spec(material__wheel__hardness_HB=800.0),
      ["s.toml: material.wheel.hardness_HB = 800.0: must be a number >= 100 and <= 700 (HB)"]),
     ("negative torque", spec(load__torque1=-5.0),
-     ["s.toml: load.torque1 = -5.0: must be a number > 0 and <= 100000000 (N*m)"]),
+     ["s.toml: load.torque1 = -5.0: must be a number >= 1e-06 and <= 100000000 (N*m)"]),
     ("torque and power", spec(load__power=20.0),
      ["s.toml: load.power = 20.0: give torque1 or power, not both"]),
     ("no torque", spec(load__torque1=None),

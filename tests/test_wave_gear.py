@@ -41,7 +41,7 @@ BAD = [
     ("one wave", gear("waves = 1\n"),
      ["s.toml: gear.waves = 1: must be an integer >= 2 and <= 4"]),
     ("no endurance limit", GOOD.replace("sigma_m1 = 450.0\n", ""),
-     ["s.toml: material.sigma_m1: missing; required: a number > 0 and <= 3000 (MPa) "
+     ["s.toml: material.sigma_m1: missing; required: a number >= 0.001 and <= 3000 (MPa) "
       "(bending endurance limit (symmetric cycle))"]),
 ]
 

@@ -48,7 +48,7 @@ CASES = [
     ("x out of range", replace("center_distance = 160.0", "x = 1.5"),
      ["s.toml: gear.x = 1.5: must be a number >= -1 and <= 1"]),
     ("negative module", replace("module = 6.3", "module = -6.3"),
-     ["s.toml: gear.module = -6.3: must be a number > 0 and <= 100 (mm)"]),
+     ["s.toml: gear.module = -6.3: must be a number >= 0.05 and <= 100 (mm)"]),
     ("q too large", replace("diameter_factor = 10.0", "diameter_factor = 50.0"),
      ["s.toml: gear.diameter_factor = 50.0: must be a number >= 5 and <= 40"]),
     ("bad mode", 'mode = "desing"\n' + GOOD,
@@ -60,7 +60,7 @@ CASES = [
      ["s.toml: gear.shift = 0.1: unknown key in [gear]; allowed: module, diameter_factor, z1, "
       "z2, ratio, x, center_distance, worm_type, profile_angle, hand, face_width, worm_length"]),
     ("missing torque", replace("torque2 = 500.0\n", ""),
-     ["s.toml: load.torque2: missing; required: a number > 0 and <= 10000000 (N·m) (torque on "
+     ["s.toml: load.torque2: missing; required: a number >= 1e-06 and <= 10000000 (N·m) (torque on "
       "the wheel shaft (the largest long-acting torque))"]),
     ("missing wheel", GOOD.split("[wheel]")[0],
      ["s.toml: wheel: missing table [wheel] (wheel rim material)"]),
@@ -83,7 +83,7 @@ CASES = [
      ["s.toml: thermal.base_share = 1.5: must be a number >= 0 and <= 1"]),
     # ---- rules across keys (calculator)
     ("check mode: module and z1 missing", replace("z1 = 2\n", "", replace("module = 6.3\n", "")),
-     ['s.toml: gear.module: missing; required with mode = "check": a number > 0 and <= 100 '
+     ['s.toml: gear.module: missing; required with mode = "check": a number >= 0.05 and <= 100 '
       "(mm) (axial module of the worm (= transverse module of the wheel))",
       's.toml: gear.z1: missing; required with mode = "check": an integer >= 1 and <= 4 '
       "(number of worm starts)"]),

@@ -42,6 +42,18 @@ MAX_TABLES = 1_000
 MAX_STRING = 1_000
 """Characters of a string value (titles, names)."""
 
+UNIT_DOMAINS = {
+    "mm": (1e-3, 1e5), "um": (1e-3, 1e5), "µm": (1e-3, 1e5),
+    "MPa": (1e-3, 1e6), "N": (1e-6, 1e10), "N*m": (1e-6, 1e9), "N·m": (1e-6, 1e9),
+    "N*m/rad": (1e-6, 1e10), "N/mm": (1e-6, 1e9), "min^-1": (1e-3, 2e5), "kW": (1e-6, 1e6),
+    "h": (1e-3, 1e7), "s": (1e-6, 1e5), "kg": (1e-6, 1e7), "kg*m^2": (1e-9, 1e7),
+    "m/s": (1e-6, 1e3), "mm^2/s": (1e-2, 1e5),
+}
+"""The physical validity domain of a quantity by its unit, for fields that state no domain of
+their own: a value "> 0" becomes ">= the smallest that means anything" (a µm, a mN·m, …),
+and a field without an upper bound gets the largest value any machine reaches.  Fields
+with a narrower physical domain state it themselves (a module 0.05–100 mm)."""
+
 _TYPES = ("number", "integer", "string", "boolean", "array")
 _NOUNS = {"number": ("a number", "numbers"), "integer": ("an integer", "integers"),
           "string": ("a string", "strings"), "boolean": ("true or false", "booleans")}
@@ -90,6 +102,13 @@ class Field:
             raise ValueError(f"field {self.key}: unknown type {self.type!r}/{self.items!r}")
         if self.type == "array" and self.max_items is None:
             object.__setattr__(self, "max_items", MAX_ARRAY)
+        if self.numeric and self.unit in UNIT_DOMAINS and self.choices is None:
+            lo, hi = UNIT_DOMAINS[self.unit]
+            if self.gt is not None and self.gt <= lo and self.minimum is None:
+                object.__setattr__(self, "gt", None)
+                object.__setattr__(self, "minimum", lo)
+            if self.maximum is None and self.lt is None:
+                object.__setattr__(self, "maximum", hi)
         if self.numeric and self.unit is None:
             object.__setattr__(self, "unit", "-")
 

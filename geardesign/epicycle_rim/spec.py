@@ -16,7 +16,7 @@ from geardesign.epicycle_rim.tables import loading_modes
 from geardesign.materials.fatigue_steel import grades
 
 RING = Table("ring", "ring gear (internal, spur)", (
-    Field("module", "number", "module", "mm", "m", gt=0, maximum=100, example=3.25),
+    Field("module", "number", "module", "mm", "m", minimum=0.05, maximum=100, example=3.25),
     Field("z", "integer", "number of teeth of the ring", symbol="z_r", minimum=12,
           maximum=1000, example=64),
     Field("face_width", "number", "working face width of the ring", "mm", "b", gt=0,

@@ -15,7 +15,7 @@ from geardesign.novikov.rack import STANDARD
 _HB_MAX = steel().hardness_max_HB
 
 GEAR = Table("gear", "Novikov DLZ gear pair (external, helical; pinion 1 drives)", (
-    Field("module", "number", "normal module", "mm", "m", gt=0, maximum=50, example=10.0,
+    Field("module", "number", "normal module", "mm", "m", minimum=0.05, maximum=50, example=10.0,
           hint="GOST 14186-69 series preferred; GOST 15023-76 covers 1.6…16 mm"),
     Field("z1", "integer", "number of teeth, pinion (driving)", symbol="z1", minimum=6,
           maximum=1000, example=12),

@@ -22,7 +22,7 @@ TRAIN = Table("train", "the planetary train", (
           "e, free carrier)", default="2K-H", choices=("2K-H", "2K-H-stepped", "3K")),
     Field("planets", "integer", "number of planets", symbol="n_w", minimum=1, maximum=24,
           example=3),
-    Field("module", "number", "normal module of the sun, planet and ring", "mm", "m", gt=0,
+    Field("module", "number", "normal module of the sun, planet and ring", "mm", "m", minimum=0.05,
           maximum=100, example=3.0),
     Field("module2", "number", "normal module of the second planet crown and its ring "
           "(stepped planet or two-crown 3K planet)", "mm", "m2", default=None, gt=0,

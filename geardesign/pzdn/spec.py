@@ -144,7 +144,7 @@ COUPLING_GEAR = Table("coupling_gear", "open spur gear of the coupling (rated by
           example=20),
     Field("z2", "integer", "number of teeth, wheel", symbol="z2", minimum=5, maximum=1000,
           example=42),
-    Field("module", "number", "module", "mm", "m", default=None, gt=0, maximum=100,
+    Field("module", "number", "module", "mm", "m", default=None, minimum=0.05, maximum=100,
           example=2.5, hint="leave out to use the bending estimate rounded up to GOST 9563"),
     Field("face_width", "number", "working face width", "mm", "b_w", default=None, gt=0,
           maximum=5000, example=20.0, hint="default ψ_bd·m·z1"),

@@ -25,7 +25,7 @@ PRESSURE_ANGLE = Field("pressure_angle", "number", "normal pressure angle of the
                        "deg", "α", default=20.0, gt=10, lt=35)
 
 GEAR = Table("gear", "gear pair (external, spur or helical)", (
-    Field("module", "number", "normal module", "mm", "m_n", gt=0, maximum=100, example=4.0,
+    Field("module", "number", "normal module", "mm", "m_n", minimum=0.05, maximum=100, example=4.0,
           hint="GOST 9563 series preferred"),
     Field("z1", "integer", "number of teeth, pinion", symbol="z1", minimum=5, maximum=1000,
           example=25),

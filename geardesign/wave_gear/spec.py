@@ -6,7 +6,7 @@ from __future__ import annotations
 from geardesign.core.spec import Field, SpecSchema, Table
 
 GEAR = Table("gear", "wave gear and its flexible wheel", (
-    Field("module", "number", "module", "mm", "m", gt=0, maximum=20, example=1.0),
+    Field("module", "number", "module", "mm", "m", minimum=0.05, maximum=20, example=1.0),
     Field("flex_teeth", "integer", "teeth of the flexible wheel", symbol="z_g", minimum=20,
           maximum=2000, example=200),
     Field("waves", "integer", "number of deformation waves", symbol="U", default=2,

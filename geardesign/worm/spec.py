@@ -13,7 +13,7 @@ MODES = ("check", "design")
 
 GEAR = Table("gear", "worm pair (orthogonal cylindrical worm, GOST 19650-97)", (
     Field("module", "number", "axial module of the worm (= transverse module of the wheel)",
-          "mm", "m", default=None, gt=0, maximum=100, example=6.3,
+          "mm", "m", default=None, minimum=0.05, maximum=100, example=6.3,
           hint='required with mode = "check"; design mode proposes it (GOST 19672-74 rows)'),
     Field("diameter_factor", "number", "worm diameter factor d1/m", symbol="q", default=None,
           minimum=5, maximum=40, example=10.0,
