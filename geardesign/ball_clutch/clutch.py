@@ -53,12 +53,14 @@ def limit_torque(F_spring: float, F_c: float, z3: int, r0: float, alpha: float,
     Parameters: F_spring = c·y0 spring force on one ball [N], F_c centrifugal force [N],
     z3 balls, r0 radius of the ball centres [m], alpha socket angle α2 (line of the contact
     force from the radial direction) [rad], f, f_g friction coefficients.
-    Returns +inf when the denominator is <= 0 (self-locking: no release).
+    Returns +inf when the denominator is <= 0 (self-locking: no release), and 0 when the
+    centrifugal force reaches the spring force (the balls leave without any torque; the
+    formula would give a negative torque).
     """
     den = 1.0 / math.tan(alpha + math.atan(f)) - f_g
     if den <= 0.0:
         return math.inf
-    return z3 * r0 * (F_spring - F_c) / den
+    return z3 * r0 * max(F_spring - F_c, 0.0) / den
 
 
 def self_locking_angle(f: float, f_g: float) -> float:

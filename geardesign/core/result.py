@@ -177,8 +177,8 @@ class Result:
                     "severity": c.severity,
                     "passed": c.passed,
                     "message": c.message,
-                    "value": c.value,
-                    "limit": c.limit,
+                    "value": _clean(c.value),
+                    "limit": _clean(c.limit),
                     "source": c.source,
                 }
                 for c in self.checks

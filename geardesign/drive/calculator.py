@@ -30,11 +30,38 @@ def _torque_from_power(P: float, n: float) -> float:
     return torque_from_power(P, n)
 
 
+def stage_path(name: str, base: Path | None, root: Path | None,
+               allow_outside: bool = False) -> Path:
+    """The stage file ``name`` relative to ``base``, resolved (links followed).
+
+    Stage files are regular files inside the folder of the drive spec (``root``): an
+    absolute path, or one that leaves that folder (``..``, a link pointing elsewhere), is
+    refused unless ``allow_outside``; a FIFO or a device is refused when read
+    (:func:`geardesign.core.spec.load_toml`), so that a spec can neither hang the run nor
+    make it read a file it should not.  The message never shows the foreign file.
+    """
+    path = Path(name)
+    if path.is_absolute() and not allow_outside:
+        raise ValueError("must be a path relative to the drive spec's folder")
+    if not path.is_absolute() and base is not None:
+        path = base / path
+    path = path.resolve()
+    if root is not None and not allow_outside:
+        try:
+            path.relative_to(root.resolve())
+        except ValueError:
+            raise ValueError("must be a file inside the drive spec's folder") from None
+    return path
+
+
 def resolve_stages(stages: list, base: Path | None, where: str = "stage",
-                   chain: tuple = ()) -> list[tuple[str, str, dict, float | None]]:
+                   chain: tuple = (), root: Path | None = None,
+                   allow_outside: bool = False) -> list[tuple[str, str, dict, float | None]]:
     """Stage specs in order: ``(where, name, data, efficiency)``.  A ``file`` is read
-    relative to ``base``; a stage file that is itself a drive contributes its stages (in
+    relative to ``base`` and must lie inside ``root`` (the top drive spec's folder, see
+    :func:`stage_path`); a stage file that is itself a drive contributes its stages (in
     place).  Missing files and cycles of references are input errors."""
+    root = root if root is not None else base
     out = []
     for i, st in enumerate(stages):
         key = f"{where}[{i}]"
@@ -44,10 +71,10 @@ def resolve_stages(stages: list, base: Path | None, where: str = "stage",
             if set(extra) - {"kind"}:
                 raise InputError.at(f"{key}.file", st["file"], "give a file or the stage's "
                                     "tables inline, not both")
-            path = Path(st["file"])
-            if not path.is_absolute() and base is not None:
-                path = base / path
-            path = path.resolve()
+            try:
+                path = stage_path(st["file"], base, root, allow_outside)
+            except ValueError as exc:
+                raise InputError.at(f"{key}.file", st["file"], str(exc)) from None
             if path in chain:
                 raise InputError.at(f"{key}.file", st["file"],
                                     "the stage files refer to each other in a cycle: "
@@ -56,11 +83,14 @@ def resolve_stages(stages: list, base: Path | None, where: str = "stage",
                 data = load_toml(path)
             except InputError as exc:
                 raise InputError.at(f"{key}.file", st["file"],
-                                    f"{exc.problems[0].message} ({path})") from None
+                                    f"{exc.problems[0].message} ({path.name})") from None
             if data.get("kind") == "drive":
                 inner = data.get("stage") or []
+                if not isinstance(inner, list) or not all(isinstance(x, dict) for x in inner):
+                    raise InputError.at(f"{key}.file", st["file"], "its [[stage]] entries "
+                                        "must be tables")
                 out += resolve_stages(inner, path.parent, f"{key}→{path.name}:stage",
-                                      chain + (path,))
+                                      chain + (path,), root, allow_outside)
                 continue
             out.append((f"{key} ({path.name})", name, data, st.get("efficiency")))
         else:
@@ -80,7 +110,7 @@ def _run_chain(stages, T1: float, n1: float, duty: Duty) -> list[StageRun]:
     T, n = T1, n1
     for where, _, data, eta in stages:
         kind = data.get("kind")
-        if kind not in ADAPTERS:
+        if not isinstance(kind, str) or kind not in ADAPTERS:
             raise InputError.at(f"{where}: kind", kind, "not a drive stage; stages can be "
                                 + ", ".join(f'"{k}"' for k in ADAPTERS))
         run = ADAPTERS[kind](data, T, n, duty, eta, where)

@@ -92,6 +92,35 @@ def _validate(data: dict, where: str) -> None:
         raise _named(exc, where) from None
 
 
+def _table(d: dict, key: str, where: str) -> dict:
+    """The stage's table ``key`` (created when absent), refused when it is not a table:
+    the drive fills in loads before the stage's own calculator validates it."""
+    value = d.setdefault(key, {})
+    if not isinstance(value, dict):
+        raise InputError.at(f"{where}: {key}", value, f"must be a table [{key}]")
+    return value
+
+
+def _ratio(d: dict, where: str, kind: str) -> float:
+    """z2/z1 of a worm or Novikov stage, read before the stage's own calculator validates
+    the spec (the drive needs the ratio to set the stage's load): the tooth numbers must be
+    positive whole numbers here already."""
+    gear = d.get("gear")
+    if gear is None:
+        gear = {}
+    if not isinstance(gear, dict):
+        raise InputError.at(f"{where}: gear", gear, "must be a table [gear]")
+    for key in ("z1", "z2"):
+        if key not in gear:
+            raise InputError(Problem(f"{where}: gear.{key}", f"missing; the drive needs the "
+                                     f"tooth numbers of the {kind} stage"))
+        z = gear[key]
+        if isinstance(z, bool) or not isinstance(z, int) or not 1 <= z <= 1000:
+            raise InputError.at(f"{where}: gear.{key}", z, "must be an integer >= 1 and "
+                                "<= 1000")
+    return gear["z2"] / gear["z1"]
+
+
 def _put(table: dict, key: str, value) -> None:
     if table.get(key) is None and value is not None:
         table[key] = value
@@ -100,7 +129,7 @@ def _put(table: dict, key: str, value) -> None:
 def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
              where: str) -> StageRun:
     d = copy.deepcopy(data)
-    load = d.setdefault("load", {})
+    load = _table(d, "load", where)
     load["torque1"], load["speed1"] = T_in, n_in
     load.pop("power", None)
     _put(load, "life_hours", duty.L_h)
@@ -128,13 +157,9 @@ def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
 def run_novikov(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
                 where: str) -> StageRun:
     d = copy.deepcopy(data)
-    gear = d.get("gear") or {}
-    u = gear["z2"] / gear["z1"] if "z1" in gear and "z2" in gear else None
-    if u is None:
-        raise InputError(Problem(f"{where}: gear.z1", "missing; the drive needs the tooth "
-                                 "numbers of the Novikov stage"))
+    u = _ratio(d, where, "Novikov")
     e, src = (eta, "spec") if eta is not None else (ETA_CYLINDRICAL, "assumed (handbook)")
-    load = d.setdefault("load", {})
+    load = _table(d, "load", where)
     load["torque2"], load["speed1"] = T_in * u * e, n_in
     _put(load, "life", duty.L_h)
     _put(load, "application_factor", duty.K_A)
@@ -155,12 +180,8 @@ def run_worm(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
     reports equals the stage's input torque (the efficiency depends on the sliding speed,
     so a few steps settle it)."""
     d = copy.deepcopy(data)
-    gear = d.get("gear") or {}
-    if "z1" not in gear or "z2" not in gear:
-        raise InputError(Problem(f"{where}: gear.z2", "missing; the drive needs the starts and "
-                                 "the wheel teeth of the worm stage"))
-    u = gear["z2"] / gear["z1"]
-    load = d.setdefault("load", {})
+    u = _ratio(d, where, "worm")
+    load = _table(d, "load", where)
     load["speed1"] = n_in
     _put(load, "life", duty.L_h)
     T2 = T_in * u * (eta if eta is not None else 0.8)
@@ -188,10 +209,12 @@ def run_planetary(data: dict, T_in: float, n_in: float, duty: Duty, eta: float |
     Its shafts are coaxial and the planets balance the radial mesh forces (with equal
     load sharing), so the stage puts no radial or axial load on the shafts."""
     d = copy.deepcopy(data)
-    op = d.setdefault("operation", {})
+    op = _table(d, "operation", where)
     op["speed"], op["torque"] = n_in, T_in
     op.pop("power", None)
     st = d.get("strength")
+    if st is not None and not isinstance(st, dict):
+        raise InputError.at(f"{where}: strength", st, "must be a table [strength]")
     if st is not None:
         _put(st, "life_hours", duty.L_h)
         _put(st, "application_factor", duty.K_A)

@@ -328,9 +328,13 @@ def probability_of_non_failure(sigma_eq: float, sigma_m1D: float, v: float,
     Inverse of Gutyria et al. 2017 eq. (13); general form with v_σa: GOST 25.504-82 (from
     the method note §A.2.2 step 9; the GOST text was not consulted).
     """
+    if sigma_eq <= 0.0:          # no alternating stress: the part cannot fail by fatigue
+        return 1.0
     n = sigma_m1D / sigma_eq
-    z = (n - 1.0) / math.sqrt(n * n * v * v + v_stress * v_stress)
-    return _PHI.cdf(z)
+    spread = math.sqrt(n * n * v * v + v_stress * v_stress)
+    if spread == 0.0:            # no scatter: certain survival above the limit
+        return 1.0 if n > 1.0 else (0.5 if n == 1.0 else 0.0)
+    return _PHI.cdf((n - 1.0) / spread)
 
 
 def sn_slope(sigma_u: float, K: float) -> float:

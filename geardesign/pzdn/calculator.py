@@ -686,16 +686,28 @@ def _link(spring_C: float, drive_C: float | None) -> float:
     return series(spring_C, drive_C) if drive_C is not None else spring_C
 
 
+MAX_PERIODS = 5_000
+"""Oscillation periods of the stiffest mode over the start-up that are resolved (50 samples
+each, integration with four steps a period): the bound on time and memory of a start-up."""
+
+
 def _run_model(m, si: StartupInput, st: dict, want_cf: bool, want_ode: bool):
     """Closed form and/or integration of one model: (closed form, its peaks, its samples
     over t_end, simulation); None for what was not asked."""
     from geardesign.pzdn import startup as SU
 
     cf = cf_peak = cf_h = sim = None
+    beta = SU.frequencies(SU.stage_matrix(m, True, True)[0])[0]
+    periods = si.t_end * beta / (2.0 * math.pi)
+    if not periods <= MAX_PERIODS:
+        raise InputError(Problem(
+            "startup", f"the start-up lasts {_fmt(si.t_end)} s and the stiffest mode "
+            f"oscillates at {_fmt(beta / (2.0 * math.pi))} Hz: {periods:.3g} periods, more than "
+            f"the {MAX_PERIODS} that are resolved in bounded time; give a shorter startup.t_end "
+            f"or check J1, J2, J3 [kg*m^2] and the link stiffnesses [N*m/rad]"))
     if want_cf:
         cf = SU.solve(m, si.t_end)
         cf_peak = cf.peak()
-        beta = SU.frequencies(SU.stage_matrix(m, True, True)[0])[0]
         cf_h = SU.sample(cf, si.t_end, min(2.0 * math.pi / beta / 50.0, si.t_end / 2000.0))
     if want_ode:
         from geardesign.pzdn.simulate import simulate
