@@ -38,7 +38,7 @@ def wire(text):
 
 BAD = [
     ("socket angle 90", GOOD.replace("socket_angle = 45.0", "socket_angle = 90.0"),
-     ["s.toml: safety.socket_angle = 90.0: must be a number > 0 and < 90 (deg)"]),
+     ["s.toml: safety.socket_angle = 90.0: must be a number >= 0.0001 and < 90 (deg)"]),
     ("socket deeper than the ball radius", GOOD.replace("socket_depth = 4.0", "socket_depth = 8.0"),
      ["s.toml: safety.socket_depth = 8.0: must be less than the ball radius d_b/2 = 8 mm "
       "(the ball must stay guided while it leaves the socket)"]),

@@ -47,7 +47,7 @@ UNIT_DOMAINS = {
     "MPa": (1e-3, 1e6), "N": (1e-6, 1e10), "N*m": (1e-6, 1e9), "N·m": (1e-6, 1e9),
     "N*m/rad": (1e-6, 1e10), "N/mm": (1e-6, 1e9), "min^-1": (1e-3, 2e5), "kW": (1e-6, 1e6),
     "h": (1e-3, 1e7), "s": (1e-6, 1e5), "kg": (1e-6, 1e7), "kg*m^2": (1e-9, 1e7),
-    "m/s": (1e-6, 1e3), "mm^2/s": (1e-2, 1e5),
+    "m/s": (1e-6, 1e3), "mm^2/s": (1e-2, 1e5), "deg": (1e-4, 360.0),
 }
 """The physical validity domain of a quantity by its unit, for fields that state no domain of
 their own: a value "> 0" becomes ">= the smallest that means anything" (a µm, a mN·m, …),
@@ -104,6 +104,7 @@ class Field:
             object.__setattr__(self, "max_items", MAX_ARRAY)
         if self.numeric and self.unit in UNIT_DOMAINS and self.choices is None:
             lo, hi = UNIT_DOMAINS[self.unit]
+            object.__setattr__(self, "_tiny", lo)
             if self.gt is not None and self.gt <= lo and self.minimum is None:
                 object.__setattr__(self, "gt", None)
                 object.__setattr__(self, "minimum", lo)
@@ -195,6 +196,9 @@ class Field:
             close = difflib.get_close_matches(str(value), [str(c) for c in self.choices], 1, 0.6)
             return None, bad + (f' (did you mean "{close[0]}"?)' if close else "")
         if self.type in ("number", "integer"):
+            tiny = getattr(self, "_tiny", None)
+            if tiny is not None and value != 0 and abs(value) < tiny:
+                return None, f"{bad}, and 0 or at least {_num(tiny)} in magnitude"
             if self.minimum is not None and value < self.minimum:
                 return None, bad
             if self.maximum is not None and value > self.maximum:

@@ -694,9 +694,10 @@ def _kinematics_and_power(res: Result, d: dict, train: K.Train, meshes: list[PG.
                          (eta[central] if f.k[central] < 0 else 1.0), "kW",
                          f"P_V,{mesh.name}", "power lost in these meshes", S.HV)
             P_in = abs(f.P[inp])
-            psec.add("circulating_ratio", max(abs(v) for v in f.P_mesh.values()) / P_in, "-",
-                     "P_mesh/P_in", "largest rolling power over the input power (circulating "
-                     "power when > 1)", S.KUDRYAVTSEV)
+            if P_in > 0.0:
+                psec.add("circulating_ratio", max(abs(v) for v in f.P_mesh.values()) / P_in,
+                         "-", "P_mesh/P_in", "largest rolling power over the input power "
+                         "(circulating power when > 1)", S.KUDRYAVTSEV)
         from geardesign.planetary.strength import planet_bearing_load
         ideal_T = {x: ideal.T[x] * T_in for x in train.members}
         bl = planet_bearing_load(train, meshes, ideal_T, 1.0, s.n_planet_rel)

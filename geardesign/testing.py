@@ -1,0 +1,100 @@
+"""Comparing result documents: the golden-file check of this project's suite, usable in a
+user's own CI.
+
+:func:`compare_documents` walks two JSON result documents and returns every difference:
+structure and strings exactly, numbers to a relative tolerance that suits how each is
+computed.  Closed-form and iterated results agree to ~1e-12 on any machine; a few
+quantities are error *estimates* of a numerical method (their exact value depends on the
+numpy/scipy build) and are only required to stay below a bound.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from typing import Any
+
+IGNORED = ("geardesign", "spec")
+"""Top-level keys that are not results: the program version and the path of the spec."""
+
+RTOL = 1e-9
+"""Default relative tolerance: the precision every closed-form and solver result reaches
+(solvers run at rtol 1e-12 or tighter)."""
+
+BOUNDS = {
+    r"(^|\.)floquet_max_dev$": 1e-6,
+}
+"""Error estimates, by key pattern: only ``value <= bound`` is required (the estimate of
+the Floquet check is ~1e-9 and its digits depend on the LAPACK build)."""
+
+
+@dataclass(frozen=True)
+class Difference:
+    path: str
+    old: Any
+    new: Any
+
+    @property
+    def change(self) -> str:
+        """The relative change of a number in per cent, or "changed"."""
+        if _number(self.old) and _number(self.new) and self.old:
+            return f"{(self.new - self.old) / abs(self.old) * 100.0:+.4g} %"
+        return "changed"
+
+    def line(self) -> str:
+        return f"{self.path}: {self.old!r} -> {self.new!r} ({self.change})"
+
+
+def _number(v: Any) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def _bound(path: str) -> float | None:
+    for pattern, bound in BOUNDS.items():
+        if re.search(pattern, path):
+            return bound
+    return None
+
+
+def compare_documents(actual: Any, expected: Any, rtol: float = RTOL,
+                      atol: float = 1e-12) -> list[Difference]:
+    """Every difference between two result documents (empty when they agree)."""
+    out: list[Difference] = []
+    if isinstance(actual, dict) and isinstance(expected, dict):
+        actual = {k: v for k, v in actual.items() if k not in IGNORED}
+        expected = {k: v for k, v in expected.items() if k not in IGNORED}
+    _walk(actual, expected, "", rtol, atol, out)
+    return out
+
+
+def _walk(a: Any, e: Any, path: str, rtol: float, atol: float, out: list) -> None:
+    if isinstance(e, dict):
+        if not isinstance(a, dict) or list(a) != list(e):
+            out.append(Difference(path or "$", _keys(e), _keys(a)))
+            return
+        for k in e:
+            _walk(a[k], e[k], f"{path}.{k}" if path else k, rtol, atol, out)
+    elif isinstance(e, list):
+        if not isinstance(a, list) or len(a) != len(e):
+            out.append(Difference(path, _size(e), _size(a)))
+            return
+        for i, (x, y) in enumerate(zip(a, e)):
+            _walk(x, y, f"{path}[{i}]", rtol, atol, out)
+    elif _number(e) and _number(a):
+        bound = _bound(path)
+        if bound is not None:
+            if not (abs(a) <= bound and abs(e) <= bound):
+                out.append(Difference(path, e, a))
+        elif not math.isclose(a, e, rel_tol=rtol, abs_tol=atol):
+            out.append(Difference(path, e, a))
+    elif a != e:
+        out.append(Difference(path, e, a))
+
+
+def _keys(d: Any) -> Any:
+    return sorted(d) if isinstance(d, dict) else d
+
+
+def _size(v: Any) -> Any:
+    return f"[{len(v)} items]" if isinstance(v, list) else v
