@@ -221,10 +221,10 @@ EXPECTED = {
         's.toml: spring[0].torque = -1.0: must be a number >= 1e-06 and <= 1000000 (N*m)',
     ],
     'schema_curv': [
-        's.toml: spring[0].curvature_factor = "wahll": must be one of "seed", "wahl", "en13906" (did you mean "wahl"?)',
+        's.toml: spring[0].curvature_factor = "wahll": must be one of "thesis", "wahl", "en13906" (did you mean "wahl"?)',
     ],
     'schema_leg_model': [
-        's.toml: spring[0].leg_model = "cantilever": must be one of "seed", "shigley", "en13906_radial", "en13906_tangential"',
+        's.toml: spring[0].leg_model = "cantilever": must be one of "thesis", "shigley", "en13906_radial", "en13906_tangential"',
     ],
     'schema_material': [
         's.toml: spring[0].material = "steel65": must be one of "music_wire", "hard_drawn", "oil_tempered", "chrome_vanadium", "chrome_silicon", "stainless_302", "60S2A", "65G"',

@@ -1,4 +1,4 @@
-"""Ball overrunning-safety clutch (seed 003): the freewheel part (force sharing among the
+"""Ball overrunning-safety clutch ([Malashchenko2025]): the freewheel part (force sharing among the
 balls) and the torque-limiting part (limit torque from the spring preload and the socket
 angle with friction, the centrifugal term, self-locking, spring and ball-contact checks).
 
@@ -13,7 +13,7 @@ from geardesign.core.registry import Calculator
 CALCULATOR = Calculator(
     kind="ball_clutch",
     summary="ball overrunning-safety clutch: limit torque, speed effect, spring, ball contact",
-    methods=("seed 003 (Malashchenko et al. 2025)", "Wahl spring formulas", "Hertz contact"),
+    methods=("[Malashchenko2025] (Malashchenko et al. 2025)", "Wahl spring formulas", "Hertz contact"),
     schema=SCHEMA,
     compute=compute,
 )

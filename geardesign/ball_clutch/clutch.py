@@ -1,6 +1,6 @@
-"""Ball overrunning-safety clutch: force sharing and the limit (release) torque (seed 003).
+"""Ball overrunning-safety clutch: force sharing and the limit (release) torque ([Malashchenko2025]).
 
-The clutch is two units in series (seed 003, Fig. 1-2): a ball *freewheel* (z1 balls on the
+The clutch is two units in series ([Malashchenko2025], Fig. 1-2): a ball *freewheel* (z1 balls on the
 diameter d4) that transmits torque one way only, and a ball *safety* part (z3 balls on the
 diameter d5 = 2·r0) whose balls sit in sockets and are held in by springs.  A safety ball is
 pushed out of its socket (radially outward, compressing its spring) when the circumferential
@@ -22,7 +22,7 @@ def ball_forces(T: float, z1: int, d4: float, z3: int, d5: float) -> tuple[float
     .. math:: F_{t1} = \\frac{2T}{d_4 z_1},\\qquad F_{t2} = \\frac{F_{t1} d_4 z_1}{d_5 z_3}
               = \\frac{2T}{d_5 z_3}
 
-    (seed 003 eqs. (1)-(4): the torque balance F_t1·d4·z1 = F_t2·d5·z3 between the two
+    ([Malashchenko2025] eqs. (1)-(4): the torque balance F_t1·d4·z1 = F_t2·d5·z3 between the two
     parts in series; T = P1/ω1).  Parameters: T torque [N·m], z1, z3 ball numbers,
     d4, d5 diameters of the ball-centre circles [m].
     """
@@ -31,7 +31,7 @@ def ball_forces(T: float, z1: int, d4: float, z3: int, d5: float) -> tuple[float
 
 def centrifugal_force(m: float, r0: float, omega: float) -> float:
     """Centrifugal force of one safety ball (with its plunger), F_c = m·r0·ω² [N]
-    (seed 003 eqs. (10), (15): the term m·r0·ω²)."""
+    ([Malashchenko2025] eqs. (10), (15): the term m·r0·ω²)."""
     return m * r0 * omega * omega
 
 
@@ -39,14 +39,14 @@ def limit_torque(F_spring: float, F_c: float, z3: int, r0: float, alpha: float,
                  f: float = 0.0, f_g: float = 0.0) -> float:
     """Torque at which the safety balls leave their sockets [N·m].
 
-    Quasi-static limit of seed 003 eq. (15) (driven side blocked, I3 -> ∞, gravity
+    Quasi-static limit of [Malashchenko2025] eq. (15) (driven side blocked, I3 -> ∞, gravity
     neglected), all z3 balls sharing equally, with friction added:
 
     .. math:: T_{lim} = \\frac{z_3 r_0 (c y_0 - m r_0 ω^2)}{\\cot(α_2 + ρ) - f_g},
               \\qquad ρ = \\arctan f
 
-    Without friction (f = f_g = 0) this is z3·r0·tan α2·(c·y0 − m·r0·ω²), the seed's form.
-    The friction form is the method note's (C.3 item 14), written after M. N. Ivanov's
+    Without friction (f = f_g = 0) this is z3·r0·tan α2·(c·y0 − m·r0·ω²), the paper's form.
+    The friction form is [Malashchenko2025] (C.3 item 14), written after M. N. Ivanov's
     ball/cam safety-clutch formula: friction ρ at the socket contact and f_g of the ball
     (plunger) in its guide bore both oppose the outward motion.
 
@@ -78,14 +78,14 @@ def required_spring_force(T: float, F_c: float, z3: int, r0: float, alpha: float
 
 def release_speed(F_spring: float, m: float, r0: float) -> float:
     """Speed at which the centrifugal force alone equals the spring force [rad/s]:
-    m·r0·ω² = c·y0 (seed 003 eq. (15) with T_p = 0)."""
+    m·r0·ω² = c·y0 ([Malashchenko2025] eq. (15) with T_p = 0)."""
     return math.sqrt(F_spring / (m * r0))
 
 
 def inertia_factor(z3: int, m: float, r0: float, I1: float, I3: float) -> float:
     """Ratio of the release torque with a free driven inertia to the blocked-drive value.
 
-    Seed 003 eq. (15): (m r0² + I1 + I3)/(m r0² + I3), the share of a drive torque T_p that
+    [Malashchenko2025] eq. (15): (m r0² + I1 + I3)/(m r0² + I3), the share of a drive torque T_p that
     reaches the balls while the whole train accelerates (eq. (12): R1 = (T_p − I1·φ'')/…,
     φ'' = T_p/(m r0² + I1 + I3)).  The seed writes one ball; here the balls' term is
     z3·m·r0² (all balls move with the sleeve).  I1 drive-side (central part), I3 driven
@@ -108,7 +108,7 @@ def limit_band(F_spring: float, F_c: float, z3: int, r0: float, alpha: float, f:
                f_g: float, spread: float) -> LimitBand:
     """Limit torque with both friction coefficients scaled by (1 − spread), 1, (1 + spread):
     the scatter of the release torque (typically ±10...25 % for ball safety clutches,
-    method note C.3 item 14)."""
+    [Malashchenko2025])."""
     lo, hi = 1.0 - spread, 1.0 + spread
     return LimitBand(
         limit_torque(F_spring, F_c, z3, r0, alpha, f * lo, f_g * lo),

@@ -26,7 +26,7 @@ _ENDS = {
 def wahl_factor(C: float) -> float:
     """Wahl curvature factor K_W = (4C − 1)/(4C − 4) + 0.615/C, C = D/d (spring index).
 
-    Reference: A. M. Wahl, "Mechanical Springs"; method note C.3 item 15; the factor used by
+    Reference: A. M. Wahl, "Mechanical Springs"; [Malashchenko2025]; the factor used by
     the textbook examples in ``tests/reference/ball_clutch``.
     """
     return (4.0 * C - 1.0) / (4.0 * C - 4.0) + 0.615 / C
@@ -50,7 +50,7 @@ def shear_stress(F: float, d: float, D: float) -> float:
     """Corrected shear stress τ = K_W·8·F·D/(π·d³) [MPa].
 
     Parameters: F axial force [N], d wire diameter [mm], D mean coil diameter [mm].
-    Reference: Wahl; Shigley eq. (10-2) with K_W; method note C.3 item 15.
+    Reference: Wahl; Shigley eq. (10-2) with K_W; [Malashchenko2025].
     """
     return wahl_factor(D / d) * 8.0 * F * D / (math.pi * d ** 3)
 
@@ -81,7 +81,7 @@ class SpringState:
 
 def spring_state(c: float, y0: float, lift: float, L0: float | None,
                  L_s: float | None) -> SpringState:
-    """Spring forces F = c·y (seed 003 eq. (7): F_pr = c(y0 + r − r0), r − r0 = lift) and
+    """Spring forces F = c·y ([Malashchenko2025] eq. (7): F_pr = c(y0 + r − r0), r − r0 = lift) and
     the lengths in the clutch."""
     F_pre, F_max = c * y0, c * (y0 + lift)
     L1 = None if L0 is None else L0 - y0

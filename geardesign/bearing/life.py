@@ -139,7 +139,7 @@ def _clamp_flag(x: float, lo: float, hi: float) -> str:
 def load_factors(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: float | None = None,
                  V: float = 1.0, C_0r: float | None = None, f0: float | None = None,
                  e_given: float | None = None, Y_given: float | None = None) -> LoadFactors:
-    """X, Y, e for P = X·V·F_r + Y·F_a (ISO 281:2007 Table 3 / GOST 18855-94; method note
+    """X, Y, e for P = X·V·F_r + Y·F_a (ISO 281:2007 Table 3 / GOST 18855-94; [GOST18855]
     §A.4.3–A.4.5).  F_a/(V·F_r) <= e gives the "<= e" column (X = 1, Y = 0 for single-row
     bearings).  V = 1 in ISO 281; GOST 18855-94 practice compares F_a/(V·F_r) with e.
 
@@ -303,7 +303,7 @@ class StaticLoad:
 
 def static_load(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: float | None = None,
                 e_given: float | None = None) -> StaticLoad:
-    """Equivalent static load P0 = max(F_r, X0·F_r + Y0·F_a) (ISO 76 / GOST 18854; method note
+    """Equivalent static load P0 = max(F_r, X0·F_r + Y0·F_a) (ISO 76 / GOST 18854; [GOST18855]
     §A.4.7).  Cylindrical roller: P0 = F_r; thrust with α = 90°: P0a = F_a."""
     if kind == "cylindrical_roller":
         return StaticLoad(1.0, 0.0, Fr)
@@ -413,7 +413,7 @@ def a_iso(kind: str, kappa: float, e_C: float, C_u: float, P: float,
 
 def c_u_estimate(kind: str, C_0: float, D_pw: float) -> float:
     """Approximate fatigue load limit C_u [N] from the static rating (ISO 281:2007 annex
-    approximation via the method note §A.3.1, unverified): C_0/22 (ball), C_0/8.2 (roller)
+    approximation via [GOST18855], unverified): C_0/22 (ball), C_0/8.2 (roller)
     for D_pw <= 100 mm, times (100/D_pw)^0.5 / ^0.3 beyond."""
     div, expo = T.C_U_ESTIMATE["ball" if is_ball(kind) else "roller"]
     c = C_0 / div
@@ -446,7 +446,7 @@ def a23_default(kind: str, conditions: str) -> float:
 
 def required_rating(P: float, life_h: float, n: float, p: float, a: float = 1.0) -> float:
     """Dynamic rating needed for a target life: C_req = P·(60·n·L_h/(10⁶·a))^(1/p) [N], with
-    a = a1·a23 (GOST) or a1·a_ISO (ISO 281) (method note §A.3.2 step 9)."""
+    a = a1·a23 (GOST) or a1·a_ISO (ISO 281) ([GOST18855] step 9)."""
     return P * (60.0 * n * life_h / (1.0e6 * a)) ** (1.0 / p)
 
 

@@ -1,5 +1,5 @@
 """Geneva (Maltese-cross) indexing mechanisms, external and internal, and the Geneva-indexed
-spindle block of a multi-spindle automatic (seed 004).
+spindle block of a multi-spindle automatic ([RotaryDevices]).
 
 Modules: :mod:`.kinematics` (motion law, peaks, geometry), :mod:`.drive` (reduced inertia,
 dynamic moment and power of the spindle block), :mod:`.spec` (the spec schema),
@@ -13,7 +13,7 @@ from geardesign.geneva.spec import SCHEMA
 CALCULATOR = Calculator(
     kind="geneva",
     summary="Geneva indexing drive: motion law, geometry, spindle-block dynamic power",
-    methods=("Geneva kinematics (theory of machines)", "seed 004 spindle-block model"),
+    methods=("Geneva kinematics (theory of machines)", "[RotaryDevices] spindle-block model"),
     schema=SCHEMA,
     compute=compute,
 )

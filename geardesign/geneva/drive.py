@@ -1,4 +1,4 @@
-"""Dynamics of a Geneva-indexed spindle block (barrel) of a multi-spindle automatic: seed 004.
+"""Dynamics of a Geneva-indexed spindle block (barrel) of a multi-spindle automatic: [RotaryDevices].
 
 The distributing (cam) shaft carries the Geneva crank and turns at ω_r; the cross turns the
 barrel through a gear with ratio i = z/n_pos (the barrel turns 2π/n_pos per index while the
@@ -43,7 +43,7 @@ def planetary_ratio(z_central: int, z_spindle: int, direction: str) -> float:
 
     A spindle gear z_sh rolling on the fixed central gear z_ts while the barrel turns by
     ω_b turns by (1 + z_ts/z_sh)·ω_b relative to the frame (planetary kinematics, external
-    mesh; the seed prints u_p = 1 + z_ts/z_sh, index order reconstructed in the method note
+    mesh; the paper prints u_p = 1 + z_ts/z_sh, index order reconstructed in [RotaryDevices]
     D.3 item 1).
     """
     s = {"same": 1.0, "opposite": -1.0, "declutched": 0.0}[direction]
@@ -52,7 +52,7 @@ def planetary_ratio(z_central: int, z_spindle: int, direction: str) -> float:
 
 @dataclass(frozen=True)
 class InertiaCoefficients:
-    """J_p(φ) = B1 + B2·u3² + B12·u3 (seed 004 eq. (2)) [kg·m²]."""
+    """J_p(φ) = B1 + B2·u3² + B12·u3 ([RotaryDevices] eq. (2)) [kg·m²]."""
 
     B1: float
     B2: float
@@ -60,7 +60,7 @@ class InertiaCoefficients:
 
 
 def inertia_coefficients(s: SpindleBlock, w_r: float) -> InertiaCoefficients:
-    """Coefficients of the reduced moment of inertia, seed 004 eq. (2):
+    """Coefficients of the reduced moment of inertia, [RotaryDevices] eq. (2):
 
     .. math::
         B_1 = J_d/u_1^2 + n_{sh} J_{sh}/u_2^2 + J_r,\\quad
@@ -73,7 +73,7 @@ def inertia_coefficients(s: SpindleBlock, w_r: float) -> InertiaCoefficients:
     with ω_sh = ω_sh.rab + u_p·ω_b.  B1 is constant and does not enter the dynamic moment.
 
     Parameters: the spindle block ``s``, distributing-shaft speed w_r [rad/s].
-    Reference: seed 004 eq. (2) (reconstructed from the fragments, method note D.3 item 5).
+    Reference: [RotaryDevices] eq. (2) (reconstructed from the fragments, [RotaryDevices]).
     """
     B1 = s.J_r
     if s.w_d > 0.0:
@@ -106,7 +106,7 @@ def with_efficiency(power: float, eta: float) -> float:
     Power taken by the load is divided by η (the motor supplies the losses); power given
     back by the load (negative, e.g. spindles braked by the planetary motion) is
     multiplied by η (the losses reduce what returns).  The seed divides every term by η;
-    for negative terms that would make the losses return energy (method note D.3 item 2).
+    for negative terms that would make the losses return energy ([RotaryDevices]).
     """
     return power / eta if power >= 0.0 else power * eta
 
@@ -115,14 +115,14 @@ def drive_point(s: SpindleBlock, B: InertiaCoefficients, w_r: float, omega_ratio
                 eps_ratio: float) -> DrivePoint:
     """Moments and powers at one crank angle, distributing shaft at constant speed ω_r.
 
-    Lagrange form, seed 004 eqs. (1) and (3), first approximation (ω_r constant):
+    Lagrange form, [RotaryDevices] eqs. (1) and (3), first approximation (ω_r constant):
 
     .. math::
         M_d = M_c + \\frac{ω_r^2}{2} \\frac{dJ_p}{dφ},\\quad
         \\frac{dJ_p}{dφ} = (2 B_2 u_3 + B_{12}) \\frac{du_3}{dφ},\\quad
         M_c = M_x + ΣM_{tr}·u_3,\\quad N_d = M_d ω_r
 
-    with u3 = i·ω2/ω1 and du3/dφ = i·ε2/ω1².  Direct power form (the seed's power balance
+    with u3 = i·ω2/ω1 and du3/dφ = i·ε2/ω1².  Direct power form (the paper's power balance
     printed before eq. (1)), with efficiencies:
 
     .. math::
@@ -133,7 +133,7 @@ def drive_point(s: SpindleBlock, B: InertiaCoefficients, w_r: float, omega_ratio
     N_b + N_sh + M_x ω_r = N_d identically (the two forms are the same physics).
 
     Parameters: spindle block ``s``, coefficients ``B``, w_r [rad/s], ω2/ω1 and ε2/ω1² of
-    the Geneva mechanism at the angle.  Reference: seed 004 eqs. (1)-(3), method note D.3.
+    the Geneva mechanism at the angle.  Reference: [RotaryDevices] eqs. (1)-(3), [RotaryDevices].
     """
     u3 = s.i_kb * omega_ratio
     du3 = s.i_kb * eps_ratio

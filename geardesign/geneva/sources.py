@@ -8,17 +8,17 @@ re-read for this implementation: the formulas are derived in the docstrings from
 geometry (a right angle between crank and slot at entry), so that they can be checked
 without the books.
 
-The spindle-block indexing drive follows the paper of seed 004, "Modelling of rotary devices
+The spindle-block indexing drive follows the paper of [RotaryDevices], "Modelling of rotary devices
 of machine aggregates" (authors not preserved in the source), eqs. (1)-(3) and the power
-balance printed before them; method note ``worm_wave_clutch_geneva.md`` section D.
+balance printed before them; [GOST19650]
 """
 
 GENEVA = "Geneva kinematics (theory of machines)"
 GENEVA_GEOM = "Geneva geometry (entry at a right angle)"
-SEED_POWER = "seed 004, power balance (N_b, N_sh)"
-SEED_EQ1 = "seed 004 eq. (1)"
-SEED_EQ2 = "seed 004 eq. (2)"
-SEED_EQ3 = "seed 004 eq. (3)"
-PLANETARY = "seed 004 (ω_sh = ω_sh.rab ± u_p·ω_b)"
+SEED_POWER = "[RotaryDevices], power balance (N_b, N_sh)"
+SEED_EQ1 = "[RotaryDevices] eq. (1)"
+SEED_EQ2 = "[RotaryDevices] eq. (2)"
+SEED_EQ3 = "[RotaryDevices] eq. (3)"
+PLANETARY = "[RotaryDevices] (ω_sh = ω_sh.rab ± u_p·ω_b)"
 DYNAMICS = "rigid-body dynamics"
 PRACTICE = "design practice"

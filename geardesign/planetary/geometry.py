@@ -9,7 +9,7 @@ Pure functions; lengths mm, angles rad.  Ring shifts are in the GOST 19274-73 si
 References
 ----------
 GOST 16532-70, GOST 19274-73; Matusevich, Paravan, Shekhov, Avramov, "Optimal design of
-planetary mechanisms of type 3K", Bulletin of NTU "KhPI" 2017 No. 25 (seed 001
+planetary mechanisms of type 3K", Bulletin of NTU "KhPI" 2017 No. 25 ([KhPI2017]
 L9729-10893), eqs. (2), (5), (15)-(28) (coaxiality with shifts), (31)-(37) (quality
 indices); ``planetary.md`` B.4, B.7, B.8, D.3.
 """

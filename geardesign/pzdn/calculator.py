@@ -210,7 +210,7 @@ def _spring_rows(res: Result, r: ResolvedSpring, sp: dict, assumed: list) -> Non
     sec.add("c", s.c_design, "-", "c", "spring index used for k", B + " eq. (3)")
     sec.add("c_actual", s.c_actual, "-", "D/d", "actual index, mean diameter over wire", B)
     sec.add("k", s.k, "-", "k", f"curvature factor ({s.inp.curvature})",
-            {"seed": B + " eq. (2)", "wahl": S.SHIGLEY, "en13906": S.EN13906}[s.inp.curvature])
+            {"thesis": B + " eq. (2)", "wahl": S.SHIGLEY, "en13906": S.EN13906}[s.inp.curvature])
     sec.add("sigma_allow", s.inp.sigma_allow, "MPa", "[σ]", "allowable bending stress",
             r.sigma_source)
     if r.tau_allow is not None:
@@ -254,7 +254,7 @@ def _spring_rows(res: Result, r: ResolvedSpring, sp: dict, assumed: list) -> Non
     sec.add("C", s.C, "N*m/rad", "C", "stiffness of the coils E·J/L", B + " eq. (11)")
     sec.add("phi_body", s.phi_body, "rad", "φ_c", "twist of the coils at T: T·L/(E·J)",
             B + " eq. (6)")
-    leg_src = {"seed": A + " eq. (7)", "shigley": S.SHIGLEY,
+    leg_src = {"thesis": A + " eq. (7)", "shigley": S.SHIGLEY,
                "en13906_radial": S.EN13906, "en13906_tangential": S.EN13906}[s.inp.leg_model]
     if s.inp.leg_arm is not None or s.inp.leg2_arm is not None:
         if s.inp.leg_arm is not None:

@@ -70,17 +70,17 @@ SPRING = Table("spring", "cylindrical torsion spring of the coupling", (
           default=None, gt=0, maximum=5000.0, example=1500.0,
           hint="or give tau_allow (× sigma_over_tau) or a material"),
     Field("curvature_factor", "string", "curvature (stress correction) factor",
-          default="seed", choices=CURVATURE_MODELS,
-          hint='"seed" (4c − 1)/(4c − 4) of the thesis, "wahl" Shigley K_i, "en13906" q'),
+          default="thesis", choices=CURVATURE_MODELS,
+          hint='"thesis" (4c − 1)/(4c − 4) of the thesis, "wahl" Shigley K_i, "en13906" q'),
     Field("leg_arm", "number", "arm of the loaded leg: distance from the spring axis to the "
           "finger in the slot", "mm", "l", default=None, gt=0, maximum=10000.0,
           hint="moving the finger sets the stiffness; leave out to neglect the legs "
                "(method B)"),
     Field("leg2_arm", "number", "arm of the second leg if it is free (not clamped)", "mm",
           "l2", default=None, gt=0, maximum=10000.0),
-    Field("leg_model", "string", "bending model of the legs", default="seed",
+    Field("leg_model", "string", "bending model of the legs", default="thesis",
           choices=LEG_MODELS,
-          hint='"seed" F·l²/(2EJ) of the thesis, "shigley" l/3, EN 13906-3 radial or '
+          hint='"thesis" F·l²/(2EJ) of the thesis, "shigley" l/3, EN 13906-3 radial or '
                'tangential leg'),
     Field("design_angle", "number", "design wind-up angle", "deg", "φ", default=None, gt=0,
           maximum=3600.0, hint="default: the motor wind-up + leg bending rounded up to 5°"),

@@ -4,7 +4,7 @@ stiffness, wind-up and geometry.  Pure functions on plain data.
 Units: torque N·mm inside the formulas (N·m at the interface of :func:`design`), lengths mm,
 stresses and moduli MPa, angles rad, stiffness N·mm/rad inside (N·m/rad at the interface).
 
-Methods (method note ``shared/methods/pzdn.md`` §3, §4): the KO-2 thesis sizes the spring
+Methods ([Lopukhov] [Lopukhov] §3, §4): the KO-2 thesis sizes the spring
 as a curved beam in bending — σ = T·k/W ≤ [σ] — and takes its twist from the elastic line
 of the coils, φ = T·L/(E·J), L = π·D·i.  Method A (one spring, thesis §2.1) adds the
 bending of the loaded leg and requires the spring to absorb the angle the motor shaft
@@ -18,18 +18,18 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-CURVATURE_MODELS = ("seed", "wahl", "en13906")
-LEG_MODELS = ("seed", "shigley", "en13906_radial", "en13906_tangential")
+CURVATURE_MODELS = ("thesis", "wahl", "en13906")
+LEG_MODELS = ("thesis", "shigley", "en13906_radial", "en13906_tangential")
 
 
 # ----------------------------------------------------------------------------- strength
 
 
-def curvature_factor(c: float, model: str = "seed") -> float:
+def curvature_factor(c: float, model: str = "thesis") -> float:
     """Stress correction (curvature) factor of a torsion spring coil in bending.
 
-    * ``"seed"``: k = (4c − 1)/(4c − 4) — KO-2 thesis eq. (2) of §2.1 and §2.2
-      (seed l. 886-891, 1333-1338); 1.0833 at c = 10.
+    * ``"thesis"``: k = (4c − 1)/(4c − 4) — KO-2 thesis eq. (2) of §2.1 and §2.2
+      ([Lopukhov]); 1.0833 at c = 10.
     * ``"wahl"``: K_i = (4c² − c − 1)/(4c(c − 1)), the inner-fibre factor of a curved
       beam — Shigley, *Mechanical Engineering Design*, §10-12 eq. (10-43); 1.0806 at c = 10.
     * ``"en13906"``: q = (c + 0.07)/(c − 0.75) — EN 13906-3 (as implemented in the public
@@ -37,7 +37,7 @@ def curvature_factor(c: float, model: str = "seed") -> float:
 
     c = D/d is the spring index (mean coil diameter over wire diameter), c > 1.
     """
-    if model == "seed":
+    if model == "thesis":
         return (4.0 * c - 1.0) / (4.0 * c - 4.0)
     if model == "wahl":
         return (4.0 * c * c - c - 1.0) / (4.0 * c * (c - 1.0))
@@ -83,14 +83,14 @@ def wire_length(D: float, i: float) -> float:
     return math.pi * D * i
 
 
-def leg_length(arm: float, D: float, model: str = "seed") -> float:
+def leg_length(arm: float, D: float, model: str = "thesis") -> float:
     """Wire length [mm] with the same twist compliance as a loaded straight leg.
 
     The leg's bending adds φ_leg = T·L_leg/(E·J) to the twist of the coils, where T is the
     spring torque and ``arm`` R the distance from the spring axis to the point where the
     force acts (the finger of the coupling), so that F = T/R.
 
-    * ``"seed"``: φ₁ = F·l²/(2EJ) with F = T/l, l = R (KO-2 thesis §2.1 eqs. (7), (8),
+    * ``"thesis"``: φ₁ = F·l²/(2EJ) with F = T/l, l = R (KO-2 thesis §2.1 eqs. (7), (8),
       tip slope of a cantilever) → L_leg = R/2.
     * ``"shigley"``: each leg adds l/3 (tip deflection of a cantilever over the arm),
       N_a = N_b + (l1 + l2)/(3πD) — Shigley eq. (10-47) → L_leg = R/3.
@@ -100,7 +100,7 @@ def leg_length(arm: float, D: float, model: str = "seed") -> float:
     * ``"en13906_tangential"``: tangential leg → L_leg = (4R² − D²)/(12R) (EN 13906-3 via
       SpringTHREE ``CalcTangentialEndFlex`` (4(R/D)² − 1)/(12πn(R/D)), times πDn).
     """
-    if model == "seed":
+    if model == "thesis":
         return arm / 2.0
     if model == "shigley":
         return arm / 3.0
@@ -111,10 +111,10 @@ def leg_length(arm: float, D: float, model: str = "seed") -> float:
     raise ValueError(f"unknown leg model {model!r}")
 
 
-def arm_for_leg_length(L_leg: float, D: float, model: str = "seed") -> float:
+def arm_for_leg_length(L_leg: float, D: float, model: str = "thesis") -> float:
     """The arm R [mm] whose leg has the equivalent length ``L_leg`` (inverse of
     :func:`leg_length`; the radial model by bisection, it is increasing in R > D/2)."""
-    if model == "seed":
+    if model == "thesis":
         return 2.0 * L_leg
     if model == "shigley":
         return 3.0 * L_leg
@@ -157,15 +157,15 @@ def kinematic_windup(n: float, t: float) -> float:
 
 def design_angle(required: float, step_deg: float) -> float:
     """Required angle [rad] rounded up to a multiple of ``step_deg`` (the thesis rounds
-    47.34° up to 50°, seed l. 992-994)."""
+    47.34° up to 50°, [Lopukhov])."""
     deg = math.degrees(required)
     return math.radians(math.ceil(deg / step_deg - 1e-9) * step_deg)
 
 
 def coils_for_angle(phi: float, T: float, E: float, J: float, D: float, L_leg: float) -> float:
     """Working coils that give the angle φ at the torque T [N·mm]:
-    i = (φ·E·J/T − L_leg)/(π·D) — KO-2 thesis §2.1 eq. (15) (garbled in the seed;
-    reconstructed in method note §3.2 item 16 as i = (φ − φ₁)·E·J/(π·D·T))."""
+    i = (φ·E·J/T − L_leg)/(π·D) — KO-2 thesis §2.1 eq. (15) (garbled in the available copy;
+    reconstructed in [Lopukhov] as i = (φ − φ₁)·E·J/(π·D·T))."""
     return (phi * E * J / T - L_leg) / (math.pi * D)
 
 
@@ -226,10 +226,10 @@ class SpringInput:
     D: float | None = None        # mean coil diameter; None: c·d
     i: float | None = None        # working coils; None: from the design angle (method A)
     p: float | None = None        # pitch; None: d + gap
-    curvature: str = "seed"
+    curvature: str = "thesis"
     leg_arm: float | None = None  # finger arm R of the loaded leg, from the spring axis
     leg2_arm: float | None = None  # arm of the second (free) leg; None: clamped at the body
-    leg_model: str = "seed"
+    leg_model: str = "thesis"
     phi_required: float | None = None  # required wind-up (method A), rad
     phi_design: float | None = None    # design angle, rad (>= phi_required)
     phi_stop: float | None = None      # stop angle of the coupling (torque limit), rad

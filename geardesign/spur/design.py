@@ -5,7 +5,7 @@ the full check to the calculator.
 Procedure (GOST 21354-87 design calculation, as in the handbooks):
 
 1. Preliminary allowable contact stress σ_HP = σ_Hlim·Z_N·0.9/S_H per gear (Z_R·Z_v·Z_X
-   taken as 0.9, method note §8.5), the pair value as in the check.
+   taken as 0.9, [GOST21354]), the pair value as in the check.
 2. K_Hβ from the chart at ψ_bd = ψ_ba(u + 1)/2.
 3. a_w = K_a(u + 1)·∛(T1·K_Hβ/(ψ_ba·u·σ_HP²)), rounded up to the GOST 2185 series.
 4. For each GOST 9563 module from 0.01·a_w up: z_Σ = ⌊2a_w cos β/m⌋, z1 = round(z_Σ/(u+1))

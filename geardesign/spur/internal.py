@@ -19,8 +19,8 @@ d_a2 = d2 − 2(h_a* − x2)m = 2475.118 mm in both.
 References
 ----------
 GOST 19274-73 "Cylindrical involute internal gear pairs. Calculation of geometry" (its
-text could not be consulted, ``shared/methods/standards_check.md`` §6; the formulas
-below are the handbook forms quoted in ``shared/methods/planetary.md`` D.3 and B.12, and
+text could not be consulted, [ZPCIL]; the formulas
+below are the handbook forms quoted in [Matusevich2017] D.3 and B.12, and
 each one is checked against the printed KISSsoft report of an internal pair,
 ``tests/reference/planetary/test_kisssoft_nrel_stages.py``); ISO 21771:2007 (internal
 gears with negative z); Kudryavtsev, "Planetary gears. Handbook" (tip interference).

@@ -40,7 +40,7 @@ def mesh_forces(g: PairGeometry, T1: float) -> Forces:
 
     Each gear's shaft carries F_t, F_r, F_a (opposite directions on the two shafts) and
     the moment of the axial force M_a = F_a·d_w/2000 [N·m] in the plane of the axes.
-    References: method note §8.4; ISO 6336-1 §5 (force components).
+    References: [GOST21354]; ISO 6336-1 §5 (force components).
     """
     d_w1 = g.g1.d_w
     F_t = 2000.0 * T1 / d_w1
@@ -64,7 +64,7 @@ class Block:
 
 def cycles(n: float, c: int, L_h: float) -> float:
     """Number of load cycles N_K = 60·n·c·L_h (c meshes per revolution).
-    GOST 21354-87; method note §8.5."""
+    GOST 21354-87; [GOST21354]."""
     return 60.0 * n * c * L_h
 
 
@@ -75,7 +75,7 @@ def equivalent_cycles(n: float, c: int, L_h: float, blocks: tuple[Block, ...],
     .. math:: N_E = 60\\,c\\,L_h \\sum_i (T_i/T)^{p}\\, n_i\\, t_i
 
     p = q_H/2 = 3 for contact, p = q_F (6 or 9) for bending; T the largest long-acting
-    torque (T_i/T ≤ 1).  References: GOST 21354-87 (equivalent cycles); method note §8.5.
+    torque (T_i/T ≤ 1).  References: GOST 21354-87 (equivalent cycles); [GOST21354].
     """
     return 60.0 * c * L_h * sum(b.torque_ratio ** exponent * n * b.speed_ratio * b.time_share
                                 for b in blocks)

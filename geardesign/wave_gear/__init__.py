@@ -1,5 +1,5 @@
 """Flexible wheel of a wave (strain-wave) gear: the stress-increase factor K_0 = K_zh·K_σ of
-Tkachenko, Ustinenko and Borisenko (seed 001, 2017) with the stiffness factor K_zh of the
+Tkachenko, Ustinenko and Borisenko ([KhPI2017] 2017) with the stiffness factor K_zh of the
 toothed rim from the tooth profile, the recommended rim thickness and the endurance check.
 
 Eqs. (9)-(10) of the paper (shift corrections) are illegible in the source and are not
@@ -16,7 +16,7 @@ from geardesign.wave_gear.spec import SCHEMA
 CALCULATOR = Calculator(
     kind="wave_gear",
     summary="wave-gear flexible wheel: rim stiffness factor K_zh, stress increase K_0, endurance",
-    methods=("Tkachenko, Ustinenko, Borisenko 2017 (seed 001)", "GOST 13755-81",
+    methods=("Tkachenko, Ustinenko, Borisenko 2017 ([KhPI2017])", "GOST 13755-81",
              "thin-ring bending"),
     schema=SCHEMA,
     compute=compute,

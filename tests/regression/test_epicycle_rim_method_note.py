@@ -1,4 +1,4 @@
-"""Regression values: recomputations of the method note ``shared/methods/epicycle_rim.md``
+"""Regression values: recomputations of [Gutyria2017] [Gutyria2017]
 (its "recomputed" columns and Appendix R), not published numbers.  They guard against
 unintended changes; the published values are in ``tests/reference/epicycle_rim``."""
 
@@ -54,7 +54,7 @@ def test_mathieu_bands_of_the_note():
     """§B.4.2: along b = μa/2, μ = 1/3: region 1 a = 0.855 … 1.194 (Ω/k0 = 1.830 … 2.163),
     region 2 a = 3.964 … 4.190 (series); μ = 1/9: 0.947 … 1.058 and 3.996 … 4.021; the
     linear boundaries 1/(1 ± μ/2).  The exact characteristic values and the series agree to
-    1e-6 in region 1 (the note's RK4 check, 0.857 … 1.193, was 0.002 off)."""
+    1e-6 in region 1 (the hand calculation's RK4 check, 0.857 … 1.193, was 0.002 off)."""
     b3 = M.band_series(1, 1 / 3)
     assert [b3.a_lo, b3.a_hi] == pytest.approx([0.8550, 1.1939], abs=5e-5)
     assert [b3.ratio_lo, b3.ratio_hi] == pytest.approx([1.8304, 2.1629], abs=5e-5)

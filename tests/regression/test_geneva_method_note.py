@@ -1,19 +1,19 @@
-"""Regression values: recomputations of the method note ``shared/methods/
-worm_wave_clutch_geneva.md`` section D (values marked [ours]), not published numbers.
+"""Regression values: recomputations of [RotaryDevices] (see docs/geneva.md), not
+published numbers.
 
 D.4: Geneva kinematics table (external z = 3...8, internal z = 4, 6).
 D.6: the spindle-block example (4-slot cross, 6 spindles, distributing shaft 30 min⁻¹).
 
-Differences from the note, by design:
+Differences from the hand calculation, by design:
 
-* B1 (constant part of J_p): the note prints 202.0 kg·m²; it used u1 = ω_d/ω_r in
+* B1 (constant part of J_p): the hand calculation prints 202.0 kg·m²; it used u1 = ω_d/ω_r in
   J_d/u1², which makes the motor rotor vanish (2·10⁻⁵ kg·m²).  The seed defines
-  u1 = ω_r/ω_d (seed 004 eq. (2), "u1 = ω_p/ω_d"), so J_d/u1² = J_d·(ω_d/ω_r)² =
+  u1 = ω_r/ω_d ([RotaryDevices] eq. (2), "u1 = ω_p/ω_d"), so J_d/u1² = J_d·(ω_d/ω_r)² =
   116.8 kg·m² and B1 = 318.8 kg·m².  B1 is constant and does not change any power.
-* Barrel turned against the spindles with η_b = 0.80, η_sh = 0.85: the note divides the
+* Barrel turned against the spindles with η_b = 0.80, η_sh = 0.85: the hand calculation divides the
   negative spindle power by η (N = 3.106 kW, N_sh = −1.810 kW); geardesign multiplies
-  power given back by η (the losses reduce what returns, as the note itself recommends in
-  D.3 item 2): N_max = 3.616 kW.  The note's number is reproduced below with its rule.
+  power given back by η (the losses reduce what returns, as the hand calculation itself recommends in
+  D.3 item 2): N_max = 3.616 kW.  The hand calculation's number is reproduced below with its rule.
 """
 
 import math
@@ -96,7 +96,7 @@ def test_d6_inertia_and_barrel_motion():
     assert _close(r["omega_b_max"], 5.056)
     assert _close(r["eps_b_max"], 35.58)
     assert r["B1"] == pytest.approx(2.0 + 200.0 + 0.05 * (1450 / 30) ** 2, rel=1e-12)
-    assert _close(r["B1"], 318.8)            # the note's 202.0 omits the motor rotor
+    assert _close(r["B1"], 318.8)            # the hand calculation's 202.0 omits the motor rotor
 
 
 @pytest.mark.parametrize("direction, N, phi, M_d", [
@@ -121,7 +121,7 @@ def test_d6_peak_power_with_efficiencies_same_direction():
 def test_d6_opposite_direction_efficiency_rule():
     r = doc("opposite", 0.80, 0.85)
     assert _close(r["N_max"], 3.616)       # negative spindle power multiplied by η_sh
-    # the note's 3.106 kW divides the negative spindle power by η_sh as well
+    # the hand calculation's 3.106 kW divides the negative spindle power by η_sh as well
     s = block("opposite")
     B = inertia_coefficients(s, math.pi)
     lam, phi0 = K.crank_ratio(4), K.half_motion_angle(4, False)

@@ -1,4 +1,4 @@
-"""Regression values of ``shared/methods/planetary.md``: the method note's own
+"""Regression values of [Matusevich2017]: [Matusevich2017] own
 recomputations ("S" values, not printed in the papers).  They guard this code against
 change; the published values are in ``tests/reference/planetary``."""
 
@@ -54,7 +54,7 @@ def test_first_sweep_table(i):
 
 def test_first_sweep_interference_zone():
     """B.10: for x_a < 0.232 the sun's lower active point would lie inside its base circle
-    (the denominator of eq. (32) is negative): the note's sample i = 11 (ϑ_p = 2.457) is
+    (the denominator of eq. (32) is negative): the hand calculation's sample i = 11 (ϑ_p = 2.457) is
     meaningless; the tool reports the sliding as undefined and fails the interference
     check."""
     doc = run_data({
@@ -125,9 +125,9 @@ def test_braked_carrier_example_torques():
 
 
 def test_3k_efficiencies():
-    """D.4/E14 with η^h_ab = 0.97 and η^h_eb = 0.98: forward η^b_ae = 0.579 (the note's
+    """D.4/E14 with η^h_ab = 0.97 and η^h_eb = 0.98: forward η^b_ae = 0.579 (the hand calculation's
     decomposition η^b_aH·η^b_He; the exact planet balance gives the same to 4 digits);
-    reverse: the note's decomposition gives 0.306, the exact balance 0.298 (the carrier is
+    reverse: the hand calculation's decomposition gives 0.306, the exact balance 0.298 (the carrier is
     no real intermediate member of a 3K train)."""
     t = Train("3K", 12, 46, 102, 3, None, 105)
     s = speeds(t, {"ring": 0.0, "sun": 1000.0})

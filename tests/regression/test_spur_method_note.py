@@ -1,4 +1,4 @@
-"""Regression values: recomputations of the method note (``shared/methods/spur_helical.md``
+"""Regression values: recomputations of [GOST21354] ([GOST21354]
 §9, values marked S), not published numbers.  They guard against unintended changes;
 the published references are in ``tests/reference/spur``."""
 

@@ -1,9 +1,8 @@
-"""Regression values: recomputation of the method note ``shared/methods/
-worm_wave_clutch_geneva.md`` B2.4 ([ours]): K_zh of the five test racks of Tkachenko et al.
-(seed 001, 2017) from eqs. (4)-(5), GOST 13755 rack, the height correction α_h and the
+"""Regression values: recomputation of [Tkachenko2017] (see docs/wave_gear.md): K_zh of the five test racks of Tkachenko et al.
+([KhPI2017] 2017) from eqs. (4)-(5), GOST 13755 rack, the height correction α_h and the
 predicted cantilever forces.  The paper prints no numeric K_zh (its Fig. 3-4 ordinates are
 not legible), so these are not published values; the slice-beam reconstruction of eq. (5)
-is the note's.
+is the hand calculation's.
 """
 
 import math

@@ -1,9 +1,8 @@
-"""Regression values: the method note's own worm example (``shared/methods/
-worm_wave_clutch_geneva.md`` §A+.8, marked [ours]: recomputed by the note's authors with
-the same textbook formulas), not published numbers.  They guard against unintended
+"""Regression values: a worm example computed with the textbook formulas of [GOST19650]
+and [GOST2144] (see docs/worm.md), not published numbers.  They guard against unintended
 changes; the published references are in ``tests/reference/worm``.
 
-Known difference: the note interpolates the friction angle ρ' in degrees between the
+Known difference: the hand calculation interpolates the friction angle ρ' in degrees between the
 table's ρ' columns (1.409°); this code interpolates f' and takes ρ' = arctan f' (1.4106°).
 The efficiency and everything after it differ by about 1.5·10⁻⁴ relative, inside the
 tolerances below.
@@ -26,7 +25,7 @@ EXPECTED = {  # key: (note value, tolerance)
     "d_f1": (47.880, 5e-4), "d_a2": (269.600, 5e-4), "d_f2": (241.880, 5e-4),
     "d_aM2": (279.05, 5e-3), "p_x": (19.792, 5e-4), "p_z1": (39.584, 5e-4),
     "v1": (5.163, 5e-4), "v_s": (5.251, 5e-4), "v2": (0.957, 5e-4),
-    "rho": (1.409, 2e-3),            # ρ' interpolated in degrees by the note, see above
+    "rho": (1.409, 2e-3),            # ρ' interpolated in degrees by the hand calculation, see above
     "eta_m": (0.8788, 2e-4), "eta": (0.8436, 2e-4), "T1": (29.63, 1e-2), "P1": (4.500, 1e-3),
     "F_t2": (3968.3, 0.05), "F_t1": (871.6, 0.15), "F_r": (1444.3, 0.05),
     "sigma_H": (166.0, 0.05), "N": (8.70e7, 5e5), "K_HL": (0.7631, 5e-5), "C_v": (0.9260, 5e-5),
@@ -44,7 +43,7 @@ def test_note_example_a8():
 
 
 def test_note_example_ivanov_bending_and_face_width():
-    """With b2 = 0.355·a_w = 56.8 mm the note gets σ_F = 11.81 MPa (Ivanov's form) and
+    """With b2 = 0.355·a_w = 56.8 mm the hand calculation gets σ_F = 11.81 MPa (Ivanov's form) and
     2δ = 103.25°, and says a validation rule should catch b2 > 0.75·d_a1 = 56.7 mm."""
     spec = dict(NOTE, gear=dict(NOTE["gear"], face_width=56.8),
                 method={"bending_formula": "ivanov"})
@@ -60,7 +59,7 @@ def test_note_example_ivanov_bending_and_face_width():
 
 
 def test_design_mode_reproduces_the_note():
-    """Design mode from T2, n1, u and the material proposes the note's pair."""
+    """Design mode from T2, n1, u and the material proposes the hand calculation's pair."""
     spec = {"kind": "worm", "mode": "design", "gear": {"ratio": 20.0},
             "load": {"torque2": 500.0, "speed1": 1450.0},
             "wheel": {"material": "BrO10N1F1_centrifugal"}}

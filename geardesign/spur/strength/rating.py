@@ -147,12 +147,12 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
     f = mesh_forces(g, duty.T1)
     r.put("forces", "T1", duty.T1, "N*m", "T1", "pinion torque (nominal)", "spec")
     r.put("forces", "T2", duty.T1 * u, "N*m", "T2", "wheel torque (no mesh loss)", SRC)
-    r.put("forces", "F_t", f.F_t, "N", "F_t", "tangential force at d_w1", "method note §8.4")
-    r.put("forces", "F_r", f.F_r, "N", "F_r", "radial force", "method note §8.4")
-    r.put("forces", "F_a", f.F_a, "N", "F_a", "axial force", "method note §8.4")
-    r.put("forces", "F_n", f.F_n, "N", "F_n", "normal force", "method note §8.4")
+    r.put("forces", "F_t", f.F_t, "N", "F_t", "tangential force at d_w1", "[GOST21354]")
+    r.put("forces", "F_r", f.F_r, "N", "F_r", "radial force", "[GOST21354]")
+    r.put("forces", "F_a", f.F_a, "N", "F_a", "axial force", "[GOST21354]")
+    r.put("forces", "F_n", f.F_n, "N", "F_n", "normal force", "[GOST21354]")
     r.put("forces", "beta_w", math.degrees(f.beta_w), "deg", "β_w", "helix angle at d_w",
-          "method note §8.4")
+          "[GOST21354]")
     r.put("forces", "M_a1", f.M_a1, "N*m", "M_a1", "moment of F_a on the pinion shaft (F_a·d_w1/2)",
           "statics")
     r.put("forces", "M_a2", f.M_a2, "N*m", "M_a2", "moment of F_a on the wheel shaft (F_a·d_w2/2)",

@@ -1,4 +1,4 @@
-"""Cyclogram 2017, Table 1 (seed 001, L11192–11212): N. V. Matyushenko, A. V. Fedchenko,
+"""Cyclogram 2017, Table 1 ([Matyushenko2017]): N. V. Matyushenko, A. V. Fedchenko,
 V. A. Berezhnoi, "Numerical study of the cyclogram and of the overlap at re-engagement of
 adjacent teeth", Bulletin of NTU "KhPI", series "Problems of mechanical drive", 2017,
 No. 25.  "Minimum allowable face width (in units of p_x) for different basic racks,
