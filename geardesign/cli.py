@@ -21,24 +21,32 @@ from geardesign.core import registry
 from geardesign.core.errors import InputError, Problem
 
 app = typer.Typer(
-    add_completion=False,
+    add_completion=True,
     no_args_is_help=True,
     pretty_exceptions_enable=False,
     rich_markup_mode=None,
     help="Design calculations for mechanical drives. A spec file (TOML) describes the design; "
          "geardesign checks it, computes and reports. Exit codes: 0 pass, 1 a design check "
-         "failed, 2 unusable input.",
+         "failed, 2 unusable input, 3 internal error (a bug: please report it).",
 )
 
 
 class Format(str, Enum):
     table = "table"
     json = "json"
+    jsonl = "jsonl"
     markdown = "markdown"
+    csv = "csv"
+    html = "html"
 
 
 FORMAT_HELP = ("Output format. Default: table on a terminal, json when stdout is a pipe or "
-               "file; with --output, taken from the file extension (.json, .md, else table).")
+               "file; with --output, taken from the file extension (.json, .jsonl, .md, .csv, "
+               ".html, .txt).")
+
+EXTENSIONS = {".json": "json", ".jsonl": "jsonl", ".md": "markdown", ".markdown": "markdown",
+              ".csv": "csv", ".html": "html", ".htm": "html", ".txt": "table"}
+"""Report formats by the extension of --output."""
 
 
 def _err(line: str) -> None:
@@ -62,8 +70,30 @@ def _choose_format(fmt: Optional[Format], output: Optional[Path]) -> str:
         return fmt.value
     if output is not None:
         suffix = output.suffix.lower()
-        return {".json": "json", ".md": "markdown", ".markdown": "markdown"}.get(suffix, "table")
+        if suffix not in EXTENSIONS and str(output) not in ("/dev/null", "/dev/stdout"):
+            _err(f"{output}: cannot write a report as {suffix or 'a file without extension'}; "
+                 f"use one of {', '.join(EXTENSIONS)} or give --format")
+            raise typer.Exit(2)
+        return EXTENSIONS.get(suffix, "json")
     return "table" if sys.stdout.isatty() else "json"
+
+
+def _load(path: Path, expect_kind: Optional[str]):
+    """A spec file, or the spec on standard input when the path is ``-``."""
+    if str(path) != "-":
+        return registry.load(path, expect_kind)
+    from geardesign.core.spec import MAX_SPEC_BYTES, parse_toml
+
+    raw = sys.stdin.buffer.read(MAX_SPEC_BYTES + 1)
+    if len(raw) > MAX_SPEC_BYTES:
+        raise InputError(Problem("", "cannot be used: larger than 4 MiB; a spec is a few kB"))
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise InputError(Problem("", f"not UTF-8 text (byte {exc.start})")) from None
+    calc, spec = registry.load_data(parse_toml(text), "<stdin>", expect_kind)
+    spec.base_dir = Path.cwd()
+    return calc, spec
 
 
 def _compute_all(paths: List[Path], expect_kind: Optional[str], mode: Optional[str] = None):
@@ -72,7 +102,7 @@ def _compute_all(paths: List[Path], expect_kind: Optional[str], mode: Optional[s
     results, problems = [], []
     for path in paths:
         try:
-            calc, spec = registry.load(path, expect_kind)
+            calc, spec = _load(path, expect_kind)
             if mode is not None:
                 field = calc.schema.root.member("mode")
                 if field is None or mode not in (field.choices or ()):
@@ -82,7 +112,8 @@ def _compute_all(paths: List[Path], expect_kind: Optional[str], mode: Optional[s
                     spec.assumed.remove("mode")
             results.append(calc.compute(spec))
         except InputError as exc:
-            problems.extend(p.line(str(path)) for p in exc.problems)
+            problems.extend(p.line("<stdin>" if str(path) == "-" else str(path))
+                            for p in exc.problems)
     return results, problems
 
 
@@ -105,16 +136,17 @@ def _write_plot(results: list, plot: Path) -> None:
 
 def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quiet: bool,
           expect_kind: Optional[str] = None, mode: Optional[str] = None,
-          plot: Optional[Path] = None) -> None:
+          plot: Optional[Path] = None, keep_going: bool = False) -> None:
     from geardesign.core.render import render, write_atomic
 
+    fmt_name = _choose_format(fmt, output)
     results, problems = _compute_all(paths, expect_kind, mode)
     if problems:
         _report_problems(problems)
-        raise typer.Exit(2)
+        if not keep_going or not results:
+            raise typer.Exit(2)
     if plot is not None:
         _write_plot(results, plot)
-    fmt_name = _choose_format(fmt, output)
     to_terminal = output is None and sys.stdout.isatty()
     color = to_terminal and not os.environ.get("NO_COLOR")
     width = None
@@ -123,7 +155,7 @@ def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quie
 
         width = shutil.get_terminal_size((120, 40)).columns
     text = render(results, fmt_name, color=color, width=width)
-    code = max(r.exit_code for r in results)
+    code = 2 if problems else max(r.exit_code for r in results)
     if output is not None:
         try:
             write_atomic(output, text)
@@ -165,20 +197,40 @@ def _main(version: bool = typer.Option(False, "--version", callback=_version, is
     """geardesign: design calculations for mechanical drives."""
 
 
+OPT_KEEP_GOING = typer.Option(False, "--keep-going", "-k",
+                              help="With several specs: report the usable ones even when "
+                                   "others are refused (the exit code is still 2).")
+
+
 @app.command("run")
 def run_cmd(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
             output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET,
-            select: bool = OPT_SELECT, plot: Optional[Path] = OPT_PLOT) -> None:
-    """Compute one or more specs, dispatching on each spec's `kind`."""
-    _emit(specs, format, output, quiet, mode="select" if select else None, plot=plot)
+            keep_going: bool = OPT_KEEP_GOING, select: bool = OPT_SELECT,
+            plot: Optional[Path] = OPT_PLOT) -> None:
+    """Compute one or more specs ("-" reads standard input), dispatching on each `kind`."""
+    _emit(specs, format, output, quiet, mode="select" if select else None, plot=plot,
+          keep_going=keep_going)
 
 
 def _kind_command(kind: str):
-    def command(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
-                output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET,
-                select: bool = OPT_SELECT, plot: Optional[Path] = OPT_PLOT) -> None:
-        _emit(specs, format, output, quiet, expect_kind=kind, mode="select" if select else None,
-              plot=plot)
+    """``geardesign <kind>``: only the options that apply to that calculator."""
+    if kind == "bearing":
+        def command(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
+                    output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET,
+                    keep_going: bool = OPT_KEEP_GOING, select: bool = OPT_SELECT) -> None:
+            _emit(specs, format, output, quiet, expect_kind=kind,
+                  mode="select" if select else None, keep_going=keep_going)
+    elif kind == "pzdn":
+        def command(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
+                    output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET,
+                    keep_going: bool = OPT_KEEP_GOING, plot: Optional[Path] = OPT_PLOT) -> None:
+            _emit(specs, format, output, quiet, expect_kind=kind, plot=plot,
+                  keep_going=keep_going)
+    else:
+        def command(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
+                    output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET,
+                    keep_going: bool = OPT_KEEP_GOING) -> None:
+            _emit(specs, format, output, quiet, expect_kind=kind, keep_going=keep_going)
 
     command.__doc__ = f"Compute {kind} spec(s) (see `geardesign list`)."
     return command
@@ -238,12 +290,12 @@ def schema_cmd(kind: str = typer.Argument(..., help="Calculator kind, e.g. spur.
 def validate_cmd(specs: List[Path] = ARG_SPECS, quiet: bool = OPT_QUIET) -> None:
     """Check spec file(s) without reporting results: exit 0 if usable, 2 if not."""
     results, problems = _compute_all(specs, None)
-    if problems:
-        _report_problems(problems)
-        raise typer.Exit(2)
     if not quiet:
         for r in results:
             sys.stdout.write(f"{r.source}: ok ({r.kind})\n")
+    if problems:
+        _report_problems(problems)
+        raise typer.Exit(2)
 
 
 def main() -> None:

@@ -16,7 +16,8 @@ from dataclasses import dataclass
 from typing import Any
 
 IGNORED = ("geardesign", "spec")
-"""Top-level keys that are not results: the program version and the path of the spec."""
+"""Keys of a document (and of the documents nested in it) that are not results: the program
+version and the path of the spec."""
 
 RTOL = 1e-9
 """Default relative tolerance: the precision every closed-form and solver result reaches
@@ -61,14 +62,14 @@ def compare_documents(actual: Any, expected: Any, rtol: float = RTOL,
                       atol: float = 1e-12) -> list[Difference]:
     """Every difference between two result documents (empty when they agree)."""
     out: list[Difference] = []
-    if isinstance(actual, dict) and isinstance(expected, dict):
-        actual = {k: v for k, v in actual.items() if k not in IGNORED}
-        expected = {k: v for k, v in expected.items() if k not in IGNORED}
     _walk(actual, expected, "", rtol, atol, out)
     return out
 
 
 def _walk(a: Any, e: Any, path: str, rtol: float, atol: float, out: list) -> None:
+    if isinstance(e, dict) and isinstance(a, dict):   # every document, nested ones too
+        a = {k: v for k, v in a.items() if k not in IGNORED}
+        e = {k: v for k, v in e.items() if k not in IGNORED}
     if isinstance(e, dict):
         if not isinstance(a, dict) or list(a) != list(e):
             out.append(Difference(path or "$", _keys(e), _keys(a)))

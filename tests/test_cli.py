@@ -71,7 +71,7 @@ def test_json_document_shape(good):
     code, out, err = cli("run", good, "--format", "json")
     assert code == 0 and err == ""
     doc = json.loads(out)
-    assert list(doc) == ["geardesign", "kind", "title", "methods", "inputs", "assumed",
+    assert list(doc) == ["geardesign", "spec", "kind", "title", "methods", "inputs", "assumed",
                          "results", "units", "checks", "verdict"]
     assert doc["geardesign"] == __version__ and doc["kind"] == "spur"
     assert doc["title"] == "test pair" and doc["verdict"] == "pass"

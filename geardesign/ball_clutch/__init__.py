@@ -13,7 +13,7 @@ from geardesign.core.registry import Calculator
 CALCULATOR = Calculator(
     kind="ball_clutch",
     summary="ball overrunning-safety clutch: limit torque, speed effect, spring, ball contact",
-    methods=("[Malashchenko2025] (Malashchenko et al. 2025)", "Wahl spring formulas", "Hertz contact"),
+    methods=("Malashchenko et al. 2025", "Wahl spring formulas", "Hertz contact"),
     schema=SCHEMA,
     compute=compute,
 )

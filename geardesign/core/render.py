@@ -16,7 +16,7 @@ from geardesign import __version__
 from geardesign.core.result import Check, Result, Row
 from geardesign.core.text import escape_controls
 
-FORMATS = ("table", "json", "markdown")
+FORMATS = ("table", "json", "jsonl", "markdown", "csv", "html")
 
 _STATUS = {  # (failed?, severity) -> (mark, word, rich style)
     (False, "error"): ("✔", "ok", "green"),
@@ -144,8 +144,13 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
     from rich.table import Table
     from rich.text import Text
 
+    if width is None:   # a pipe or a file: the COLUMNS of the environment, else 120
+        try:
+            width = max(60, min(int(os.environ.get("COLUMNS", "120")), 1000))
+        except ValueError:
+            width = 120
     buf = io.StringIO()
-    console = Console(file=buf, force_terminal=color, no_color=not color, width=width or 120,
+    console = Console(file=buf, force_terminal=color, no_color=not color, width=width,
                       highlight=False, emoji=False, soft_wrap=False)
 
     def rows_table(title: str, rows: list[Row], with_source: bool) -> Table:
@@ -205,12 +210,114 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
         if i:
             console.print()
         one(r)
+    text = buf.getvalue()
+    if not color:   # no trailing blanks in a file or a pipe
+        text = "\n".join(line.rstrip() for line in text.split("\n"))
+    return text
+
+
+def to_jsonl(results: list[Result]) -> str:
+    """One JSON document a line (``jq .verdict`` works for one spec and for many)."""
+    return "".join(json.dumps(r.document(), ensure_ascii=False, allow_nan=False) + "\n"
+                   for r in results)
+
+
+def _csv_rows(r: Result):
+    doc_units = r.document()["units"]
+    for sec in r.sections:
+        for row in sec.rows:
+            value = row.value
+            if isinstance(value, (list, tuple)):
+                value = json.dumps(value, allow_nan=False, default=str) if all(
+                    v is None or isinstance(v, (int, float)) for v in value) else fmt(value)
+            elif isinstance(value, float) and not math.isfinite(value):
+                value = ""
+            key = f"results.{sec.key}.{row.key}"
+            yield (r.source, key, row.symbol, row.name, value, doc_units.get(key, ""),
+                   row.source)
+    for c in r.checks:
+        yield (r.source, f"checks.{c.code}", c.code, c.severity,
+               "pass" if c.passed else "fail", "", c.message)
+
+
+def to_csv(results: list[Result]) -> str:
+    """The results flattened for a spreadsheet: one row per quantity (spec, key, symbol,
+    name, value, unit, source), then one row per check (spec, code, code, severity,
+    pass/fail, -, message); numbers at full precision."""
+    import csv
+
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(("spec", "key", "symbol", "name", "value", "unit", "source"))
+    for r in results:
+        for row in _csv_rows(r):
+            w.writerow([escape_controls(str(x)) if isinstance(x, str) else x for x in row])
     return buf.getvalue()
+
+
+def to_html(results: list[Result]) -> str:
+    """A self-contained HTML report (the Markdown report's content as tables)."""
+    from html import escape
+
+    def e(x) -> str:
+        return escape(escape_controls(str(x)))
+
+    parts = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
+             "<title>geardesign report</title><style>body{font-family:sans-serif;margin:2em}"
+             "table{border-collapse:collapse;margin:0.5em 0 1.5em}td,th{border:1px solid #ccc;"
+             "padding:2px 8px}td.v{text-align:right;font-variant-numeric:tabular-nums}"
+             ".fail{color:#b00;font-weight:bold}.pass{color:#070}</style></head><body>"]
+
+    def rows(title: str, rs: list[Row], with_source: bool) -> None:
+        parts.append(f"<h3>{e(title)}</h3><table><tr><th>symbol</th><th>name</th>"
+                     f"<th>value</th><th>unit</th>{'<th>source</th>' if with_source else ''}</tr>")
+        for row in rs:
+            value = fmt(row.value) + (" (assumed)" if row.assumed else "")
+            parts.append(f"<tr><td>{e(row.symbol)}</td><td>{e(row.name)}</td>"
+                         f"<td class=v>{e(value)}</td><td>{e(row.unit or '')}</td>"
+                         + (f"<td>{e(row.source)}</td>" if with_source else "") + "</tr>")
+        parts.append("</table>")
+
+    def one(r: Result, level: int) -> None:
+        parts.append(f"<h{level}>{e(_header(r))}</h{level}>")
+        parts.append(f"<p>Methods: {e(', '.join(r.methods))}</p>")
+        for sec in r.sections:
+            rows(sec.title, sec.rows, True)
+        for t in r.tables:
+            parts.append(f"<h3>{e(t.title)}</h3><table><tr>"
+                         + "".join(f"<th>{e(h)}{e(f' [{u}]' if u not in (None, '-') else '')}</th>"
+                                   for _, h, u in t.columns) + "</tr>")
+            for row in t.rows:
+                parts.append("<tr>" + "".join(f"<td class=v>{e(fmt(row.get(k)))}</td>"
+                                              for k, _, _ in t.columns) + "</tr>")
+            parts.append("</table>")
+        rows("Inputs", r.input_rows, False)
+        parts.append("<h3>Checks</h3><table><tr><th></th><th>code</th><th>message</th></tr>")
+        for c in r.checks:
+            mark, word, _ = _status(c)
+            cls = "fail" if (not c.passed and c.severity == "error") else "pass"
+            parts.append(f"<tr><td class={cls}>{e(mark + ' ' + word)}</td><td>{e(c.code)}</td>"
+                         f"<td>{e(c.message)}</td></tr>")
+        parts.append(f"</table><p class={'fail' if r.failed else 'pass'}>"
+                     f"{e(verdict_line(r))}</p>")
+        for _, title, part in r.parts:
+            one(part, min(level + 1, 6))
+
+    for r in results:
+        one(r, 2)
+    parts.append("</body></html>")
+    return "\n".join(parts) + "\n"
 
 
 def render(results: list[Result], fmt_name: str, color: bool = False, width: int | None = None) -> str:
     if fmt_name == "json":
         return to_json(results)
+    if fmt_name == "jsonl":
+        return to_jsonl(results)
+    if fmt_name == "csv":
+        return to_csv(results)
+    if fmt_name == "html":
+        return to_html(results)
     if fmt_name == "markdown":
         return to_markdown(results)
     return to_table(results, color=color, width=width)

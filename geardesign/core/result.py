@@ -164,6 +164,7 @@ class Result:
             results.setdefault(key, []).append(part.document())
         return {
             "geardesign": __version__,
+            "spec": self.source or None,
             "kind": self.kind,
             "title": self.title,
             "methods": list(self.methods),

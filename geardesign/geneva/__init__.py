@@ -13,7 +13,7 @@ from geardesign.geneva.spec import SCHEMA
 CALCULATOR = Calculator(
     kind="geneva",
     summary="Geneva indexing drive: motion law, geometry, spindle-block dynamic power",
-    methods=("Geneva kinematics (theory of machines)", "[RotaryDevices] spindle-block model"),
+    methods=("Geneva kinematics (theory of machines)", "spindle-block model of rotary devices (RotaryDevices)"),
     schema=SCHEMA,
     compute=compute,
 )

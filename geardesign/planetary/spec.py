@@ -120,9 +120,9 @@ EFFICIENCY = Table("efficiency", "mesh losses and self-locking", (
     Field("friction", "number", "mean coefficient of friction of the teeth", symbol="μ_m",
           default=0.06, minimum=0.0, maximum=0.3),
     Field("external", "number", "efficiency of one external (sun–planet) mesh (model "
-          "\"given\")", symbol="η_e", default=None, gt=0, maximum=1.0),
+          "\"given\")", symbol="η_e", default=None, minimum=0.5, maximum=1.0),
     Field("internal", "number", "efficiency of one internal (planet–ring) mesh (model "
-          "\"given\")", symbol="η_i", default=None, gt=0, maximum=1.0),
+          "\"given\")", symbol="η_i", default=None, minimum=0.5, maximum=1.0),
     Field("self_locking", "string", "reverse-drive requirement: warn if self-locking, forbid it, "
           "or require it (e.g. a hoist)", default="warn", choices=("warn", "forbid", "require")),
     Field("near_self_locking", "number", "reverse efficiency below which the train is reported "

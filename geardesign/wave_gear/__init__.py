@@ -16,7 +16,7 @@ from geardesign.wave_gear.spec import SCHEMA
 CALCULATOR = Calculator(
     kind="wave_gear",
     summary="wave-gear flexible wheel: rim stiffness factor K_zh, stress increase K_0, endurance",
-    methods=("Tkachenko, Ustinenko, Borisenko 2017 ([KhPI2017])", "GOST 13755-81",
+    methods=("Tkachenko, Ustinenko, Borisenko 2017", "GOST 13755-81",
              "thin-ring bending"),
     schema=SCHEMA,
     compute=compute,

@@ -1,0 +1,87 @@
+"""Command-line conventions: formats, output extensions, standard input, batches, help."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+
+from tests.conftest import SPECS
+from tests.helpers_cli import cli, cli_process, write_spec
+
+PLAIN = SPECS / "spur_plain.toml"
+
+
+def test_unknown_output_extension_is_refused_before_computing(tmp_path):
+    code, out, err = cli("run", PLAIN, "--output", tmp_path / "r.pdf")
+    assert code == 2 and out == ""
+    assert err == (f"{tmp_path / 'r.pdf'}: cannot write a report as .pdf; use one of .json, "
+                   ".jsonl, .md, .markdown, .csv, .html, .htm, .txt or give --format\n")
+    assert not (tmp_path / "r.pdf").exists()
+
+
+def test_html_and_csv_reports(tmp_path):
+    for ext in ("html", "csv"):
+        code, _, err = cli("run", PLAIN, "--output", tmp_path / f"r.{ext}", "--quiet")
+        assert code in (0, 1), err
+    html = (tmp_path / "r.html").read_text()
+    assert html.startswith("<!DOCTYPE html>") and "</html>" in html
+    rows = list(csv.reader(io.StringIO((tmp_path / "r.csv").read_text())))
+    assert rows[0] == ["spec", "key", "symbol", "name", "value", "unit", "source"]
+    keys = {r[1]: r for r in rows[1:]}
+    assert keys["results.geometry.a_w"][5] == "mm"
+    assert any(k.startswith("checks.") for k in keys)
+
+
+def test_jsonl_gives_one_document_a_line():
+    code, out, _ = cli("run", PLAIN, SPECS / "spur_helical.toml", "--format", "jsonl")
+    lines = out.splitlines()
+    assert len(lines) == 2
+    assert [json.loads(x)["kind"] for x in lines] == ["spur", "spur"]
+    assert json.loads(lines[0])["spec"] == str(PLAIN)
+
+
+def test_spec_from_standard_input():
+    r = cli_process("run", "-", "--format", "json", input=PLAIN.read_text())
+    assert r.returncode in (0, 1), r.stderr
+    assert json.loads(r.stdout)["spec"] == "<stdin>"
+
+
+def test_keep_going_reports_the_usable_specs_and_still_exits_2(tmp_path):
+    bad = write_spec(tmp_path, 'kind = "spur"\n', "bad.toml")
+    code, out, err = cli("run", PLAIN, bad, "--format", "jsonl", "--keep-going")
+    assert code == 2
+    assert len(out.splitlines()) == 1 and "bad.toml" in err
+    code, out, _ = cli("run", PLAIN, bad, "--format", "jsonl")
+    assert code == 2 and out == ""
+
+
+def test_validate_prints_an_ok_line_per_valid_file(tmp_path):
+    bad = write_spec(tmp_path, 'kind = "spur"\n', "bad.toml")
+    code, out, err = cli("validate", PLAIN, bad)
+    assert code == 2
+    assert out == f"{PLAIN}: ok (spur)\n" and "bad.toml" in err
+
+
+def test_each_command_shows_only_its_options():
+    _, spur, _ = cli("spur", "--help")
+    _, bearing, _ = cli("bearing", "--help")
+    _, pzdn, _ = cli("pzdn", "--help")
+    assert "--select" not in spur and "--plot" not in spur
+    assert "--select" in bearing and "--plot" not in bearing
+    assert "--plot" in pzdn and "--select" not in pzdn
+
+
+def test_top_level_help_names_every_exit_code_and_completion():
+    _, out, _ = cli("--help")
+    text = " ".join(out.split())
+    assert "3 internal error" in text
+    assert "--install-completion" in out and "--show-completion" in out
+
+
+def test_table_to_a_pipe_follows_columns_without_trailing_blanks(monkeypatch):
+    monkeypatch.setenv("COLUMNS", "90")
+    _, out, _ = cli("run", PLAIN, "--format", "table")
+    lines = out.splitlines()
+    assert all(line == line.rstrip() for line in lines)
+    assert max(len(line) for line in lines) <= 90
