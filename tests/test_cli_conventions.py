@@ -85,3 +85,20 @@ def test_table_to_a_pipe_follows_columns_without_trailing_blanks(monkeypatch):
     lines = out.splitlines()
     assert all(line == line.rstrip() for line in lines)
     assert max(len(line) for line in lines) <= 90
+
+
+def test_every_template_runs_as_printed_from_an_empty_folder(tmp_path):
+    """A template is a sensible design that passes (or its first comment says why not)."""
+    import subprocess
+    import sys
+
+    from geardesign.core import registry
+
+    for kind in registry.known_kinds():
+        text = cli("template", kind)[1]
+        path = tmp_path / f"{kind}.toml"
+        path.write_text(text)
+        r = subprocess.run([sys.executable, "-m", "geardesign", "run", path.name, "--format",
+                            "json"], cwd=tmp_path, capture_output=True, text=True)
+        first = text.splitlines()[0]
+        assert r.returncode == 0 or "does not pass" in first, (kind, r.returncode, r.stderr)

@@ -621,6 +621,10 @@ def _template_items(sub: TableList, path: str, lines: list[str]) -> None:
         for f in sub.item.fields:
             if isinstance(f, Field) and (f.key in example or i == 0):
                 lines.append(_field_line(f, example.get(f.key), comments=(i == 0)))
+        known = {f.key for f in sub.item.fields}
+        for key, table in example.items():   # inline tables of an open item (a drive stage)
+            if key not in known and isinstance(table, dict):
+                _inline_table(f"{path}.{key}", table, lines)
         for f in sub.item.fields:
             if isinstance(f, TableList):
                 _template_items(f, f"{path}.{f.key}", lines)
@@ -629,6 +633,17 @@ def _template_items(sub: TableList, path: str, lines: list[str]) -> None:
                 for g in f.fields:
                     if isinstance(g, Field):
                         lines.append(_field_line(g, g.example))
+
+
+def _inline_table(path: str, table: dict, lines: list[str]) -> None:
+    """``[path]`` with its values, sub-tables after them (examples of open tables)."""
+    lines.append(f"[{path}]")
+    for k, v in table.items():
+        if not isinstance(v, dict):
+            lines.append(f"{k} = {_toml_value(v)}")
+    for k, v in table.items():
+        if isinstance(v, dict):
+            _inline_table(f"{path}.{k}", v, lines)
 
 
 def _template_table(t: Table, path: str, lines: list[str], alternatives: dict | None = None

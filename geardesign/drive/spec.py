@@ -90,10 +90,17 @@ SCHEMA = SpecSchema(
     tables=(MOTOR, LOAD,
             TableList("stage", "the stages, from the motor to the output", STAGE,
                       required=False, max_items=20,
-                      examples=({"name": "reducer stage",
-                                 "file": "specs/spur_reducer_through_hardened.toml"},),
-                      hint="a stage is file = a spec of any stage kind (relative to this spec), "
-                           "or kind = ... with the stage's tables inline"),
+                      examples=({"name": "reducer stage", "kind": "spur",
+                                 "gear": {"module": 4.0, "z1": 25, "z2": 100,
+                                          "face_width": 63.0, "accuracy_grade": 8,
+                                          "bearing_scheme": 5},
+                                 "material": {
+                                     "pinion": {"grade": "40Kh", "treatment": "improved",
+                                                "hardness_HB": 280.0},
+                                     "wheel": {"grade": "45", "treatment": "improved",
+                                               "hardness_HB": 240.0}}},),
+                      hint="a stage is kind = ... with the stage's tables inline (as below), or "
+                           "file = a spec of any stage kind in this spec's folder"),
             TableList("shaft", "shafts on two bearings: bearing loads and lives", SHAFT,
                       required=False, max_items=21, in_template=False,
                       hint="keys: index, bearing_a, bearing_b, fixed, method, [[shaft.gear]] "

@@ -54,7 +54,7 @@ FILLET = Table("fillet", "tooth-root fillet of the ring (fatigue analysis)", (
     Field("root_chord", "number", "tooth thickness at the root, chord across the fillets",
           "mm", "S", gt=0, maximum=200, example=9.0),
     Field("radius", "number", "minimum radius of the fillet (transition curve)", "mm", "ρ",
-          gt=0, maximum=50, example=0.2),
+          gt=0, maximum=50, example=0.6),
     Field("radius_tolerance", "number", "tolerance of the fillet radius, taken as ±3 standard "
           "deviations", "mm", "Δρ", default=0.0, minimum=0, maximum=50, example=0.06),
     Field("roughness", "number", "roughness of the fillet", "µm", "Rz", gt=0, maximum=320,

@@ -96,7 +96,7 @@ ACCURACY = Table("accuracy", "accuracy and assembly (GOST 1643-81) and the error
 
 LOAD = Table("load", "load", (
     Field("torque2", "number", "torque on the driven wheel", "N*m", "T2", gt=0, maximum=1e8,
-          example=69500.0),
+          example=30000.0),
     Field("application_factor", "number", "application factor (multiplies the load)",
           symbol="K_A", default=1.0, minimum=1.0, maximum=4.0),
     Field("speed1", "number", "pinion speed (for the number of load cycles)", "min^-1", "n1",
@@ -121,5 +121,5 @@ SCHEMA = SpecSchema(
     description="Novikov DLZ pair on the GOST 15023-76 rack: geometry, axial overlap, "
                 "multi-pair engagement, phase bending and contact stresses (Korotkin 2017)",
     tables=(GEAR, RACK, MATERIAL, ACCURACY, LOAD, ANALYSIS),
-    title_example="Novikov pair 12/71, m = 10, a_w = 450 (Korotkin 2017)",
+    title_example="Novikov pair 12/71, m = 10, a_w = 450 (the pair of Korotkin 2017 at T2 = 30 kN·m)",
 )
