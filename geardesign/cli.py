@@ -286,6 +286,49 @@ def schema_cmd(kind: str = typer.Argument(..., help="Calculator kind, e.g. spur.
                                 ensure_ascii=False) + "\n")
 
 
+@app.command("check")
+def check_cmd(specs: List[Path] = ARG_SPECS,
+              rtol: float = typer.Option(1e-9, "--rtol", min=0.0, max=1.0,
+                                         help="Relative tolerance of every number."),
+              update: bool = typer.Option(False, "--update",
+                                          help="Rewrite each SPEC.expected.json from the "
+                                               "current results (on purpose; review the diff)."),
+              quiet: bool = OPT_QUIET) -> None:
+    """Compare each spec's results with SPEC.expected.json beside it (golden files in your
+    CI): exit 0 when nothing moved, 1 when a quantity or a verdict moved, 2 for unusable
+    input or a missing expected file."""
+    from geardesign.testing import check_golden, expected_path
+
+    code, problems = 0, []
+    for spec in specs:
+        try:
+            moved = check_golden(spec, update=update, rtol=rtol)
+        except InputError as exc:
+            problems.extend(p.line(str(spec)) for p in exc.problems)
+            continue
+        except FileNotFoundError:
+            problems.append(f"{spec}: no {expected_path(spec).name} beside it; write it with "
+                            f"geardesign check --update {spec}")
+            continue
+        except (OSError, ValueError) as exc:
+            problems.append(f"{spec}: the expected file cannot be read ({exc})")
+            continue
+        if update:
+            if not quiet:
+                sys.stdout.write(f"{spec}: wrote {expected_path(spec).name}\n")
+        elif moved:
+            code = 1
+            sys.stdout.write(f"{spec}: {len(moved)} quantities moved\n")
+            for d in moved:
+                sys.stdout.write(f"  {d.line()}\n")
+        elif not quiet:
+            sys.stdout.write(f"{spec}: unchanged\n")
+    if problems:
+        _report_problems(problems)
+        raise typer.Exit(2)
+    raise typer.Exit(code)
+
+
 @app.command("validate")
 def validate_cmd(specs: List[Path] = ARG_SPECS, quiet: bool = OPT_QUIET) -> None:
     """Check spec file(s) without reporting results: exit 0 if usable, 2 if not."""

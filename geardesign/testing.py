@@ -99,3 +99,72 @@ def _keys(d: Any) -> Any:
 
 def _size(v: Any) -> Any:
     return f"[{len(v)} items]" if isinstance(v, list) else v
+
+
+# --------------------------------------------------------------------------- golden files
+
+
+def expected_path(spec) -> "Path":
+    """``specs/x.toml`` -> ``specs/x.expected.json``."""
+    from pathlib import Path
+
+    spec = Path(spec)
+    return spec.with_name(spec.name[: -len(spec.suffix)] + ".expected.json") if spec.suffix \
+        else spec.with_name(spec.name + ".expected.json")
+
+
+def _drop_paths(doc: Any) -> Any:
+    if isinstance(doc, dict):
+        return {k: _drop_paths(v) for k, v in doc.items() if k != "spec"}
+    if isinstance(doc, list):
+        return [_drop_paths(v) for v in doc]
+    return doc
+
+
+def golden_text(doc: dict) -> str:
+    """The stored form of a result document: indented JSON without machine paths."""
+    import json
+
+    return json.dumps(_drop_paths(doc), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+
+
+def check_golden(spec, update: bool = False, rtol: float = RTOL) -> list[Difference]:
+    """Compute ``spec`` and compare it with its expected document (see :func:`expected_path`);
+    with ``update`` the expected file is (re)written instead.  A changed verdict is always
+    reported.  Raises :class:`geardesign.core.errors.InputError` for an unusable spec and
+    ``FileNotFoundError`` when there is no expected file (and no ``update``)."""
+    import json
+
+    from geardesign.core.registry import run
+
+    doc = run(spec).document()
+    path = expected_path(spec)
+    if update:
+        path.write_text(golden_text(doc), encoding="utf-8")
+        return []
+    expected = json.loads(path.read_text(encoding="utf-8"))
+    return compare_documents(doc, expected, rtol=rtol)
+
+
+def golden_tests(folder, rtol: float = RTOL):
+    """A pytest test over every ``*.toml`` with an ``*.expected.json`` beside it in
+    ``folder``; in a test module of your project::
+
+        from geardesign.testing import golden_tests
+        test_golden = golden_tests("specs")
+
+    ``pytest`` then fails on every spec whose results moved, naming each quantity with
+    its old and new value; ``geardesign check --update SPEC`` rewrites an expected file on
+    purpose."""
+    from pathlib import Path
+
+    import pytest
+
+    specs = sorted(p for p in Path(folder).glob("*.toml") if expected_path(p).exists())
+
+    @pytest.mark.parametrize("spec", specs, ids=[p.stem for p in specs])
+    def test_golden(spec):
+        moved = check_golden(spec, rtol=rtol)
+        assert not moved, "\n".join(d.line() for d in moved[:50])
+
+    return test_golden

@@ -5,6 +5,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import re
 
 from tests.conftest import SPECS
 from tests.helpers_cli import cli, cli_process, write_spec
@@ -102,3 +103,31 @@ def test_every_template_runs_as_printed_from_an_empty_folder(tmp_path):
                             "json"], cwd=tmp_path, capture_output=True, text=True)
         first = text.splitlines()[0]
         assert r.returncode == 0 or "does not pass" in first, (kind, r.returncode, r.stderr)
+
+
+def test_check_reports_moved_quantities_and_update_rewrites(tmp_path):
+    spec = write_spec(tmp_path, PLAIN.read_text(), "pair.toml")
+    code, out, err = cli("check", spec)
+    assert code == 2 and "no pair.expected.json beside it" in err
+    code, out, _ = cli("check", spec, "--update")
+    assert code == 0 and out == f"{spec}: wrote pair.expected.json\n"
+    code, out, _ = cli("check", spec)
+    assert code == 0 and out == f"{spec}: unchanged\n"
+    text = PLAIN.read_text()
+    old = re.search(r"face_width = ([0-9.]+)", text).group(1)
+    spec.write_text(text.replace(f"face_width = {old}", f"face_width = {float(old) * 1.1}"))
+    code, out, _ = cli("check", spec)
+    assert code == 1
+    assert out.startswith(f"{spec}: ") and "quantities moved" in out
+    assert "inputs.gear.face_width: " in out and "(+10 %)" in out
+
+
+def test_golden_tests_for_a_users_folder(tmp_path):
+    from geardesign.testing import golden_tests
+
+    spec = write_spec(tmp_path, PLAIN.read_text(), "pair.toml")
+    cli("check", spec, "--update")
+    test = golden_tests(tmp_path)
+    marks = test.pytestmark[0]
+    assert [p.name for p in marks.args[1]] == ["pair.toml"]
+    test(spec)   # passes: nothing moved
