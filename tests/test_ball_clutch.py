@@ -94,7 +94,7 @@ FAILS = [
      "preload or rate, use lighter balls or a smaller ball circle"),
     ("trips at rated torque", GOOD.replace("torque = 15.0", "torque = 21.0"),
      ["LIMIT_ABOVE_RATED"],
-     "the clutch trips at the rated torque: T_lim,min = 19.89 N*m < T = 21 N*m at low "
+     "the clutch trips at the rated torque: T_lim,min = 19.89 N·m < T = 21 N·m at low "
      "friction; increase the spring preload (y0) or rate, or the socket angle"),
     ("spring goes solid", wire(WIRE + "free_length = 24.0\n"), ["SPRING_SOLID"],
      "the spring goes solid before the ball leaves its socket: length 15.00 mm with the ball "

@@ -72,7 +72,7 @@ CASES = [
                                            "torque2 = 69500.0\napplication_factor = 0.5"),
      ["s.toml: load.application_factor = 0.5: must be a number >= 1 and <= 4"]),
     ("torque missing", replace("torque2 = 69500.0\n", ""),
-     ["s.toml: load.torque2: missing; required: a number >= 1e-06 and <= 100000000 (N*m) "
+     ["s.toml: load.torque2: missing; required: a number >= 1e-06 and <= 100000000 (N·m) "
       "(torque on the driven wheel)"]),
     ("unknown key", replace("face_width", "facewidth"),
      ['s.toml: gear.facewidth = 190.0: unknown key in [gear] (did you mean "face_width"?)',

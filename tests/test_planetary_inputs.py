@@ -199,11 +199,11 @@ CASES = [
       "required with [strength]"]),
     ("strength without torque", spec(strength={"life_hours": 1000.0}, material=MATERIAL,
                                      operation__torque=None),
-     ["s.toml: operation.torque: missing; required with [strength]: the input torque in N*m "
+     ["s.toml: operation.torque: missing; required with [strength]: the input torque in N·m "
       "(or operation.power in kW)"]),
     ("peak below torque", spec(strength={"life_hours": 1000.0, "peak_torque": 100.0},
                                material=MATERIAL),
-     ["s.toml: strength.peak_torque = 100.0: smaller than the input torque 200 N*m; give the "
+     ["s.toml: strength.peak_torque = 100.0: smaller than the input torque 200 N·m; give the "
       "largest short-time torque"]),
     ("unknown steel", spec(strength={"life_hours": 1000.0},
                            material={**MATERIAL, "sun": {**MATERIAL["sun"], "grade": "20KhN3"}}),

@@ -102,7 +102,7 @@ def test_history_arrays_and_no_nan():
     doc = _startup(method="both", history_points=11)
     h = doc["results"]["history"]
     assert len(h["t"]) == len(h["T12"]) == len(h["omega3"]) == 11
-    assert doc["units"]["results.history.T12"] == "N*m"
+    assert doc["units"]["results.history.T12"] == "N·m"
     text = json.dumps(doc, allow_nan=False)
     assert "NaN" not in text
 

@@ -146,7 +146,7 @@ EXPECTED = {
         's.toml: spring[0].coils: missing; give the number of working coils, or [motor] (or design_angle) to compute it from the wind-up angle (method A)',
     ],
     'gear_peak': [
-        's.toml: coupling_gear.peak_torque = 10.0: smaller than the working torque 22.1 N*m; give the largest short-time torque',
+        's.toml: coupling_gear.peak_torque = 10.0: smaller than the working torque 22.1 N·m; give the largest short-time torque',
     ],
     'gear_hardness': [
         's.toml: coupling_gear.pinion.hardness_HB: missing; required: the surface hardness in HB for treatment "improved"',
@@ -161,7 +161,7 @@ EXPECTED = {
         's.toml: startup.C12_spring = "x": give C12 or C12_spring, not both',
     ],
     'c12_neither': [
-        's.toml: startup.C12: missing; give the link stiffness C12 [N*m/rad], or C12_spring, the name of the [[spring]] that gives it',
+        's.toml: startup.C12: missing; give the link stiffness C12 [N·m/rad], or C12_spring, the name of the [[spring]] that gives it',
     ],
     'c12_unknown': [
         's.toml: startup.C12_spring = "x": no [[spring]] of that name; known: none: add [[spring]] tables',
@@ -209,7 +209,7 @@ EXPECTED = {
         's.toml: startup.t_end: missing; give the duration t_end [s] or motor_speed (the start-up then lasts until the mean speed reaches it)',
     ],
     'stall': [
-        's.toml: startup.T1 = 20.0: does not exceed T2 + T3 = 22.1 N*m, so the machine never reaches motor_speed; give t_end to compute the stalled start, or a larger T1',
+        's.toml: startup.T1 = 20.0: does not exceed T2 + T3 = 22.1 N·m, so the machine never reaches motor_speed; give t_end to compute the stalled start, or a larger T1',
     ],
     'reg_both': [
         's.toml: regression.C12 = 24.7: give C12, or pzdn_stiffness (with drive_stiffness), not both',
@@ -218,7 +218,7 @@ EXPECTED = {
         's.toml: regression.pzdn_stiffness: missing; give the PZDN stiffness pzdn_stiffness (and drive_stiffness in series), or the link stiffness C12',
     ],
     'schema_torque': [
-        's.toml: spring[0].torque = -1.0: must be a number >= 1e-06 and <= 1000000 (N*m)',
+        's.toml: spring[0].torque = -1.0: must be a number >= 1e-06 and <= 1000000 (N·m)',
     ],
     'schema_curv': [
         's.toml: spring[0].curvature_factor = "wahll": must be one of "thesis", "wahl", "en13906" (did you mean "wahl"?)',
@@ -260,7 +260,7 @@ EXPECTED = {
         's.toml: coupling_gear.torque_on = "sun": must be one of "wheel", "pinion"',
     ],
     'schema_reg': [
-        's.toml: regression.pzdn_stiffness = 0.0: must be a number >= 1e-06 and <= 1000000000 (N*m/rad)',
+        's.toml: regression.pzdn_stiffness = 0.0: must be a number >= 1e-06 and <= 1000000000 (N·m/rad)',
     ],
 }
 

@@ -16,7 +16,7 @@ SCHEMA = SpecSchema("x", "test", (
         Field("mode", "string", "mode", default="a", choices=("a", "b")),
     )),
     TableList("blocks", "load blocks", Table("blocks", "block", (
-        Field("torque", "number", "torque", "N*m", gt=0, example=100.0),
+        Field("torque", "number", "torque", "N·m", gt=0, example=100.0),
         Field("share", "number", "time share", gt=0, maximum=1, example=1.0),
     )), required=False, examples=({"torque": 100.0, "share": 0.6},
                                   {"torque": 50.0, "share": 0.4})),
@@ -34,7 +34,7 @@ def test_array_and_table_list_rules():
                      "blocks": [{"torque": -1, "share": 1}]}) == [
         "f.toml: rim.angles = [0, 120, 400]: must be a list of 1 to 12 numbers >= 0 and < 360 "
         "(deg)",
-        "f.toml: blocks[0].torque = -1: must be a number >= 1e-06 and <= 1000000000 (N*m)"]
+        "f.toml: blocks[0].torque = -1: must be a number >= 1e-06 and <= 1000000000 (N·m)"]
     assert problems({"kind": "x", "rim": {"angles": []}, "blocks": 5}) == [
         "f.toml: rim.angles = []: must be a list of 1 to 12 numbers >= 0 and < 360 (deg)",
         "f.toml: blocks = 5: must be 1 to 1000 [[blocks]] tables (load blocks)"]

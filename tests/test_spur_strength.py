@@ -68,12 +68,12 @@ RULES = [
     ("hardness impossible", spec(material__wheel__hardness_HB=800.0),
      ["s.toml: material.wheel.hardness_HB = 800.0: must be a number >= 100 and <= 700 (HB)"]),
     ("negative torque", spec(load__torque1=-5.0),
-     ["s.toml: load.torque1 = -5.0: must be a number >= 1e-06 and <= 100000000 (N*m)"]),
+     ["s.toml: load.torque1 = -5.0: must be a number >= 1e-06 and <= 100000000 (N·m)"]),
     ("torque and power", spec(load__power=20.0),
      ["s.toml: load.power = 20.0: give torque1 or power, not both"]),
     ("no torque", spec(load__torque1=None),
      ["s.toml: load.torque1: missing; required with [material]: the nominal pinion torque in "
-      "N*m (or load.power in kW)"]),
+      "N·m (or load.power in kW)"]),
     ("no material", spec(material=None),
      ["s.toml: material: missing table [material.pinion] and [material.wheel]: required with "
       "load.torque1 or load.power for the strength calculation"]),
@@ -83,7 +83,7 @@ RULES = [
      ["s.toml: gear.bearing_scheme: missing; required for the strength calculation: 1…7 as in "
       "the GOST 21354-87 chart (see geardesign template spur)"]),
     ("peak below nominal", spec(load__peak_torque1=100.0),
-     ["s.toml: load.peak_torque1 = 100.0: smaller than the nominal torque T1 = 220 N*m; give "
+     ["s.toml: load.peak_torque1 = 100.0: smaller than the nominal torque T1 = 220 N·m; give "
       "the largest short-time torque"]),
     ("spectrum shares", spec(load__spectrum=[{"torque_ratio": 1.0, "time_share": 0.5},
                                              {"torque_ratio": 0.5, "time_share": 0.4}]),

@@ -81,7 +81,7 @@ WARNINGS = [
      "w0/m = 1.5 outside 0.8...1.3: too little deflection risks ratcheting, too much raises "
      "the bending stress; the paper's wheels have w0 = m"),
     ("large gear", GOOD + "[load]\noutput_torque = 200000.0\n", "AXIAL_FIXATION",
-     "output torque 200000 N*m: in large wave gears the skewed generator discs screw into "
+     "output torque 200000 N·m: in large wave gears the skewed generator discs screw into "
      "the flexible wheel and load its fastening axially; fix the generator and the flexible "
      "wheel axially without play and lubricate the disc contact"),
     ("low ratio", GOOD.replace("flex_teeth = 200", "flex_teeth = 100")

@@ -162,19 +162,19 @@ def compute(spec: ValidatedSpec) -> Result:
     sec.add("rho", math.atan(f), "rad", "ρ", "friction angle at the socket", S.FRICTION)
     sec.add("alpha_self_locking", alpha_lock, "rad", "α2,lock",
             "socket angle at which the clutch self-locks (high friction)", S.FRICTION)
-    sec.add("T_lim_frictionless", T_frictionless, "N*m", "T_lim,0",
+    sec.add("T_lim_frictionless", T_frictionless, "N·m", "T_lim,0",
             "limit torque without friction, z3·r0·tan α2·(c·y0 − m·r0·ω²)", S.SEED_EQ15)
-    sec.add("T_lim", band.nominal, "N*m", "T_lim", "limit torque at speed, nominal friction",
+    sec.add("T_lim", band.nominal, "N·m", "T_lim", "limit torque at speed, nominal friction",
             S.FRICTION)
-    sec.add("T_lim_min", band.low, "N*m", "T_lim,min", "limit torque at speed, low friction",
+    sec.add("T_lim_min", band.low, "N·m", "T_lim,min", "limit torque at speed, low friction",
             S.FRICTION)
-    sec.add("T_lim_max", band.high, "N*m", "T_lim,max", "limit torque at speed, high friction",
+    sec.add("T_lim_max", band.high, "N·m", "T_lim,max", "limit torque at speed, high friction",
             S.FRICTION)
-    sec.add("T_lim_static", band0.nominal, "N*m", "T_lim(0)", "limit torque at rest, nominal "
+    sec.add("T_lim_static", band0.nominal, "N·m", "T_lim(0)", "limit torque at rest, nominal "
             "friction", S.FRICTION)
-    sec.add("T_lim_static_min", band0.low, "N*m", "T_lim,min(0)", "limit torque at rest, low "
+    sec.add("T_lim_static_min", band0.low, "N·m", "T_lim,min(0)", "limit torque at rest, low "
             "friction", S.FRICTION)
-    sec.add("T_lim_static_max", band0.high, "N*m", "T_lim,max(0)", "limit torque at rest, "
+    sec.add("T_lim_static_max", band0.high, "N·m", "T_lim,max(0)", "limit torque at rest, "
             "high friction", S.FRICTION)
     sec.add("ratio", band.nominal / T, "-", "T_lim/T", "limit over rated torque "
             "(1.25...1.5 recommended)", S.PRACTICE)
@@ -185,7 +185,7 @@ def compute(spec: ValidatedSpec) -> Result:
         k_dyn = C.inertia_factor(z3, m, r0, I1, I3)
         sec.add("k_dyn", k_dyn, "-", "k_dyn", "(z3·m·r0² + I1 + I3)/(z3·m·r0² + I3)",
                 S.SEED_EQ15)
-        sec.add("T_lim_dynamic", k_dyn * band.nominal, "N*m", "T_p",
+        sec.add("T_lim_dynamic", k_dyn * band.nominal, "N·m", "T_p",
                 "drive torque that releases with a free driven inertia", S.SEED_EQ15)
 
     # speed dependence (centrifugal term), nominal friction
@@ -195,7 +195,7 @@ def compute(spec: ValidatedSpec) -> Result:
              for s in speeds]
     sp_sec = res.section("speed", "Limit torque over speed (nominal friction)")
     sp_sec.add("n_grid", speeds, "min^-1", "n", "clutch speed", S.CENTRIFUGAL)
-    sp_sec.add("T_lim_curve", curve, "N*m", "T_lim(n)", "limit torque", S.CENTRIFUGAL)
+    sp_sec.add("T_lim_curve", curve, "N·m", "T_lim(n)", "limit torque", S.CENTRIFUGAL)
 
     # ------------------------------------------------------------ forces, contact
     F_t1_rated = F_t1_max = None
@@ -278,23 +278,23 @@ def compute(spec: ValidatedSpec) -> Result:
         out.append(check(
             "SPEED_SENSITIVITY", drop <= SPEED_SENSITIVITY, "warning",
             f"the limit torque at {_f(n, 1)} min^-1 is {drop * 100:.1f} % below its value at "
-            f"rest ({band.nominal:.2f} against {band0.nominal:.2f} N*m): the centrifugal force "
+            f"rest ({band.nominal:.2f} against {band0.nominal:.2f} N·m): the centrifugal force "
             f"matters; set the preload for the operating speed or use lighter balls",
             f"the limit torque at speed is within {SPEED_SENSITIVITY * 100:.0f} % of its value "
             f"at rest ({drop * 100:.1f} % lower)", drop, SPEED_SENSITIVITY, S.CENTRIFUGAL))
         out.append(check(
             "LIMIT_ABOVE_RATED", band.low >= T, "error",
-            f"the clutch trips at the rated torque: T_lim,min = {band.low:.2f} N*m < T = "
-            f"{_f(T)} N*m at low friction; increase the spring preload (y0) or rate, or the "
+            f"the clutch trips at the rated torque: T_lim,min = {band.low:.2f} N·m < T = "
+            f"{_f(T)} N·m at low friction; increase the spring preload (y0) or rate, or the "
             f"socket angle",
-            f"T_lim,min = {band.low:.2f} N*m >= rated {_f(T)} N*m", band.low, T, S.PRACTICE))
+            f"T_lim,min = {band.low:.2f} N·m >= rated {_f(T)} N·m", band.low, T, S.PRACTICE))
         if band.low >= T:
             out.append(check(
                 "LIMIT_MARGIN", band.low >= MARGIN_WARN * T, "warning",
-                f"T_lim,min = {band.low:.2f} N*m is less than {MARGIN_WARN}·T = "
-                f"{MARGIN_WARN * T:.2f} N*m: nuisance trips are likely; aim at T_lim = "
+                f"T_lim,min = {band.low:.2f} N·m is less than {MARGIN_WARN}·T = "
+                f"{MARGIN_WARN * T:.2f} N·m: nuisance trips are likely; aim at T_lim = "
                 f"1.25...1.5·T",
-                f"T_lim,min = {band.low:.2f} N*m >= {MARGIN_WARN}·T = {MARGIN_WARN * T:.2f} N*m",
+                f"T_lim,min = {band.low:.2f} N·m >= {MARGIN_WARN}·T = {MARGIN_WARN * T:.2f} N·m",
                 band.low / T, MARGIN_WARN, S.PRACTICE))
     if math.isfinite(p0):
         p_adm = sa["allowable_contact"]

@@ -8,7 +8,7 @@ from geardesign.core.spec import Field, SpecSchema, Table
 from geardesign.materials import spring_steel
 
 OPERATION = Table("operation", "operating point of the drive", (
-    Field("torque", "number", "rated torque to be transmitted", "N*m", "T", gt=0, maximum=1e6,
+    Field("torque", "number", "rated torque to be transmitted", "N·m", "T", gt=0, maximum=1e6,
           example=15.0),
     Field("speed", "number", "clutch speed", "min^-1", "n", minimum=0, maximum=1e5,
           example=1000.0),
@@ -40,7 +40,7 @@ SAFETY = Table("safety", "torque-limiting (safety) part: balls held in sockets b
     Field("extra_mass", "number", "mass moving radially with each ball (plunger, cup)", "kg",
           "m_p", default=0.0, minimum=0),
     Field("limit_torque", "number", "target limit torque at the operating speed (design "
-          "mode: the spring preload follows)", "N*m", "T_lim", default=None, gt=0),
+          "mode: the spring preload follows)", "N·m", "T_lim", default=None, gt=0),
     Field("elastic_modulus", "number", "elastic modulus of ball and socket", "MPa", "E",
           default=206000.0, gt=0),
     Field("poisson", "number", "Poisson's ratio of ball and socket", symbol="ν", default=0.3,

@@ -43,9 +43,9 @@ MAX_STRING = 1_000
 """Characters of a string value (titles, names)."""
 
 UNIT_DOMAINS = {
-    "mm": (1e-3, 1e5), "um": (1e-3, 1e5), "µm": (1e-3, 1e5),
-    "MPa": (1e-3, 1e6), "N": (1e-6, 1e10), "N*m": (1e-6, 1e9), "N·m": (1e-6, 1e9),
-    "N*m/rad": (1e-6, 1e10), "N/mm": (1e-6, 1e9), "min^-1": (1e-3, 2e5), "kW": (1e-6, 1e6),
+    "mm": (1e-3, 1e5), "µm": (1e-3, 1e5), "µm": (1e-3, 1e5),
+    "MPa": (1e-3, 1e6), "N": (1e-6, 1e10), "N·m": (1e-6, 1e9), "N·m": (1e-6, 1e9),
+    "N·m/rad": (1e-6, 1e10), "N/mm": (1e-6, 1e9), "min^-1": (1e-3, 2e5), "kW": (1e-6, 1e6),
     "h": (1e-3, 1e7), "s": (1e-6, 1e5), "kg": (1e-6, 1e7), "kg*m^2": (1e-9, 1e7),
     "m/s": (1e-6, 1e3), "mm^2/s": (1e-2, 1e5), "deg": (1e-4, 360.0),
 }
@@ -683,7 +683,7 @@ def template(schema: SpecSchema) -> str:
     """A complete, commented example spec that validates as it is."""
     lines = [
         f"# geardesign {schema.kind} spec: {schema.description}",
-        "# Units are fixed per quantity (mm, deg, N, N*m, MPa, min^-1, kW, h).",
+        "# Units are fixed per quantity (mm, deg, N, N·m, MPa, min^-1, kW, h).",
         "# Keys shown commented out take the default given; uncomment to change them.",
     ]
     alternatives = {k: group[0] for group in schema.one_of for k in group[1:]}

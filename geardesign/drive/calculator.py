@@ -127,7 +127,7 @@ def compute(spec: ValidatedSpec) -> Result:
     res = CALCULATOR.new_result(spec)
     if motor["power"] is None and motor["torque"] is None:
         raise InputError(Problem("motor.power", "missing; give the motor's power (kW) or "
-                                 "torque (N*m)"))
+                                 "torque (N·m)"))
     if motor["power"] is not None and motor["torque"] is not None:
         raise InputError.at("motor.torque", motor["torque"], "give power or torque, not both")
     n_m = motor["speed"]
@@ -139,7 +139,7 @@ def compute(spec: ValidatedSpec) -> Result:
         raise InputError(Problem("stage", "missing; give the stages ([[stage]]) or a ratio "
                                  "split request ([split])"))
     sec = res.section("drive", "Drive")
-    sec.add("T_m", T_m, "N*m", "T_m", "motor nominal torque", "motor")
+    sec.add("T_m", T_m, "N·m", "T_m", "motor nominal torque", "motor")
     sec.add("P_m", T_m * n_m * math.pi / 30000.0, "kW", "P_m", "motor nominal power", "motor")
 
     if split is not None:
@@ -164,15 +164,15 @@ def compute(spec: ValidatedSpec) -> Result:
     out = runs[-1]
     sec.add("u", u, "-", "u", "overall ratio", "stages")
     sec.add("eta", eta, "-", "η", "overall efficiency (gear meshes)", "stages")
-    sec.add("T_in", T_in, "N*m", "T_in", "input torque the stages are rated for", "drive")
-    sec.add("T_out", out.T_out, "N*m", "T_out", "output torque", "drive")
+    sec.add("T_in", T_in, "N·m", "T_in", "input torque the stages are rated for", "drive")
+    sec.add("T_out", out.T_out, "N·m", "T_out", "output torque", "drive")
     sec.add("n_out", out.n_out, "min^-1", "n_out", "output speed", "drive")
     sec.add("P_out", out.T_out * out.n_out * math.pi / 30000.0, "kW", "P_out", "output power",
             "drive")
     res.tables.append(DataTable("stages", "Stages", [
         ("stage", "stage", None), ("name", "name", None), ("kind", "type", None),
-        ("ratio", "u", "-"), ("efficiency", "η", "-"), ("T_in", "T_in", "N*m"),
-        ("n_in", "n_in", "min^-1"), ("T_out", "T_out", "N*m"), ("n_out", "n_out", "min^-1"),
+        ("ratio", "u", "-"), ("efficiency", "η", "-"), ("T_in", "T_in", "N·m"),
+        ("n_in", "n_in", "min^-1"), ("T_out", "T_out", "N·m"), ("n_out", "n_out", "min^-1"),
         ("margin", "worst S/S_min", "-"), ("margin_of", "of", None), ("verdict", "verdict", None),
     ], [dict(stage=i + 1, name=st[1], kind=r.result.kind, ratio=r.ratio, efficiency=r.efficiency,
              T_in=r.T_in, n_in=r.n_in, T_out=r.T_out, n_out=r.n_out, margin=r.margin,

@@ -10,7 +10,7 @@ STAGE_KINDS = ("spur", "worm", "novikov", "planetary", "drive")
 MOTOR = Table("motor", "the driving motor", (
     Field("power", "number", "nominal power", "kW", "P_m", default=None, gt=0, maximum=1e5,
           example=7.5, hint="or torque"),
-    Field("torque", "number", "nominal torque (instead of power)", "N*m", "T_m", default=None,
+    Field("torque", "number", "nominal torque (instead of power)", "N·m", "T_m", default=None,
           gt=0, maximum=1e7),
     Field("speed", "number", "nominal speed", "min^-1", "n_m", gt=0, maximum=1e5,
           example=1455.0),
@@ -21,7 +21,7 @@ MOTOR = Table("motor", "the driving motor", (
 
 LOAD = Table("load", "the driven machine and the duty", (
     Field("torque", "number", "torque the driven machine needs at the output shaft; the stages "
-          "are rated for it (else for the motor's nominal torque)", "N*m", "T_out", default=None,
+          "are rated for it (else for the motor's nominal torque)", "N·m", "T_out", default=None,
           gt=0, maximum=1e8),
     Field("speed", "number", "required output speed", "min^-1", "n_out", default=None, gt=0,
           maximum=1e5),

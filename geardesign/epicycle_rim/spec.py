@@ -106,7 +106,7 @@ LOAD = Table("load", "loads at the rated ring torque (fatigue analysis)", (
     Field("hoop_stress_between", "number", "rim hoop stress on the inner surface midway "
           "between loaded teeth", "MPa", "σ_t,betw", default=None, minimum=-3000,
           maximum=3000, example=51.6),
-    Field("ring_torque", "number", "ring torque at which the stresses are given", "N*m",
+    Field("ring_torque", "number", "ring torque at which the stresses are given", "N·m",
           "T0", default=None, gt=0, example=4023.0, hint="required by hoop_source = "
           '"thin_ring"'),
     Field("pressure_angle", "number", "working pressure angle of the ring-planet mesh, for "

@@ -157,14 +157,14 @@ def compute(spec: ValidatedSpec) -> Result:
             -phi0, phi0, 2000)
         M2_max, _ = K.maximise(lambda p: abs(moment2(p)), -phi0, phi0, 2000)
         ld = res.section("load", "Load on the cross")
-        ld.add("M2_max", M2_max, "N*m", "M2,max",
+        ld.add("M2_max", M2_max, "N·m", "M2,max",
                "largest moment on the cross (J2·ε2 + M_f)", S.DYNAMICS)
-        ld.add("M1_max", M1_max, "N*m", "M1,max", "largest crank moment (M2·ω2/ω1)",
+        ld.add("M1_max", M1_max, "N·m", "M1,max", "largest crank moment (M2·ω2/ω1)",
                S.DYNAMICS)
         ld.add("phi_M1_max", phi_M1, "rad", "φ(M1,max)", "crank angle of M1,max", S.DYNAMICS)
         ld.add("F_max", F_max, "N", "F_max", "largest roller/slot force (M2/ρ)", S.DYNAMICS)
         ld.add("phi_F_max", phi_F, "rad", "φ(F_max)", "crank angle of F_max", S.DYNAMICS)
-        ld.add("M1", M1, "N*m", "M1", "crank moment over the crank angle", S.DYNAMICS)
+        ld.add("M1", M1, "N·m", "M1", "crank moment over the crank angle", S.DYNAMICS)
         ld.add("F", F, "N", "F", "roller/slot force over the crank angle", S.DYNAMICS)
 
     # ------------------------------------------------------------------ spindle block
@@ -217,7 +217,7 @@ def _spindle_block(res: Result, spec: ValidatedSpec, law: K.MotionLaw, z: int,
             "ω_b,max", "peak barrel speed", S.SEED_EQ2)
     sec.add("eps_b_max", block.i_kb * K.peak_acceleration(z, internal)[0] * w1 * w1,
             "rad/s^2", "ε_b,max", "peak barrel acceleration", S.SEED_EQ2)
-    sec.add("M_d_max", Md_peak, "N*m", "M_d,max",
+    sec.add("M_d_max", Md_peak, "N·m", "M_d,max",
             "peak driving moment on the distributing shaft (η = 1)", S.SEED_EQ1)
     sec.add("phi_M_d_max", phi_Md, "rad", "φ(M_d,max)", "crank angle of M_d,max", S.SEED_EQ1)
     sec.add("N_max", N_peak / 1000.0, "kW", "N_max", "peak motor power while indexing "
@@ -229,7 +229,7 @@ def _spindle_block(res: Result, spec: ValidatedSpec, law: K.MotionLaw, z: int,
     sec.add("N_d_at_max", p_N.N_d / 1000.0, "kW", "N_d",
             "power on the distributing shaft at that angle (η = 1)", S.SEED_EQ1)
     if block.w_d > 0.0:
-        sec.add("M_motor_max", N_peak / block.w_d, "N*m", "M_mot,max",
+        sec.add("M_motor_max", N_peak / block.w_d, "N·m", "M_mot,max",
                 "peak motor torque N_max/ω_d", S.SEED_POWER)
     if block.n_sh:
         w_sh = [p.w_sh for p in pts]
@@ -243,7 +243,7 @@ def _spindle_block(res: Result, spec: ValidatedSpec, law: K.MotionLaw, z: int,
             S.SEED_EQ2)
     arr.add("dJ_p", [p.dJ_p for p in pts], "kg*m^2/rad", "dJ_p/dφ",
             "its derivative", S.SEED_EQ3)
-    arr.add("M_d", [p.M_d for p in pts], "N*m", "M_d", "driving moment on the distributing "
+    arr.add("M_d", [p.M_d for p in pts], "N·m", "M_d", "driving moment on the distributing "
             "shaft (η = 1)", S.SEED_EQ1)
     arr.add("N_d", [p.N_d / 1000.0 for p in pts], "kW", "N_d", "power on the distributing "
             "shaft (η = 1)", S.SEED_EQ1)

@@ -31,7 +31,7 @@ LOAD = Table("load", "load on the cross shaft (optional): gives crank torque and
     Field("inertia", "number", "moment of inertia driven by the cross, reduced to its shaft",
           "kg*m^2", "J_2", minimum=0, example=0.5),
     Field("friction_torque", "number", "friction moment on the cross shaft while it turns",
-          "N*m", "M_f", default=0.0, minimum=0),
+          "N·m", "M_f", default=0.0, minimum=0),
 ), required=False)
 
 BARREL = Table("barrel", "indexed spindle block (barrel) of a multi-spindle automatic (optional)", (
@@ -40,7 +40,7 @@ BARREL = Table("barrel", "indexed spindle block (barrel) of a multi-spindle auto
     Field("inertia", "number", "barrel with cross and intermediate gears, without spindles",
           "kg*m^2", "J_b", gt=0, example=25.0),
     Field("friction_torque", "number", "friction moments resisting the barrel rotation",
-          "N*m", "ΣM_tr", default=0.0, minimum=0),
+          "N·m", "ΣM_tr", default=0.0, minimum=0),
     Field("efficiency", "number", "efficiency from the motor to the barrel", symbol="η_b",
           gt=0, maximum=1, example=0.8),
 ), required=False, hint="the spindle-block model of [RotaryDevices]; needs [geneva]")
@@ -74,7 +74,7 @@ DRIVE = Table("drive", "motor and distributing shaft (optional, with [barrel])",
           minimum=0),
     Field("shaft_inertia", "number", "distributing shaft with crank and worm wheel",
           "kg*m^2", "J_r", default=0.0, minimum=0),
-    Field("idle_torque", "number", "idle moment reduced to the distributing shaft", "N*m",
+    Field("idle_torque", "number", "idle moment reduced to the distributing shaft", "N·m",
           "M_x", default=0.0, minimum=0),
     Field("rated_power", "number", "motor rating: the indexing peak must not exceed it", "kW",
           "P_rated", default=None, gt=0),

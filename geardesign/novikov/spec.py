@@ -95,7 +95,7 @@ ACCURACY = Table("accuracy", "accuracy and assembly (GOST 1643-81) and the error
 ), required=False, implicit=True)
 
 LOAD = Table("load", "load", (
-    Field("torque2", "number", "torque on the driven wheel", "N*m", "T2", gt=0, maximum=1e8,
+    Field("torque2", "number", "torque on the driven wheel", "N·m", "T2", gt=0, maximum=1e8,
           example=30000.0),
     Field("application_factor", "number", "application factor (multiplies the load)",
           symbol="K_A", default=1.0, minimum=1.0, maximum=4.0),

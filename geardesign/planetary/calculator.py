@@ -673,11 +673,11 @@ def _kinematics_and_power(res: Result, d: dict, train: K.Train, meshes: list[PG.
         psec = res.section("power", "Torques and power flow")
         for mbr in train.members:
             if mbr in loaded:
-                psec.add(f"T_{mbr}", f.T[mbr], "N*m", f"T_{mbr}",
+                psec.add(f"T_{mbr}", f.T[mbr], "N·m", f"T_{mbr}",
                          f"torque on the {mbr} (with mesh losses)", S.TORQUE)
         for mbr in train.members:
             if mbr in loaded:
-                psec.add(f"T_{mbr}_ideal", ideal.T[mbr] * T_in, "N*m", f"T_{mbr},0",
+                psec.add(f"T_{mbr}_ideal", ideal.T[mbr] * T_in, "N·m", f"T_{mbr},0",
                          f"torque on the {mbr} without losses", S.WILLIS)
         if has_speed:
             for mbr in train.members:
@@ -789,7 +789,7 @@ def _strength_inputs(spec: ValidatedSpec, train: K.Train):
                                  "[material.ring]: required with [strength]"))
     if not torque:
         raise InputError(Problem("operation.torque", "missing; required with [strength]: the "
-                                 "input torque in N*m (or operation.power in kW)"))
+                                 "input torque in N·m (or operation.power in kW)"))
     if op["speed"] is None:
         raise InputError(Problem("operation.speed", "missing; required with [strength]: the "
                                  "input speed"))
@@ -824,7 +824,7 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
     peak_ratio = st["peak_torque"] / T_in if st["peak_torque"] is not None else None
     if peak_ratio is not None and peak_ratio < 1.0:
         raise InputError.at("strength.peak_torque", st["peak_torque"],
-                            f"smaller than the input torque {_fmt(T_in)} N*m; give the largest "
+                            f"smaller than the input torque {_fmt(T_in)} N·m; give the largest "
                             f"short-time torque")
     msec = res.section("materials", "Materials")
     for key, m in mats.items():

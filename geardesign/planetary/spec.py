@@ -103,7 +103,7 @@ OPERATION = Table("operation", "members and the input", (
     Field("speed", "number", "speed of the input member", "min^-1", "n_in", default=None,
           minimum=-1e6, maximum=1e6, example=1450.0,
           hint="needed for speeds, velocities, frequencies and the strength"),
-    Field("torque", "number", "torque on the input member", "N*m", "T_in", default=None,
+    Field("torque", "number", "torque on the input member", "N·m", "T_in", default=None,
           gt=0, maximum=1e9, example=40.0, hint="or give power"),
     Field("power", "number", "input power (instead of torque)", "kW", "P", default=None, gt=0,
           maximum=1e6),
@@ -158,7 +158,7 @@ STRENGTH = Table("strength", "strength to GOST 21354-87 (with [material] and a t
     Field("regime", "string", "typical load regime of GOST 21354-87: "
           + ", ".join(f"{k} {v}" for k, v in T.REGIME_NAMES.items()), default="0",
           choices=T.REGIMES),
-    Field("peak_torque", "number", "largest short-time input torque (static checks)", "N*m",
+    Field("peak_torque", "number", "largest short-time input torque (static checks)", "N·m",
           "T_max", default=None, gt=0, maximum=1e10),
     Field("ring_form_factor", "number", "tooth form factor Y_FS of the rings, given instead of "
           "the rack-limit approximation", symbol="Y_FS", default=None, gt=1.0, maximum=10.0),

@@ -206,7 +206,7 @@ def _spring_rows(res: Result, r: ResolvedSpring, sp: dict, assumed: list) -> Non
     A, B = S.THESIS_A, S.THESIS_B
     sec = res.section(f"spring{n}", f"Spring {n}: {r.name}")
     sec.add("name", r.name, None, "", "spring", "spec")
-    sec.add("T", s.inp.T, "N*m", "T", "design torque", "spec")
+    sec.add("T", s.inp.T, "N·m", "T", "design torque", "spec")
     sec.add("c", s.c_design, "-", "c", "spring index used for k", B + " eq. (3)")
     sec.add("c_actual", s.c_actual, "-", "D/d", "actual index, mean diameter over wire", B)
     sec.add("k", s.k, "-", "k", f"curvature factor ({s.inp.curvature})",
@@ -234,7 +234,7 @@ def _spring_rows(res: Result, r: ResolvedSpring, sp: dict, assumed: list) -> Non
             B + " eq. (1)")
     sec.add("utilisation", s.sigma / s.inp.sigma_allow, "-", "σ/[σ]", "stress utilisation",
             B + " eq. (1)")
-    sec.add("T_allow", s.T_allow, "N*m", "T_allow", "torque at which σ = [σ]", B + " eq. (1)")
+    sec.add("T_allow", s.T_allow, "N·m", "T_allow", "torque at which σ = [σ]", B + " eq. (1)")
     if r.phi_kin is not None:
         sec.add("phi_kin", r.phi_kin, "rad", "φ₂", "motor-start wind-up ω·t/2, t = factor·t1",
                 A + " eq. (14)")
@@ -251,7 +251,7 @@ def _spring_rows(res: Result, r: ResolvedSpring, sp: dict, assumed: list) -> Non
             "spec" if f"{r.key}.pitch" not in assumed else A + " (d + 2 mm)")
     sec.add("L", s.L, "mm", "L", "wire length of the working coils π·D·i", B + " eq. (7)")
     sec.add("H", s.H, "mm", "H", "working height d + (i − 1)·p", A + " eq. (16)")
-    sec.add("C", s.C, "N*m/rad", "C", "stiffness of the coils E·J/L", B + " eq. (11)")
+    sec.add("C", s.C, "N·m/rad", "C", "stiffness of the coils E·J/L", B + " eq. (11)")
     sec.add("phi_body", s.phi_body, "rad", "φ_c", "twist of the coils at T: T·L/(E·J)",
             B + " eq. (6)")
     leg_src = {"thesis": A + " eq. (7)", "shigley": S.SHIGLEY,
@@ -263,7 +263,7 @@ def _spring_rows(res: Result, r: ResolvedSpring, sp: dict, assumed: list) -> Non
         sec.add("L_leg", s.L_leg, "mm", "L_leg", f"equivalent wire length of the legs "
                 f"({s.inp.leg_model})", leg_src)
         sec.add("phi_leg", s.phi_leg, "rad", "φ₁", "leg bending at T", leg_src)
-        sec.add("C_finger", s.C_finger, "N*m/rad", "C_f",
+        sec.add("C_finger", s.C_finger, "N·m/rad", "C_f",
                 "stiffness at the finger E·J/(L + L_leg)", leg_src)
     sec.add("phi_T", s.phi_T, "rad", "φ_T", "wind-up at the design torque (coils + legs)",
             B + " eq. (6)")
@@ -274,7 +274,7 @@ def _spring_rows(res: Result, r: ResolvedSpring, sp: dict, assumed: list) -> Non
         Cs = [SP.stiffness(s.inp.E, s.J, s.L + SP.leg_length(a, s.D, s.inp.leg_model)
                            + (SP.leg_length(s.inp.leg2_arm, s.D, s.inp.leg_model)
                               if s.inp.leg2_arm else 0.0)) / 1000.0 for a in sp["slot_arms"]]
-        sec.add("C_slot", Cs, "N*m/rad", "C(l_min), C(l_max)",
+        sec.add("C_slot", Cs, "N·m/rad", "C(l_min), C(l_max)",
                 "stiffness with the finger at the ends of the slot", leg_src)
     if sp["target_stiffness"] is not None:
         L2 = SP.leg_length(s.inp.leg2_arm, s.D, s.inp.leg_model) if s.inp.leg2_arm else 0.0
@@ -307,7 +307,7 @@ def _spring_rows(res: Result, r: ResolvedSpring, sp: dict, assumed: list) -> Non
         r.T_limit = T_lim
         sec.add("phi_stop", s.inp.phi_stop, "rad", "φ_stop", "stop angle of the coupling",
                 "spec")
-        sec.add("T_limit", T_lim, "N*m", "T_lim", "torque limit of the coupling C_f·φ_stop",
+        sec.add("T_limit", T_lim, "N·m", "T_lim", "torque limit of the coupling C_f·φ_stop",
                 S.THESIS_A)
         sec.add("sigma_limit", SP.bending_stress(T_lim * 1000.0, s.k, s.d), "MPa", "σ_lim",
                 "bending stress at the torque limit", B + " eq. (1)")
@@ -473,7 +473,7 @@ def _coupling(spec: ValidatedSpec, g: dict):
 
     if g["peak_torque"] is not None and g["peak_torque"] < g["torque"]:
         raise InputError.at("coupling_gear.peak_torque", g["peak_torque"],
-                            f"smaller than the working torque {_fmt(g['torque'])} N*m; give "
+                            f"smaller than the working torque {_fmt(g['torque'])} N·m; give "
                             f"the largest short-time torque")
     u = g["z2"] / g["z1"]
     T1 = CG.pinion_torque(g["torque"], g["torque_on"], g["planets"], u)
@@ -504,10 +504,10 @@ def _coupling_rows(res: Result, g: dict, est: dict, spur_spec: dict) -> None:
 
     sec = res.section("coupling_gear", "Coupling gear: load sharing and module estimate")
     sec.add("u", est["u"], "-", "u", "gear ratio z2/z1", "geometry")
-    sec.add("T1_mesh", est["T1"], "N*m", "T1", f"pinion torque per mesh (torque on the "
+    sec.add("T1_mesh", est["T1"], "N·m", "T1", f"pinion torque per mesh (torque on the "
             f"{g['torque_on']} over {g['planets']} meshes)", S.TEXTBOOK_GEAR)
     if est["T1_peak"] is not None:
-        sec.add("T1_mesh_peak", est["T1_peak"], "N*m", "T1max", "peak pinion torque per mesh",
+        sec.add("T1_mesh_peak", est["T1_peak"], "N·m", "T1max", "peak pinion torque per mesh",
                 S.TEXTBOOK_GEAR)
     sec.add("Y_F1", est["Y_F"][0], "-", "Y_F1", "form factor, pinion (estimate)",
             "spec" if (g["factors"] or {}).get("Y_FS1") else S.SPUR)
@@ -587,7 +587,7 @@ def _startup_input(spec: ValidatedSpec, st: dict, springs: list) -> StartupInput
         num, ref = st[f"C{line}"], st[f"C{line}_spring"]
         if num is None and ref is None:
             raise InputError(Problem(f"startup.C{line}", f"missing; give the link stiffness "
-                                     f"C{line} [N*m/rad], or C{line}_spring, the name of the "
+                                     f"C{line} [N·m/rad], or C{line}_spring, the name of the "
                                      f"[[spring]] that gives it"))
         if num is not None and ref is not None:
             raise InputError.at(f"startup.C{line}_spring", ref, f"give C{line} or "
@@ -666,7 +666,7 @@ def _startup_input(spec: ValidatedSpec, st: dict, springs: list) -> StartupInput
                                  "reaches it)"))
     elif eps <= 0:
         raise InputError.at("startup.T1", st["T1"],
-                            f"does not exceed T2 + T3 = {_fmt(st['T2'] + st['T3'])} N*m, so the "
+                            f"does not exceed T2 + T3 = {_fmt(st['T2'] + st['T3'])} N·m, so the "
                             f"machine never reaches motor_speed; give t_end to compute the "
                             f"stalled start, or a larger T1")
     else:
@@ -704,7 +704,7 @@ def _run_model(m, si: StartupInput, st: dict, want_cf: bool, want_ode: bool):
             "startup", f"the start-up lasts {_fmt(si.t_end)} s and the stiffest mode "
             f"oscillates at {_fmt(beta / (2.0 * math.pi))} Hz: {periods:.3g} periods, more than "
             f"the {MAX_PERIODS} that are resolved in bounded time; give a shorter startup.t_end "
-            f"or check J1, J2, J3 [kg*m^2] and the link stiffnesses [N*m/rad]"))
+            f"or check J1, J2, J3 [kg*m^2] and the link stiffnesses [N·m/rad]"))
     if want_cf:
         cf = SU.solve(m, si.t_end)
         cf_peak = cf.peak()
@@ -725,7 +725,7 @@ def _amplitude_rows(c, stage, key: str, words: str) -> None:
             ("B", "sine amplitudes (sign-corrected)", S.NOTE_D),
             ("D", "mode amplitudes √(A² + B²)", S.THESIS_D + " eq. (26)"))):
         for link, off in (("12", 0), ("13", 3)):
-            c.add(f"{sym}{link}_{key}", [a[j + off] for a in amp], "N*m",
+            c.add(f"{sym}{link}_{key}", [a[j + off] for a in amp], "N·m",
                   f"{sym}({link})1, {sym}({link})2", f"{words} {name}, link 1-{link[1]}", src)
 
 
@@ -747,15 +747,15 @@ def _startup(res: Result, spec: ValidatedSpec, st: dict, si: StartupInput, sprin
     D = S.THESIS_D
 
     sec = res.section("startup_model", "Start-up model (reduced to the motor shaft)")
-    for k, unit, name in (("T1", "N*m", "motor starting torque"),
-                          ("T2", "N*m", "resisting moment, mass 2"),
-                          ("T3", "N*m", "resisting moment, mass 3")):
+    for k, unit, name in (("T1", "N·m", "motor starting torque"),
+                          ("T2", "N·m", "resisting moment, mass 2"),
+                          ("T3", "N·m", "resisting moment, mass 3")):
         sec.add(k, getattr(m, k), unit, k, name, "spec")
     for line, c, spring_c, dc in zip(("12", "13"), C, sC, drive):
         src = "spec" if st[f"C{line}_spring"] is None else f"spring \"{st[f'C{line}_spring']}\""
-        sec.add(f"C{line}_spring", spring_c, "N*m/rad", f"C{line},M",
+        sec.add(f"C{line}_spring", spring_c, "N·m/rad", f"C{line},M",
                 f"PZDN spring stiffness of line 1-{line[1]}", src)
-        sec.add(f"C{line}", c, "N*m/rad", f"C{line}", f"link stiffness 1-{line[1]} used"
+        sec.add(f"C{line}", c, "N·m/rad", f"C{line}", f"link stiffness 1-{line[1]} used"
                 + (" (spring in series with the drive)" if dc is not None else ""),
                 S.SERIES if dc is not None else src)
     sec.add("t_end", si.t_end, "s", "t_end", "duration computed", si.t_end_source)
@@ -783,15 +783,15 @@ def _startup(res: Result, spec: ValidatedSpec, st: dict, si: StartupInput, sprin
         if cf.order in ("2 first", "3 first"):
             s2 = cf.stages[1]
             x0, dx0 = s2.torques(cf.tau1), s2.rates(cf.tau1)
-            c.add("T12_0", x0[0], "N*m", "T12(0)", "stage 2 start: link torque 1-2",
+            c.add("T12_0", x0[0], "N·m", "T12(0)", "stage 2 start: link torque 1-2",
                   D + " eq. (13)")
-            c.add("T13_0", x0[1], "N*m", "T13(0)", "stage 2 start: link torque 1-3",
+            c.add("T13_0", x0[1], "N·m", "T13(0)", "stage 2 start: link torque 1-3",
                   D + " eq. (13)")
-            c.add("dT12_0", dx0[0], "N*m/s", "T12'(0)", "stage 2 start: rate of T12",
+            c.add("dT12_0", dx0[0], "N·m/s", "T12'(0)", "stage 2 start: rate of T12",
                   D + " eq. (13)")
-            c.add("dT13_0", dx0[1], "N*m/s", "T13'(0)", "stage 2 start: rate of T13",
+            c.add("dT13_0", dx0[1], "N·m/s", "T13'(0)", "stage 2 start: rate of T13",
                   D + " eq. (13)")
-            c.add("a_stage2", list(s2.a), "N*m", "a12, a13", "stage 2 constant parts",
+            c.add("a_stage2", list(s2.a), "N·m", "a12, a13", "stage 2 constant parts",
                   D + " eq. (14)")
             c.add("beta2_stage2", [b * b for b in s2.beta], "1/s^2", "β1², β2²",
                   "stage 2 squared frequencies", D + " eq. (15)")
@@ -802,30 +802,30 @@ def _startup(res: Result, spec: ValidatedSpec, st: dict, si: StartupInput, sprin
               "switch-on", D)
         if cf.reached_stage3:
             s3 = cf.stages[-1]
-            c.add("a_stage3", list(s3.a), "N*m", "a12, a13", "stage 3 constant parts",
+            c.add("a_stage3", list(s3.a), "N·m", "a12, a13", "stage 3 constant parts",
                   D + " eq. (22)")
             c.add("beta2_stage3", [b * b for b in s3.beta], "1/s^2", "β1², β2²",
                   "stage 3 squared frequencies", D + " eq. (23)")
             _amplitude_rows(c, s3, "stage3", "stage 3")
-        c.add("T12max", cf_peak[0], "N*m", "T12max", "peak link torque 1-2 (envelope)",
+        c.add("T12max", cf_peak[0], "N·m", "T12max", "peak link torque 1-2 (envelope)",
               D + " eq. (27)")
-        c.add("T13max", cf_peak[1], "N*m", "T13max", "peak link torque 1-3 (envelope)",
+        c.add("T13max", cf_peak[1], "N·m", "T13max", "peak link torque 1-3 (envelope)",
               D + " eq. (27)")
         c.add("k12", cf_peak[0] / m.T2, "-", "k12", "dynamic load coefficient T12max/T2",
               D + " eq. (28)")
         c.add("k13", cf_peak[1] / m.T3, "-", "k13", "dynamic load coefficient T13max/T3",
               D + " eq. (28)")
-        c.add("T12max_t", max(grid[1]), "N*m", "max T12(t)", "largest T12 within t_end",
+        c.add("T12max_t", max(grid[1]), "N·m", "max T12(t)", "largest T12 within t_end",
               D)
-        c.add("T13max_t", max(grid[2]), "N*m", "max T13(t)", "largest T13 within t_end",
+        c.add("T13max_t", max(grid[2]), "N·m", "max T13(t)", "largest T13 within t_end",
               D)
         w2min, w3min = min(grid[4]), min(grid[5])
         c.add("omega_min", [w2min, w3min], "rad/s", "min ω2, ω3",
               "lowest speeds of masses 2, 3 (negative: runs backwards)", D)
     if sim is not None:
         o = res.section("ode", "Numerical integration")
-        o.add("T12max", sim.T12_max, "N*m", "T12max", "peak link torque 1-2", S.ODE)
-        o.add("T13max", sim.T13_max, "N*m", "T13max", "peak link torque 1-3", S.ODE)
+        o.add("T12max", sim.T12_max, "N·m", "T12max", "peak link torque 1-2", S.ODE)
+        o.add("T13max", sim.T13_max, "N·m", "T13max", "peak link torque 1-3", S.ODE)
         o.add("t12max", sim.t12_max, "s", "t(T12max)", "time of the peak 1-2", S.ODE)
         o.add("t13max", sim.t13_max, "s", "t(T13max)", "time of the peak 1-3", S.ODE)
         o.add("k12", sim.T12_max / m.T2, "-", "k12", "dynamic load coefficient T12max/T2",
@@ -836,7 +836,7 @@ def _startup(res: Result, spec: ValidatedSpec, st: dict, si: StartupInput, sprin
               "t2, t3", "first break-away of masses 2, 3", S.ODE)
         o.add("sticks", list(sim.sticks), "-", "n_stick", "times masses 2, 3 came to rest "
               "again", S.ODE)
-        o.add("damping", list(sim.c), "N*m*s/rad", "c12, c13", "link damping coefficients",
+        o.add("damping", list(sim.c), "N·m*s/rad", "c12, c13", "link damping coefficients",
               "2ζ√(C·J1Jj/(J1+Jj))")
         o.add("final_speeds", list(sim.final_speeds), "rad/s", "ω1, ω2, ω3",
               "speeds at t_end", S.ODE)
@@ -851,8 +851,8 @@ def _startup(res: Result, spec: ValidatedSpec, st: dict, si: StartupInput, sprin
         else:
             t, T12, T13, w1, w2, w3 = SU.sample(cf, si.t_end, si.t_end / max(npts - 1, 1))
             src = D
-        for key, val, unit, name in (("t", t, "s", "time"), ("T12", T12, "N*m", "link torque 1-2"),
-                                     ("T13", T13, "N*m", "link torque 1-3"),
+        for key, val, unit, name in (("t", t, "s", "time"), ("T12", T12, "N·m", "link torque 1-2"),
+                                     ("T13", T13, "N·m", "link torque 1-3"),
                                      ("omega1", w1, "rad/s", "speed of mass 1"),
                                      ("omega2", w2, "rad/s", "speed of mass 2"),
                                      ("omega3", w3, "rad/s", "speed of mass 3")):
@@ -927,13 +927,13 @@ def _startup(res: Result, spec: ValidatedSpec, st: dict, si: StartupInput, sprin
         m0 = replace(m, C12=si.drive_C[0], C13=si.drive_C[1])
         p0 = peaks(m0)
         cmp = res.section("startup_comparison", "With and without the PZDN (start-up)")
-        cmp.add("C_without", list(si.drive_C), "N*m/rad", "C12, C13",
+        cmp.add("C_without", list(si.drive_C), "N·m/rad", "C12, C13",
                 "link stiffnesses without the PZDN (drive alone)", "spec")
-        cmp.add("C_with", [m.C12, m.C13], "N*m/rad", "C12, C13",
+        cmp.add("C_with", [m.C12, m.C13], "N·m/rad", "C12, C13",
                 "link stiffnesses with the PZDN", S.SERIES)
-        cmp.add("Tmax_without", list(p0), "N*m", "T12max, T13max", "peaks without the PZDN",
+        cmp.add("Tmax_without", list(p0), "N·m", "T12max, T13max", "peaks without the PZDN",
                 src_cmp)
-        cmp.add("Tmax_with", list(base), "N*m", "T12max, T13max", "peaks with the PZDN",
+        cmp.add("Tmax_with", list(base), "N·m", "T12max, T13max", "peaks with the PZDN",
                 src_cmp)
         cmp.add("k_without", [p0[0] / m.T2, p0[1] / m.T3], "-", "k12, k13",
                 "dynamic load coefficients without the PZDN", src_cmp)
@@ -959,12 +959,12 @@ def _startup(res: Result, spec: ValidatedSpec, st: dict, si: StartupInput, sprin
             ks12.append(p[0] / m.T2)
             ks13.append(p[1] / m.T3)
         sw.add("lambda", list(st["sweep"]), "-", "λ", "stiffness factor", "spec")
-        sw.add("C12", [m.C12 * x for x in st["sweep"]], "N*m/rad", "C12", "link stiffness 1-2",
+        sw.add("C12", [m.C12 * x for x in st["sweep"]], "N·m/rad", "C12", "link stiffness 1-2",
                "spec")
-        sw.add("C13", [m.C13 * x for x in st["sweep"]], "N*m/rad", "C13", "link stiffness 1-3",
+        sw.add("C13", [m.C13 * x for x in st["sweep"]], "N·m/rad", "C13", "link stiffness 1-3",
                "spec")
-        sw.add("T12max", T12s, "N*m", "T12max", "peak link torque 1-2", src_cmp)
-        sw.add("T13max", T13s, "N*m", "T13max", "peak link torque 1-3", src_cmp)
+        sw.add("T12max", T12s, "N·m", "T12max", "peak link torque 1-2", src_cmp)
+        sw.add("T13max", T13s, "N·m", "T13max", "peak link torque 1-3", src_cmp)
         sw.add("k12", ks12, "-", "k12", "dynamic load coefficient 1-2", src_cmp)
         sw.add("k13", ks13, "-", "k13", "dynamic load coefficient 1-3", src_cmp)
 
@@ -1006,22 +1006,22 @@ def _regression(res: Result, spec: ValidatedSpec, rg: dict) -> None:
     E = S.THESIS_E
     p = R.evaluate(C, reg, rg["T_ref_12"], rg["T_ref_23"])
     sec = res.section("regression", f"Regression of the {reg['machine']} drive")
-    sec.add("C12", C, "N*m/rad", "C12", "link stiffness"
+    sec.add("C12", C, "N·m/rad", "C12", "link stiffness"
             + (" 1/C = 1/C_M + 1/C_belt" if how == S.SERIES else ""), how)
-    sec.add("T12max", p.T12max, "N*m", "T12max", "maximum moment, line 1-2", E + " eq. (1)")
-    sec.add("T23max", p.T23max, "N*m", "T23max", "maximum moment, line 2-3", E + " eq. (2)")
+    sec.add("T12max", p.T12max, "N·m", "T12max", "maximum moment, line 1-2", E + " eq. (1)")
+    sec.add("T23max", p.T23max, "N·m", "T23max", "maximum moment, line 2-3", E + " eq. (2)")
     sec.add("k12", p.k12, "-", "k12", "T12max/T_ref12", E)
     sec.add("k23", p.k23, "-", "k23", "T23max/T_ref23", E)
     lo, hi = R.fitted_range(reg)
-    sec.add("fitted_range", [lo, hi], "N*m/rad", "C range", "range treated as fitted "
+    sec.add("fitted_range", [lo, hi], "N·m/rad", "C range", "range treated as fitted "
             "(C0 ± 50 %, assumed: the thesis gives the centre only)", E)
     if rg["drive_stiffness"] is not None and rg["pzdn_stiffness"] is not None:
         p0 = R.evaluate(rg["drive_stiffness"], reg, rg["T_ref_12"], rg["T_ref_23"])
         cmp = res.section("regression_comparison", "With and without the PZDN (regression)")
-        cmp.add("C_without", rg["drive_stiffness"], "N*m/rad", "C12", "drive alone", "spec")
-        cmp.add("T12max_without", p0.T12max, "N*m", "T12max", "line 1-2 without the PZDN",
+        cmp.add("C_without", rg["drive_stiffness"], "N·m/rad", "C12", "drive alone", "spec")
+        cmp.add("T12max_without", p0.T12max, "N·m", "T12max", "line 1-2 without the PZDN",
                 E + " eq. (1)")
-        cmp.add("T23max_without", p0.T23max, "N*m", "T23max", "line 2-3 without the PZDN",
+        cmp.add("T23max_without", p0.T23max, "N·m", "T23max", "line 2-3 without the PZDN",
                 E + " eq. (2)")
         cmp.add("k23_without", p0.k23, "-", "k23", "k23 without the PZDN", E)
         cmp.add("change_T23", 100.0 * (p.T23max / p0.T23max - 1.0), "%", "ΔT23",
@@ -1031,9 +1031,9 @@ def _regression(res: Result, spec: ValidatedSpec, rg: dict) -> None:
     if rg["sweep"]:
         pts = [R.evaluate(c, reg, rg["T_ref_12"], rg["T_ref_23"]) for c in rg["sweep"]]
         sw = res.section("regression_sweep", "Regression over the stiffness")
-        sw.add("C12", list(rg["sweep"]), "N*m/rad", "C12", "link stiffness", "spec")
-        sw.add("T12max", [q.T12max for q in pts], "N*m", "T12max", "line 1-2", E + " eq. (1)")
-        sw.add("T23max", [q.T23max for q in pts], "N*m", "T23max", "line 2-3", E + " eq. (2)")
+        sw.add("C12", list(rg["sweep"]), "N·m/rad", "C12", "link stiffness", "spec")
+        sw.add("T12max", [q.T12max for q in pts], "N·m", "T12max", "line 1-2", E + " eq. (1)")
+        sw.add("T23max", [q.T23max for q in pts], "N·m", "T23max", "line 2-3", E + " eq. (2)")
         sw.add("k12", [q.k12 for q in pts], "-", "k12", "T12max/T_ref12", E)
         sw.add("k23", [q.k23 for q in pts], "-", "k23", "T23max/T_ref23", E)
         outside = [c for c in rg["sweep"] if not lo <= c <= hi]
@@ -1103,7 +1103,7 @@ def compute(spec: ValidatedSpec) -> Result:
         if mo["nominal_torque"] is not None or mo["power"] is not None:
             Tn = mo["nominal_torque"] if mo["nominal_torque"] is not None else \
                 mo["power"] * 1000.0 / omega
-            sec.add("T_nominal", Tn, "N*m", "T_c", "nominal torque P/ω",
+            sec.add("T_nominal", Tn, "N·m", "T_c", "nominal torque P/ω",
                     "spec" if mo["nominal_torque"] is not None else S.THESIS_A)
         sec.add("t_windup", mo["breakaway_time"] * mo["windup_factor"], "s", "t",
                 "spring wind-up time = motor start time factor·t1", S.THESIS_A + " eq. (14)")
@@ -1113,13 +1113,13 @@ def compute(spec: ValidatedSpec) -> Result:
     if len(springs) > 1:
         sec = res.section("springs", "Springs together")
         sec.add("names", [r.name for r in springs], None, "", "springs", "spec")
-        sec.add("C", [r.design.C for r in springs], "N*m/rad", "C_i", "stiffnesses of the coils",
+        sec.add("C", [r.design.C for r in springs], "N·m/rad", "C_i", "stiffnesses of the coils",
                 S.THESIS_B + " eq. (11)")
-        sec.add("C_finger", [r.design.C_finger for r in springs], "N*m/rad", "C_f,i",
+        sec.add("C_finger", [r.design.C_finger for r in springs], "N·m/rad", "C_f,i",
                 "stiffnesses at the fingers", S.THESIS_B)
-        sec.add("C_series", 1.0 / sum(1.0 / r.design.C_finger for r in springs), "N*m/rad",
+        sec.add("C_series", 1.0 / sum(1.0 / r.design.C_finger for r in springs), "N·m/rad",
                 "C_series", "all springs in series", S.SERIES)
-        sec.add("C_parallel", sum(r.design.C_finger for r in springs), "N*m/rad", "C_parallel",
+        sec.add("C_parallel", sum(r.design.C_finger for r in springs), "N·m/rad", "C_parallel",
                 "all springs in parallel", "statics")
     if coupling is not None:
         _coupling_rows(res, d["coupling_gear"], *coupling)

@@ -17,7 +17,7 @@ from geardesign.core.spec import Field, SpecSchema, Table, TableList
 from geardesign.materials import spring_steel
 from geardesign.pzdn.spring import CURVATURE_MODELS, LEG_MODELS
 
-STIFFNESS = "N*m/rad"
+STIFFNESS = "N·m/rad"
 INERTIA = "kg*m^2"
 
 MOTOR = Table("motor", "drive motor, for the wind-up angle of the spring during the motor "
@@ -27,7 +27,7 @@ MOTOR = Table("motor", "drive motor, for the wind-up angle of the spring during 
     Field("power", "number", "nominal motor power", "kW", "P", default=None, gt=0,
           maximum=1e5, example=2.2, hint="gives the nominal torque P/ω when "
           "nominal_torque is not given"),
-    Field("nominal_torque", "number", "nominal motor torque (default P/ω)", "N*m", "T_c",
+    Field("nominal_torque", "number", "nominal motor torque (default P/ω)", "N·m", "T_c",
           default=None, gt=0, maximum=1e6),
     Field("breakaway_time", "number", "break-away time of the driving mass (rotor with the "
           "coupling)", "s", "t1", default=1.5e-3, gt=0, maximum=10.0),
@@ -38,7 +38,7 @@ MOTOR = Table("motor", "drive motor, for the wind-up angle of the spring during 
 SPRING = Table("spring", "cylindrical torsion spring of the coupling", (
     Field("name", "string", "name of the spring (used by startup.C12_spring/C13_spring)",
           default=None, example="knitting"),
-    Field("torque", "number", "design (working) torque carried by the spring", "N*m", "T",
+    Field("torque", "number", "design (working) torque carried by the spring", "N·m", "T",
           gt=0, maximum=1e6, example=30.0),
     Field("wire_diameter", "number", "wire diameter", "mm", "d", default=None, gt=0,
           maximum=100.0, example=6.5,
@@ -156,12 +156,12 @@ COUPLING_GEAR = Table("coupling_gear", "open spur gear of the coupling (rated by
           maximum=2.0),
     Field("planets", "integer", "number of planet meshes sharing the torque", symbol="n_w",
           default=2, minimum=1, maximum=20),
-    Field("torque", "number", "working torque of the coupling", "N*m", "T", gt=0,
+    Field("torque", "number", "working torque of the coupling", "N·m", "T", gt=0,
           maximum=1e7, example=22.1),
     Field("torque_on", "string", "the gear that carries `torque` (the other follows from u)",
           default="wheel", choices=("wheel", "pinion")),
     Field("peak_torque", "number", "largest short-time torque (motor start), on the same gear",
-          "N*m", "T_max", default=None, gt=0, maximum=1e8, example=48.6,
+          "N·m", "T_max", default=None, gt=0, maximum=1e8, example=48.6,
           hint="for the static checks and the module estimate"),
     Field("speed", "number", "pinion speed", "min^-1", "n1", gt=0, maximum=1e6,
           example=950.0),
@@ -181,11 +181,11 @@ COUPLING_GEAR = Table("coupling_gear", "open spur gear of the coupling (rated by
 
 STARTUP = Table("startup", "three-mass start-up model, driving mass in the middle "
                 "(all values reduced to the motor shaft)", (
-    Field("T1", "number", "motor starting torque", "N*m", "T1", gt=0, maximum=1e7,
+    Field("T1", "number", "motor starting torque", "N·m", "T1", gt=0, maximum=1e7,
           example=26.5),
-    Field("T2", "number", "resisting moment of mass 2 (take-down mechanism)", "N*m", "T2",
+    Field("T2", "number", "resisting moment of mass 2 (take-down mechanism)", "N·m", "T2",
           gt=0, maximum=1e7, example=4.4),
-    Field("T3", "number", "resisting moment of mass 3 (knitting mechanism)", "N*m", "T3",
+    Field("T3", "number", "resisting moment of mass 3 (knitting mechanism)", "N·m", "T3",
           gt=0, maximum=1e7, example=17.7),
     Field("J1", "number", "moment of inertia of the driving mass", INERTIA, "J1", gt=0,
           maximum=1e6, example=0.038),
@@ -221,7 +221,7 @@ STARTUP = Table("startup", "three-mass start-up model, driving mass in the middl
                'curve_torque'),
     Field("rise_time", "number", "rise time of the motor torque (linear ramp; 0: a step)",
           "s", "t_r", default=0.0, minimum=0, maximum=100.0),
-    Field("kloss_max_torque", "number", "breakdown torque of the motor (Kloss)", "N*m",
+    Field("kloss_max_torque", "number", "breakdown torque of the motor (Kloss)", "N·m",
           "T_k", default=None, gt=0, maximum=1e7),
     Field("kloss_critical_slip", "number", "critical slip (Kloss)", symbol="s_k",
           default=None, gt=0, lt=1),
@@ -229,7 +229,7 @@ STARTUP = Table("startup", "three-mass start-up model, driving mass in the middl
           default=None, gt=0, maximum=1e5),
     Field("curve_speed", "array", "motor characteristic: speeds", "min^-1", "n_i",
           default=None, minimum=0, maximum=1e5, min_items=2, max_items=200),
-    Field("curve_torque", "array", "motor characteristic: torques at curve_speed", "N*m",
+    Field("curve_torque", "array", "motor characteristic: torques at curve_speed", "N·m",
           "T_i", default=None, minimum=-1e7, maximum=1e7, min_items=2, max_items=200),
     Field("damping_ratio", "number", "damping ratio of each link (viscous, ODE only)",
           symbol="ζ", default=0.0, minimum=0, maximum=2.0),
@@ -253,9 +253,9 @@ REGRESSION = Table("regression", "regression of the KO-2 drive (thesis §2.3): m
           default=None, gt=0, maximum=1e9, example=1940.0),
     Field("C12", "number", "link stiffness given directly (instead of the two above)",
           STIFFNESS, "C12", default=None, gt=0, maximum=1e9),
-    Field("T_ref_12", "number", "reference moment of k12", "N*m", "T_ref12", default=26.5,
+    Field("T_ref_12", "number", "reference moment of k12", "N·m", "T_ref12", default=26.5,
           gt=0, maximum=1e7),
-    Field("T_ref_23", "number", "reference moment of k23", "N*m", "T_ref23", default=17.7,
+    Field("T_ref_23", "number", "reference moment of k23", "N·m", "T_ref23", default=17.7,
           gt=0, maximum=1e7),
     Field("sweep", "array", "link stiffnesses for a table of the regression", STIFFNESS,
           "C_i", default=None, gt=0, maximum=1e9, min_items=1, max_items=100),

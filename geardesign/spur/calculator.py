@@ -220,7 +220,7 @@ def _strength_inputs(spec: ValidatedSpec, gear: dict):
         raise InputError.at("load.power", load["power"], "give torque1 or power, not both")
     if not torque_given:
         raise InputError(Problem("load.torque1", "missing; required with [material]: the nominal "
-                                 "pinion torque in N*m (or load.power in kW)"))
+                                 "pinion torque in N·m (or load.power in kW)"))
     if load["life_hours"] is None:
         raise InputError(Problem("load.life_hours", "missing; required with [material]: the "
                                  "required life in hours"))
@@ -233,7 +233,7 @@ def _strength_inputs(spec: ValidatedSpec, gear: dict):
                                                                                load["speed1"])
     if load["peak_torque1"] is not None and load["peak_torque1"] < T1:
         raise InputError.at("load.peak_torque1", load["peak_torque1"],
-                            f"smaller than the nominal torque T1 = {_fmt(T1)} N*m; give the "
+                            f"smaller than the nominal torque T1 = {_fmt(T1)} N·m; give the "
                             f"largest short-time torque")
     blocks = ()
     if load["spectrum"]:

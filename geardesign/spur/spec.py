@@ -95,7 +95,7 @@ BLOCK = Table("spectrum", "load block", (
 
 LOAD = Table("load", "operating data", (
     Field("speed1", "number", "pinion speed", "min^-1", "n1", gt=0, maximum=1e6, example=960.0),
-    Field("torque1", "number", "nominal pinion torque: the largest long-acting torque", "N*m",
+    Field("torque1", "number", "nominal pinion torque: the largest long-acting torque", "N·m",
           "T1", default=None, gt=0, maximum=1e8, example=250.0,
           hint="or give power; required for the strength calculation"),
     Field("power", "number", "transmitted power (instead of torque1)", "kW", "P", default=None,
@@ -104,7 +104,7 @@ LOAD = Table("load", "operating data", (
           "application factor: 1 uniform, 1.25 light shocks, 1.5 moderate, 1.75-2.25 heavy",
           symbol="K_A", default=1.0, minimum=1.0, maximum=3.0),
     Field("peak_torque1", "number", "largest short-time pinion torque, for the static checks",
-          "N*m", "T_max", default=None, gt=0, maximum=1e9, example=500.0),
+          "N·m", "T_max", default=None, gt=0, maximum=1e9, example=500.0),
     Field("life_hours", "number", "required life", "h", "L_h", default=None, gt=0, maximum=1e7,
           example=20000.0, hint="required for the strength calculation"),
     Field("regime", "string", "typical load regime of GOST 21354-87 (instead of a spectrum): "
@@ -143,7 +143,7 @@ def _material(who: str) -> Table:
               minimum=100, maximum=1200),
         Field("core_HRC", "number", "core hardness (nitrided: σ_Flim = 12·HRC_core + 290)",
               "HRC", default=None, minimum=10, maximum=60),
-        Field("roughness_Ra", "number", "flank roughness Ra", "um", "Ra", default=1.25, gt=0,
+        Field("roughness_Ra", "number", "flank roughness Ra", "µm", "Ra", default=1.25, gt=0,
               maximum=40),
         Field("root_ground", "boolean", "root ground after hardening (then q_F = 6)",
               default=False),

@@ -211,9 +211,9 @@ def compute(spec: ValidatedSpec) -> Result:
         T2 = load["output_torque"]
         out.append(check(
             "AXIAL_FIXATION", T2 <= T_AXIAL, "warning",
-            f"output torque {T2:.0f} N*m: in large wave gears the skewed generator discs "
+            f"output torque {T2:.0f} N·m: in large wave gears the skewed generator discs "
             f"screw into the flexible wheel and load its fastening axially; fix the generator "
             f"and the flexible wheel axially without play and lubricate the disc contact",
-            f"output torque {T2:.0f} N*m <= {T_AXIAL:.0f} N*m (axial forces small)", T2,
+            f"output torque {T2:.0f} N·m <= {T_AXIAL:.0f} N·m (axial forces small)", T2,
             T_AXIAL, S.STRELNIKOV))
     return res

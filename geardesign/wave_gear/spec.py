@@ -63,7 +63,7 @@ MATERIAL = Table("material", "flexible-wheel material", (
 ))
 
 LOAD = Table("load", "operating data (optional)", (
-    Field("output_torque", "number", "output torque", "N*m", "T2", gt=0, maximum=1e8,
+    Field("output_torque", "number", "output torque", "N·m", "T2", gt=0, maximum=1e8,
           example=500.0),
     Field("input_speed", "number", "wave generator speed", "min^-1", "n_h", default=None, gt=0,
           maximum=1e5),

@@ -145,17 +145,17 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
 
     # ------------------------------------------------------------------ forces, speeds
     f = mesh_forces(g, duty.T1)
-    r.put("forces", "T1", duty.T1, "N*m", "T1", "pinion torque (nominal)", "spec")
-    r.put("forces", "T2", duty.T1 * u, "N*m", "T2", "wheel torque (no mesh loss)", SRC)
+    r.put("forces", "T1", duty.T1, "N·m", "T1", "pinion torque (nominal)", "spec")
+    r.put("forces", "T2", duty.T1 * u, "N·m", "T2", "wheel torque (no mesh loss)", SRC)
     r.put("forces", "F_t", f.F_t, "N", "F_t", "tangential force at d_w1", "[GOST21354]")
     r.put("forces", "F_r", f.F_r, "N", "F_r", "radial force", "[GOST21354]")
     r.put("forces", "F_a", f.F_a, "N", "F_a", "axial force", "[GOST21354]")
     r.put("forces", "F_n", f.F_n, "N", "F_n", "normal force", "[GOST21354]")
     r.put("forces", "beta_w", math.degrees(f.beta_w), "deg", "β_w", "helix angle at d_w",
           "[GOST21354]")
-    r.put("forces", "M_a1", f.M_a1, "N*m", "M_a1", "moment of F_a on the pinion shaft (F_a·d_w1/2)",
+    r.put("forces", "M_a1", f.M_a1, "N·m", "M_a1", "moment of F_a on the pinion shaft (F_a·d_w1/2)",
           "statics")
-    r.put("forces", "M_a2", f.M_a2, "N*m", "M_a2", "moment of F_a on the wheel shaft (F_a·d_w2/2)",
+    r.put("forces", "M_a2", f.M_a2, "N·m", "M_a2", "moment of F_a on the wheel shaft (F_a·d_w2/2)",
           "statics")
     F_tH = 2000.0 * duty.T1 / g.g1.d
     r.put("forces", "F_tH", F_tH, "N", "F_tH", "tangential force at d1 (for σ_H, σ_F)",
@@ -266,8 +266,8 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
             k, capped["F"] = G.limited(k, K_Fa_max)
             return k
 
-        r.put("factors", "c_gamma", c_gamma, "N/(mm*um)", "c_γ", "mesh stiffness", SRC_ZPCIL)
-        r.put("factors", "f_pb", f_pb, "um", "f_pb", "equivalent base pitch deviation",
+        r.put("factors", "c_gamma", c_gamma, "N/(mm·µm)", "c_γ", "mesh stiffness", SRC_ZPCIL)
+        r.put("factors", "f_pb", f_pb, "µm", "f_pb", "equivalent base pitch deviation",
               "GOST 1643-81 (ZPCIL fit)")
         r.put("factors", "K_Halpha_max", K_Ha_max, "-", "K_Hα,max",
               "upper limit of K_Hα (the factor is never below 1)", SRC_ZPCIL)
@@ -406,7 +406,7 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
         K_Ha_pk, K_Fa_pk = peak_alpha(K_Hb_max, K_Fb_max, Tm / duty.T1)
         K_Hmax = K_Hb_max * K_Ha_pk
         K_Fmax = K_Fb_max * K_Fa_pk
-        r.put("static", "T_peak", Tm, "N*m", "T_max", "peak pinion torque (an actual torque: "
+        r.put("static", "T_peak", Tm, "N·m", "T_max", "peak pinion torque (an actual torque: "
               "K_A does not enter the peak stresses)", "spec")
         r.put("static", "K_Hmax", K_Hmax, "-", "K_Hmax", "load factor at the peak torque, "
               "contact (K_v = 1, no K_A)", SRC_ZPCIL)
