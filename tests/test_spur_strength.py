@@ -154,8 +154,33 @@ def test_overload_fails_with_advice():
     assert doc["verdict"] == "fail"
     c = {c["code"]: c for c in doc["checks"]}["CONTACT_FATIGUE"]
     assert not c["passed"] and c["severity"] == "error"
-    assert "increase the centre distance by" in c["message"] and "face width by" in c["message"]
+    assert "increase the centre distance by" in c["message"]
     assert c["value"] > c["limit"]
+
+
+def test_advised_face_width_passes_when_rerun():
+    """The face-width advice is found by re-rating (K_Hβ grows with b_w): the advised width
+    passes the check, and 1 % less does not."""
+    import re
+
+    doc = run_data(spec(load__torque1=600.0, load__peak_torque1=1200.0)).document()
+    c = {c["code"]: c for c in doc["checks"]}["CONTACT_FATIGUE"]
+    b = float(re.search(r"face width to at least ([0-9.]+) mm", c["message"]).group(1))
+    ok = run_data(spec(load__torque1=600.0, load__peak_torque1=1200.0,
+                       gear__face_width=b + 0.05)).document()
+    assert {c["code"]: c for c in ok["checks"]}["CONTACT_FATIGUE"]["passed"]
+    short = run_data(spec(load__torque1=600.0, load__peak_torque1=1200.0,
+                          gear__face_width=0.99 * b)).document()
+    assert not {c["code"]: c for c in short["checks"]}["CONTACT_FATIGUE"]["passed"]
+
+
+def test_torque_in_newton_millimetres_is_flagged():
+    doc = run_data(spec(load__torque1=520000.0, load__peak_torque1=None)).document()
+    c = {c["code"]: c for c in doc["checks"]}["UNITS_TORQUE"]
+    assert not c["passed"] and c["severity"] == "warning"
+    assert "check the units (torque1 is in N·m" in c["message"]
+    contact = {c["code"]: c for c in doc["checks"]}["CONTACT_FATIGUE"]["message"]
+    assert "more than 300 % (far from passing: check the inputs and their units)" in contact
 
 
 def test_static_overload_fails():
@@ -277,3 +302,11 @@ def test_informative_contact_models():
 def test_json_has_no_nan():
     text = json.dumps(run_data(spec()).document(), allow_nan=False)
     assert "NaN" not in text
+
+
+def test_helix_angle_in_radians_is_flagged():
+    doc = run_data(spec(gear__helix_angle=0.21)).document()
+    c = {c["code"]: c for c in doc["checks"]}["UNITS_ANGLE"]
+    assert not c["passed"] and c["severity"] == "warning"
+    assert c["message"] == ("helix_angle = 0.21° is below 1°: check the units (degrees; 0.21 rad "
+                            "would be 12.03°)")

@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 
 from geardesign.core.errors import InputError, Problem
-from geardesign.core.result import Result, Section
+from geardesign.core.result import Result, Section, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.spur import sources as S
 from geardesign.spur.checks import geometry_checks
@@ -308,8 +308,31 @@ def add_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inputs) -
     for row in rating.rows:
         res.section(row.section, _SECTIONS[row.section]).add(
             row.key, row.value, row.unit, row.symbol, row.name, row.source)
-    res.checks.extend(strength_checks(rating.v, mats, geom.inp.beta > 0, setting.grade,
-                                      duty.T_peak is not None))
+    v = rating.v
+    b_contact = b_bending = None
+    contact_fails = v["sigma_H"] > v["sigma_HP"] * (1 + 1e-12)
+    bending_fails = any(v[f"S_F{k}"] < v[f"S_F{k}_min"] * (1 - 1e-12) for k in (1, 2))
+    if (contact_fails or bending_fails) and not getattr(geom, "internal", False):
+        from dataclasses import replace
+
+        from geardesign.spur.checks import passing_face_width
+        from geardesign.spur.geometry import pair_geometry
+
+        rate = method(spec.data["options"]["method"]).rate
+
+        def rerate(b: float) -> dict:
+            return rate(pair_geometry(replace(geom.inp, b_w=b)), mats, duty, setting).v
+
+        if contact_fails:
+            b_contact = passing_face_width(
+                rerate, geom.inp.b_w, lambda x: x["sigma_H"] <= x["sigma_HP"] * (1 + 1e-12))
+        if bending_fails:
+            b_bending = passing_face_width(
+                rerate, geom.inp.b_w,
+                lambda x: all(x[f"S_F{k}"] >= x[f"S_F{k}_min"] * (1 - 1e-12) for k in (1, 2)))
+    res.checks.extend(strength_checks(v, mats, geom.inp.beta > 0, setting.grade,
+                                      duty.T_peak is not None, geom.inp.b_w, b_contact,
+                                      b_bending))
 
 
 def compute(spec: ValidatedSpec) -> Result:
@@ -356,6 +379,12 @@ def compute(spec: ValidatedSpec) -> Result:
         k.add("v_s_E", v.v_s_E, "m/s", "v_s(E)", "sliding velocity at E (recess)", S.SLIDING)
 
     res.checks.extend(geometry_checks(geom, sl, gear["allow_undercut"]))
+    beta = gear["helix_angle"]
+    if 0.0 < beta < 1.0:
+        res.checks.append(check(
+            "UNITS_ANGLE", False, "warning",
+            f"helix_angle = {beta:g}° is below 1°: check the units (degrees; {beta:g} rad would "
+            f"be {math.degrees(beta):.2f}°)", "", beta, 1.0, "plausibility"))
     if strength is not None:
         add_strength(res, geom, spec, strength)
     return res

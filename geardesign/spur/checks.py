@@ -180,7 +180,55 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
 HB_DIFFERENCE_MIN = 20.0   # HB, pinion harder than the wheel for running-in (soft pairs)
 
 
-def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool) -> list[Check]:
+ADVICE_FACE_MAX = 20.0
+"""Face widths up to this multiple of the given one are tried when the advice is sought."""
+
+
+def passing_face_width(rerate, b_w: float, passes) -> float | None:
+    """The least face width [mm] at which ``passes(rerate(b))`` holds, found by re-running the
+    rating (K_Hβ, K_Fβ and ε_β grow with b_w, so a scaling law understates it): doubling up
+    to ``ADVICE_FACE_MAX``·b_w, then 40 bisections; ``None`` if no width in that range
+    passes."""
+    lo, hi = b_w, b_w
+    while True:
+        hi = min(2.0 * hi, ADVICE_FACE_MAX * b_w)
+        try:
+            ok = passes(rerate(hi))
+        except Exception:   # a width beyond what the geometry allows: stop looking
+            return None
+        if ok:
+            break
+        if hi >= ADVICE_FACE_MAX * b_w:
+            return None
+        lo = hi
+    for _ in range(40):
+        mid = 0.5 * (lo + hi)
+        if passes(rerate(mid)):
+            hi = mid
+        else:
+            lo = mid
+    return hi
+
+
+def _face_advice(b_w: float | None, b_pass: float | None) -> str:
+    if b_w is None:
+        return ""
+    if b_pass is None:
+        return (f"; no face width up to {ADVICE_FACE_MAX:g}× the present {b_w:g} mm passes "
+                f"(K_Hβ grows with it)")
+    return f"; or the face width to at least {b_pass:.1f} mm (+{100 * (b_pass / b_w - 1):.0f} %, " \
+           f"found by re-rating)"
+
+
+def _pct(x: float) -> str:
+    """An advised increase in per cent; beyond +300 % the design is far from passing."""
+    return f"{100 * x:.0f} %" if x <= 3.0 else "more than 300 % (far from passing: check the " \
+                                                 "inputs and their units)"
+
+
+def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool,
+                    b_w: float | None = None, b_contact: float | None = None,
+                    b_bending: float | None = None) -> list[Check]:
     """Checks of a GOST 21354-87 rating ``v`` (the :class:`Rating` values by key).
 
     Contact: σ_H <= σ_HP of the pair; bending: S_F >= S_Fmin per gear (σ_F <= σ_FP); peak
@@ -197,8 +245,8 @@ def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool) 
         "CONTACT_FATIGUE", sH <= sHP * (1 + 1e-12), "error",
         f"contact stress σ_H = {sH:.0f} MPa exceeds σ_HP = {sHP:.0f} MPa by {100 * (r - 1):.1f} % "
         f"(S_H{gov} = {v[f'S_H{gov}']:.2f} < {v[f'S_H{gov}_min']:.2f}, {who}): increase the "
-        f"centre distance by {100 * (r ** (2 / 3) - 1):.1f} % or the face width by "
-        f"{100 * (r * r - 1):.0f} %, or use a harder {who} material",
+        f"centre distance by {_pct(r ** (2 / 3) - 1)}, or use a harder {who} material"
+        + _face_advice(b_w, b_contact),
         f"σ_H = {sH:.0f} MPa <= σ_HP = {sHP:.0f} MPa ({100 * (1 - r):.1f} % reserve; S_H1 = "
         f"{v['S_H1']:.2f}, S_H2 = {v['S_H2']:.2f})", sH, sHP, src))
     for k in (1, 2):
@@ -208,9 +256,9 @@ def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool) 
         out.append(check(
             f"BENDING_FATIGUE_{('PINION', 'WHEEL')[k - 1]}", S >= Smin * (1 - 1e-12), "error",
             f"{who} root stress σ_F{k} = {sF:.0f} MPa exceeds σ_FP{k} = {sFP:.0f} MPa (S_F{k} = "
-            f"{S:.2f} < {Smin:.2f}): increase the module by {100 * (sF / sFP - 1):.0f} % "
-            f"(same centre distance, fewer teeth) or the face width as much, or use a material "
-            f"with a higher σ_Flim",
+            f"{S:.2f} < {Smin:.2f}): increase the module by {_pct(sF / sFP - 1)} "
+            f"(same centre distance, fewer teeth), or use a material with a higher σ_Flim"
+            + _face_advice(b_w, b_bending),
             f"{who}: σ_F{k} = {sF:.0f} MPa <= σ_FP{k} = {sFP:.0f} MPa (S_F{k} = {S:.2f} >= "
             f"{Smin:.2f})", S, Smin, src))
     if peak_given:
@@ -250,6 +298,12 @@ def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool) 
             f"the pinion {HB_DIFFERENCE_MIN:.0f}…50 HB harder; raise the pinion hardness",
             f"pinion {d:.0f} HB harder than the wheel (>= {HB_DIFFERENCE_MIN:.0f} HB for running-in)",
             d, HB_DIFFERENCE_MIN, "design practice"))
+    limit = max(m.sigma_Hlim for m in mats)
+    out.append(check(
+        "UNITS_TORQUE", sH <= 3.0 * limit, "warning",
+        f"σ_H = {sH:.0f} MPa is more than three times the strongest material's σ_Hlim = "
+        f"{limit:.0f} MPa: check the units (torque1 is in N·m, power in kW, lengths in mm)",
+        "stresses within the range of gear materials", sH, 3.0 * limit, "plausibility"))
     from geardesign.spur.strength.tables import V_MAX
 
     vmax = V_MAX["helical" if helical else "spur"][grade]
