@@ -187,3 +187,14 @@ def test_planetary_stage():
     assert s1["efficiency"] == pytest.approx(plan["results"]["efficiency"]["eta"])
     assert plan["inputs"]["operation"]["torque"] == pytest.approx(s1["T_in"])
     assert s2["T_in"] == pytest.approx(s1["T_out"])
+
+
+def test_each_stage_report_says_which_loads_the_drive_set():
+    from geardesign.core.registry import run
+
+    doc = run(SPECS / "drive_worm_spur.toml").document()
+    notes = [c for part in doc["results"]["stage_reports"] for c in part["checks"]
+             if c["code"] == "SET_BY_DRIVE"]
+    assert len(notes) == 2
+    assert notes[0]["message"].startswith("the drive sets load.torque2 = ")
+    assert "(the stage's own load.torque2, load.speed1 not used)" in notes[0]["message"]

@@ -76,13 +76,38 @@ def _named(exc: InputError, where: str) -> InputError:
                        for p in exc.problems])
 
 
-def _run(data: dict, where: str) -> Result:
-    """Validate and compute a stage spec; problems name the stage."""
+_SET_BY_DRIVE = {
+    "spur": ("load", ("torque1", "speed1")), "novikov": ("load", ("torque2", "speed1")),
+    "worm": ("load", ("torque2", "speed1")), "planetary": ("operation", ("torque", "speed")),
+}
+"""The loads a drive always sets on a stage (its own values are not used)."""
+
+
+def _run(data: dict, where: str, original: dict | None = None) -> Result:
+    """Validate and compute a stage spec; problems name the stage.  The stage's report says
+    which of its loads the drive set (``original`` is the stage spec as written)."""
     try:
         calc, spec = load_data(data, where)
-        return calc.compute(spec)
+        res = calc.compute(spec)
     except InputError as exc:
         raise _named(exc, where) from None
+    kind = data.get("kind")
+    if kind in _SET_BY_DRIVE:
+        from geardesign.core.result import check
+
+        table, keys = _SET_BY_DRIVE[kind]
+        own = (original or {}).get(table)
+        own = own if isinstance(own, dict) else {}
+        set_ = ", ".join(f"{table}.{k} = {data[table][k]:.6g}" for k in keys
+                         if data[table].get(k) is not None)
+        replaced = [f"{table}.{k}" for k in keys if own.get(k) is not None]
+        res.checks.append(check(
+            "SET_BY_DRIVE", False, "info",
+            f"the drive sets {set_} from the motor and the stages before"
+            + (f" (the stage's own {', '.join(replaced)} not used)" if replaced else "")
+            + "; life, application factor and peak torque come from the drive where the "
+              "stage gives none", "", None, None, "drive"))
+    return res
 
 
 def _validate(data: dict, where: str) -> None:
@@ -142,7 +167,7 @@ def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
     if d.get("material") is None:
         raise InputError(Problem(f"{where}: material", "missing table [material.pinion] and "
                                  "[material.wheel]: a drive rates every stage for strength"))
-    res = _run(d, where)
+    res = _run(d, where, data)
     v = _values(res.document())
     u = v["u"]
     e, src = (eta, "spec") if eta is not None else (ETA_CYLINDRICAL, "assumed (handbook)")
@@ -163,7 +188,7 @@ def run_novikov(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | N
     load["torque2"], load["speed1"] = T_in * u * e, n_in
     _put(load, "life", duty.L_h)
     _put(load, "application_factor", duty.K_A)
-    res = _run(d, where)
+    res = _run(d, where, data)
     v = _values(res.document())
     margins = {"S_H": v["S_H"] / v["S_H_min"], "S_F1": v["S_F1"] / v["S_F_min"],
                "S_F2": v["S_F2"] / v["S_F_min"]}
@@ -188,7 +213,7 @@ def run_worm(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
     res = None
     for _ in range(WORM_ITERATIONS):
         load["torque2"] = T2
-        res = _run(d, where)
+        res = _run(d, where, data)
         v = _values(res.document())
         if abs(v["T1"] - T_in) <= 1e-9 * T_in:
             break
@@ -221,7 +246,7 @@ def run_planetary(data: dict, T_in: float, n_in: float, duty: Duty, eta: float |
         _put(st, "regime", duty.regime)
         if duty.peak_ratio is not None:
             _put(st, "peak_torque", T_in * duty.peak_ratio)
-    res = _run(d, where)
+    res = _run(d, where, data)
     doc = res.document()
     r = doc["results"]
     ops = doc["inputs"]["operation"]

@@ -164,15 +164,35 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
         n, idx, suf = _NAMES[i], i + 1, _SUFFIX[i]
         lo = max(gear.d_p, gear.d_l)
         ok = span_measurable(gear.W, gear.d_W, lo, gear.d_a, g.beta_b, p.b_w)
+        on_flank = span_measurable(gear.W, gear.d_W, lo, gear.d_a, 0.0, p.b_w)
+        need = gear.W * math.sin(g.beta_b)
+        if on_flank:   # the diameter is right: the face is too narrow for the anvils
+            why = (f"the face width b_w = {p.b_w:g} mm is not more than W{idx}·sin β_b = "
+                   f"{need:.2f} mm, so the anvils cannot both bear on the same teeth")
+        else:
+            why = (f"the calliper would touch at d = {gear.d_W:.3f} mm, outside the active "
+                   f"flank {lo:.3f}…{gear.d_a:.3f} mm")
         out.append(check(
             f"SPAN_{suf}", ok, "warning",
-            f"the span W{idx} over k{idx} = {gear.k} teeth cannot be measured as computed "
-            f"(calliper contact diameter {gear.d_W:.3f} mm outside {lo:.3f}…{gear.d_a:.3f} mm"
-            + (f", or face width below W·sin β_b = {gear.W * math.sin(g.beta_b):.2f} mm"
-               if helical else "") + "); measure over balls or the chordal thickness instead",
+            f"the span W{idx} over k{idx} = {gear.k} teeth cannot be measured: {why}; measure "
+            f"over balls or the chordal thickness instead",
             f"span W{idx} over k{idx} = {gear.k} teeth measurable (contact on d = "
             f"{gear.d_W:.3f} mm)", gear.d_W, None, S.G16532_SPAN))
-    return out
+    return _no_contact_ratio_without_mesh(out)
+
+
+def _no_contact_ratio_without_mesh(out: list[Check]) -> list[Check]:
+    """A pair whose teeth interfere cannot mesh as computed: its contact ratio is not shown
+    as fulfilled (the ratio of the theoretical line of action means nothing then)."""
+    blocking = [c for c in out if c.code.startswith("INTERFERENCE_") and not c.passed]
+    if not blocking:
+        return out
+    names = " and ".join(c.code.split("_", 1)[1].lower() for c in blocking)
+    return [check("CONTACT_RATIO", False, "error",
+                  f"the contact ratio cannot be relied on: the teeth cannot mesh (interference "
+                  f"at the {names} root, see {blocking[0].code}); correct the interference "
+                  f"first", "", c.value, c.limit, c.source)
+            if c.code == "CONTACT_RATIO" else c for c in out]
 
 
 # ----------------------------------------------------------------------------- strength
