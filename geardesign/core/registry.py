@@ -76,10 +76,14 @@ class Calculator:
 
 def _symbol(key: str, symbol: str) -> str:
     """The report symbol of an input: its own, prefixed by the item of an array of tables
-    it belongs to (``stage[1].name``)."""
+    it belongs to (``stage[1].name``) or by the sub-table that holds it (``pinion.HB``)."""
     head, _, last = key.rpartition(".")
     symbol = symbol or last
-    return f"{head}.{symbol}" if "[" in head else symbol
+    if "[" in head:
+        return f"{head}.{symbol}"
+    parent = head.rpartition(".")[2]
+    # a key of a sub-table that repeats (material.pinion / material.wheel): name the member
+    return f"{parent}.{symbol}" if head.count(".") >= 1 else symbol
 
 
 def known_kinds() -> list[str]:

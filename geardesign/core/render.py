@@ -114,15 +114,14 @@ def to_markdown(results: list[Result], level: int = 1) -> str:
         lines.append("")
         lines.append("Methods: " + ", ".join(r.methods))
         lines.append("")
-        lines.append(f"{h}# Inputs")
-        lines.append("")
-        lines += _md_rows(r.input_rows, with_source=False)
         for t in r.tables:
             lines += ["", f"{h}# {t.title}", ""]
             lines += _md_table(t)
         for sec in r.sections:
             lines += ["", f"{h}# {sec.title}", ""]
             lines += _md_rows(sec.rows, with_source=True)
+        lines += ["", f"{h}# Inputs", ""]
+        lines += _md_rows(r.input_rows, with_source=False)
         lines += ["", f"{h}# Checks", "", "| status | code | message |", "|---|---|---|"]
         for c in r.checks:
             mark, word, _ = _status(c)
@@ -181,14 +180,14 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
         console.print(Text(_header(r), style="bold"))
         console.print(Text("Methods: " + ", ".join(r.methods)))
         console.print()
-        console.print(rows_table("Inputs  (* assumed default)", r.input_rows, with_source=False))
-        console.print()
         for t in r.tables:
             console.print(data_table(t))
             console.print()
         for sec in r.sections:
             console.print(rows_table(sec.title, sec.rows, with_source=True))
             console.print()
+        console.print(rows_table("Inputs  (* assumed default)", r.input_rows, with_source=False))
+        console.print()
         t = Table(title="Checks", title_justify="left", title_style="bold", box=box.SIMPLE_HEAD,
                   show_edge=False, pad_edge=False)
         t.add_column("", no_wrap=True)
