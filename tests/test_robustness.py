@@ -296,3 +296,24 @@ def test_output_to_a_device_writes_it_directly(tmp_path):
     assert code in (0, 1), err
     assert stat.S_ISCHR(os.stat("/dev/null").st_mode)
     assert not list(tmp_path.glob(".*.tmp"))
+
+
+# ------------------------------------------------------------------ quantities with units
+
+
+def test_quantities_with_units_are_converted_at_the_input_boundary(tmp_path):
+    pytest.importorskip("pint")
+    code, out, _ = _run(tmp_path, _spec("spur_reducer_through_hardened", **{
+        "module = 4.0": 'module = "4 mm"', "torque1 = 520.0": 'torque1 = "520 kN*mm"'}))
+    assert code in (0, 1)
+    doc = json.loads(out)
+    assert doc["inputs"]["gear"]["module"] == 4.0
+    assert abs(doc["inputs"]["load"]["torque1"] - 520.0) < 1e-9
+
+
+def test_a_quantity_of_the_wrong_dimension_is_refused(tmp_path):
+    pytest.importorskip("pint")
+    lines = run_bad(tmp_path, _spec("spur_reducer_through_hardened", **{
+        "module = 4.0": 'module = "4 N"'}))
+    assert lines == ['s.toml: gear.module = "4 N": must be a number >= 0.05 and <= 100 (mm), '
+                     'or a quantity convertible to mm ("4 N" has another dimension)']

@@ -187,6 +187,12 @@ class Field:
             if isinstance(value, bool) or not isinstance(value, int):
                 return None, bad
         else:  # number
+            if isinstance(value, str) and self.unit not in (None, "-"):
+                from geardesign.core.units import convert   # "4 mm", "520 kN*mm" (pint)
+
+                value, why = convert(value, self.unit)
+                if why:
+                    return None, f"{bad}, or {why}"
             if isinstance(value, bool) or not isinstance(value, (int, float)):
                 return None, bad
             if not math.isfinite(value):
