@@ -231,3 +231,15 @@ def test_every_template_runs_and_matches_its_schema(kind, tmp_path):
 
     code, schema_text, _ = cli("schema", kind)
     jsonschema.validate(tomllib.loads(text), json.loads(schema_text))
+
+
+def test_undercut_advice_says_when_no_shift_helps(tmp_path):
+    """z1 = 5: the shift that removes the undercut makes the tooth pointed; the advice names
+    the tooth number instead of a shift that another check would then reject."""
+    path = spec(tmp_path, "z1 = 5\nz2 = 40\n")
+    doc = json.loads(cli("run", path, "--format", "json")[1])
+    c = {c["code"]: c for c in doc["checks"]}["UNDERCUT_PINION"]
+    assert c["message"] == (
+        "pinion undercut: x1 = 0.0000 < x_min1 = 0.7075; no shift removes it and keeps a tip "
+        "of 0.25·m_n (x1 = 0.708 makes the tooth pointed): use z1 >= 18, or set "
+        "gear.allow_undercut = true if it is deliberate")

@@ -52,6 +52,18 @@ def interference_check(code: str, gear, own: str, mate: str, index: str, advice_
         f"ρ_l{index} = {gear.rho_l:.3f} mm)", gear.rho_p, gear.rho_l, S.G16532)
 
 
+def _tip_at_shift(g: PairGeometry, i: int, x: float) -> float:
+    """Normal tip thickness [mm] gear ``i`` would have with the shift ``x`` (nominal tip,
+    d_a = d + 2(h_a* + x)m_n), for advice on the shift."""
+    from geardesign.spur.geometry import tip_thickness
+
+    p, gear = g.inp, g.gears[i]
+    d_a = gear.d + 2.0 * (p.rack.h_a + x) * p.m_n
+    if d_a <= gear.d * math.cos(g.alpha_t):
+        return 0.0
+    return tip_thickness(gear.z, x, gear.d, d_a, g.alpha_t, p.rack.alpha_n, p.beta)
+
+
 def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = False) -> list[Check]:
     p = g.inp
     m = p.m_n
@@ -87,11 +99,19 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
         z_needed = math.ceil(2.0 * math.cos(p.beta) * (p.rack.h_straight - gear.x)
                              / math.sin(g.alpha_t) ** 2 - 1e-9)
         ok = gear.x >= gear.x_min - 1e-9
+        x_need = math.ceil(gear.x_min * 1000) / 1000
+        s_need = _tip_at_shift(g, i, x_need)
+        if s_need < TIP_THICKNESS_MIN * m:   # the shift that removes the undercut points the tip
+            left = (f"leaves s_an{idx} = {s_need / m:.2f}·m_n" if s_need > 0.0
+                    else "makes the tooth pointed")
+            shift_advice = (f"no shift removes it and keeps a tip of {TIP_THICKNESS_MIN}·m_n "
+                            f"(x{idx} = {x_need:.3f} {left}): use z{idx} >= {z_needed}")
+        else:
+            shift_advice = f"increase x{idx} to at least {x_need:.3f} (or use z{idx} >= {z_needed})"
         out.append(check(
             f"UNDERCUT_{suf}", ok, "warning" if allow_undercut else "error",
-            f"{n} undercut: x{idx} = {gear.x:.4f} < x_min{idx} = {gear.x_min:.4f}; increase "
-            f"x{idx} to at least {math.ceil(gear.x_min * 1000) / 1000:.3f} (or use "
-            f"z{idx} >= {z_needed}), or set gear.allow_undercut = true if it is deliberate",
+            f"{n} undercut: x{idx} = {gear.x:.4f} < x_min{idx} = {gear.x_min:.4f}; "
+            f"{shift_advice}, or set gear.allow_undercut = true if it is deliberate",
             f"{n} not undercut (x{idx} = {gear.x:.4f} >= x_min{idx} = {gear.x_min:.4f})",
             gear.x, gear.x_min, S.G16532))
         # -- tip thickness

@@ -282,6 +282,24 @@ def choose_span_teeth(z: int, x: float, m_n: float, alpha_n: float, alpha_t: flo
 # ----------------------------------------------------------------------------- the pair
 
 
+def tip_thickness(z: int, x: float, d: float, d_a: float, alpha_t: float, alpha_n: float,
+                  beta: float) -> float:
+    """Normal tooth thickness at the tip [mm] (arc), GOST 16532-70 table 4:
+
+    .. math:: s_{an} = d_a\\left[\\frac{π/2 + 2x\\tan α}{z} + \\mathrm{inv}\\,α_t
+              - \\mathrm{inv}\\,α_a\\right]\\cos β_a, \\qquad \\tan β_a = \\tan β\\,d_a/d
+
+    z teeth, x normal shift coefficient, d and d_a reference and tip diameters [mm],
+    α_t, α_n transverse and normal pressure angles, β helix angle [rad]; a value <= 0 is a
+    pointed tooth.  [GOST16532]
+    """
+    d_b = d * math.cos(alpha_t)
+    alpha_a = math.acos(min(d_b / d_a, 1.0))
+    beta_a = math.atan(math.tan(beta) * d_a / d)
+    return d_a * ((0.5 * math.pi + 2.0 * x * math.tan(alpha_n)) / z + inv(alpha_t)
+                  - inv(alpha_a)) * math.cos(beta_a)
+
+
 def pair_geometry(p: PairInput) -> PairGeometry:
     """Complete geometry of an external pair from module, tooth numbers and shifts.
 
@@ -339,9 +357,7 @@ def pair_geometry(p: PairInput) -> PairGeometry:
         rho_l = 0.5 * d * sin_at - (hl - x) * p.m_n / sin_at
         x_min = undercut_shift_limit(z, alpha_t, p.beta, rack)
         s_n = p.m_n * (0.5 * math.pi + 2.0 * x * math.tan(alpha_n))
-        beta_a = math.atan(math.tan(p.beta) * d_a / d)
-        s_an = d_a * ((0.5 * math.pi + 2.0 * x * math.tan(alpha_n)) / z + inv(alpha_t) - inv(alpha_a)) \
-            * math.cos(beta_a)
+        s_an = tip_thickness(z, x, d, d_a, alpha_t, alpha_n, p.beta)
         partial.append(dict(z=z, x=x, d=d, d_b=d_b, d_w=d_w[i], d_a=d_a, d_f=d_f, h=0.5 * (d_a - d_f),
                             alpha_a=alpha_a, rho_a=rho_a, rho_l=rho_l, x_min=x_min, s_n=s_n,
                             s_an=s_an))
