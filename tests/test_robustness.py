@@ -317,3 +317,13 @@ def test_a_quantity_of_the_wrong_dimension_is_refused(tmp_path):
         "module = 4.0": 'module = "4 N"'}))
     assert lines == ['s.toml: gear.module = "4 N": must be a number >= 0.05 and <= 100 (mm), '
                      'or a quantity convertible to mm ("4 N" has another dimension)']
+
+
+def test_pzdn_integration_has_its_own_bound(tmp_path):
+    import time
+
+    t0 = time.perf_counter()
+    lines = run_bad(tmp_path, _spec("pzdn_ko2_startup_comparison", **{
+        'method = "both"': 'method = "both"\nt_end = 200.0'}))
+    assert time.perf_counter() - t0 < 5.0
+    assert len(lines) == 1 and "resolved in bounded time by the integration" in lines[0]
