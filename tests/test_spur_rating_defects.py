@@ -21,6 +21,7 @@ from hypothesis import strategies as st
 
 from geardesign.core.errors import InputError
 from geardesign.core.registry import run_data
+from tests.conftest import flat
 from tests.helpers_cli import run_bad, run_failing
 
 
@@ -29,14 +30,6 @@ def _doc(gear: dict, load: dict, mats: dict | None = None) -> dict:
     if mats:
         spec["material"] = mats
     return run_data(spec).document()
-
-
-def _flat(doc: dict) -> dict:
-    out = {}
-    for sec in doc["results"].values():
-        if isinstance(sec, dict):
-            out.update(sec)
-    return out
 
 
 SOFT = {"pinion": {"grade": "40Kh", "treatment": "improved", "hardness_HB": 280.0},
@@ -75,7 +68,7 @@ def _spec(p: dict, K_A: float = 1.0, peak: float | None = None):
 def _rate(p: dict, **kw) -> dict | None:
     gear, load, mats = _spec(p, **kw)
     try:
-        return _flat(_doc(gear, load, mats))
+        return flat(_doc(gear, load, mats))
     except InputError:
         return None
 
@@ -145,7 +138,7 @@ def test_wide_helical_pair_with_k_h_alpha_cap_below_one_fails_contact(tmp_path):
     n1 2100 min⁻¹, T1 20 000 N·m.  ε_β > 0.95ε_α² puts the cap of K_Hα at 0.796; the
     rating used it (σ_H 1068 MPa, passed).  With K_Hα = 1, σ_H ≈ 1198 MPa > σ_HP 1173 MPa."""
     doc = run_failing(tmp_path, WIDE_HELICAL)
-    v = _flat(doc)
+    v = flat(doc)
     assert v["K_Halpha_max"] < 1.0
     assert v["K_Halpha"] == 1.0
     assert math.isclose(v["sigma_H"], 1198.0, rel_tol=0.01)
@@ -158,7 +151,7 @@ def test_wide_helical_pair_with_k_h_alpha_cap_below_one_fails_contact(tmp_path):
 def test_k_f_alpha_times_y_eps_of_the_issue_pair_is_at_most_one():
     """Issue example: z 27/108, m 3, β 12°, grade 9 printed K_Fα 2.74 (σ_F 60 % high)."""
     d1 = 3.0 * 27 / math.cos(math.radians(12.0))
-    v = _flat(_doc({"module": 3.0, "z1": 27, "z2": 108, "helix_angle": 12.0,
+    v = flat(_doc({"module": 3.0, "z1": 27, "z2": 108, "helix_angle": 12.0,
                     "face_width": round(0.8 * d1), "accuracy_grade": 9,
                     "bearing_scheme": 5},
                    {"speed1": 1000.0, "torque1": 300.0, "life_hours": 10000.0}, SOFT))
@@ -175,7 +168,7 @@ def test_every_factor_can_be_given_and_is_marked(tmp_path):
              "N_FG": 3e6, "Z_Nmax1": 2.0, "S_FSt": 2.0, "Y_A1": 0.9}
     doc = run_data({"kind": "spur", "gear": base, "load": load, "factors": given,
                     "material": SOFT}).document()
-    v = _flat(doc)
+    v = flat(doc)
     for key, value in given.items():
         assert v[key] == value, key
 
