@@ -310,3 +310,32 @@ def test_helix_angle_in_radians_is_flagged():
     assert not c["passed"] and c["severity"] == "warning"
     assert c["message"] == ("helix_angle = 0.21° is below 1°: check the units (degrees; 0.21 rad "
                             "would be 12.03°)")
+
+
+def test_a_module_below_a_tenth_of_a_millimetre_is_flagged(tmp_path):
+    from tests.helpers_cli import cli, write_spec
+
+    path = write_spec(tmp_path, 'kind = "spur"\n[gear]\nmodule = 0.06\nz1 = 20\nz2 = 40\n'
+                                'face_width = 0.6\n')
+    code, out, err = cli("run", path, "--format", "json")
+    import json
+
+    c = {c["code"]: c for c in json.loads(out)["checks"]}["UNITS_MODULE"]
+    assert c["message"] == ("module = 0.06 mm is below 0.1 mm (instrument gears start there): "
+                            "check the units (module is in mm)")
+    path = write_spec(tmp_path, 'kind = "spur"\n[gear]\nmodule = 0.004\nz1 = 20\nz2 = 40\n'
+                                'face_width = 40.0\n')
+    code, out, err = cli("run", path, "--format", "json")
+    assert code == 2 and err.strip().endswith(
+        "gear.module = 0.004: must be a number >= 0.05 and <= 100 (mm)")
+
+
+def test_span_check_names_the_narrow_face_as_the_cause():
+    from geardesign.core.registry import run_data
+
+    doc = run_data({"kind": "spur", "gear": {"module": 3.0, "z1": 20, "z2": 80,
+                                              "helix_angle": 30.0, "face_width": 12.0}}).document()
+    c = {c["code"]: c for c in doc["checks"]}["SPAN_WHEEL"]
+    assert not c["passed"]
+    assert "cannot be measured: the face width b_w = 12 mm is not more than W2·sin β_b" in \
+        c["message"]

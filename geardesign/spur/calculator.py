@@ -379,12 +379,18 @@ def compute(spec: ValidatedSpec) -> Result:
         k.add("v_s_E", v.v_s_E, "m/s", "v_s(E)", "sliding velocity at E (recess)", S.SLIDING)
 
     res.checks.extend(geometry_checks(geom, sl, gear["allow_undercut"]))
-    beta = gear["helix_angle"]
+    m_n = geom.inp.m_n
+    if m_n < 0.1:
+        res.checks.append(check(
+            "UNITS_MODULE", False, "warning",
+            f"module = {m_n:g} mm is below 0.1 mm (instrument gears start there): "
+            f"check the units (module is in mm)", "", m_n, 0.1, "plausibility"))
+    beta = math.degrees(geom.inp.beta)
     if 0.0 < beta < 1.0:
         res.checks.append(check(
             "UNITS_ANGLE", False, "warning",
-            f"helix_angle = {beta:g}° is below 1°: check the units (degrees; {beta:g} rad would "
-            f"be {math.degrees(beta):.2f}°)", "", beta, 1.0, "plausibility"))
+            f"helix_angle = {beta:.6g}° is below 1°: check the units (degrees; {beta:.6g} rad "
+            f"would be {math.degrees(beta):.2f}°)", "", beta, 1.0, "plausibility"))
     if strength is not None:
         add_strength(res, geom, spec, strength)
     return res
