@@ -203,7 +203,8 @@ class Field:
             return None, bad + (f' (did you mean "{close[0]}"?)' if close else "")
         if self.type in ("number", "integer"):
             tiny = getattr(self, "_tiny", None)
-            if tiny is not None and value != 0 and abs(value) < tiny:
+            signed_or_zero = self.minimum is None or self.minimum < (tiny or 0.0)
+            if tiny is not None and signed_or_zero and value != 0 and abs(value) < tiny:
                 return None, f"{bad}, and 0 or at least {_num(tiny)} in magnitude"
             if self.minimum is not None and value < self.minimum:
                 return None, bad
