@@ -154,7 +154,7 @@ def test_overload_fails_with_advice():
     assert doc["verdict"] == "fail"
     c = {c["code"]: c for c in doc["checks"]}["CONTACT_FATIGUE"]
     assert not c["passed"] and c["severity"] == "error"
-    assert "increase the centre distance by" in c["message"]
+    assert "increase the centre distance to at least" in c["message"]
     assert c["value"] > c["limit"]
 
 
@@ -172,6 +172,25 @@ def test_advised_face_width_passes_when_rerun():
     short = run_data(spec(load__torque1=600.0, load__peak_torque1=1200.0,
                           gear__face_width=0.99 * b)).document()
     assert not {c["code"]: c for c in short["checks"]}["CONTACT_FATIGUE"]["passed"]
+
+
+def test_advised_centre_distance_passes_when_rerun():
+    """The centre-distance advice scales the pair (module and face width with a_w) and is
+    found by re-rating: the advised size passes, 1 % smaller does not."""
+    import re
+
+    doc = run_data(spec(load__torque1=600.0, load__peak_torque1=1200.0)).document()
+    msg = {c["code"]: c for c in doc["checks"]}["CONTACT_FATIGUE"]["message"]
+    a = float(re.search(r"centre distance to at least ([0-9.]+) mm", msg).group(1))
+    k = a / doc["results"]["geometry"]["a_w"]
+
+    def contact(kk):
+        d = run_data(spec(load__torque1=600.0, load__peak_torque1=1200.0,
+                          gear__module=4.0 * kk, gear__face_width=63.0 * kk)).document()
+        return {c["code"]: c for c in d["checks"]}["CONTACT_FATIGUE"]["passed"]
+
+    assert contact(k * 1.0005)
+    assert not contact(k * 0.99)
 
 
 def test_torque_in_newton_millimetres_is_flagged():

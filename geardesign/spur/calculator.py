@@ -309,30 +309,38 @@ def add_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inputs) -
         res.section(row.section, _SECTIONS[row.section]).add(
             row.key, row.value, row.unit, row.symbol, row.name, row.source)
     v = rating.v
-    b_contact = b_bending = None
+    b_contact = b_bending = k_contact = None
     contact_fails = v["sigma_H"] > v["sigma_HP"] * (1 + 1e-12)
     bending_fails = any(v[f"S_F{k}"] < v[f"S_F{k}_min"] * (1 - 1e-12) for k in (1, 2))
     if (contact_fails or bending_fails) and not getattr(geom, "internal", False):
         from dataclasses import replace
 
-        from geardesign.spur.checks import passing_face_width
+        from geardesign.spur.checks import least_passing
         from geardesign.spur.geometry import pair_geometry
 
         rate = method(spec.data["options"]["method"]).rate
+        inp = geom.inp
 
         def rerate(b: float) -> dict:
-            return rate(pair_geometry(replace(geom.inp, b_w=b)), mats, duty, setting).v
+            return rate(pair_geometry(replace(inp, b_w=b)), mats, duty, setting).v
+
+        def rescale(k: float) -> dict:   # the pair scaled: a_w, module, face width ∝ k
+            return rate(pair_geometry(replace(inp, m_n=k * inp.m_n, b_w=k * inp.b_w)), mats,
+                        duty, setting).v
+
+        def contact_ok(x: dict) -> bool:
+            return x["sigma_H"] <= x["sigma_HP"] * (1 + 1e-12)
 
         if contact_fails:
-            b_contact = passing_face_width(
-                rerate, geom.inp.b_w, lambda x: x["sigma_H"] <= x["sigma_HP"] * (1 + 1e-12))
+            b_contact = least_passing(rerate, inp.b_w, contact_ok)
+            k_contact = least_passing(rescale, 1.0, contact_ok, 4.0)
         if bending_fails:
-            b_bending = passing_face_width(
-                rerate, geom.inp.b_w,
+            b_bending = least_passing(
+                rerate, inp.b_w,
                 lambda x: all(x[f"S_F{k}"] >= x[f"S_F{k}_min"] * (1 - 1e-12) for k in (1, 2)))
     res.checks.extend(strength_checks(v, mats, geom.inp.beta > 0, setting.grade,
                                       duty.T_peak is not None, geom.inp.b_w, b_contact,
-                                      b_bending))
+                                      b_bending, geom.a_w, k_contact))
 
 
 def compute(spec: ValidatedSpec) -> Result:

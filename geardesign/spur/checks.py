@@ -224,21 +224,22 @@ ADVICE_FACE_MAX = 20.0
 """Face widths up to this multiple of the given one are tried when the advice is sought."""
 
 
-def passing_face_width(rerate, b_w: float, passes) -> float | None:
-    """The least face width [mm] at which ``passes(rerate(b))`` holds, found by re-running the
-    rating (K_Hβ, K_Fβ and ε_β grow with b_w, so a scaling law understates it): doubling up
-    to ``ADVICE_FACE_MAX``·b_w, then 40 bisections; ``None`` if no width in that range
-    passes."""
-    lo, hi = b_w, b_w
+def least_passing(rerate, start: float, passes, limit: float = ADVICE_FACE_MAX
+                  ) -> float | None:
+    """The least value ``v >= start`` at which ``passes(rerate(v))`` holds, found by
+    re-running the rating (the load factors change with the size, so a scaling law
+    understates it): doubling up to ``limit``·start, then 40 bisections; ``None`` if no
+    value in that range passes."""
+    lo, hi = start, start
     while True:
-        hi = min(2.0 * hi, ADVICE_FACE_MAX * b_w)
+        hi = min(2.0 * hi, limit * start)
         try:
             ok = passes(rerate(hi))
-        except Exception:   # a width beyond what the geometry allows: stop looking
+        except Exception:   # a size beyond what the geometry allows: stop looking
             return None
         if ok:
             break
-        if hi >= ADVICE_FACE_MAX * b_w:
+        if hi >= limit * start:
             return None
         lo = hi
     for _ in range(40):
@@ -260,6 +261,14 @@ def _face_advice(b_w: float | None, b_pass: float | None) -> str:
            f"found by re-rating)"
 
 
+def _scale_advice(a_w: float | None, k: float | None) -> str:
+    """The centre distance that passes, the pair scaled (module and face width with it)."""
+    if a_w is None or k is None:
+        return ""
+    return (f"increase the centre distance to at least {k * a_w:.1f} mm (+{100 * (k - 1):.0f} %, "
+            f"module and face width in proportion, found by re-rating)")
+
+
 def _pct(x: float) -> str:
     """An advised increase in per cent; beyond +300 % the design is far from passing."""
     return f"{100 * x:.0f} %" if x <= 3.0 else "more than 300 % (far from passing: check the " \
@@ -268,7 +277,8 @@ def _pct(x: float) -> str:
 
 def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool,
                     b_w: float | None = None, b_contact: float | None = None,
-                    b_bending: float | None = None) -> list[Check]:
+                    b_bending: float | None = None, a_w: float | None = None,
+                    k_contact: float | None = None) -> list[Check]:
     """Checks of a GOST 21354-87 rating ``v`` (the :class:`Rating` values by key).
 
     Contact: σ_H <= σ_HP of the pair; bending: S_F >= S_Fmin per gear (σ_F <= σ_FP); peak
@@ -284,9 +294,10 @@ def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool,
     out.append(check(
         "CONTACT_FATIGUE", sH <= sHP * (1 + 1e-12), "error",
         f"contact stress σ_H = {sH:.0f} MPa exceeds σ_HP = {sHP:.0f} MPa by {100 * (r - 1):.1f} % "
-        f"(S_H{gov} = {v[f'S_H{gov}']:.2f} < {v[f'S_H{gov}_min']:.2f}, {who}): increase the "
-        f"centre distance by {_pct(r ** (2 / 3) - 1)}, or use a harder {who} material"
-        + _face_advice(b_w, b_contact),
+        f"(S_H{gov} = {v[f'S_H{gov}']:.2f} < {v[f'S_H{gov}_min']:.2f}, {who}): "
+        + (_scale_advice(a_w, k_contact) if k_contact is not None else
+           f"increase the centre distance by {_pct(r ** (2 / 3) - 1)}")
+        + f", or use a harder {who} material" + _face_advice(b_w, b_contact),
         f"σ_H = {sH:.0f} MPa <= σ_HP = {sHP:.0f} MPa ({100 * (1 - r):.1f} % reserve; S_H1 = "
         f"{v['S_H1']:.2f}, S_H2 = {v['S_H2']:.2f})", sH, sHP, src))
     for k in (1, 2):
