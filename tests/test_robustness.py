@@ -219,8 +219,9 @@ def test_epicycle_rim_fatigue_coefficient_alpha(tmp_path):
 def test_planetary_centre_distance_no_pair_of_shifts_can_reach(tmp_path):
     lines = run_bad(tmp_path, _spec("planetary_2kh_reducer", **{
         "module = 3.0": "module = 2.0"}))
-    assert lines == ["s.toml: the inputs give a negative ε_α (results.sun_planet.eps_alpha), "
-                     "which the method cannot compute: check the input values and their units"]
+    assert lines == ["s.toml: train.center_distance = 68.0: the teeth cannot reach it: it needs "
+                     "shift.sun = 9.92, outside -1.5…3; the reference centre distance of the "
+                     "sun–planet mesh is 45 mm (check the module)"]
 
 
 def test_worm_at_the_highest_speed_gives_no_negative_allowable(tmp_path):

@@ -217,6 +217,14 @@ def resolve_shifts(d: dict, spec: ValidatedSpec, lay: PG.Layout, conv: dict
         mesh = _mesh_for_limit(lay, a_w)
         raise InputError.at(where, value, f"smaller than possible: the {mesh} mesh needs a_w > "
                             f"{_fmt(exc.limit)} mm, where its base circles touch") from None
+    far = [g for g in gears if not _x_range(g)[0] <= shifts[g] <= _x_range(g)[1]]
+    if far:
+        a_ref = PG.reference_center_distance(lay, PG.meshes_of(lay.train)[0])
+        lo, hi = _x_range(far[0])
+        raise InputError.at(where, value, f"the teeth cannot reach it: it needs shift.{far[0]} "
+                            f"= {shifts[far[0]]:.2f}, outside {lo:g}…{hi:g}; the "
+                            f"reference centre distance of the sun–planet mesh is "
+                            f"{_fmt(a_ref)} mm (check the module)")
     for g in gears:
         if given[g] is not None and abs(given[g] - shifts[g]) > X_AGREE:
             shown = _gost_to_user(shifts[g], conv.get(g, 1)) if g.startswith("ring") else \
@@ -225,6 +233,11 @@ def resolve_shifts(d: dict, spec: ValidatedSpec, lay: PG.Layout, conv: dict
                                 f"does not match {where} = {_fmt(value)}, which needs "
                                 f"shift.{g} = {shown:.4f}; leave it out and it follows")
     return shifts, how, a_w
+
+
+def _x_range(member: str) -> tuple[float, float]:
+    """Shift coefficients a centre distance may call for: the domain of the shift key."""
+    return (-3.0, 3.0) if member.startswith("ring") else (-1.5, 3.0)
 
 
 def _mesh_for_limit(lay: PG.Layout, a_w: float) -> str:
