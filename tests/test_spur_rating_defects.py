@@ -191,3 +191,23 @@ Y_eps = 1.5
         "s.toml: factors.K_Halpha = 0.8: must be a number >= 1 and <= 10",
         "s.toml: factors.Y_eps = 1.5: must be a number >= 0.1 and <= 1",
     ]
+
+
+def test_every_factor_key_has_its_domain_in_the_error_line(tmp_path):
+    from geardesign.spur.spec import _FACTOR_NAMES
+
+    base = """kind = "spur"
+[gear]
+module = 4.0
+z1 = 25
+z2 = 100
+face_width = 63.0
+[factors]
+"""
+    for key, _, lo, hi in _FACTOR_NAMES:
+        bad = hi * 2.0
+        lines = run_bad(tmp_path, base + f"{key} = {bad!r}\n")
+        lo_s = str(int(lo)) if float(lo).is_integer() and abs(lo) < 1e15 else repr(lo)
+        hi_s = str(int(hi)) if float(hi).is_integer() and abs(hi) < 1e15 else repr(hi)
+        assert lines == [f"s.toml: factors.{key} = {bad!r}: must be a number >= {lo_s} and "
+                         f"<= {hi_s}"], key

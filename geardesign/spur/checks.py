@@ -159,9 +159,9 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
     psi = p.b_w / g.g1.d_w
     out.append(check(
         "FACE_WIDTH_RATIO", psi <= PSI_BD_MAX, "warning",
-        f"ψ_bd = b_w/d_w1 = {psi:.2f} > {PSI_BD_MAX}: load will concentrate along the face; "
+        f"face width ratio b_w/d_w1 = {psi:.2f} > {PSI_BD_MAX}: load will concentrate along the face; "
         f"reduce the face width or increase the pinion diameter",
-        f"ψ_bd = b_w/d_w1 = {psi:.2f} <= {PSI_BD_MAX}", psi, PSI_BD_MAX, S.PRACTICE))
+        f"face width ratio b_w/d_w1 = {psi:.2f} <= {PSI_BD_MAX}", psi, PSI_BD_MAX, S.PRACTICE))
     out.append(check(
         "GEAR_RATIO", g.u <= RATIO_MAX, "warning",
         f"u = {g.u:.3f} > {RATIO_MAX:g}: large for one stage (bulky wheel); consider two stages",
