@@ -51,7 +51,7 @@ def inv_inverse(value: float, tol: float = 1e-12) -> float:
 
     References
     ----------
-    [GOST21354] §8.2 item 3 (Newton start value); the function
+    [GOST16532] table 1 (Newton start value); the function
     itself: GOST 16532-70, table 1, item "inv α_tw".
     """
     if not value > 0.0 or not math.isfinite(value):

@@ -64,7 +64,7 @@ def test_braked_carrier_zero_crossing():
 def test_3k_self_locking_criterion():
     """The reverse drive ring e → sun of a 3K train (ring b fixed) locks when the
     fixed-carrier efficiency of the chain e → b is at most u = z_b z_f/(z_g z_e)
-    (Kudryavtsev; ``planetary.md`` D.4): here η_b η_e = η² against u = 0.971429."""
+    ([Kudryavtsev]): here η_b η_e = η² against u = 0.971429."""
     t = Train("3K", 12, 46, 102, 3, None, 105)
     s = speeds(t, {"ring": 0.0, "sun": 1000.0})
     u = 102 / 105

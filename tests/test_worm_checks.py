@@ -24,7 +24,7 @@ NOTE = {
 
 
 def spec(**changes) -> dict:
-    """The hand calculation's pair with changes given as table__key=value (None removes the key)."""
+    """The synthetic pair with changes given as table__key=value (None removes the key)."""
     data = copy.deepcopy(NOTE)
     for path, value in changes.items():
         table, key = path.split("__")

@@ -20,8 +20,8 @@ from geardesign.core.spec import ValidatedSpec
 from geardesign.materials import spring_steel
 
 RPM = math.pi / 30.0
-MARGIN_WARN = 1.1        # T_lim,min >= 1.1·T ([Malashchenko2025])
-SPEED_SENSITIVITY = 0.10  # |T_lim(n)/T_lim(0) − 1| <= 10 % ([Malashchenko2025])
+MARGIN_WARN = 1.1        # T_lim,min >= 1.1·T (design practice)
+SPEED_SENSITIVITY = 0.10  # |T_lim(n)/T_lim(0) − 1| <= 10 % (design practice)
 INDEX_RANGE = (4.0, 12.0)  # usual spring index D/d (design practice)
 SPEED_POINTS = 41
 

@@ -46,7 +46,7 @@ def limit_torque(F_spring: float, F_c: float, z3: int, r0: float, alpha: float,
               \\qquad ρ = \\arctan f
 
     Without friction (f = f_g = 0) this is z3·r0·tan α2·(c·y0 − m·r0·ω²), the paper's form.
-    The friction form is [Malashchenko2025] (C.3 item 14), written after M. N. Ivanov's
+    The friction form is written after M. N. Ivanov's
     ball/cam safety-clutch formula: friction ρ at the socket contact and f_g of the ball
     (plunger) in its guide bore both oppose the outward motion.
 
@@ -87,7 +87,7 @@ def inertia_factor(z3: int, m: float, r0: float, I1: float, I3: float) -> float:
 
     [Malashchenko2025] eq. (15): (m r0² + I1 + I3)/(m r0² + I3), the share of a drive torque T_p that
     reaches the balls while the whole train accelerates (eq. (12): R1 = (T_p − I1·φ'')/…,
-    φ'' = T_p/(m r0² + I1 + I3)).  The seed writes one ball; here the balls' term is
+    φ'' = T_p/(m r0² + I1 + I3)).  The paper writes one ball; here the balls' term is
     z3·m·r0² (all balls move with the sleeve).  I1 drive-side (central part), I3 driven
     (sleeve) inertia [kg·m²].
     """

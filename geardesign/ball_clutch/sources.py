@@ -1,8 +1,8 @@
 """Citations used in the ball-clutch reports, in one place.
 
 [Malashchenko2025]: V. O. Malashchenko, V. F. Semenyuk, A. O. Boris, B. R. Lysiak, "Improved performance
-of drives with ball overrunning clutches" (2025); equations as decoded in [Malashchenko2025]
-``worm_wave_clutch_geneva.md`` section C (eqs. (5), (8), (10)-(15) are reconstructed there).
+of drives with ball overrunning clutches" (2025); equation numbers as in the paper (eqs. (5), (8),
+(10)-(15) are reconstructed in docs/ball_clutch.md).
 """
 
 SEED_EQ1_4 = "[Malashchenko2025] eqs. (1)-(4)"

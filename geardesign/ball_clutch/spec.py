@@ -82,7 +82,7 @@ FREEWHEEL = Table("freewheel", "overrunning (freewheel) part (optional)", (
           "d4", gt=0, example=50.0),
 ), required=False)
 
-INERTIA = Table("inertia", "inertias for the dynamic release torque of seed eq. (15) "
+INERTIA = Table("inertia", "inertias for the dynamic release torque of [Malashchenko2025] eq. (15) "
                 "(optional)", (
     Field("drive", "number", "drive side (central half-coupling and what turns with it)",
           "kg*m^2", "I1", minimum=0, example=0.02),

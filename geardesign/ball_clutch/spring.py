@@ -26,7 +26,7 @@ _ENDS = {
 def wahl_factor(C: float) -> float:
     """Wahl curvature factor K_W = (4C − 1)/(4C − 4) + 0.615/C, C = D/d (spring index).
 
-    Reference: A. M. Wahl, "Mechanical Springs"; [Malashchenko2025]; the factor used by
+    Reference: A. M. Wahl, "Mechanical Springs"; [Wahl]; the factor used by
     the textbook examples in ``tests/reference/ball_clutch``.
     """
     return (4.0 * C - 1.0) / (4.0 * C - 4.0) + 0.615 / C
@@ -50,7 +50,7 @@ def shear_stress(F: float, d: float, D: float) -> float:
     """Corrected shear stress τ = K_W·8·F·D/(π·d³) [MPa].
 
     Parameters: F axial force [N], d wire diameter [mm], D mean coil diameter [mm].
-    Reference: Wahl; Shigley eq. (10-2) with K_W; [Malashchenko2025].
+    Reference: Wahl; Shigley eq. (10-2) with K_W; [Wahl].
     """
     return wahl_factor(D / d) * 8.0 * F * D / (math.pi * d ** 3)
 

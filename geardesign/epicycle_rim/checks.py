@@ -2,8 +2,8 @@
 
 Limits (sources in each check): required probability of non-failure (a spec input, 90 %
 by default, a design choice); σ_-1eq <= σ_-1D; |σ_m| + σ_a < σ_u (domain of the limiting
-amplitude diagrams) and σ_max < σ_y (paper A, [Gutyria2017]); warnings from the method
-note §C.3: σ_-1/σ_u within 0.35-0.6, K_c within 1-2, Y_F within 3-4.6, σ_max <= 0.8σ_y,
+amplitude diagrams) and σ_max < σ_y ([Gutyria2017]); warnings from design practice: σ_-1/σ_u within
+0.35-0.6, K_c within 1-2, Y_F within 3-4.6, σ_max <= 0.8σ_y,
 coefficients of variation within 0.02-0.2, Rz >= 0.32 µm; thin rim by ISO 6336-3 Y_B and
 AGMA K_B; assembly and neighbouring conditions of the planets; resonance bands outside
 the operating speed range.

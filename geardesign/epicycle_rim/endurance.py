@@ -3,7 +3,7 @@ and life (paper A, steps 7-10: the Serensen-Kogaev statistical similarity theory
 by GOST 25.504-82).
 
 Pure functions on plain data; stresses in MPa, lengths in mm.  The text of GOST 25.504-82
-could not be consulted ([ZPCIL]): every formula here is taken from paper A
+could not be consulted: every formula here is taken from paper A
 (Gutyria et al. 2017), which applies it to the Raba 118/77 ring, and the equation numbers
 are the paper's.  Reconstructed pieces (garbled in the printed source) are marked.
 """
@@ -36,7 +36,7 @@ def blank_size_factor(blank_size: float, d0: float = 7.5) -> float:
 
 ALPHA_EXPONENT = 0.22
 """Exponent of the fillet SCF formula (12); unreadable in the printed source, 0.22 fits the
-three values the paper prints from it ([Gutyria2017] step 7.4, register item 4)."""
+three values the paper prints from it ([Gutyria2017] eq. (12))."""
 
 
 def fillet_scf(root_chord: float, fillet_radius: float) -> float:
@@ -81,7 +81,7 @@ def stress_gradient(fillet_radius: float, rim_thickness: float, depth: float) ->
     ----------
     fillet_radius : ρ [mm]; rim_thickness : δ [mm];
     depth : t, depth of the concentrator [mm] (not stated in the paper; its printed
-    G = 13.01 mm⁻¹ needs t ≈ 0.635 mm, [Gutyria2017] step 7.5).
+    G = 13.01 mm⁻¹ needs t ≈ 0.635 mm, [Gutyria2017]).
 
     References
     ----------
@@ -160,7 +160,7 @@ def anisotropy_factor(sigma_u: float) -> float:
     References
     ----------
     Gutyria et al. 2017, text after eq. (12) (0.88 for σ_u = 717 MPa), as printed; other
-    literature gives other forms ([Gutyria2017] register item 11).
+    literature gives other forms ([Gutyria2017]).
     """
     return 1.0 - sigma_u / 6000.0
 
@@ -185,7 +185,7 @@ def scatter_failure_stress(theta: float, nu: float) -> float:
     References
     ----------
     Gutyria et al. 2017, text after eq. (14): form reconstructed from the printed 0.056
-    alone ([Gutyria2017] register item 8); unverified against GOST 25.504-82.
+    alone ([Gutyria2017]); unverified against GOST 25.504-82.
     """
     return 0.1 / (1.0 + theta ** nu)
 
@@ -216,7 +216,7 @@ def total_scatter(v_max: float, v_material: float, v_alpha: float) -> float:
     References
     ----------
     Gutyria et al. 2017, eq. (14).  The paper prints v_σ-1 = 0.06 but v_σ-1D = 0.10, which
-    needs v_σ-1 ≈ 0.08; its Table 2 uses 0.10 ([Gutyria2017] register item 7).
+    needs v_σ-1 ≈ 0.08; its Table 2 uses 0.10 ([Gutyria2017]).
     """
     return math.sqrt(v_max ** 2 + v_material ** 2 + v_alpha ** 2)
 
@@ -326,7 +326,7 @@ def probability_of_non_failure(sigma_eq: float, sigma_m1D: float, v: float,
     References
     ----------
     Inverse of Gutyria et al. 2017 eq. (13); general form with v_σa: GOST 25.504-82 (from
-    [Gutyria2017] step 9; the GOST text was not consulted).
+    [Gutyria2017]; the GOST text was not consulted).
     """
     if sigma_eq <= 0.0:          # no alternating stress: the part cannot fail by fatigue
         return 1.0

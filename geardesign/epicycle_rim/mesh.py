@@ -149,7 +149,7 @@ def assembly_index(angle: float, z_sun: int, z_ring: int) -> float:
     References
     ----------
     Assembly condition of a 2K-H train with identical planets (e.g. Kudryavtsev, planetary
-    gear design handbooks; [Gutyria2017] and §C.3).
+    gear design handbooks; [Yaglinskyi2017]; design practice).
     """
     return (z_sun + z_ring) * angle / 360.0
 
@@ -179,7 +179,7 @@ def spacing_limit(tip_diameter_planet: float, center_distance: float) -> float:
 
     References
     ----------
-    Neighbouring condition of planetary trains ([Gutyria2017]); no clearance added.
+    Neighbouring condition of planetary trains (design practice); no clearance added.
     """
     ratio = 0.5 * tip_diameter_planet / center_distance
     return 180.0 if ratio >= 1.0 else math.degrees(2.0 * math.asin(ratio))

@@ -50,7 +50,7 @@ def speed_from_mesh_frequency(f_mesh: float, z_ring: int, wheel_radius: float,
     Kinematics of a 2K-H train with fixed ring (the planets pass each ring tooth n_H times
     per second; each passage is one mesh of z_r teeth per revolution).  Paper B's eq. (1)
     for V_T is garbled in the source and its Table 1 speeds are 30.6 times lower than this
-    relation ([Gutyria2017]).
+    relation ([Yaglinskyi2017]).
     """
     return 3.6 * 2.0 * math.pi * wheel_radius / 1000.0 * f_mesh / (z_ring * carrier_ratio)
 

@@ -28,7 +28,7 @@ def rim_factor_iso_internal(rim_thickness: float, module: float) -> float:
     References
     ----------
     ISO 6336-3:2006/2019, rim thickness factor for internal gears: quoted from memory (the
-    standard's text was not available; [ZPCIL] found only the external
+    standard's text was not available; found only the external
     form).  Unverified; used for a warning only.
     """
     r = rim_thickness / module
@@ -53,7 +53,7 @@ def rim_factor_agma(m_B: float) -> float:
     ----------
     ANSI/AGMA 2001-D04, rim thickness factor (written for external gears); the same form is
     implemented in the public script ``DaviesDesmond/MSE3380-Design-Team-1``,
-    ``Project/kbfunc.m`` ([ZPCIL]).
+    ``Project/kbfunc.m``.
     """
     return 1.6 * math.log(2.242 / m_B) if m_B < BACKUP_FULL else 1.0
 

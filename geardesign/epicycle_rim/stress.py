@@ -10,8 +10,8 @@ Pure functions on plain data; stresses in MPa.  The chain of paper A (Gutyria et
 6. the equivalent symmetric amplitude from a limiting-amplitude (Haigh) diagram, eq. (8),
    or, selectable, Goodman, Gerber and Serensen-Kinasoshvili.
 
-Equations (2) and (3) are garbled in the printed source; their reconstruction ([Gutyria2017]
-``epicycle_rim.md`` §A.2.2, uncertainty register items 1-2) reproduces three of the four
+Equations (2) and (3) are garbled in the printed source; their reconstruction ([Gutyria2017],
+uncertainty register items 1-2) reproduces three of the four
 columns of the paper's Table 1 to ±0.03 MPa.
 """
 
@@ -38,7 +38,7 @@ def loading_mode_factor(torque_levels: list[float], time_fractions: list[float],
     References
     ----------
     Gutyria et al. 2017, eq. (2) (Palmgren-Miner summation); the outer 1/q_F root is
-    reconstructed ([Gutyria2017] step 1, register item 1): μ_F
+    reconstructed ([Gutyria2017] eq. (2)): μ_F
     multiplies a stress in eq. (1).
     """
     total = sum(time_fractions)
@@ -52,8 +52,8 @@ def mode_factor_from_table(k_FE: float, q_F: float) -> float:
 
     References
     ----------
-    GOST 21354-87 typical loading modes (table in ``tables.toml``, from [Gutyria2017]
-    §A.3; the GOST text was not consulted); Gutyria et al. 2017, eq. (2).
+    GOST 21354-87 typical loading modes (table in ``tables.toml``, from [Gutyria2017]; the GOST text
+    was not consulted); Gutyria et al. 2017, eq. (2).
     """
     return k_FE ** (1.0 / q_F)
 
@@ -87,7 +87,7 @@ def von_mises_plane(s1: float, s2: float) -> float:
     References
     ----------
     Gutyria et al. 2017, eq. (3) (reconstructed; shear τ ≈ 0.05σ_t neglected as the paper
-    states); [Gutyria2017] step 3.
+    states); [Gutyria2017] eq. (3).
     """
     return math.sqrt(s1 * s1 + s2 * s2 - s1 * s2)
 
@@ -141,7 +141,7 @@ def rim_stresses(sigma_Fn: float, hoop_loaded: float, hoop_between: float) -> Ri
 
     References
     ----------
-    Gutyria et al. 2017, eq. (3), reconstructed ([Gutyria2017] step 3: 130.87 MPa on the
+    Gutyria et al. 2017, eq. (3), reconstructed ([Gutyria2017] eq. (3): 130.87 MPa on the
     tension side and −75.72 MPa on the compression side for the Raba 118/77 ring).
     """
     return RimStresses(
@@ -176,8 +176,7 @@ def fillet_cycles(rs: RimStresses, K_c: float, stage: str, mu_F: float,
 
     References
     ----------
-    Gutyria et al. 2017, eq. (1) and Table 1 (structure reconstructed, [Gutyria2017]
-    step 5).
+    Gutyria et al. 2017, eq. (1) and Table 1 (structure reconstructed).
     """
     f = K_c * mu_F
     out = []
@@ -219,7 +218,7 @@ def equivalent_amplitude(s_a: float, s_m: float, sigma_u: float, model: str = "c
     ----------
     Gutyria et al. 2017, eq. (7) and (8) (verified against Table 1 to ±0.02 MPa);
     Goodman, Gerber: eq. (4) of the same paper with (k1, k2) = (1, 0) and (0, 1);
-    Serensen-Kinasoshvili: GOST 25.504-82 (form from [Gutyria2017] step 6, the
+    Serensen-Kinasoshvili: GOST 25.504-82 (form from [Gutyria2017] eqs. (4)-(8), the
     GOST text was not consulted).
     """
     if abs(s_m) + s_a >= sigma_u:
@@ -245,7 +244,7 @@ def psi_sigma(sigma_u: float) -> float:
 
     References
     ----------
-    GOST 25.504-82 (form quoted in [Gutyria2017] step 6; the
+    GOST 25.504-82 (form quoted in [Gutyria2017] eqs. (4)-(8); the
     GOST text was not consulted: unverified).
     """
     return 0.02 + 2e-4 * sigma_u
@@ -291,7 +290,7 @@ def thin_ring_hoop_stress(torque: float, module: float, z: int, n_planets: int,
 
     It ignores the teeth, which stiffen the section, the tangential mesh forces and the
     spline supports: for the Raba 118/77 ring it gives about twice the finite-element values
-    that paper A uses ([Gutyria2017]).  Use it only when no FE values are at hand.
+    that paper A uses ([Roark]).  Use it only when no FE values are at hand.
 
     Parameters
     ----------
@@ -302,7 +301,7 @@ def thin_ring_hoop_stress(torque: float, module: float, z: int, n_planets: int,
     ----------
     Thin circular ring under equal radial loads: Timoshenko, Strength of Materials, Part I,
     §"thin curved bars"; Roark's Formulas for Stress and Strain, ring cases (case number not
-    checked); [Gutyria2017] (not validated against the paper).
+    checked); [Roark] (not validated against the paper).
     """
     d = module * z
     F_t = 2000.0 * torque / (d * n_planets)

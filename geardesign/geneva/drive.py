@@ -43,8 +43,7 @@ def planetary_ratio(z_central: int, z_spindle: int, direction: str) -> float:
 
     A spindle gear z_sh rolling on the fixed central gear z_ts while the barrel turns by
     ω_b turns by (1 + z_ts/z_sh)·ω_b relative to the frame (planetary kinematics, external
-    mesh; the paper prints u_p = 1 + z_ts/z_sh, index order reconstructed in [RotaryDevices]
-    D.3 item 1).
+    mesh; the paper prints u_p = 1 + z_ts/z_sh, index order reconstructed).
     """
     s = {"same": 1.0, "opposite": -1.0, "declutched": 0.0}[direction]
     return s * (1.0 + z_central / z_spindle)
@@ -73,7 +72,7 @@ def inertia_coefficients(s: SpindleBlock, w_r: float) -> InertiaCoefficients:
     with ω_sh = ω_sh.rab + u_p·ω_b.  B1 is constant and does not enter the dynamic moment.
 
     Parameters: the spindle block ``s``, distributing-shaft speed w_r [rad/s].
-    Reference: [RotaryDevices] eq. (2) (reconstructed from the fragments, [RotaryDevices]).
+    Reference: [RotaryDevices] eq. (2) (reconstructed from the fragments, [RotaryDevices] eq. (2)).
     """
     B1 = s.J_r
     if s.w_d > 0.0:
@@ -105,7 +104,7 @@ def with_efficiency(power: float, eta: float) -> float:
 
     Power taken by the load is divided by η (the motor supplies the losses); power given
     back by the load (negative, e.g. spindles braked by the planetary motion) is
-    multiplied by η (the losses reduce what returns).  The seed divides every term by η;
+    multiplied by η (the losses reduce what returns).  The paper divides every term by η;
     for negative terms that would make the losses return energy ([RotaryDevices]).
     """
     return power / eta if power >= 0.0 else power * eta

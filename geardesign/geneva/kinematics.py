@@ -29,7 +29,7 @@ def crank_ratio(z: int) -> float:
     slot O2P, and the cross turns by 2π/z per index, so the triangle O1 P O2 has the right
     angle at P and the angle π/z at O2: R1 = a·sin(π/z), R2 = a·cos(π/z).
 
-    Parameters: z number of slots (>= 3).  Reference: Geneva geometry, [RotaryDevices].
+    Parameters: z number of slots (>= 3).  Reference: Geneva geometry, [Artobolevsky].
     """
     return math.sin(math.pi / z)
 
@@ -40,7 +40,7 @@ def half_motion_angle(z: int, internal: bool) -> float:
     External: φ0 = π/2 − π/z (total 2φ0 = π(z − 2)/z);  internal: φ0 = π/2 + π/z
     (total π(z + 2)/z).  At φ = ±φ0 the crank is perpendicular to the slot.
 
-    Reference: [RotaryDevices]; Artobolevsky (Geneva mechanism).
+    Reference: [Artobolevsky] (Geneva mechanism).
     """
     return 0.5 * math.pi + (math.pi / z if internal else -math.pi / z)
 
@@ -51,7 +51,7 @@ def motion_share(z: int, pins: int, internal: bool) -> float:
     External: k(z − 2)/(2z); internal: k(z + 2)/(2z).  It must stay below 1, or the cross
     never dwells (two rollers in slots at the same time).
 
-    Reference: [RotaryDevices] (motion share, "with k pins: k(z − 2)/(2z) < 1").
+    Reference: [Artobolevsky] (motion share, "with k pins: k(z − 2)/(2z) < 1").
     """
     return pins * 2.0 * half_motion_angle(z, internal) / (2.0 * math.pi)
 
@@ -68,7 +68,7 @@ def cross_angle(phi: float, lam: float, internal: bool) -> float:
     (roller centre at (a ∓ R1 cos φ, R1 sin φ) seen from the cross axis).  ψ runs from
     −π/z to +π/z while φ runs from −φ0 to +φ0.
 
-    Reference: Geneva kinematics, [RotaryDevices].
+    Reference: Geneva kinematics, [Artobolevsky].
     """
     s = 1.0 if internal else -1.0
     return math.atan2(lam * math.sin(phi), 1.0 + s * lam * math.cos(phi))
@@ -80,7 +80,7 @@ def omega_ratio(phi: float, lam: float, internal: bool) -> float:
     External: λ(cos φ − λ)/(1 − 2λ cos φ + λ²);  internal: λ(λ + cos φ)/(1 + 2λ cos φ + λ²).
     Zero at entry and exit (tangential entry), largest at φ = 0.
 
-    Reference: Geneva kinematics (Artobolevsky), [RotaryDevices].
+    Reference: Geneva kinematics (Artobolevsky), [Artobolevsky].
     """
     if internal:
         return lam * (lam + math.cos(phi)) / _den(phi, lam, True)
@@ -94,7 +94,7 @@ def eps_ratio(phi: float, lam: float, internal: bool) -> float:
     (speeding up) for φ < 0.  At entry |ε2|/ω1² = tan(π/z) for both kinds: the acceleration
     jumps from zero (soft impact).
 
-    Reference: Geneva kinematics (Artobolevsky), [RotaryDevices].
+    Reference: Geneva kinematics (Artobolevsky), [Artobolevsky].
     """
     return -lam * (1.0 - lam * lam) * math.sin(phi) / _den(phi, lam, internal) ** 2
 
@@ -102,7 +102,7 @@ def eps_ratio(phi: float, lam: float, internal: bool) -> float:
 def peak_omega_ratio(lam: float, internal: bool) -> float:
     """Largest ω2/ω1, at φ = 0: λ/(1 − λ) external, λ/(1 + λ) internal.
 
-    Reference: [RotaryDevices].
+    Reference: [Artobolevsky].
     """
     return lam / (1.0 + lam) if internal else lam / (1.0 - lam)
 
@@ -116,7 +116,7 @@ def peak_acceleration(z: int, internal: bool) -> tuple[float, float]:
     range, |ε2| grows monotonically towards entry, and the largest value is the entry jump
     tan(π/z) at φ = −φ0.
 
-    Reference: [RotaryDevices] (closed form of the extreme).
+    Reference: [Artobolevsky] (closed form of the extreme).
     """
     lam = crank_ratio(z)
     if internal:
@@ -133,7 +133,7 @@ def entry_jump(z: int) -> float:
     At φ = ±φ0 the centripetal acceleration ω1²R1 of the roller centre is perpendicular
     to the slot and is carried by the cross alone: |ε2| = ω1²R1/R2 = ω1² tan(π/z).
 
-    Reference: [RotaryDevices] ("soft impact").
+    Reference: [Artobolevsky] ("soft impact").
     """
     return math.tan(math.pi / z)
 
@@ -175,7 +175,7 @@ def peak_power_factor(z: int, internal: bool) -> tuple[float, float]:
     N = J·ω2·ε2 ([RotaryDevices], Fig. 2 curve 3); the maximum of the product has no simple closed
     form and is found numerically (scan and golden section) on the speeding-up half.
 
-    Reference: [RotaryDevices] (table "|omega2·eps2|max/omega1³").
+    Reference: [Artobolevsky] (table "|omega2·eps2|max/omega1³").
     """
     lam = crank_ratio(z)
     phi0 = half_motion_angle(z, internal)
@@ -246,7 +246,7 @@ def geometry(z: int, internal: bool, a: float, d_roller: float, clearance: float
 
     Parameters: z slots, ``internal`` kind, a centre distance [mm], d_roller roller
     diameter [mm], clearance [mm], shaft_diameter of the cross [mm] (0: not checked).
-    Reference: Geneva geometry, [RotaryDevices] ("R1 = a sin(π/z), R2 = a cos(π/z), slot
+    Reference: Geneva geometry, [Artobolevsky] ("R1 = a sin(π/z), R2 = a cos(π/z), slot
     depth R1 + R2 − a + clearance, locking-arc radius").
     """
     lam = crank_ratio(z)

@@ -10,7 +10,7 @@ without the books.
 
 The spindle-block indexing drive follows the paper of [RotaryDevices], "Modelling of rotary devices
 of machine aggregates" (authors not preserved in the source), eqs. (1)-(3) and the power
-balance printed before them; [GOST19650]
+balance printed before them; [RotaryDevices].
 """
 
 GENEVA = "Geneva kinematics (theory of machines)"

@@ -43,7 +43,7 @@ BARREL = Table("barrel", "indexed spindle block (barrel) of a multi-spindle auto
           "N·m", "ΣM_tr", default=0.0, minimum=0),
     Field("efficiency", "number", "efficiency from the motor to the barrel", symbol="η_b",
           gt=0, maximum=1, example=0.8),
-), required=False, hint="the spindle-block model of [RotaryDevices]; needs [geneva]")
+), required=False, hint="the [RotaryDevices] spindle-block model; needs [geneva]")
 
 SPINDLES = Table("spindles", "spindles carried by the barrel (optional, with [barrel])", (
     Field("count", "integer", "number of spindles", symbol="n_sh", minimum=1, maximum=72,

@@ -85,7 +85,7 @@ def hb_from_hrc(hrc: float) -> float:
 
     .. math:: HB = 0.118508·HRC^2 + 0.440352·HRC + 149.565
 
-    Reference: ZPCIL ``HBRCHV.h`` (public GOST 21354-87 program, [ZPCIL]);
+    Reference: ZPCIL ``HBRCHV.h`` (public GOST 21354-87 program);
     GOST 21354-87 converts surface hardness in HRC to HB for N_HG.
     """
     return 0.118508 * hrc * hrc + 0.440352 * hrc + 149.565

@@ -2,7 +2,7 @@
 
 The data live in ``worm_wheel.toml`` beside this module; this module only reads them.
 The material groups are those of the classical worm-wheel strength calculation
-([GOST19650] §A+.4 and §A+.6(a)):
+([Chernavsky]; [Dunaev]):
 
 * group I: tin bronzes, for high sliding speeds (up to 25 m/s); allowable contact stress
   from the strength of the bronze (wear of the flanks);
@@ -10,8 +10,8 @@ The material groups are those of the classical worm-wheel strength calculation
   allowable contact stress limited by scuffing and falling with the sliding speed;
 * group III: grey cast iron, v_s up to about 2 m/s.
 
-The property values are indicative textbook values quoted from memory by [GOST19650]
-(Dunaev & Lelikov; Chernavsky); no located text confirmed them ([ZPCIL]).
+The property values are indicative textbook values quoted from memory
+(Dunaev & Lelikov; Chernavsky); no located text confirmed them.
 A spec may override each one.
 """
 
@@ -25,7 +25,7 @@ GROUPS = ("I", "II", "III")
 
 GROUP_V_S_MAX = {"I": 25.0, "II": 5.0, "III": 2.0}
 """Highest sliding speed [m/s] of each material group, used when a material is given by its
-properties only ([GOST19650] validation rules: group I 25, II 5, III 2 m/s)."""
+properties only (design practice validation rules: group I 25, II 5, III 2 m/s)."""
 
 
 @dataclass(frozen=True)

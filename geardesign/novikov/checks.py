@@ -1,9 +1,9 @@
 """Design checks of a Novikov DLZ pair.  Each check says what is wrong and what to change.
 
 Limits (constants below): contact continuity b_w ≥ (1 − δ)·p_x (Cyclogram 2017, error);
-ε_β ≥ 1 + 0.2 and at least two points in contact at every instant (design practice,
-, warnings); σ_H ≤ σ_HP, σ_F ≤ σ_FP (errors); β within 8…30°, b_w/d1 ≤ 1.5,
-z1 ≥ 10 and z_v1 ≥ 12, HB1 − HB2 ≥ 20 (warnings); the fitted factors
+ε_β ≥ 1 + 0.2 and at least two points in contact at every instant (design practice, warnings); σ_H ≤
+σ_HP, σ_F ≤ σ_FP (errors); β within 8…30°, b_w/d1 ≤ 1.5,
+z1 ≥ 10 and z_v1 ≥ 12, HB1 − HB2 ≥ 20 (warnings, design practice); the fitted factors
 inside their range ψ = 0.05…0.25 (warning when ψ was clamped).
 """
 

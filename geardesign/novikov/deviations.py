@@ -1,11 +1,11 @@
 """Manufacturing and assembly deviations of a Novikov pair and the design gaps they cause
 at the contact points: the error model that Korotkin 2017 uses but does not print.
 
-Korotkin 2017 ([Korotkin2017]) takes the deviations from the GOST 1643-81 tolerances on
+[Korotkin2017] takes the deviations from the GOST 1643-81 tolerances on
 the pitch, the tooth direction, the profile and the parallelism and skew of the axes, for
 the smoothness grade k_p and the contact grade k_k, "in the probabilistic sense" with the
 risk parameter γ (its ref. [5]).  The combination is not printed.  This module implements
-the assumption stated in [Korotkin2017] §A.7.3:
+the assumption stated in [GOST1643]:
 
 * each deviation is a zero-mean normal variable with σ_k = T_k/6, T_k the width of its
   tolerance field; the design value of a sum is ±γ·sqrt(Σσ_k²);
@@ -15,8 +15,8 @@ the assumption stated in [Korotkin2017] §A.7.3:
   and the axis parallelism f_x and skew f_y (projected on the contact normal), plus the
   misalignment θ of the drive (deterministic), plus the end relief Δ.
 
-Profile deviations are left out: the method assumes run-in teeth ([Korotkin2017]),
-and no GOST 1643-81 profile value was available.  Units: µm for deviations.
+Profile deviations are left out: the method assumes run-in teeth ([Korotkin2017] input data), and no
+GOST 1643-81 profile value was available.  Units: µm for deviations.
 """
 
 from __future__ import annotations
@@ -48,7 +48,7 @@ F_Y_OVER_F_BETA = 0.5
 """Axis skew tolerance f_y = 0.5·F_β (GOST 1643-81, from memory; ISO/TR 10064-3
 f_Σβ = 0.5·(L/b)·F_β).  Unverified."""
 SIGMA_PER_FIELD = 1.0 / 6.0
-"""σ = T/6: a tolerance field T covers ±3σ."""
+"""σ = T/6: a tolerance field T covers ±3σ ([GOST1643])."""
 
 
 @dataclass(frozen=True)
@@ -70,7 +70,7 @@ class Tolerances:
 
 def design_deviations(grade_smoothness: int, grade_contact: int, m: float, d1: float,
                       d2: float, b_w: float, alpha_k: float, gamma: float) -> Tolerances:
-    """Design values of the pitch and lead deviations (, assumption):
+    """Design values of the pitch and lead deviations ([GOST1643], assumption):
 
     .. math::
         σ_p = \\sqrt{(2 f_{pb1}/6)^2 + (2 f_{pb2}/6)^2}, \\qquad e_p = γ σ_p
@@ -99,7 +99,7 @@ def design_deviations(grade_smoothness: int, grade_contact: int, m: float, d1: f
 def misalignment_lead(theta: float, b_w: float) -> float:
     """Lead mismatch over the face from a misalignment angle θ [rad]: θ·b_w, in µm
     (b_w in mm).  Positive: the face end where the contact points enter (b = 0) closes
-    first (gap_i += θ·b_w·(b_i − b_ref))."""
+    first ([GOST1643]: gap_i += θ·b_w·(b_i − b_ref))."""
     return theta * b_w * 1000.0
 
 

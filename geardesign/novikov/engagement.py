@@ -1,7 +1,7 @@
 """The phase loop of Korotkin's NOVGOST-17 algorithm: for every engagement phase the load
 sharing among the theoretical contact points (system (2)), the phase bending and contact
 stresses at every point, and the critical (maximum) stresses with their phase, tooth,
-line and position (Korotkin 2017, [Korotkin2017]; [Korotkin2017] §A.5).
+line and position ([Korotkin2017]).
 
 Error cases (``deviations``): with ``model = "grades"`` each tooth pair in contact is in
 turn the *study tooth* that leads by the design pitch deviation e_p, and the lead mismatch
@@ -142,7 +142,7 @@ def design_cases(model: str, teeth: list[int], theta_lead: float, lead_design: f
     """The error cases of one phase whose teeth in contact are ``teeth``.
 
     * ``"grades"``: for s = +1, −1 and each study tooth z: lead θ·b_w + s·e_l, pitch gap
-      −e_p on tooth z (it leads), 0 on the others (, worst sign pattern).
+      −e_p on tooth z (it leads), 0 on the others ([GOST1643], worst sign pattern).
     * ``"explicit"``: the given gaps per tooth and lead θ·b_w + lead_error.
     * ``"none"``: lead θ·b_w only.
     """

@@ -7,7 +7,7 @@ happened.  t is the distance of the contact point from mid-face as a fraction of
 ψ = a/b_w the semi-major axis of the contact ellipse over the face width.
 
 Reference: Korotkin 2017, eq. (1), (5), (6), Tables 2–4 and the Y_v formulas
-([Korotkin2017] §A.3.4–A.3.6, §A.4).
+([Korotkin2017] eq. (3), eq. (1), tables 2-4).
 """
 
 from __future__ import annotations
@@ -113,7 +113,7 @@ def k_h(t: float, psi: float) -> float:
 
 def y_v(z_v: float, x: float) -> float:
     """3-D ("volumetric") tooth form factor Y_v of the tooth whose addendum carries the
-    load, Korotkin 2017:
+    load, [Korotkin2017] eq. (3):
 
     −0.5 ≤ x < 0:  z_v ≤ 18: Y_v = 1.18·z_v^−0.285 + 2.08·|x|^1.15·z_v^−1.32;
                    z_v > 18: Y_v = 0.52 + 1.17·|x|^1.33·z_v^−1.058
@@ -135,5 +135,5 @@ def y_v(z_v: float, x: float) -> float:
 
 Y_A = 1.0
 """Y_a, the factor for the load distribution over the contact patch (Korotkin 2017).  Its
-exponent is unreadable in the source; 1 is conservative (the printed
+exponent is unreadable in the source ([Korotkin2017] eq. (3)); 1 is conservative (the printed
 example suggests about 0.95)."""

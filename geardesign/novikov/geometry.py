@@ -6,9 +6,9 @@ Pure functions on plain data; lengths in mm, angles in radians.  Index 1 is the 
 pinion, 2 the driven wheel.  j = 1 marks a contact point on the pinion addendum (line of
 action 1: pinion addendum on wheel dedendum), j = 2 a point on the wheel addendum.
 
-References: Korotkin 2017 (Table 1, phase stepping; [Korotkin2017] §A.3.1,
-§A.3.2); Cyclogram 2017 (criteria 1 and 2, with the sign of criterion 2
-corrected); GOST 15023-76 (rack, unverified values, §A.7.1).
+References: Korotkin 2017 (Table 1, phase stepping; [Korotkin2017] table 1); Cyclogram 2017
+(criteria 1 and 2, [Matyushenko2017], with the sign of criterion 2
+corrected); GOST 15023-76 (rack, unverified values, [GOST15023]).
 """
 
 from __future__ import annotations
@@ -90,11 +90,11 @@ def pair_geometry(p: NovikovPair) -> PairGeometry:
         d_{ai} = d_i + 2(h_a^* + x_i)m, \\quad d_{fi} = d_i − 2(h_f^* − x_i)m
 
     ρ_p, the reduced lengthwise radius of curvature of the contacting surfaces, is the
-    reconstruction of (Meusnier's theorem at R_K ≈ r):
+    reconstruction of [Korotkin2017] eq. (4) (Meusnier's theorem at R_K ≈ r):
 
     .. math:: ρ_p = \\frac{a_w u}{(u + 1)^2 \\sin^2 β \\sin α_k}
 
-    Reference: Korotkin 2017 (G1–G7 of ε_β = 2.33849 of the printed
+    Reference: Korotkin 2017 (G1–G7 of [Korotkin2017]: ε_β = 2.33849 of the printed
     example is reproduced); h_a*, h_f*: GOST 15023-76 (from memory, unverified).
     """
     m, beta, r = p.m, p.beta, p.rack
@@ -193,7 +193,7 @@ def engaged_teeth(rows: list[list[PhasePoint]]) -> list[int]:
 
 def min_face_width(n_points: int, p_x: float, delta: float) -> float:
     """Least face width b_w for at least ``n_points`` simultaneous contact points at every
-    instant (Cyclogram 2017, criteria 1 and 2; ):
+    instant (Cyclogram 2017, criteria 1 and 2; [Matyushenko2017]):
 
     * n = 2k (criterion 1):    b_w ≥ k·p_x
     * n = 2k + 1 (criterion 2): b_w ≥ (1 + k)·p_x − |q_21 − n'·p_x| = (k + 1 − δ)·p_x
@@ -214,7 +214,7 @@ def min_face_width(n_points: int, p_x: float, delta: float) -> float:
 @dataclass(frozen=True)
 class Coverage:
     """Closed-form counts of simultaneous contact points over one axial pitch
-    (, independent derivation): K = ⌊ε_β⌋, r = {ε_β}."""
+    ([Matyushenko2017], independent derivation): K = ⌊ε_β⌋, r = {ε_β}."""
 
     n_min: int
     n_max: int

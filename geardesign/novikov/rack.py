@@ -21,7 +21,7 @@ class NovikovRack:
     alpha_k : profile angle at the nominal contact point [rad].
     lk_star : l_k*, length of the active part of the addendum along its chord, / m.
     eps_q : ε_q = q/p_x, the axial offset of the two contact points of one tooth in axial
-        pitches ("phase coefficient of axial overlap"); a rack constant.
+        pitches ("phase coefficient of axial overlap"); a rack constant ([Korotkin2017]).
     h_a, h_f : addendum and dedendum coefficients h_a*, h_f*.
     verified : whether the values were checked against the standard's text.
     """

@@ -8,7 +8,7 @@ W_i is the bending-plus-contact displacement of point i, W_i = K_W(t_i, ψ_i)·W
 δu_i + Δ_i is the gap of point i (manufacturing deviations and end relief, µm).  Forces
 cannot be negative, so a point whose gap exceeds the common approach δ leaves the
 contact and the actual number of points p may be smaller than the theoretical n
-(Korotkin 2017, [Korotkin2017]).
+([Korotkin2017] system (2)).
 
 W_base is not given by Korotkin (his ref. [3]).  Here it is linear,
 W_base = F/c_p with c_p = c'·2a_ref (c' ≈ 14 N/(mm·µm) per unit length

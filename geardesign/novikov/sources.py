@@ -5,7 +5,7 @@ with basic rack per GOST 15023-76 under real multi-pair engagement" (NOVGOST-17)
 of NTU "KhPI", series "Problems of mechanical drive", 2017, No. 25 (1247).
 *Cyclogram 2017*: N. V. Matyushenko, A. V. Fedchenko, V. A. Berezhnoi, "Numerical study of
 the cyclogram and of the overlap at re-engagement of adjacent teeth", same issue.
-The decoded formulas are in [Korotkin2017].
+Equation, table and figure numbers are those of the papers.
 """
 
 RACK = "GOST 15023-76 (values unverified, see docs)"
@@ -19,12 +19,12 @@ KW = "Korotkin 2017, eq. (1), Table 2"
 BENDING = "Korotkin 2017, eq. (3), (6), Table 3"
 CONTACT = "Korotkin 2017, eq. (4), (5), Table 4"
 YV = "Korotkin 2017, Y_v formulas"
-RHO_P = "(reconstructed)"
-ELLIPSE = "Hertz line contact over l_k (assumption)"
+RHO_P = "[Korotkin2017] eq. (4) (reconstructed)"
+ELLIPSE = "Hertz line contact over l_k (assumption, [Korotkin2017] eq. (4))"
 COMPLIANCE = "c'·2a (assumption)"
 TOLERANCES = "GOST 1643-81 as fitted in ZPCIL (FPB.h, FCBE.h)"
-ERROR_MODEL = "probabilistic design value γ·σ (assumption)"
+ERROR_MODEL = "probabilistic design value γ·σ (assumption, [GOST1643])"
 FORCES = "theory of gearing (textbook)"
-G21354 = "GOST 21354-87 ([ZPCIL])"
+G21354 = "GOST 21354-87 ([ZPCIL] SGMHLB.h, CONTAU.h, IZGIBU.h, YLIFE.h; [DANNYE])"
 MODULES = "GOST 14186-69 (from memory)"
 PRACTICE = "design practice"

@@ -1,7 +1,7 @@
 """The ``kind = "novikov"`` spec: keys, units, ranges and defaults (the single definition
 used for validation, ``geardesign schema novikov`` and ``geardesign template novikov``).
 
-Single-key ranges follow the method ([Korotkin2017] §D.3): shifts within the
+Single-key ranges follow the method (design practice): shifts within the
 domain of the Y_v formulas (−0.5 … 0.3), hardness within the ≤ 350 HB scope, accuracy
 grades of GOST 1643-81.  Rules that involve several keys are in the calculator.
 """

@@ -1,6 +1,6 @@
 """Phase bending and contact stresses at one contact point (Korotkin 2017, eq. (3), (4)),
 the contact-ellipse size that gives ψ, and the inverse: the force that a printed stress
-needs (the consistency check of [Korotkin2017] §A.6.3).
+needs (the consistency check of [Korotkin2017] fig. 1).
 
 Units: N, mm, MPa.  F is the (transverse tangential) force carried by the point, as in
 Korotkin's system (2) whose forces add up to F_tΣ = 2000·T2/d2.
@@ -28,7 +28,7 @@ def ellipse_coefficient(rho_p: float, l_k: float, alpha_k: float, E_star: float)
 
     .. math:: a = \\sqrt{\\frac{4 (F/\\cos α_k) ρ_p}{π l_k E^*}}
 
-    Assumption of (Korotkin 2017 does not give a); flagged in reports.
+    Assumption of [Korotkin2017] eq. (4) (Korotkin 2017 does not give a); flagged in reports.
     """
     return math.sqrt(4.0 * rho_p / (math.pi * l_k * E_star * math.cos(alpha_k)))
 
@@ -62,7 +62,8 @@ def sigma_H_base(F: float, l_k: float, rho_p: float, alpha_k: float) -> float:
 
 def sigma_H(F: float, l_k: float, rho_p: float, alpha_k: float, t: float, psi: float) -> float:
     """Phase (effective) contact stress at a contact point, Korotkin 2017 eq. (4) in the
-    reconstructed reading of 
+    reconstructed reading of [Korotkin2017] eq. (4):
+
     .. math:: σ_{Hji} = 19.93\\,l_k^{-1.074}\\,(F_{ji}/\\cos α_k)^{0.69}\\,ρ_p^{-0.31}
               \\,K_{ψi}\\,K_{Hji}
 
@@ -92,7 +93,7 @@ def force_for_sigma_H(sigma: float, t: float, l_k: float, rho_p: float, alpha_k:
               \\right)^{1/0.69}
 
     Used for the consistency check of the two stresses printed by Korotkin 2017
-    (about 75.7 kN for σ_H = 1111.429 MPa).
+    ([Korotkin2017] fig. 1: about 75.7 kN for σ_H = 1111.429 MPa).
     """
     c, a, b, r = SIGMA_H_CONST
     psi = 0.05

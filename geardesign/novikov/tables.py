@@ -2,8 +2,8 @@
 
 Source: V. I. Korotkin, "Algorithm of the program for calculating Novikov gears with basic
 rack per GOST 15023-76 under real multi-pair engagement", Bulletin of NTU "KhPI", series
-"Problems of mechanical drive", 2017, No. 25 (1247) — cited below as *Korotkin 2017*;
-decoded in [Korotkin2017] §A.4 ([Korotkin2017]).  Every value
+"Problems of mechanical drive", 2017, No. 25 (1247) — cited below as *Korotkin 2017* ([Korotkin2017]
+tables 2-4). Every value
 below was read in the paper's tables; a corrected value is a one-line change here.
 
 Each polynomial table is a tuple of four coefficient rows ``(c0, c1, c2, c3)``; the row
@@ -37,7 +37,7 @@ KF_COEFFS: tuple[tuple[float, ...], ...] = (
 
 #: Equation (5) of Korotkin 2017: K_ψ as a quartic in ψ, coefficients of ψ^0 … ψ^4.  It
 #: interpolates the five nodes (0.05; 0.724) (0.10; 0.936) (0.15; 0.923) (0.20; 0.878)
-#: (0.25; 0.794) and is meaningless outside them.
+#: (0.25; 0.794) and is meaningless outside them ([Korotkin2017] eq. (4)).
 KPSI_COEFFS: tuple[float, ...] = (-0.106, 26.4, -238.8666667, 923.9999998, -1333.333333)
 
 #: Table 4 of Korotkin 2017: the contact-stress ratio K_H, rows t (distance of the contact
@@ -64,12 +64,12 @@ KH_ROWS: tuple[tuple[float, tuple[float, ...]], ...] = (
 )
 
 #: Validity range of the fitted factors K_W, K_F, K_ψ and of Table 4 (the fits were made on
-#: ψ = 0.05 … 0.25 and t = 0 … 0.5; ).
+#: ψ = 0.05 … 0.25 and t = 0 … 0.5; [Korotkin2017] table 3).
 PSI_RANGE: tuple[float, float] = (0.05, 0.25)
 T_RANGE: tuple[float, float] = (0.0, 0.5)
 
-#: The 3-D tooth form factor Y_v of Korotkin 2017 ([Korotkin2017], decoded in novikov.md
-#: §A.3.4): for each shift branch and z_v branch, ``(A, B, p, e, q)`` in
+#: The 3-D tooth form factor Y_v of Korotkin 2017 ([Korotkin2017] eq. (5)): for each shift branch
+#: and z_v branch, ``(A, B, p, e, q)`` in
 #: Y_v = A·z_v^p + B·|x|^e·z_v^q (B carries the sign).  The two exponents q of the branch
 #: x > 0 are unreadable in the scan; 1.17 and 1.16 are placeholders that make the two z_v
 #: branches meet at z_v = 18 (results with x > 0 are flagged as unverified).
@@ -83,6 +83,6 @@ YV_BRANCHES: dict[tuple[str, str], tuple[float, float, float, float, float]] = {
 YV_PLACEHOLDER_EXPONENTS = True
 """The x > 0 exponents above are placeholders (see :data:`YV_BRANCHES`)."""
 
-#: Equation (4) of Korotkin 2017 (reconstructed reading):
+#: Equation (4) of Korotkin 2017 (reconstructed reading, [Korotkin2017] eq. (4)):
 #: σ_H = C·l_k^a·(F/cos α_k)^b·ρ_p^c·K_ψ·K_H with these constants (steel pair, MPa, N, mm).
 SIGMA_H_CONST: tuple[float, float, float, float] = (19.93, -1.074, 0.69, -0.31)

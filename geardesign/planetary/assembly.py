@@ -8,7 +8,7 @@ References
 Kudryavtsev V. N., Kirdyashev Yu. N., "Planetary gears. Handbook", 1977 (conditions of
 coaxiality, neighbourhood and assembly); Matusevich et al. 2017, eqs. (2)-(5) (coaxiality
 with shifts), (3), (4) (neighbourhood and assembly, garbled in the scan and rebuilt in
-``planetary.md`` B.5, B.6); Parker R. G., Lin J., "Mesh phasing relationships in
+[Matusevich2017]); Parker R. G., Lin J., "Mesh phasing relationships in
 planetary and epicyclic gears", J. Mech. Des. 126 (2004) (in-phase and sequential
 phasing).
 """
@@ -30,7 +30,7 @@ def neighbour_clearance(a_w: float, d_a_max: float, angle: float) -> float:
     a_w the radius of the planet axes, θ the angle between the neighbours [rad],
     d_a,max the largest tip diameter of the planet block.  The planets clear each other
     if c_n > 0; Kudryavtsev recommends c_n >= 0.5 m.
-    References: Kudryavtsev (neighbourhood condition); ``planetary.md`` B.5, D.2 item 3.
+    References: Kudryavtsev (neighbourhood condition); [Matusevich2017]; [Kudryavtsev].
     """
     return 2.0 * a_w * math.sin(0.5 * angle) - d_a_max
 
@@ -67,7 +67,7 @@ def assembly_numbers(train: Train) -> dict[str, int]:
 
     Single-crown 2K-H: N = z_a + z_b; stepped planet: (z_a z_f + z_b z_g)/gcd(z_g, z_f);
     3K: z_a + z_b and (z_e z_g − z_b z_f)/gcd(z_g, z_f).  Derived by matching the tooth
-    phases (``planetary.md`` B.6, D.2 item 2, where the same forms are given); the 2K-H
+    phases ([Matusevich2017]; [Kudryavtsev], where the same forms are given); the 2K-H
     form (z_a + z_b)/n_w ∈ ℤ is Kudryavtsev's.
     """
     zb, cb = train.ring, train.crown("ring")
@@ -115,8 +115,8 @@ def phasing(train: Train, angles_deg: list[float]) -> Phasing:
     "in phase": all γ_s = 0 (z_a θ_i/2π integers: every planet meshes alike, the mesh
     forces add up); "sequential": the γ_s take every value j/n_w once (equally spaced
     planets with z_a/n_w not an integer, gcd(z_a, n_w) = 1: the forces partly cancel);
-    otherwise "mixed".  References: Parker & Lin 2004 (mesh phasing); ``planetary.md``
-    D.9 (phasing to cancel sidebands).
+    otherwise "mixed".  References: Parker & Lin 2004 (mesh phasing); [Kudryavtsev] (phasing to
+    cancel sidebands).
     """
     def frac(v: float) -> float:
         f = v - math.floor(v + 1e-9)

@@ -17,9 +17,9 @@ References
 ----------
 Kudryavtsev V. N., "Planetary gears. Handbook" (torque method, η^k); Malashchenko V. O.,
 Strilets O. R., Strilets V. M., "Efficiency of a gear differential train in a device
-controlling speed via the carrier", Bulletin of NTU "KhPI" 2017 No. 25 ([KhPI2017]
-L9300-9728), eqs. (10)-(17); ISO/TR 14179-2:2001 and Niemann & Winter, "Maschinenelemente"
-II (tooth loss factor H_V); ``planetary.md`` A.3-A.6, D.4.
+controlling speed via the carrier", Bulletin of NTU "KhPI" 2017 No. 25 ([Malashchenko2017]), eqs.
+(10)-(17); ISO/TR 14179-2:2001 and Niemann & Winter, "Maschinenelemente"
+II (tooth loss factor H_V); [Malashchenko2017]; [Kudryavtsev].
 """
 
 from __future__ import annotations

@@ -9,9 +9,9 @@ Pure functions; lengths mm, angles rad.  Ring shifts are in the GOST 19274-73 si
 References
 ----------
 GOST 16532-70, GOST 19274-73; Matusevich, Paravan, Shekhov, Avramov, "Optimal design of
-planetary mechanisms of type 3K", Bulletin of NTU "KhPI" 2017 No. 25 ([KhPI2017]
-L9729-10893), eqs. (2), (5), (15)-(28) (coaxiality with shifts), (31)-(37) (quality
-indices); ``planetary.md`` B.4, B.7, B.8, D.3.
+planetary mechanisms of type 3K", Bulletin of NTU "KhPI" 2017 No. 25 ([Matusevich2017]), eqs. (2),
+(5), (15)-(28) (coaxiality with shifts), (31)-(37) (quality
+indices); [Matusevich2017]; [GOST19274].
 """
 
 from __future__ import annotations
@@ -187,7 +187,7 @@ def specific_pressure(z1: int, z2: int, alpha_t: float, alpha_tw: float,
 
     .. math:: η = \\frac{m}{ρ_{red}} = \\frac{2 (z_2 \\pm z_1)}{z_1 z_2 \\cos α_t \\tan α_{tw}}
 
-    "+" external, "−" internal.  Matusevich et al. 2017, eq. (34) (``planetary.md`` B.8;
+    "+" external, "−" internal.  Matusevich et al. 2017, eq. (34) ([Matusevich2017];
     e.g. 0.567 for their sun–planet mesh 12/46 at α_tw = 21.525°).
     """
     s = -1.0 if internal else 1.0

@@ -19,7 +19,7 @@ References
 ----------
 Kudryavtsev V. N., Kirdyashev Yu. N. (eds.), "Planetary gears. Handbook", 1977 (Willis
 method, 2K-H and 3K schemes); Matusevich et al. 2017, eq. (1) (3K ratio);
-Gavrilov et al. 2017 (BELAZ motor-wheel, frequencies), ``planetary.md`` B.3, C.2, D.1.
+Gavrilov et al. 2017 (BELAZ motor-wheel, frequencies), [Matusevich2017]; [Gavrilov2017]; [Kudryavtsev].
 """
 
 from __future__ import annotations
@@ -177,7 +177,7 @@ def frequencies(train: Train, s: Speeds) -> Frequencies:
     planet pass n_w|f_b − f_h|; local faults: sun n_w|f_a − f_h|, planet f_z/z_g (one
     flank; twice that when both flanks work), ring n_w|f_b − f_h|.
     References: Gavrilov, Ishin, Goman, Skorokhodov 2017 (BELAZ motor-wheel), Table 1;
-    ``planetary.md`` C.2 (McFadden & Smith's planetary relations).
+    [Gavrilov2017] (McFadden & Smith's planetary relations).
     """
     f = {m: s.n[m] / 60.0 for m in train.members}
     f_h = s.n_carrier / 60.0
@@ -206,7 +206,7 @@ def sidebands(f_mesh: float, f_fault: float, f_carrier: float, harmonics: int,
 
     one sorted list per harmonic h (only positive frequencies, duplicates removed).
     References: Gavrilov et al. 2017, text before Table 1 (families (ω_z ± kω_d),
-    (ω_z ± lω_H ± kω_d)); ``planetary.md`` C.2.
+    (ω_z ± lω_H ± kω_d)); [Gavrilov2017].
     """
     out = []
     for h in range(1, harmonics + 1):
@@ -227,7 +227,7 @@ def discriminant(amplitudes: list[float]) -> float:
     .. math:: S_{fz} = \\sqrt{\\textstyle\\sum_{n=1}^{5} S_{n f_z}^2}
 
     Reconstructed from Gavrilov et al. 2017, eq. (1) (illegible in the scan) so that their
-    Table 2 is reproduced exactly (``planetary.md`` C.4)."""
+    Table 2 is reproduced exactly ([Gavrilov2017])."""
     return math.sqrt(sum(a * a for a in amplitudes))
 
 

@@ -11,7 +11,7 @@ References
 ----------
 GOST 21354-87 (through the spur rating); Kudryavtsev, "Planetary gears. Handbook"
 (per-planet force F_t = 2000 T_a K_γ/(n_w d_a), relative speeds, cycle counts, the
-planet's alternating bending); ``planetary.md`` D.5.
+planet's alternating bending); [GOST21354].
 """
 
 from __future__ import annotations
@@ -42,7 +42,7 @@ class MeshDuty:
 def _member_torque_force(T_member: float, d_member: float, planets: int, K_gamma: float
                          ) -> float:
     """F_t = 2000 |T_X| K_γ/(n_w d_X): the force on one planet at the reference circle
-    of central member X (Kudryavtsev; ``planetary.md`` D.5)."""
+    of central member X (Kudryavtsev; [GOST21354])."""
     return 2000.0 * abs(T_member) * K_gamma / (planets * d_member)
 
 
@@ -114,7 +114,7 @@ def planet_bearing_load(train: Train, meshes: list[Mesh], T_ideal: dict, K_gamma
     .. math:: F = \\sqrt{(\\textstyle\\sum F_y)^2 + (\\sum F_x)^2}
 
     For a 2K-H train without shifts F = 2F_t.  References: statics of the planet
-    (Kudryavtsev; ``planetary.md`` D.9: bearing load 2F_t at the relative speed).
+    ([Kudryavtsev]: bearing load 2F_t at the relative speed).
     """
     Fx = Fy = 0.0
     for mesh in meshes:

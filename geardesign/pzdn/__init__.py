@@ -1,6 +1,6 @@
 """PZDN — the device reducing start-up dynamic loads of knitting-machine drives: a safety
 elastic gear coupling whose elastic element is a cylindrical torsion spring (KO-2 thesis,
-[Lopukhov] [Lopukhov]).
+[Lopukhov]).
 
 Modules: :mod:`.spring` (torsion spring sizing, methods A and B), :mod:`.startup` (closed
 form of the three-mass start-up, corrected), :mod:`.simulate` (its numerical integration

@@ -1,4 +1,4 @@
-"""The open spur gear of the PZDN coupling (KO-2 thesis §2.1, [Lopukhov]):
+"""The open spur gear of the PZDN coupling (KO-2 thesis §2.1, [Lopukhov] §2.1):
 rated by the spur calculator, not by a second copy of the gear formulas.
 
 The thesis sizes the mesh with a course-book procedure (module from the bending strength,
@@ -28,7 +28,7 @@ module_estimate = _gost_module_estimate
 def pinion_torque(T: float, on: str, planets: int, u: float) -> float:
     """Pinion torque of one mesh [N·m]: T/n_w when T acts on the pinion, T/(n_w·u) when on
     the wheel (load shared equally by the n_w planet meshes; thesis F_t = 2T/(n_w·d2),
-    [Lopukhov])."""
+    [Lopukhov] §2.1)."""
     return T / planets if on == "pinion" else T / (planets * u)
 
 
@@ -84,7 +84,7 @@ def rate(spec: dict):
 
 def weaker_gear(Y_F: tuple[float, float], sigma_FP: tuple[float, float]) -> int:
     """Index (0 pinion, 1 wheel) of the gear with the larger Y_F/[σ]_F (thesis: compare
-    [σ]_F/Y_F, the smaller is weaker; [Lopukhov])."""
+    [σ]_F/Y_F, the smaller is weaker; [Lopukhov] §2.1)."""
     return 0 if Y_F[0] / sigma_FP[0] >= Y_F[1] / sigma_FP[1] else 1
 
 

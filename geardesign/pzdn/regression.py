@@ -1,5 +1,5 @@
 """Regression of the maximum dynamic moments of the KO-2 drive lines on the link
-stiffness (KO-2 thesis §2.3, [Lopukhov]).  Pure functions; coefficients
+stiffness (KO-2 thesis §2.3, [Lopukhov] §2.3).  Pure functions; coefficients
 in ``tables.toml`` ``[regression.ko2]``.
 
 The thesis quotes one-factor slices in C12 of a second-order regression fitted by its

@@ -4,7 +4,7 @@ motor characteristic, viscous damping in the links, and resisting moments that a
 reactive (a mass that comes to rest sticks until its link torque exceeds the resisting
 moment again).  scipy is imported inside :func:`simulate` only (about 1 s).
 
-The equations are those of the thesis' model ([Lopukhov], §11.1):
+The equations are those of the thesis' model ([Lopukhov] §2.2):
 
     J1 ω1' = T_m(t, ω1) − T12 − T13
     J2 ω2' = T12 − T2  (moving),   T12 = C12(φ1 − φ2) + c12(ω1 − ω2)

@@ -3,16 +3,16 @@
 "KO-2 thesis" is the master's thesis of E. V. Lopukhov, "Improvement of the device of
 dynamic loads of the drive of knitting machines" ([Lopukhov]; its
 equations are numbered per section: 2.1 = one spring, 2.2 = two springs and the start-up
-model, 2.3 = regression).  The [Lopukhov] [Lopukhov] decodes it and
-lists the thesis' errors; the corrected formulas are cited as "[Lopukhov] §..".
+model, 2.3 = regression).  Its errors are listed in docs/pzdn.md; corrected formulas are cited as
+"[Lopukhov] §.. (corrected)".
 """
 
 THESIS_A = "KO-2 thesis §2.1"            # one spring, method A
 THESIS_B = "KO-2 thesis §2.2"            # two springs, method B
 THESIS_D = "KO-2 thesis §2.2 (start-up)"  # three-mass start-up model
 THESIS_E = "KO-2 thesis §2.3"            # regression
-NOTE_D = "[Lopukhov] (corrected, docs/pzdn.md)"
-NOTE_A = "[Lopukhov]"
+NOTE_D = "[Lopukhov] §2.2 (corrected)"
+NOTE_A = "[Lopukhov] §2.1"
 EN13906 = "EN 13906-3 (SpringTHREE)"
 SHIGLEY = "Shigley §10-12"
 GOST9389 = "GOST 9389-75"

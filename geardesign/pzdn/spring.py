@@ -4,7 +4,7 @@ stiffness, wind-up and geometry.  Pure functions on plain data.
 Units: torque N·mm inside the formulas (N·m at the interface of :func:`design`), lengths mm,
 stresses and moduli MPa, angles rad, stiffness N·mm/rad inside (N·m/rad at the interface).
 
-Methods ([Lopukhov] [Lopukhov] §3, §4): the KO-2 thesis sizes the spring
+Methods ([Lopukhov] §2.1, §2.2): the KO-2 thesis sizes the spring
 as a curved beam in bending — σ = T·k/W ≤ [σ] — and takes its twist from the elastic line
 of the coils, φ = T·L/(E·J), L = π·D·i.  Method A (one spring, thesis §2.1) adds the
 bending of the loaded leg and requires the spring to absorb the angle the motor shaft
@@ -29,7 +29,7 @@ def curvature_factor(c: float, model: str = "thesis") -> float:
     """Stress correction (curvature) factor of a torsion spring coil in bending.
 
     * ``"thesis"``: k = (4c − 1)/(4c − 4) — KO-2 thesis eq. (2) of §2.1 and §2.2
-      ([Lopukhov]); 1.0833 at c = 10.
+      ([Lopukhov] §2.1); 1.0833 at c = 10.
     * ``"wahl"``: K_i = (4c² − c − 1)/(4c(c − 1)), the inner-fibre factor of a curved
       beam — Shigley, *Mechanical Engineering Design*, §10-12 eq. (10-43); 1.0806 at c = 10.
     * ``"en13906"``: q = (c + 0.07)/(c − 0.75) — EN 13906-3 (as implemented in the public
@@ -157,15 +157,15 @@ def kinematic_windup(n: float, t: float) -> float:
 
 def design_angle(required: float, step_deg: float) -> float:
     """Required angle [rad] rounded up to a multiple of ``step_deg`` (the thesis rounds
-    47.34° up to 50°, [Lopukhov])."""
+    47.34° up to 50°, [Lopukhov] §2.1)."""
     deg = math.degrees(required)
     return math.radians(math.ceil(deg / step_deg - 1e-9) * step_deg)
 
 
 def coils_for_angle(phi: float, T: float, E: float, J: float, D: float, L_leg: float) -> float:
     """Working coils that give the angle φ at the torque T [N·mm]:
-    i = (φ·E·J/T − L_leg)/(π·D) — KO-2 thesis §2.1 eq. (15) (garbled in the available copy;
-    reconstructed in [Lopukhov] as i = (φ − φ₁)·E·J/(π·D·T))."""
+    i = (φ·E·J/T − L_leg)/(π·D) — KO-2 thesis §2.1 eq. (15) (garbled in the thesis;
+    reconstructed as i = (φ − φ₁)·E·J/(π·D·T))."""
     return (phi * E * J / T - L_leg) / (math.pi * D)
 
 

@@ -1,5 +1,5 @@
 """Three-mass start-up model of a knitting-machine drive with the driving mass in the
-middle (KO-2 thesis §2.2, [Lopukhov]): closed-form solution with the
+middle (KO-2 thesis §2.2, [Lopukhov] §2.2): closed-form solution with the
 thesis' errors corrected.  Pure functions (``math`` only).
 
 Model (all quantities reduced to the motor shaft)::
@@ -15,7 +15,7 @@ moment; 2) masses 1 and that one move until the other link reaches its moment; 3
 three move.  In each stage the link torques x = (T12, T13) obey x'' + M·x = f, a 2×2 linear
 system solved in modal form x = a + Σ v_i (A_i cos β_i t + B_i sin β_i t) (thesis eqs.
 (12)-(27)).  The thesis writes the mode shape as A13 = +(J1/C12)(ω12² − β²)A12; the
-correct sign is minus ([Lopukhov] step 6), which with several arithmetic slips makes
+correct sign is minus ([Lopukhov] §2.2), which with several arithmetic slips makes
 its published T12max = 16.07, T13max = 28.3 N·m unreproducible: the corrected values for
 its own data are 12.53 and 35.20 N·m.
 

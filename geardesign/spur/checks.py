@@ -1,7 +1,7 @@
 """Geometric quality checks of an external pair (GOST 16532-70 quality indices and the
-rules of [GOST21354]).  Each check says what is wrong and what to change.
+rules of design practice).  Each check says what is wrong and what to change.
 
-Limits used here (design practice, [GOST21354]): ε_α >= 1 (spur) / ε_γ >= 1
+Limits used here (design practice): ε_α >= 1 (spur) / ε_γ >= 1
 (helical), warning below 1.2; s_an >= 0.25·m_n (0.4·m_n for case-hardened teeth is named
 in the message); radial clearance >= 0.1·m_n; ψ_bd <= 1.6; u <= 8 for one stage;
 |ϑ| <= 4 at the roots.

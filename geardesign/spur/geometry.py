@@ -8,7 +8,7 @@ References
 ----------
 GOST 16532-70 "Cylindrical involute external gear pairs. Calculation of geometry";
 GOST 13755-81 basic rack; ISO 21771:2007 (same quantities, ISO notation);
-[GOST21354] §8.2 and [ZPCIL]
+[GOST16532] table 1; [ZPCIL] GEOM.h.
 """
 
 from __future__ import annotations
@@ -58,7 +58,7 @@ class BasicRack:
 
         For GOST 13755-81 this is 1.25 − 0.38·(1 − sin 20°) = 1.000 = h_a*, the "boundary
         height" used by GOST 16532-70 in x_min and in the form-point radius.
-        ([GOST21354] §8.2 item 10; [ZPCIL])
+        ([GOST16532] table 1; [ZPCIL] GEOM.h.)
         """
         return self.h_a + self.c - self.rho_f * (1.0 - math.sin(self.alpha_n))
 
@@ -158,8 +158,8 @@ def undercut_shift_limit(z: int, alpha_t: float, beta: float, rack: BasicRack) -
     .. math:: x_{min} = (h_l^* - h_a^*) - \\frac{z \\sin^2 α_t}{2 \\cos β}
 
     h_l* − h_a* = :attr:`BasicRack.h_straight` (1 for GOST 13755-81).
-    References: GOST 16532-70 (quality checks); ZPCIL ``GEOM.h`` ([ZPCIL]
-    §2.6).  The worm calculator uses it for the wheel's mid-plane (β = 0, α_t = α_x).
+    References: GOST 16532-70 (quality checks); ZPCIL ``GEOM.h`` ([ZPCIL] GEOM.h).  The worm
+    calculator uses it for the wheel's mid-plane (β = 0, α_t = α_x).
     """
     return rack.h_straight - z * math.sin(alpha_t) ** 2 / (2.0 * math.cos(beta))
 
@@ -197,7 +197,7 @@ def shift_sum_for_center_distance(a_w: float, m_n: float, z1: int, z2: int, alph
     GeometryError ``CENTER_DISTANCE_TOO_SMALL`` if a_w <= a·cos α_t = (d_b1 + d_b2)/2:
     the base circles would overlap.
 
-    References: GOST 16532-70, table 1 (a_w given); [GOST16532].
+    References: GOST 16532-70, table 1 (a_w given); [GOST16532] table 1.
     """
     alpha_t, _ = transverse_angles(alpha_n, beta)
     a = 0.5 * m_n * (z1 + z2) / math.cos(beta)
@@ -223,7 +223,7 @@ def span_teeth_ideal(z: int, x: float, m_n: float, alpha_n: float, alpha_t: floa
     References: GOST 16532-70 (base tangent length); DIN 3960:1987 §3.6.  The cos²β_b
     follows because the calliper faces are normal to the base helix: the contact point
     rolls W·cos β_b/2 from the tangency line (KISSsoft agrees, ``tests/reference``;
-    the ZPCIL program, [ZPCIL], uses cos β_b).
+    the ZPCIL program, uses cos β_b).
     """
     cos_ax = d_b / (d + 2.0 * x * m_n)
     if cos_ax >= 1.0:
@@ -246,7 +246,7 @@ def base_tangent_length(z: int, x: float, m_n: float, alpha_n: float, alpha_t: f
     Returns ``(k, W, d_W)``.
 
     References: GOST 16532-70 (base tangent length); ZPCIL ``GEOM.h``
-    ([ZPCIL]); d_W as KISSsoft's d_MWk (DIN 3960).
+    ([ZPCIL] GEOM.h); d_W as KISSsoft's d_MWk (DIN 3960).
     """
     W = m_n * math.cos(alpha_n) * (math.pi * (k - 0.5) + 2.0 * x * math.tan(alpha_n) + z * inv(alpha_t))
     tan_aw = W * math.cos(beta_b) ** 2 / (z * m_n * math.cos(alpha_n))
@@ -303,7 +303,7 @@ def tip_thickness(z: int, x: float, d: float, d_a: float, alpha_t: float, alpha_
 def pair_geometry(p: PairInput) -> PairGeometry:
     """Complete geometry of an external pair from module, tooth numbers and shifts.
 
-    Formulas (GOST 16532-70, table 1; [GOST16532]):
+    Formulas (GOST 16532-70, table 1; [GOST16532] table 1):
 
     * m_t = m_n/cos β; d = z·m_t; d_b = d·cos α_t; a = (d1 + d2)/2; u = z2/z1
     * inv α_tw = 2x_Σ tan α/(z1 + z2) + inv α_t;  a_w = a·cos α_t / cos α_tw

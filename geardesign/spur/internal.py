@@ -19,8 +19,8 @@ d_a2 = d2 − 2(h_a* − x2)m = 2475.118 mm in both.
 References
 ----------
 GOST 19274-73 "Cylindrical involute internal gear pairs. Calculation of geometry" (its
-text could not be consulted, [ZPCIL]; the formulas
-below are the handbook forms quoted in [Matusevich2017] D.3 and B.12, and
+text could not be consulted; the formulas
+below are the handbook forms quoted in [GOST19274]; [Kudryavtsev], and
 each one is checked against the printed KISSsoft report of an internal pair,
 ``tests/reference/planetary/test_kisssoft_nrel_stages.py``); ISO 21771:2007 (internal
 gears with negative z); Kudryavtsev, "Planetary gears. Handbook" (tip interference).
@@ -185,7 +185,7 @@ def working_pressure_angle(x_diff: float, z1: int, z2: int, alpha_n: float,
     GeometryError ``INV_ALPHA_TW`` if inv α_tw <= 0 (x2 − x1 too negative); its ``limit``
     is the least x2 − x1.
 
-    References: GOST 19274-73 (x_d given); ``planetary.md`` D.3; paper (b) eq. (21).
+    References: GOST 19274-73 (x_d given); [GOST19274]; paper (b) eq. (21).
     """
     if z2 <= z1:
         raise GeometryError("TEETH_DIFFERENCE", f"z2 = {z2} <= z1 = {z1}: no internal pair",
@@ -236,7 +236,7 @@ def tip_interference(z1: int, z2: int, r_a1: float, r_a2: float, r_b1: float, r_
 
     Returns δ [rad·teeth]; ``None`` when the tip circles do not cross (no interference
     possible).  The form is the handbook one (Kudryavtsev; GOST 19274-73 quoted from
-    memory in ``planetary.md`` B.12 item 4, not verified against the standard's text); a
+    memory in [Kudryavtsev], not verified against the standard's text); a
     brute-force simulation of the tip paths agrees in sign on every case tried
     (``tests/test_planetary_internal.py``).
     """
@@ -260,7 +260,7 @@ def internal_tip_thickness(d_a: float, z: int, x: float, alpha_n: float, alpha_t
               \\tan β_a = \\tan β\\, d_a/d
 
     The internal tooth widens outwards, hence the signs opposite to the external form.
-    References: paper (b) eq. (36) (``planetary.md`` B.8); GOST 19274-73.  KISSsoft
+    References: paper (b) eq. (36) ([Matusevich2017]); GOST 19274-73.  KISSsoft
     prints 38.407 mm for the NREL stage-1 ring (z = 56, x = 0.5013).
     """
     alpha_a = math.acos(min(d_b / d_a, 1.0))
@@ -428,7 +428,7 @@ def internal_velocities(g: InternalPairGeometry, n1: float) -> InternalVelocitie
 
     The relative angular velocity of the flanks is ω1 − ω2 because both gears turn the
     same way.  References: theory of gearing (Litvin, "Gear geometry and applied
-    theory", internal gears); ``planetary.md`` D.3.
+    theory", internal gears); [GOST19274].
     """
     omega1 = math.pi * n1 / 30.0
     omega2 = omega1 / g.u

@@ -26,7 +26,7 @@ def specific_sliding(rho1: float, rho2: float, u: float) -> tuple[float, float]:
     rho1, rho2 : radii of curvature of the pinion and wheel profiles at the point [mm], > 0.
     u : gear ratio z2/z1.
 
-    References: [Dobrov2017]; Dobrov et al. 2017, eqs. (3) ([Dobrov2017]).
+    References: [ISO21771]; Dobrov et al. 2017, eqs. (3) ([Dobrov2017]).
     """
     return 1.0 - rho2 / (u * rho1), 1.0 - u * rho1 / rho2
 
@@ -37,7 +37,7 @@ def relative_sliding(rho1: float, rho2: float, u: float) -> float:
 
     .. math:: σ_{12} = \\frac{v_{t1} - v_{t2}}{\\max(v_{t1}, v_{t2})}
 
-    References: Dobrov et al. 2017, eqs. (10) and (20) ([Dobrov2017]), with the
+    References: Dobrov et al. 2017, eqs. (10) and (20) ([Dobrov2017] eqs. (10), (20)), with the
     denominators read as in [Dobrov2017].
     """
     v1, v2 = rho1, rho2 / u
@@ -59,7 +59,7 @@ class Sliding:
 def sliding_at_ends(g: PairGeometry) -> Sliding:
     """Sliding at the ends of the active line of action.
 
-    A: ρ1 = ρ_p1, ρ2 = ρ_a2;  E: ρ1 = ρ_a1, ρ2 = ρ_p2 ([Dobrov2017]).
+    A: ρ1 = ρ_p1, ρ2 = ρ_a2;  E: ρ1 = ρ_a1, ρ2 = ρ_p2 ([ISO21771]).
     At a point beyond a tangency point (ρ <= 0) the sliding is undefined: the
     interference check fails first and the value is reported as ±inf -> null.
     """
@@ -100,7 +100,7 @@ def velocities(g: PairGeometry, n1: float) -> Velocities:
     normal section: the contact line lies in the plane of action, whose distance from the
     pitch line is measured along the transverse line of action.
 
-    References: [Dobrov2017]; Dobrov et al. 2017, eq. (3) (v_s = 0 at P, eq. (15)).
+    References: [ISO21771]; Dobrov et al. 2017, eq. (3) (v_s = 0 at P, eq. (15)).
     """
     omega1 = math.pi * n1 / 30.0
     omega2 = omega1 / g.u
@@ -128,7 +128,7 @@ def balanced_shift_split(base: PairInput, x_sum: float, steps: int = 120) -> flo
     GeometryError ``NO_BALANCED_SPLIT`` when no x1 in that interval balances the sliding
     with a valid geometry.
 
-    References: [Dobrov2017] ("design goal |ϑ1(A)| ≈ |ϑ2(E)|, equalised by x1, x2");
+    References: [ISO21771] ("design goal |ϑ1(A)| ≈ |ϑ2(E)|, equalised by x1, x2");
     GOST 16532-70 appendix (choice of shifts by equal specific sliding).
     """
 

@@ -1,6 +1,6 @@
 """Citations used in the spur reports, in one place so that a reference is corrected once.
 
-The text of GOST 16532-70 could not be consulted ([ZPCIL]), so its
+The text of GOST 16532-70 could not be consulted, so its
 table numbers are not quoted; each citation names the standard, and the docstring of the
 function that computes the quantity gives the formula and the public implementation that
 confirms it.

@@ -1,5 +1,5 @@
 """Flexible wheel of a wave (strain-wave) gear: the stress-increase factor K_0 = K_zh·K_σ of
-Tkachenko, Ustinenko and Borisenko ([KhPI2017] 2017) with the stiffness factor K_zh of the
+Tkachenko, Ustinenko and Borisenko ([Tkachenko2017]) with the stiffness factor K_zh of the
 toothed rim from the tooth profile, the recommended rim thickness and the endurance check.
 
 Eqs. (9)-(10) of the paper (shift corrections) are illegible in the source and are not

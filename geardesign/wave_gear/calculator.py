@@ -17,10 +17,10 @@ from geardesign.wave_gear import rim as R
 from geardesign.wave_gear import sources as S
 
 FULL = 2.25           # full tooth height of the GOST 13755 rack, × m (for α_h)
-H_REC = (2.5, 3.0)    # recommended H0/m (seed, lines 13855-13861)
-H_MIN = 1.5           # H0/m below which the rim is rejected ([Tkachenko2017])
-W0_RANGE = (0.8, 1.3)  # w0/m ([Tkachenko2017])
-U_RANGE = (60.0, 320.0)  # usual single-stage ratio ([Tkachenko2017])
+H_REC = (2.5, 3.0)    # recommended H0/m ([Tkachenko2017])
+H_MIN = 1.5           # H0/m below which the rim is rejected ([IvanovWave])
+W0_RANGE = (0.8, 1.3)  # w0/m ([IvanovWave])
+U_RANGE = (60.0, 320.0)  # usual single-stage ratio ([IvanovWave])
 T_AXIAL = 1e5         # N·m: large wave gears, axial fixation (Strelnikov)
 TAU_RATIO = 0.58      # τ_-1 = 0.58 σ_-1 (von Mises) when not given
 

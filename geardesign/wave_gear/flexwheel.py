@@ -14,7 +14,7 @@ def ratios(z_flex: int, z_rigid: int) -> tuple[float, float]:
     Rigid wheel fixed, output on the flexible wheel: u = −z_g/(z_b − z_g) (output reverses);
     flexible wheel fixed, output on the rigid wheel: u = z_b/(z_b − z_g).
 
-    Reference: M. N. Ivanov, "Volnovye zubchatye peredachi" (1981); [Tkachenko2017].
+    Reference: M. N. Ivanov, "Volnovye zubchatye peredachi" (1981); [IvanovWave].
     """
     dz = z_rigid - z_flex
     return -z_flex / dz, z_rigid / dz
@@ -35,7 +35,7 @@ def smooth_ring_stress(E: float, w0: float, H0: float, r_m: float, C_gen: float)
     σ = C_gen·E·w0·H0/r_m² (C_gen = 1.5 for the pure cos 2φ shape of a cam generator;
     roughly 2...3 near the rollers of disc or roller generators: uncertain).
 
-    Reference: thin-ring theory (Ivanov, wave gears), [Tkachenko2017] [standard].
+    Reference: thin-ring theory (Ivanov, wave gears), [IvanovWave] [standard].
     """
     return C_gen * E * w0 * H0 / r_m ** 2
 
@@ -43,7 +43,7 @@ def smooth_ring_stress(E: float, w0: float, H0: float, r_m: float, C_gen: float)
 def shell_shear(T: float, r: float, delta: float) -> float:
     """Torsional shear stress in the thin cylindrical shell of the flexible wheel,
     τ = T/(2π·r²·δ) [MPa] (T in N·m -> N·mm; r, δ in mm).  Thin-walled tube in torsion;
-    [Tkachenko2017]."""
+    [IvanovWave]."""
     return T * 1000.0 / (2.0 * math.pi * r * r * delta)
 
 
@@ -62,7 +62,7 @@ def endurance(sigma_m1: float, sigma_a: float, tau_m1: float | None = None,
     s_τ = τ_-1/(τ_a + ψ_τ·τ_m).  Combined: s = s_σ·s_τ/√(s_σ² + s_τ²).
 
     Reference: Serensen's combined safety factor (the usual shaft and flexible-wheel
-    endurance check); [Tkachenko2017]; the same combination n = n_σ·n_τ/√(n_σ² + n_τ²) and
+    endurance check); [IvanovWave]; the same combination n = n_σ·n_τ/√(n_σ² + n_τ²) and
     s_F = σ_F0/σ_a are the criteria of a published wave-gear design procedure (Vestnik MGTU
     im. N. E. Baumana, ser. Mashinostroenie, article 1072, eqs. (31)-(32)).
     """

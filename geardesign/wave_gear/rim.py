@@ -1,5 +1,5 @@
 """Bending stiffness of the toothed rim of a flexible wheel: the factor K_zh of Tkachenko,
-Ustinenko and Borisenko ([KhPI2017] 2017).
+Ustinenko and Borisenko ([Tkachenko2017]).
 
 The rim under the teeth has the thickness H0; over one pitch p = π·m the teeth add the
 height h(x) (the tooth-space profile cut by the hob).  Bending a slice of thickness H0 + h
@@ -46,10 +46,10 @@ def rack_space(alpha: float, h_a: float = 1.0, c: float = 0.25, rho_f: float = 0
     The straight flank meets the root line at w0 = π/4 − (h_a* + c*)·tan α (half the space
     width, the space being π/2 wide on the pitch line); the fillet touches the bottom at
     x_c = w0 − ρ_f·tan(45° − α/2) and the flank at (x_c + ρ_f·cos α, ρ_f·(1 − sin α)).
-    Standard values: x_c = 0.0644, tangency height 0.25 ([Tkachenko2017]).
+    Standard values: x_c = 0.0644, tangency height 0.25 ([Tkachenko2017] eqs. (4), (5)).
 
     Raises ValueError when the fillet does not fit (x_c < 0).
-    Reference: GOST 13755-81 basic rack; [Tkachenko2017].
+    Reference: GOST 13755-81 basic rack; [Tkachenko2017] eqs. (4), (5).
     """
     depth = h_a + c
     w0 = math.pi / 4.0 - depth * math.tan(alpha)
@@ -81,8 +81,7 @@ def mean_cube(H0: float, rack: RackSpace, h_cap: float) -> float:
     pitch at the capped height (or the tip).
 
     Parameters: H0 rim thickness under the teeth and h_cap the effective tooth height, both
-    in module units.  Reference: Tkachenko et al. 2017, eq. (5) (reconstructed, [Tkachenko2017]
-    B2.2 item 6).
+    in module units.  Reference: Tkachenko et al. 2017, eq. (5) (reconstructed).
     """
     H = H0
     cap = min(h_cap, rack.height)

@@ -1,9 +1,8 @@
 """Citations used in the wave-gear (flexible wheel) reports, in one place.
 
-[KhPI2017] V. N. Tkachenko, A. V. Ustinenko, S. V. Borisenko, "Experimental study of the
+[Tkachenko2017], V. N. Tkachenko, A. V. Ustinenko, S. V. Borisenko, "Experimental study of the
 stress-strain state of the toothed flexible wheel of a wave gear" (Bulletin of NTU "KhPI",
-2017); equation numbers as in the paper, decoded in [Tkachenko2017]
-``worm_wave_clutch_geneva.md`` section B2.  Eqs. (9)-(10) (shift corrections α_x) are
+2017); equation numbers as in the paper.  Eqs. (9)-(10) (shift corrections α_x) are
 illegible in the source and are not implemented: α_x = 1.
 """
 

@@ -1,7 +1,7 @@
 """Design checks of a worm pair.  Each check says what is wrong and what to change.
 
-Limits ([GOST19650] [GOST19650] §A+.9 validation rules,
-§A+.2, §A+.4): z1 in 1, 2, 4; z2 >= 26 (error), 28 ... 80 (warning); x within −0.5 ... +0.7
+Limits (design practice validation rules,
+[GOST19650]; [Chernavsky]): z1 in 1, 2, 4; z2 >= 26 (error), 28 ... 80 (warning); x within −0.5 ... +0.7
 (warning); b2 <= 0.75/0.67·d_a1; b1 >= the GOST 19650-97 length; q >= 0.212·z2 (warning);
 v_s <= the material's limit; σ_H <= [σ]_H, σ_F <= [σ]_F and their peak values;
 f <= f_lim and t_oil <= t_lim (the allowed values, written [f] and [t] in the textbooks;
@@ -27,10 +27,9 @@ from geardesign.worm import tables
 Z2_MIN = 26
 """Fewer wheel teeth are undercut off the mid-plane and weak (Dunaev & Lelikov: 26 ... 28)."""
 Z2_POWER = (28, 80)
-"""Usual wheel tooth numbers of power drives ([GOST19650], §A+.9)."""
+"""Usual wheel tooth numbers of power drives ([Dunaev]; design practice)."""
 SELF_LOCKING_RELIABLE = 3.5
-"""Self-locking is dependable without vibration only for γ_w below about 3.5° ([GOST19650]
-§A+.3 item 4)."""
+"""Self-locking is dependable without vibration only for γ_w below about 3.5° ([Dunaev])."""
 
 
 def _deg(rad: float) -> float:

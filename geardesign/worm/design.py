@@ -1,6 +1,6 @@
 """Design mode: propose the centre distance and a standard (m, q, x) set for a torque, a
-ratio and a wheel material ([GOST19650] [GOST19650]
-§A+.4 "design centre distance" and §A+.9; GOST 2144-76 series).
+ratio and a wheel material ([Chernavsky] "design centre distance", design practice; GOST 2144-76
+series).
 
 Pure functions; the contact-stress design formula itself is
 :func:`geardesign.worm.strength.required_center_distance`.
@@ -14,15 +14,15 @@ from geardesign.worm import tables
 from geardesign.worm.geometry import X_MAX, shift_for_center_distance
 
 STIFFNESS_Q_RATIO = 0.212
-"""q >= 0.212·z2 keeps the worm stiff enough (Dunaev & Lelikov; [GOST19650])."""
+"""q >= 0.212·z2 keeps the worm stiff enough (Dunaev & Lelikov; [Dunaev])."""
 
 PREFERRED_SHIFT = (-0.5, 0.7)
-"""Preferred range of the wheel shift ([GOST19650]; GOST 19650-97 allows ±1)."""
+"""Preferred range of the wheel shift (design practice; GOST 19650-97 allows ±1)."""
 
 
 def starts_for_ratio(u: float) -> int:
-    """Worm starts for a ratio: 4 for u <= 14, 2 for 14 < u <= 30, 1 above ([GOST19650]
-    §A+.1; the Pascal program splits at 16 and 32)."""
+    """Worm starts for a ratio: 4 for u <= 14, 2 for 14 < u <= 30, 1 above ([Dunaev]; the Pascal
+    program splits at 16 and 32)."""
     if u <= 14.0:
         return 4
     if u <= 30.0:

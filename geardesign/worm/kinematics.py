@@ -1,7 +1,7 @@
 """Kinematics, friction, efficiency, self-locking and forces of a worm pair.
 
 Pure functions.  Speeds in min⁻¹ and m/s, angles in rad, torques in N·m, powers in kW,
-forces in N.  [GOST19650] [GOST19650] §A+.3 and §A+.5.
+forces in N.  [Dunaev]; [Ivanov].
 """
 
 from __future__ import annotations
@@ -30,7 +30,7 @@ def speeds(g: WormPairGeometry, n1: float) -> Speeds:
     .. math:: v_1 = \\frac{π d_{w1} n_1}{60000}, \\quad v_s = \\frac{v_1}{\\cos γ_w},
               \\quad n_2 = n_1/u, \\quad v_2 = \\frac{π d_2 n_2}{60000}
 
-    [GOST19650] items 1-2 (d in mm, n in min⁻¹, v in m/s).
+    [Dunaev] (d in mm, n in min⁻¹, v in m/s).
     """
     n2 = n1 / g.u
     v1 = math.pi * g.d_w1 * n1 / 60000.0
@@ -40,7 +40,7 @@ def speeds(g: WormPairGeometry, n1: float) -> Speeds:
 
 def estimated_sliding_speed(n1: float, T2: float) -> float:
     """Sliding speed before the size is known (Dunaev & Lelikov):
-    v_s ≈ 4.5·10⁻⁴·n1·T2^(1/3) [m/s], n1 in min⁻¹, T2 in N·m ([GOST19650];
+    v_s ≈ 4.5·10⁻⁴·n1·T2^(1/3) [m/s], n1 in min⁻¹, T2 in N·m ([Dunaev];
     Pascal program ``Vs := 4.5*n1*T2^(1/3)/10000``)."""
     return 4.5e-4 * n1 * T2 ** (1.0 / 3.0)
 
@@ -58,10 +58,10 @@ def friction(v_s: float, group: str, level: str = "mean", coefficient: float | N
              material_factor: float | None = None) -> Friction:
     """Reduced friction coefficient f' and angle ρ' = arctan f'.
 
-    f' = k_mat·f'_table(v_s) with the table of [GOST19650] (tin bronze on a hardened
+    f' = k_mat·f'_table(v_s) with the table of [Ivanov] (tin bronze on a hardened
     ground worm) interpolated linearly on v_s, at its low end, middle (default) or high
     end, and k_mat = 1.0 for tin bronzes, 1.4 for tin-free bronzes, brass and cast iron
-    (the hand calculation's "+30 ... 50 %").  A given ``coefficient`` replaces the table.
+    (the textbooks' "+30 ... 50 %").  A given ``coefficient`` replaces the table.
     """
     f_tab = tables.friction_coefficient(v_s, level)
     k = tables.friction_material_factor(group) if material_factor is None else material_factor
@@ -71,21 +71,21 @@ def friction(v_s: float, group: str, level: str = "mean", coefficient: float | N
 
 def mesh_efficiency(gamma_w: float, rho: float) -> float:
     """Mesh efficiency with the worm driving, η_m = tan γ_w / tan(γ_w + ρ')
-    ([GOST19650]; Pascal program; DIN 3975 form with ρ_z)."""
+    ([Dunaev]; Pascal program; DIN 3975 form with ρ_z)."""
     return math.tan(gamma_w) / math.tan(gamma_w + rho)
 
 
 def reverse_efficiency(gamma_w: float, rho: float) -> float:
     """Mesh efficiency with the wheel driving, η' = tan(γ_w − ρ') / tan γ_w; 0 when the
     pair is self-locking (γ_w <= ρ'), where no motion is transmitted backwards
-    ([GOST19650])."""
+    ([Dunaev])."""
     if gamma_w <= rho:
         return 0.0
     return math.tan(gamma_w - rho) / math.tan(gamma_w)
 
 
 def is_self_locking(gamma_w: float, rho: float) -> bool:
-    """The wheel cannot drive the worm: γ_w <= ρ' ([GOST19650])."""
+    """The wheel cannot drive the worm: γ_w <= ρ' ([Dunaev])."""
     return gamma_w <= rho
 
 
@@ -108,8 +108,8 @@ def loads(g: WormPairGeometry, s: Speeds, T2: float, eta: float, alpha: float) -
               \\; F_{t2} = F_{a1} = \\frac{2000 T_2}{d_2}, \\;
               F_{t1} = F_{a2} = \\frac{2000 T_1}{d_{w1}}, \\; F_r = F_{t2} \\tan α
 
-    with the overall efficiency η and the basic profile angle α ([GOST19650]
-    items 5-6; Chernavsky; Dunaev & Lelikov).
+    with the overall efficiency η and the basic profile angle α ([Dunaev]; Chernavsky; Dunaev &
+    Lelikov).
     """
     T1 = T2 / (g.u * eta)
     P2 = T2 * s.omega2 / 1000.0

@@ -39,7 +39,7 @@ from geardesign.worm.strength import (
 from geardesign.worm.thermal import Thermal, housing_area, oil_temperature
 
 DEFAULT_SPAN_RATIO = 0.9
-"""Worm bearing span l ≈ 0.9·d2 when not given ([GOST19650])."""
+"""Worm bearing span l ≈ 0.9·d2 when not given ([Chernavsky])."""
 
 
 @dataclass(frozen=True)

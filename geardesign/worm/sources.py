@@ -1,9 +1,9 @@
 """Citations used in the worm reports, in one place so that a reference is corrected once.
 
 The texts of GOST 19650-97, GOST 19036-94, GOST 2144-76 and GOST 19672-74 could not be
-consulted ([ZPCIL]); each citation names the standard or the textbook
-whose formula is used, and the docstring of the function gives the formula, the method
-note clause and the public implementation that confirms it where one was found.
+consulted ([WormPascal]); each citation names the standard or the textbook
+whose formula is used, and the docstring of the function gives the formula, its source and the
+public implementation that confirms it where one was found.
 """
 
 G19650 = "GOST 19650-97"

@@ -2,8 +2,8 @@
 worm: the classical calculation of the Russian textbooks.
 
 Pure functions.  Torques in N·m (converted to N·mm inside), lengths in mm, stresses in
-MPa.  [GOST19650] [GOST19650] §A+.4, §A+.6, §A+.7;
-[ZPCIL] (a public Pascal worm program confirms the allowables of group I,
+MPa.  [Chernavsky]; [Dunaev];
+[WormPascal] (a public Pascal worm program confirms the allowables of group I,
 K_HL, K_FL, σ_FP, the peak allowables and the Dunaev bending formula, and differs on C_v,
 the K_HL limits, the θ table and the group II/III constants; those are inputs here).
 """
@@ -14,8 +14,8 @@ import math
 from dataclasses import dataclass
 
 CONTACT_CONSTANT = 170.0
-"""σ_H = (170 q/z2)·sqrt(T2·K·((z2/q + 1)/a_w)³), T2 in N·mm (Chernavsky; [GOST19650]
-§A+.4; Dunaev's 5350 with T2 in N·m is the same within 0.5 %)."""
+"""σ_H = (170 q/z2)·sqrt(T2·K·((z2/q + 1)/a_w)³), T2 in N·mm ([Chernavsky]; Dunaev's 5350 with T2 in
+N·m is the same within 0.5 %)."""
 
 K_HL_MIN = 0.67
 K_FL_LIMITS = (0.543, 1.0)
@@ -32,20 +32,20 @@ class SpectrumFactors:
 
 def spectrum_factors(spectrum: list[tuple[float, float]]) -> SpectrumFactors:
     """Factors of a load spectrum [(T_i/T_max, t_i/t), ...] at constant speed:
-    X = Σ r_i s_i (K_β), K_HE = Σ r_i⁴ s_i, K_FE = Σ r_i⁹ s_i ([GOST19650])."""
+    X = Σ r_i s_i (K_β), K_HE = Σ r_i⁴ s_i, K_FE = Σ r_i⁹ s_i ([Chernavsky])."""
     return SpectrumFactors(sum(r * s for r, s in spectrum), sum(r ** 4 * s for r, s in spectrum),
                            sum(r ** 9 * s for r, s in spectrum))
 
 
 def load_concentration_factor(z2: int, theta: float, X: float) -> float:
-    """K_β = 1 + (z2/θ)³·(1 − X), θ the worm deflection coefficient ([GOST19650];
+    """K_β = 1 + (z2/θ)³·(1 − X), θ the worm deflection coefficient ([Chernavsky];
     Chernavsky; Ivanov).  K_β = 1 for constant load (X = 1)."""
     return 1.0 + (z2 / theta) ** 3 * (1.0 - X)
 
 
 def dynamic_factor(v2: float) -> float:
     """K_v = 1.0 for v2 <= 3 m/s, else 1.2, the middle of the textbooks' 1.1 ... 1.3
-    ([GOST19650]; the Pascal program uses 1.01 + 0.01 v_s).  Override in the spec."""
+    ([Chernavsky]; the Pascal program uses 1.01 + 0.01 v_s).  Override in the spec."""
     return 1.0 if v2 <= 3.0 else 1.2
 
 
@@ -54,7 +54,7 @@ def contact_stress(T2: float, K: float, q: float, z2: int, a_w: float) -> float:
 
     .. math:: σ_H = \\frac{170\\,q}{z_2}\\sqrt{T_2 K \\Big(\\frac{z_2/q + 1}{a_w}\\Big)^3}
 
-    T2 in N·m (×1000 inside), a_w in mm.  Chernavsky; [GOST19650].
+    T2 in N·m (×1000 inside), a_w in mm.  [Chernavsky].
     """
     return CONTACT_CONSTANT * q / z2 * math.sqrt(1000.0 * T2 * K * ((z2 / q + 1.0) / a_w) ** 3)
 
@@ -65,20 +65,20 @@ def required_center_distance(T2: float, K: float, q: float, z2: int, sigma_HP: f
     .. math:: a_w = \\Big(\\frac{z_2}{q} + 1\\Big)
               \\sqrt[3]{\\Big(\\frac{170\\,q}{z_2 [σ]_H}\\Big)^2 T_2 K}
 
-    (the inverse of :func:`contact_stress`; [GOST19650]).
+    (the inverse of :func:`contact_stress`; [Chernavsky]).
     """
     return (z2 / q + 1.0) * ((CONTACT_CONSTANT * q / (z2 * sigma_HP)) ** 2
                              * 1000.0 * T2 * K) ** (1.0 / 3.0)
 
 
 def life_factor_contact(N_HE: float, K_HL_max: float = 1.15) -> float:
-    """K_HL = (10⁷/N_HE)^(1/8), limited to 0.67 ... K_HL_max ([GOST19650]: 1.15; the
+    """K_HL = (10⁷/N_HE)^(1/8), limited to 0.67 ... K_HL_max ([Chernavsky]: 1.15; the
     Pascal program clamps N_HE to 10⁶ ... 25·10⁷, i.e. 0.668 ... 1.33)."""
     return min(max((BASE_CYCLES_H / N_HE) ** 0.125, K_HL_MIN), K_HL_max)
 
 
 def life_factor_bending(N_FE: float) -> float:
-    """K_FL = (10⁶/N_FE)^(1/9), limited to 0.543 ... 1 ([GOST19650]; Pascal PR_KL)."""
+    """K_FL = (10⁶/N_FE)^(1/9), limited to 0.543 ... 1 ([Chernavsky]; Pascal PR_KL)."""
     lo, hi = K_FL_LIMITS
     return min(max((BASE_CYCLES_F / N_FE) ** (1.0 / 9.0), lo), hi)
 
@@ -89,7 +89,7 @@ CV_LAWS = ("power", "linear")
 def speed_factor(v_s: float, law: str = "power") -> float:
     """Sliding-speed factor C_v of the tin-bronze allowable.
 
-    * ``power`` (default): C_v = 1.66·v_s^(−0.352) ([GOST19650], a fit of Dunaev's
+    * ``power`` (default): C_v = 1.66·v_s^(−0.352) ([Chernavsky], a fit of Dunaev's
       table 0.95, 0.88, 0.83, 0.80 at 5, 6, 7, 8 m/s), limited to C_v <= 1: the table
       starts at 5 m/s and the limit keeps the allowable at or below 0.9·σ_B at low speed
       (our choice);
@@ -119,7 +119,7 @@ def allowables(group: str, hardened: bool, v_s: float, N_HE: float, N_FE: float,
                reversing: bool, sigma_B: float | None, sigma_T: float | None,
                sigma_bu: float | None, cv_law: str = "power", K_HL_max: float = 1.15,
                sigma_H0: float | None = None) -> Allowables:
-    """Allowable stresses of the wheel by material group ([GOST19650]).
+    """Allowable stresses of the wheel by material group ([Chernavsky]).
 
     Contact:
 
@@ -172,7 +172,7 @@ def bending_stress(F_t2: float, K: float, Y_F: float, gamma_w: float, m: float, 
     * ``ivanov``: σ_F = 0.7·Y_F2·F_t2·K / (b2·m) (Ivanov; Chernavsky), about 10 % higher.
 
     Y_F2 from :func:`geardesign.worm.tables.form_factor` at z_v2 = z2/cos³γ_w.
-    [GOST19650].
+    [Chernavsky].
     """
     if formula == "ivanov":
         return 0.7 * Y_F * F_t2 * K / (b2 * m)
@@ -187,7 +187,7 @@ def worm_deflection(F_t1: float, F_r: float, span: float, E: float, d_f1: float,
     .. math:: f = \\frac{l^3 \\sqrt{F_{t1}^2 + F_r^2}}{48 E I_{eq}}, \\qquad
               I_{eq} = \\frac{π d_{f1}^4}{64}\\Big(0.375 + 0.625\\frac{d_{a1}}{d_{f1}}\\Big)
 
-    simply supported shaft of span l, central load ([GOST19650], worm shaft
+    simply supported shaft of span l, central load ([Chernavsky], worm shaft
     stiffness; Dunaev & Lelikov).
     """
     I_eq = math.pi * d_f1 ** 4 / 64.0 * (0.375 + 0.625 * d_a1 / d_f1)

@@ -1,5 +1,5 @@
-"""Thermal balance of a worm gear unit: steady oil temperature ([GOST19650]
-[GOST19650] §A+.4, thermal balance; Dunaev & Lelikov;
+"""Thermal balance of a worm gear unit: steady oil temperature ([Chernavsky], thermal balance;
+Dunaev & Lelikov;
 Chernavsky)."""
 
 from __future__ import annotations
@@ -8,8 +8,8 @@ from dataclasses import dataclass
 
 
 def housing_area(a_w: float) -> float:
-    """Default cooling surface of the housing A ≈ 20·a_w^1.7 [m²], a_w in m ([GOST19650]
-    §A+.4; Dunaev & Lelikov)."""
+    """Default cooling surface of the housing A ≈ 20·a_w^1.7 [m²], a_w in m ([Chernavsky]; Dunaev &
+    Lelikov)."""
     return 20.0 * (a_w / 1000.0) ** 1.7
 
 
@@ -33,9 +33,9 @@ def oil_temperature(P1: float, eta: float, t0: float, K_T: float, area: float, p
 
     .. math:: t_{oil} = t_0 + \\frac{Φ}{A\\,[(1 - s)(1 + ψ) K_T + s K_{T,fan}]}
 
-    P1 in kW, K_T in W/(m² K), A in m², ψ the share of heat taken by the base.  [GOST19650]
-    §A+.4; the fan form with s = 0.35 (0.65/0.35 split) is from memory of Dunaev & Lelikov,
-    the hand calculation gives s = 0.3 ... 0.5.
+    P1 in kW, K_T in W/(m² K), A in m², ψ the share of heat taken by the base.  [Chernavsky]; the
+    fan form with s = 0.35 (0.65/0.35 split) is from memory of Dunaev & Lelikov,
+    textbooks give s = 0.3 ... 0.5.
     """
     heat = 1000.0 * (1.0 - eta) * P1
     if K_T_fan is None:

@@ -1,5 +1,4 @@
-"""Regression values: an example built on the equations of [Malashchenko2025] (not from the
-paper, which prints no numbers; see docs/ball_clutch.md).
+"""Regression values: a synthetic example (ours; [Malashchenko2025] prints no numbers).
 
 z3 = 6 steel balls of 16 mm (16.84 g) on d5 = 60 mm, α2 = 45°, c = 20 N/mm, y0 = 5 mm,
 n = 1000 min⁻¹, f = f_g = 0.10; spring d = 2.5 mm, D = 16 mm, G = 78.5 GPa.

@@ -1,5 +1,5 @@
-"""Regression values: the synthetic cases S1–S12 and the a_ISO table of [GOST18855]
-([GOST18855] §A.5, §A.4.9), recomputed there with the
+"""Regression values: the synthetic cases S1–S12 and the a_ISO table ([ISO281] formulas), recomputed
+with the
 same formulas.  They are not published numbers; they guard against unintended changes.  The
 published references are in ``tests/reference/bearing``."""
 

@@ -1,5 +1,5 @@
-"""Regression values: recomputations of [Gutyria2017] [Gutyria2017]
-(its "recomputed" columns and Appendix R), not published numbers.  They guard against
+"""Regression values: our recomputations of [Gutyria2017] and [Yaglinskyi2017], not published
+numbers. They guard against
 unintended changes; the published values are in ``tests/reference/epicycle_rim``."""
 
 import math
@@ -12,7 +12,7 @@ from geardesign.epicycle_rim import stress as ST
 
 
 def test_alternative_mean_stress_models_on_the_printed_pair():
-    """§A.4.1: on (σ_a, σ_m) = (80.28, 26.78): Goodman 83.39, Gerber 80.39,
+    """[Gutyria2017]: on (σ_a, σ_m) = (80.28, 26.78): Goodman 83.39, Gerber 80.39,
     Serensen-Kinasoshvili 81.64 (ψ_σD = ψ_σ/3.228 = 0.0506), cubic 81.33 MPa."""
     psi_D = ST.psi_sigma(717.0) / 3.228
     assert psi_D == pytest.approx(0.0506, abs=5e-5)
@@ -27,7 +27,7 @@ def test_outside_the_diagram_is_nan():
 
 
 def test_improved_fillet_intermediates():
-    """§A.4.4: G = 5.996 mm⁻¹ (t = 0.635 mm held), θ = 0.2265, K_σ/K_dσ = 2.299, K = 2.846."""
+    """[Gutyria2017]: G = 5.996 mm⁻¹ (t = 0.635 mm held), θ = 0.2265, K_σ/K_dσ = 2.299, K = 2.846."""
     pe = E.part_endurance(sigma_u=717.0, sigma_m1=314.0, d0=7.5, blank_size=34.0,
                           root_chord=9.0, fillet_radius=0.46, radius_tol=0.06,
                           rim_thickness=8.0, perimeter=120.0, Rz=25.0, K_V=1.0,
@@ -51,7 +51,7 @@ def test_life_of_the_consistent_governing_case():
 
 
 def test_mathieu_bands_of_the_note():
-    """§B.4.2: along b = μa/2, μ = 1/3: region 1 a = 0.855 … 1.194 (Ω/k0 = 1.830 … 2.163),
+    """[Yaglinskyi2017]: along b = μa/2, μ = 1/3: region 1 a = 0.855 … 1.194 (Ω/k0 = 1.830 … 2.163),
     region 2 a = 3.964 … 4.190 (series); μ = 1/9: 0.947 … 1.058 and 3.996 … 4.021; the
     linear boundaries 1/(1 ± μ/2).  The exact characteristic values and the series agree to
     1e-6 in region 1 (the hand calculation's RK4 check, 0.857 … 1.193, was 0.002 off)."""
@@ -71,7 +71,7 @@ def test_mathieu_bands_of_the_note():
 
 
 def test_meissner_rectangular_wave():
-    """§B.4.2, rectangular wave with equal halves k0²(1 ± μ): Ω/k0 ∈ 1.78 … 2.21 (μ = 1/3)
+    """[Yaglinskyi2017], rectangular wave with equal halves k0²(1 ± μ): Ω/k0 ∈ 1.78 … 2.21 (μ = 1/3)
     and 1.93 … 2.07 (μ = 1/9)."""
     for mu, expected in ((1 / 3, (1.78, 2.21)), (1 / 9, (1.93, 2.07))):
         lo, hi = M.stepwise_band([(0.5, 1 + mu), (0.5, 1 - mu)], 2.0, 0.3)
@@ -79,7 +79,7 @@ def test_meissner_rectangular_wave():
 
 
 def test_thin_ring_bending_parts_of_the_note():
-    """§A.2.4: about −155 / +82 MPa for the Raba ring: these are the bending terms 6M/(bδ²);
+    """[Roark]: about −155 / +82 MPa for the Raba ring: these are the bending terms 6M/(bδ²);
     the hoop forces add +2.8 / +5.6 MPa (−152.3 / +87.7 MPa in all)."""
     h = ST.thin_ring_hoop_stress(4023.0, 3.25, 64, 3, 60.0, 8.0, math.radians(20.0))
     W = 60.0 * 64.0 / 6.0

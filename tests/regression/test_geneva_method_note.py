@@ -1,5 +1,5 @@
-"""Regression values: recomputations of [RotaryDevices] (see docs/geneva.md), not
-published numbers.
+"""Regression values: our recomputations of [RotaryDevices] and of Geneva kinematics
+([Artobolevsky]), not published numbers.
 
 D.4: Geneva kinematics table (external z = 3...8, internal z = 4, 6).
 D.6: the spindle-block example (4-slot cross, 6 spindles, distributing shaft 30 min⁻¹).
@@ -7,13 +7,13 @@ D.6: the spindle-block example (4-slot cross, 6 spindles, distributing shaft 30 
 Differences from the hand calculation, by design:
 
 * B1 (constant part of J_p): the hand calculation prints 202.0 kg·m²; it used u1 = ω_d/ω_r in
-  J_d/u1², which makes the motor rotor vanish (2·10⁻⁵ kg·m²).  The seed defines
+  J_d/u1², which makes the motor rotor vanish (2·10⁻⁵ kg·m²).  The paper defines
   u1 = ω_r/ω_d ([RotaryDevices] eq. (2), "u1 = ω_p/ω_d"), so J_d/u1² = J_d·(ω_d/ω_r)² =
   116.8 kg·m² and B1 = 318.8 kg·m².  B1 is constant and does not change any power.
 * Barrel turned against the spindles with η_b = 0.80, η_sh = 0.85: the hand calculation divides the
   negative spindle power by η (N = 3.106 kW, N_sh = −1.810 kW); geardesign multiplies
-  power given back by η (the losses reduce what returns, as the hand calculation itself recommends in
-  D.3 item 2): N_max = 3.616 kW.  The hand calculation's number is reproduced below with its rule.
+  power given back by η (the losses reduce what returns, as the hand calculation itself recommends):
+  N_max = 3.616 kW.  The hand calculation's number is reproduced below with its rule.
 """
 
 import math

@@ -1,5 +1,5 @@
-"""Regression values: recomputations of [Korotkin2017] (values marked as the
-note's own evaluation, "S"), not published numbers.  The published references are in
+"""Regression values: our own evaluations of [Korotkin2017] and [Matyushenko2017], not published
+numbers. The published references are in
 ``tests/reference/novikov``."""
 
 import math
@@ -19,7 +19,7 @@ from geardesign.novikov.tables import KH_PSI, KH_ROWS
 from tests.conftest import SPECS, flat
 
 PSI = (0.05, 0.10, 0.15, 0.20, 0.25)
-# K_W(t, ψ) and K_F(t, ψ), the hand calculation's evaluation of polynomials (1), (6)
+# [Korotkin2017] tables 2-4: K_W(t, ψ) and K_F(t, ψ), our evaluation of polynomials (1), (6)
 KW = {
     0.0: (1.002, 0.998, 1.000, 1.005, 1.010), 0.1: (1.004, 1.007, 1.004, 1.006, 1.011),
     0.2: (1.004, 1.006, 1.010, 1.023, 1.040), 0.25: (1.013, 1.015, 1.028, 1.050, 1.075),
@@ -67,7 +67,7 @@ def v():
 
 
 def test_derived_geometry_of_the_example(v):
-    """, "derived quantities for the same example"."""
+    """[Korotkin2017] fig. 1, "derived quantities for the same example"."""
     expected = {"d1": 130.120, "d2": 769.880, "a_w": 450.000, "u": 5.9167, "p_x": 81.249,
                 "z_v1": 15.2995, "z_v2": 90.522, "l_k": 8.59, "rho_p": 819.9,
                 "d_a1": 148.12, "d_f1": 109.12, "d_a2": 787.88, "d_f2": 748.88}
@@ -77,7 +77,7 @@ def test_derived_geometry_of_the_example(v):
 
 
 def test_first_points_of_the_phase_groups(v):
-    """b at phases 1, 9, 16."""
+    """[Korotkin2017] fig. 1: b at phases 1, 9, 16."""
     for k, expected in ((1, (0, 0.2753, 0.4276, 0.7029, 0.8553)),
                         (9, (0.0106, 0.1629, 0.4382, 0.5905, 0.8658)),
                         (16, (0.1531, 0.3054, 0.5807, 0.7331))):
@@ -87,13 +87,13 @@ def test_first_points_of_the_phase_groups(v):
 
 
 def test_error_free_maxima(v):
-    """error-free, linear compliance: σ_F,max ≈ 254 MPa, σ_H,max ≈ 504."""
+    """[Korotkin2017] fig. 1: error-free, linear compliance: σ_F,max ≈ 254 MPa, σ_H,max ≈ 504."""
     assert abs(v["sigma_F_max_ideal"] - 254.0) < 1.0
     assert abs(v["sigma_H_max_ideal"] - 504.0) < 1.0
 
 
 def test_back_solved_forces():
-    """F ≈ 75.7 kN from σ_H = 1111.429, ≈ 71.5 kN from σ_F = 662.003
+    """[Korotkin2017] fig. 1: F ≈ 75.7 kN from σ_H = 1111.429, ≈ 71.5 kN from σ_F = 662.003
     (±2 %)."""
     r = standard_rack()
     beta = math.radians(22.747)

@@ -1,5 +1,5 @@
-"""Regression values of [Matusevich2017]: [Matusevich2017] own
-recomputations ("S" values, not printed in the papers).  They guard this code against
+"""Regression values: our own recomputations of [Matusevich2017], [Malashchenko2017] and
+[Gavrilov2017] (not printed in the papers). They guard this code against
 change; the published values are in ``tests/reference/planetary``."""
 
 from __future__ import annotations
@@ -30,7 +30,7 @@ def doc3k(alpha, x_a):
     }).document()["results"]
 
 
-# planetary.md B.10, first sweep: i: (x_g, x_b, x_e, ε_ag, Δϑ_ag, η_ag, s_a sun)
+# [Matusevich2017], first sweep: i: (x_g, x_b, x_e, ε_ag, Δϑ_ag, η_ag, s_a sun)
 FIRST = {
     24: (-0.324, 0.836, -0.762, 1.483, 3.813, 0.609, 0.1186),
     31: (-0.416, 1.134, -0.573, 1.306, -2.011, 0.561, 0.0226),

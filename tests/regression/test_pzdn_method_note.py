@@ -1,5 +1,4 @@
-"""Recomputations of [Lopukhov] [Lopukhov] (its "S" values and the
-expected values of its §11 cases that the thesis does not print).  Regression values, not
+"""Our recomputations of [Lopukhov] (values the thesis does not print). Regression values, not
 truth: the hand calculation computed them with the same formulas (pure python, explicit integration
 with dt = 10 µs); tolerances as in the hand calculation.
 """
@@ -49,14 +48,14 @@ def test_s2_two_springs(T, c, d, D, i, expected):
 
 
 def test_curvature_factors_at_c10():
-    """[Lopukhov]: 1.0833 (thesis), 1.0806 (Wahl K_i), 1.0886 (EN 13906-3 q)."""
+    """[Lopukhov] §2.1: 1.0833 (thesis), 1.0806 (Wahl K_i), 1.0886 (EN 13906-3 q)."""
     assert_ref(SP.curvature_factor(10.0, "thesis"), 1.0833, 0.00005, "(4c − 1)/(4c − 4)")
     assert_ref(SP.curvature_factor(10.0, "wahl"), 1.0806, 0.00005, "K_i")
     assert_ref(SP.curvature_factor(10.0, "en13906"), 1.0886, 0.00005, "q")
 
 
 def test_mean_vs_outer_diameter():
-    """[Lopukhov]: with the mean diameter D − d the stiffness rises about 12 %:
+    """[Lopukhov] §2.2: with the mean diameter D − d the stiffness rises about 12 %:
     spring 10 (i = 4) 28.0 instead of 25.0 N·m/rad, spring 11 (i = 3) 9.09 instead of 8.34."""
     a = pzdn(spring=[{"torque": 30.0, "wire_diameter": 6.5, "index": 8.0,
                       "coil_diameter": 60.0, "diameter_basis": "outer", "coils": 4,
@@ -69,7 +68,7 @@ def test_mean_vs_outer_diameter():
 
 
 def test_d1_stage_details():
-    """PZDN-D1 ([Lopukhov] table): amplitudes with the corrected signs."""
+    """PZDN-D1 ([Lopukhov] appendix B): amplitudes with the corrected signs."""
     cf = solve(ThreeMass(**D1, C12=8.33, C13=25.0), 2.0)
     s2, s3 = cf.stages[1], cf.stages[2]
     a2, a3 = s2.amplitudes(), s3.amplitudes()
@@ -126,7 +125,7 @@ def test_d3_scaling_property(C):
 
 
 def test_ramp_soft_vs_stiff():
-    """[Lopukhov]: with a 15 ms torque ramp the stiff variant (833 / 2500 N·m/rad)
+    """[Lopukhov] appendix B: with a 15 ms torque ramp the stiff variant (833 / 2500 N·m/rad)
     gives k12 = 1.82, k13 = 1.39 within 1 s; the soft PZDN springs (8.33 / 25) k12 = 2.65."""
     ramp = Motor(T1=26.5, rise_time=0.015)
     stiff = simulate(ThreeMass(**D1, C12=833.0, C13=2500.0), ramp, 1.0, stick=False)
@@ -137,7 +136,7 @@ def test_ramp_soft_vs_stiff():
 
 
 def test_r1_regression_table():
-    """[Lopukhov] table (±0.1 %)."""
+    """[Lopukhov] §2.3 (±0.1 %)."""
     res = pzdn(regression={"C12": 24.7, "sweep": [24.7, 100.0, 500.0, 1000.0, 1940.0,
                                                   2730.0]})["regression_sweep"]
     exp12 = [79.906, 79.884, 79.796, 79.752, 79.873, 80.180]

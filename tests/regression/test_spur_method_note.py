@@ -1,5 +1,5 @@
-"""Regression values: recomputations of [GOST21354] ([GOST21354]
-§9, values marked S), not published numbers.  They guard against unintended changes;
+"""Regression values: our recomputations of the published methods, not published numbers. They guard
+against unintended changes;
 the published references are in ``tests/reference/spur``."""
 
 import pytest

@@ -1,5 +1,6 @@
-"""Regression values: recomputation of [Tkachenko2017] (see docs/wave_gear.md): K_zh of the five test racks of Tkachenko et al.
-([KhPI2017] 2017) from eqs. (4)-(5), GOST 13755 rack, the height correction α_h and the
+"""Regression values: our recomputation of [Tkachenko2017] eqs. (4), (5): K_zh of the five test
+racks of Tkachenko et al.
+([Tkachenko2017]) from eqs. (4)-(5), GOST 13755 rack, the height correction α_h and the
 predicted cantilever forces.  The paper prints no numeric K_zh (its Fig. 3-4 ordinates are
 not legible), so these are not published values; the slice-beam reconstruction of eq. (5)
 is the hand calculation's.

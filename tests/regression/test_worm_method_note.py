@@ -1,5 +1,5 @@
-"""Regression values: a worm example computed with the textbook formulas of [GOST19650]
-and [GOST2144] (see docs/worm.md), not published numbers.  They guard against unintended
+"""Regression values: a synthetic worm example (ours, recomputed by hand with the same textbook
+formulas), not published numbers.  They guard against unintended
 changes; the published references are in ``tests/reference/worm``.
 
 Known difference: the hand calculation interpolates the friction angle ρ' in degrees between the

@@ -1,8 +1,7 @@
 """Contact of two cylinders (line contact) and of a crowned flank (point contact): Hertz
 theory and the nonlinear deformation model (W = C_m·σ^n, n = 0.7) of Popov, Mironenko,
 Mozgovoi and Savenkov, "Contact strength of gears accounting for the nonlinear relation
-between tooth deformations and stresses", Bulletin of NTU "KhPI" 2017 No. 25, pp. 11635-
-12196 of [KhPI2017] ([GOST21354]).
+between tooth deformations and stresses", Bulletin of NTU "KhPI" 2017 No. 25 ([Popov2017]).
 
 These are informative: the allowables of GOST 21354-87 are calibrated against Hertz
 stresses, so the rating uses σ_H of :mod:`.gost21354`; the n = 0.7 model shows the reserve
@@ -42,7 +41,7 @@ def popov_line(F_n: float, b_w: float, rho: float, E1: float, nu1: float, E2: fl
         \\quad b_0 = 1.025\\,S^{5/7}, \\quad σ_H = 0.62\\,\\frac{F_n/b_w}{S^{5/7}}
 
     References: Popov et al. 2017, eqs. (8) and (9) (exponent 5/7 and the place of b_w
-    reconstructed in [GOST21354]; for equal steels they reduce to the printed
+    reconstructed; for equal steels they reduce to the printed
     eqs. (10) b0 = 1.604·sqrt(ρF/(Eb)) and (11) σ_H = 0.396·sqrt(FE/(ρb))).
     """
     S = (_k(E1, nu1) * rho * F_n / b_w) ** 0.7 + (_k(E2, nu2) * rho * F_n / b_w) ** 0.7
@@ -53,7 +52,7 @@ def crowning_ellipse_ratio(rho: float, b_w: float, crowning: float) -> float:
     """Axis ratio α = b0/b_K = sqrt(ρ_w/R) of the contact ellipse of a crowned flank,
     R = b_w²/(8ΔS) the crowning radius for a crowning depth ΔS at the face ends.
 
-    References: Popov et al. 2017, text before eq. (12) ([GOST21354]: R from the
+    References: Popov et al. 2017, text before eq. (12) ([Popov2017]: R from the
     sagitta, α as printed "α = b0/b_K = √(ρ_w/R)").
     """
     R = b_w * b_w / (8.0 * crowning)

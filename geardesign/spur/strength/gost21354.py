@@ -1,12 +1,11 @@
 """Strength of cylindrical involute gears to GOST 21354-87: contact and bending fatigue,
 peak (static) loads.  Pure functions; stresses MPa, forces N, lengths mm, angles rad.
 
-The standard's text could not be consulted ([ZPCIL]).
+The standard's text could not be consulted.
 Every formula below was checked against the public implementations named there — ZPCIL
 (GitHub ``s-berlin/ZPCIL_test``, a port of the Fortran GOST 21354-87 program, file names
-given per function) and MATLAB DANNYE — and [GOST21354]
-[GOST21354] §8.5-8.7 with the corrections of [ZPCIL]
-§1-2.  Where those sources disagree, the docstring says which was chosen.
+given per function) and MATLAB DANNYE — and [GOST21354] with the corrections of [ZPCIL].  Where
+those sources disagree, the docstring says which was chosen.
 """
 
 from __future__ import annotations
@@ -35,7 +34,7 @@ def z_h(beta_b: float, alpha_t: float, alpha_tw: float) -> float:
     .. math:: Z_H = \\frac{1}{\\cos α_t}\\sqrt{\\frac{2\\cos β_b}{\\tan α_{tw}}}
 
     (2.495 for α = 20°, x_Σ = 0, β = 0.)  References: GOST 21354-87; ZPCIL ``GEOM.h``;
-    [ZPCIL] ([GOST21354] pairing with d_w1 understates σ_H of
+    [ZPCIL] CONTAU.h (the textbook pairing with d_w1 understates σ_H of
     shifted pairs by cos α_tw/cos α_t).
     """
     return math.sqrt(2.0 * math.cos(beta_b) / math.tan(alpha_tw)) / math.cos(alpha_t)
@@ -68,7 +67,7 @@ def sigma_h(Z_E: float, Z_H: float, Z_eps: float, F_t: float, K_H: float, u: flo
     "+" for an external pair, "−" for an internal pair (``internal=True``, u = z2/z1 of
     the internal gear over the pinion): the reduced curvature of concave and convex flanks.
     References: GOST 21354-87; ZPCIL ``CONTAU.h`` (``FTH = 2000*TQ/D1``, ``DSH = D1``);
-    ISO 6336-2 §5 (u < 0 for internal gears); ``planetary.md`` D.5.
+    ISO 6336-2 §5 (u < 0 for internal gears); [GOST21354].
     """
     s = -1.0 if internal else 1.0
     return Z_E * Z_H * Z_eps * math.sqrt(F_t * K_H * (u + s) / (b_w * d1 * u))
@@ -90,7 +89,7 @@ def z_n(N_HG: float, N_HE: float, Z_N_max: float) -> float:
 
     Z_N,max = 2.6 for a homogeneous structure, 1.8 for a hardened surface.
     References: GOST 21354-87; ZPCIL ``ZLIFE.h``, ``CONTAU.h`` (floor 0.75);
-    [ZPCIL]
+    [ZPCIL] SGMHLB.h, CONTAU.h; [DANNYE].
     """
     if N_HE <= N_HG:
         return min((N_HG / N_HE) ** (1.0 / 6.0), Z_N_max)
@@ -151,7 +150,7 @@ def y_fs(z_v_: float, x: float) -> float:
     .. math:: Y_{FS} = 3.47 + \\frac{13.2}{z_v} - \\frac{29.7 x}{z_v} + 0.092 x^2
 
     z_v = z/cos³β.  The coefficient of x/z_v is 29.7 in all four public GOST programs found
-    (Delphi CalculateCWheel and TPer, two MATLAB programs); [GOST21354] prints 27.9.
+    (Delphi CalculateCWheel and TPer, two MATLAB programs); a textbook prints 27.9.
     Within −3…+4 % of the GOST chart (ZPCIL ``YFS.h`` regression) for z_v 17…200.
     References: GOST 21354-87 (chart); [ZPCIL] (Y_FS rows).
     """
@@ -165,7 +164,7 @@ def y_fs_internal(x: float) -> float:
     .. math:: Y_{FS} = 3.47 + 0.092 x^2
 
     x in the GOST 19274-73 sign (positive: thinner internal teeth).  The GOST 21354-87
-    chart of Y_FS for internal teeth could not be consulted ([ZPCIL]):
+    chart of Y_FS for internal teeth could not be consulted:
     an internal tooth is wider at its root than the basic-rack tooth, so the rack value
     overestimates the root stress.  KISSsoft (ISO 6336-3 method B, shaper-cut rings)
     prints Y_F·Y_S = 2.71 and 2.81 for the NREL 5 MW stage-1 and stage-2 rings, where
@@ -186,7 +185,7 @@ def y_beta(eps_beta: float, beta: float) -> float:
 def y_eps(eps_alpha: float, eps_beta: float) -> float:
     """Contact ratio factor for bending Y_ε: 1 (spur), 0.2 + 0.8/ε_α (0 < ε_β ≤ 1),
     1/ε_α (ε_β > 1).  References: GOST 21354-87; ZPCIL ``IZGIBU.h``;
-    [ZPCIL]"""
+    [ZPCIL] IZGIBU.h, YLIFE.h."""
     if eps_beta <= 0.0:
         return 1.0
     if eps_beta <= 1.0:
@@ -202,7 +201,7 @@ def y_delta(m: float) -> float:
 
 def y_x(d: float) -> float:
     """Size factor for bending Y_X = 1.05 − 1.25·10⁻⁴·d ≥ 0.8 (d [mm]).
-    GOST 21354-87; ZPCIL ``IZGIBU.h`` ([GOST21354] − 0.006m is ISO 6336-3)."""
+    GOST 21354-87; ZPCIL ``IZGIBU.h`` (the textbook 1.03 − 0.006m is ISO 6336-3)."""
     return max(1.05 - 1.25e-4 * d, 0.8)
 
 
@@ -210,7 +209,7 @@ def y_a(gamma_A: float, reverse_ratio: float) -> float:
     """Reversed-loading factor Y_A = 1 − γ_A·T_rev/T (1 for one-way loading).
 
     γ_A = 0.35 (≤ 350 HB), 0.25 (hardened), 0.10 (nitrided).
-    References: GOST 21354-87; ZPCIL ``IZGIBU.h`` (``GA``); [ZPCIL]
+    References: GOST 21354-87; ZPCIL ``IZGIBU.h`` (``GA``); [ZPCIL].
     """
     return 1.0 - gamma_A * reverse_ratio
 
@@ -258,8 +257,8 @@ def dynamic_load(delta: float, grade: int, m: float, v: float, a_w: float, u: fl
 
     δ from ``tables.DELTA_H``/``DELTA_F``, g_0 and w_max by accuracy grade and module
     (``tables.G0``, ``tables.W_MAX``); v [m/s], a_w [mm].
-    References: GOST 21354-87; ZPCIL ``WV.h``; [ZPCIL] (the δ·g_0
-    product of [GOST21354] is 10× too large).
+    References: GOST 21354-87; ZPCIL ``WV.h``; [ZPCIL] DLTH.h, WV.h; [DANNYE] (the δ·g_0
+    product of the textbook pairing is 10× too large).
     """
     j = module_class(m)
     return min(delta * T.G0[grade][j] * v * math.sqrt(a_w / u), T.W_MAX[grade][j])
@@ -313,7 +312,7 @@ def mesh_stiffness(z_v1: float, z_v2: float, x1: float, x2: float) -> float:
     .. math:: 1/c' = 0.05139 + 0.1425/z_{v1} + 0.1860/z_{v2} - 0.01x_1 - 0.1027x_1/z_{v1}
               + 0.00455x_2 + 0.3762x_2/z_{v2} + 0.00734x_1^2 - 0.00054x_2^2
 
-    References: ZPCIL ``CE.h`` (Fortran and C++ alike); [ZPCIL]
+    References: ZPCIL ``CE.h`` (Fortran and C++ alike); [ZPCIL] AKHA.h.
     """
     q = (0.05139 + 0.1425 / z_v1 + 0.1860 / z_v2 - 0.01 * x1 - 0.1027 * x1 / z_v1
          + 0.00455 * x2 + 0.3762 * x2 / z_v2 + 0.00734 * x1 * x1 - 0.00054 * x2 * x2)
@@ -344,7 +343,7 @@ def k_alpha(eps_alpha: float, eps_beta: float, c_gamma: float, b_w: float, f_pb:
 
     c_γ = c'(0.75ε_α + 0.25) [N/(mm·µm)]; a_α = 0.2 (≤ 350 HB) or 0.3 for contact, 0.4 for
     bending; f_pb = √(f_pb1² + f_pb2²) [µm].
-    References: ZPCIL ``AKHA.h``; [ZPCIL]
+    References: ZPCIL ``AKHA.h``; [ZPCIL] AKHA.h.
     """
     eps_gamma = eps_alpha + eps_beta
     C = c_gamma * b_w * a_alpha * f_pb / (F_t * K_A * K_v * K_beta)
@@ -437,8 +436,8 @@ def module_estimate(T1: float, K_Fbeta: float, Y_FS: float, psi_bd: float, z1: i
 
     T1 [N·m] the pinion torque, Y_FS and σ_FP of the gear with the larger Y_FS/σ_FP,
     ψ_bd = b_w/d1; K_m = 14 for spur gears with T1 in N·m (1.4 with T1 in N·mm; textbook
-    form of the GOST 21354-87 design calculation, as used by the KO-2 thesis, [Lopukhov]
-    L1132-1136; verify).
+    form of the GOST 21354-87 design calculation, as used by the KO-2 thesis, [Lopukhov] §2.1;
+    verify).
     """
     return K_m * (K_Fbeta * T1 * Y_FS / (psi_bd * z1 * z1 * sigma_FP)) ** (1.0 / 3.0)
 

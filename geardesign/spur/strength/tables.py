@@ -1,11 +1,11 @@
 """Tables of GOST 21354-87 and the series it uses, as data.
 
-The standard's own text could not be consulted ([ZPCIL]);
+The standard's own text could not be consulted;
 each table names the public implementations of the standard it was checked against:
 
 * ZPCIL — GitHub ``s-berlin/ZPCIL_test`` (C++ port of the Fortran GOST 21354-87 program;
   the Fortran DATA statements are kept in comments; files named per table);
-* DANNYE — a public MATLAB GOST 21354-87 program ([ZPCIL]);
+* DANNYE — a public MATLAB GOST 21354-87 program;
 * Delphi — public reducer-design units ``CalculateCWheel`` and ``TPer``.
 """
 
@@ -14,7 +14,7 @@ from __future__ import annotations
 # --- dynamic factor -----------------------------------------------------------------
 # δ_H, δ_F: GOST 21354-87 table 8 (ZPCIL DLTH.h «ГОСТ таб 8 стр 22», DLTF.h; DANNYE).
 # The GOST prints these 10× larger together with g_0 10× smaller (DANNYE: δ 0.06, g_0 5.6;
-# ZPCIL: δ 0.006, g_0 56); the product δ·g_0 is what matters ([ZPCIL]).
+# ZPCIL: δ 0.006, g_0 56); the product δ·g_0 is what matters ([ZPCIL] DLTH.h, WV.h; [DANNYE]).
 # Keys: (surface hardness class, tooth form); "soft" = the softer gear <= 350 HB.
 DELTA_H = {
     ("soft", "spur"): 0.006, ("soft", "spur_relieved"): 0.004, ("soft", "helical"): 0.002,
@@ -81,7 +81,7 @@ CENTER_DISTANCES_2 = (71, 90, 112, 140, 180, 225, 280, 355, 450, 560, 710, 900, 
                       1800, 2240)
 # GOST 2185-66 face width ratios ψ_ba = b_w/a_w.
 PSI_BA = (0.1, 0.125, 0.16, 0.2, 0.25, 0.315, 0.4, 0.5, 0.63, 0.8, 1.0, 1.25)
-# GOST 9563-60 modules [mm], 1st (preferred) and 2nd series ([GOST21354]).
+# GOST 9563-60 modules [mm], 1st (preferred) and 2nd series ([GOST9563]).
 MODULES_1 = (1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0, 12.0, 16.0, 20.0, 25.0)
 MODULES_2 = (1.125, 1.375, 1.75, 2.25, 2.75, 3.5, 4.5, 5.5, 7.0, 9.0, 11.0, 14.0, 18.0, 22.0)
 # GOST 21354-87 design formula constant K_a [MPa^(1/3), with T1 in N·m] for steel pairs:

@@ -6,13 +6,13 @@ pages; SKF prints a_SKF only, as a diagram).  The standard's own a_ISO diagrams 
 available either.  What is tested here against published text:
 
 * the constants and ν1 as transcribed from ISO 281:2007 equations (28)–(36) by a public
-  solver ([ZPCIL]);
+  solver ([BBContact]; [Dessia]);
 * properties the standard states: a_ISO <= 50; κ limited to 0.1 … 4; a_ISO -> 0.1 as
   e_C·C_u/P -> 0 (SKF ConCentra manual: "as the value of ηc(Pu/P) tends to zero, a_SKF tends
   to 0.1 for all values of κ"; the ISO curves share the shape);
 * the choice c3 = 0.19087 for 0.4 <= κ < 1 (ball): continuity at κ = 0.4.
 
-The [GOST18855] synthetic a_ISO table (§A.4.9) is regression only
+A synthetic a_ISO table (our own recomputation) is regression only
 (``tests/regression/test_bearing_method_note.py``).
 """
 

@@ -1,17 +1,17 @@
 """Table values of the standards at their printed points.
 
 Sources (the texts of ISO 281:2007, GOST 18855-94/-2013 and ISO 76 could not be read; see
-[ZPCIL]/§5):
+[BBContact]; [Dessia]):
 
 * a1, GOST 18855-94 (= ISO 281:1990): SKF ConCentra manual, Table 1 "Values for life
   adjustment factor a1" (1, 0.62, 0.53, 0.44, 0.33, 0.21), also in
   ``jordanrobot/Calculators`` ``docs/bearing_rolling_life.md`` (after Nose Seiko) and, for
   L5 = 0.62, NTN CAT. No. 2202/E Table 3.2.
-* a1, ISO 281:2007 (= GOST 18855-2013): [GOST18855] transcription (§A.4.6), which it
+* a1, ISO 281:2007 (= GOST 18855-2013): a transcription of the ISO table, which it
   cross-checked with a public implementation; not seen in the standard.  Each value equals
   0.95·(ln(100/R)/ln(100/90))^(2/3) + 0.05 to its printed digits (checked below).
 * X, Y, e: ISO 281:2007 Table 3 as confirmed by a public transcription (standards check §1:
-  fixed-angle rows) and five public implementations (deep groove, [GOST18855]).
+  fixed-angle rows) and five public implementations (deep groove, [ISO281] table 3).
 * e_C guide table: MESYS manual, "Lubrication" (mesys.ag/manual/lubrication_2.html).
 """
 
@@ -43,7 +43,7 @@ def test_a1_iso281_2007(R, a1):
 
 
 def test_a1_editions_differ():
-    # the editions differ: 0.62 vs 0.64 at 95 %, 0.21 vs 0.25 at 99 % ([GOST18855])
+    # the editions differ: 0.62 vs 0.64 at 95 %, 0.21 vs 0.25 at 99 % ([ISO281])
     assert L.a1_factor(95, "gost18855_94") != L.a1_factor(95, "iso281_2007")
 
 

@@ -1,7 +1,6 @@
 """Paper A: S. S. Gutyria, S. A. Medvedev, Yu. M. Khomiak, A. N. Chanchin, "Probabilistic
 analysis of the fatigue strength of the epicycle of a trolleybus wheel gearbox", Visnyk NTU
-"KhPI", series "Problems of mechanical drive", 2017, No. 25 (1247), pp. 37-41 ([KhPI2017]
-lines 3143-3864; decoded in [Gutyria2017] part A).
+"KhPI", series "Problems of mechanical drive", 2017, No. 25 (1247), pp. 37-41 ([Gutyria2017]).
 
 Raba 118/77 ring gear, steel 30KhGSA (σ_u = 717, σ_y = 550, σ_-1 = 314 MPa), m = 3.25 mm,
 z = 64, S = 9 mm, ρ = 0.2 mm (Δρ = ±0.06), b = 60 mm, δ = 8 mm, Rz = 25 µm, δ3 = 34 mm;
@@ -107,7 +106,7 @@ def test_table1_right_acceleration_misprint(res):
 
 
 # Equation (8) applied to the printed (σ_a, σ_m) pairs of Table 1 gives the printed σ_-1eq:
-# the mean-stress correction itself is exact; tolerance 0.05 % ([Gutyria2017] cases A-5..A-8).
+# the mean-stress correction itself is exact; tolerance 0.05 % (cases of docs/epicycle_rim.md).
 EQ8 = [((54.03, -10.23), 53.78), ((78.14, 22.44), 79.0), ((80.28, 26.78), 81.33),
        ((48.95, -9.24), 48.74)]
 

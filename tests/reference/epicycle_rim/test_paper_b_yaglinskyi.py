@@ -1,7 +1,6 @@
 """Paper B: V. P. Yaglinskyi, S. S. Gutyria, A. M. Chanchin, V. M. Zheglova, "Influence of
 parametric oscillations on the fatigue strength of a wheel-gearbox epicycle", Visnyk NTU
-"KhPI", series "Problems of mechanical drive", 2017 ([Yaglinskyi2017]; decoded in
-[Gutyria2017] part B).
+"KhPI", series "Problems of mechanical drive", 2017 ([Yaglinskyi2017]).
 
 Raba 118.77: n_p = 3, z = 26/19/64, m = 3.25 mm, ε_α = 1.42, wheel radius R = 0.5 m, natural
 frequencies of the ring k0 = 2233 … 3770 Hz.
@@ -91,7 +90,7 @@ def test_table1_4844_misprint():
 
 
 def test_table1_speed_misprint():
-    """Printed V_T are 30.6x below the fixed-ring kinematics ([Gutyria2017])."""
+    """Printed V_T are 30.6x below the fixed-ring kinematics ([Yaglinskyi2017])."""
     for k0, v_printed in SPEEDS_A1.items():
         v_kin = R.speed_from_mesh_frequency(2 * k0, 64, 500.0)  # the paper's h = 1
         assert 30.0 < v_kin / v_printed < 31.3

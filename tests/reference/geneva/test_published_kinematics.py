@@ -4,7 +4,7 @@
    speed: ω2,max/ω1 = 2.41 and |ε2|max/ω1² = 5.41 (z = 4), 1.00 and 1.35 (z = 6).  These are
    the classical tabulated values of theory-of-machines textbooks (Artobolevsky,
    "Teoriya mekhanizmov i mashin"; Kozhevnikov, ibid.), quoted with the textbook names in
-   [GOST19650]/E.1 ("z = 4: 2.41 / 5.41; z = 6:
+   [Artobolevsky] ("z = 4: 2.41 / 5.41; z = 6:
    1.00 / 1.35").  The printed pages themselves could not be consulted for this work (see
    docs/geneva.md, "Published cases"); printed to two decimals, tolerance 0.005.
 

@@ -1,4 +1,4 @@
-"""Korotkin 2017, the printed NOVGOST-17 example ([Korotkin2017]; the program
+"""Korotkin 2017, the printed NOVGOST-17 example ([Korotkin2017] fig. 1; the program
 printout "Fig. 1"): V. I. Korotkin, "Algorithm of the program for calculating Novikov
 gears with basic rack per GOST 15023-76 under real multi-pair engagement", Bulletin of
 NTU "KhPI", series "Problems of mechanical drive", 2017, No. 25 (1247).
@@ -93,11 +93,11 @@ def test_four_to_five_contact_points_per_phase(v):
 
 
 def test_printed_stresses_are_consistent_with_formulas_3_and_4():
-    """The hand calculation's force back-solution: the printed σ_Hmax (phase 9)
+    """A force back-solution ([Korotkin2017] fig. 1): the printed σ_Hmax (phase 9)
     and σ_Fmax (phase 10) belong to the same point (tooth 1, j = 2) in adjacent phases, so
     the forces that formulas (3) and (4) need must nearly agree.  With Y_a = 1 they agree
     within 6 %; equality needs Y_a ≈ 0.945, inside the range 0.93…0.995 that the
-    unreadable exponent of Y_a allows."""
+    unreadable exponent of Y_a allows ([Korotkin2017] eq. (3))."""
     r = standard_rack()
     beta = math.radians(22.747)
     d1, d2 = 120 / math.cos(beta), 710 / math.cos(beta)

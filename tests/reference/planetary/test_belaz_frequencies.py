@@ -2,7 +2,7 @@
 
 Source: Gavrilov S. A., Ishin N. N., Goman A. M., Skorokhodov A. S., "Vibration
 monitoring of the technical condition of gear wheels of planetary reducers", Bulletin of
-NTU "KhPI" 2017 No. 25 ([Gavrilov2017]; [Matusevich2017] part C).
+NTU "KhPI" 2017 No. 25 ([Gavrilov2017]).
 
 Table 1 (L2078-2118): first planetary row of the 130-t BELAZ motor-wheel reducer, sun
 z1 = 21, planets z2 = 47, ring z3 = 117, motor (sun) shaft 894 min⁻¹, mesh frequency

@@ -1,10 +1,10 @@
 """The KO-2 thesis ([Lopukhov]: E. V. Lopukhov, "Improvement of the device of dynamic loads
-of the drive of knitting machines", master's thesis; [Lopukhov] [Lopukhov]).
+of the drive of knitting machines", master's thesis; [Lopukhov]).
 
-Each expected value is the thesis' printed value ("printed", with its line in the paper)
+Each expected value is the thesis' printed value ("printed", with its line in the thesis)
 where it is right, with a tolerance that covers its rounding; where the thesis prints a
 wrong number the test asserts the corrected value and names the misprint.  The corrected
-start-up peaks (12.53 / 35.20 N·m) are the values of [Lopukhov] / §11 that the
+start-up peaks (12.53 / 35.20 N·m) are the values of the corrected model ([Lopukhov] §2.2) that the
 issue fixes as the validation values of the model; they are checked here both in the
 closed form and by numerical integration.
 """
@@ -49,7 +49,7 @@ def spring_results(doc, n=1):
 
 
 def test_one_spring_strength_and_wind_up():
-    """§2.1, [Lopukhov] (case PZDN-S1)."""
+    """§2.1, [Lopukhov] §2.1 (case PZDN-S1)."""
     v = spring_results(pzdn(motor=MOTOR, spring=[ONE_SPRING]))
     assert_ref(v["k"], 1.08, 0.005, "k (c = 10), printed 1.08, l. 970")
     # printed W = 21.195 mm³ (l. 1016, 1023): the thesis takes π = 3.14; with π: 21.206
@@ -76,7 +76,7 @@ def test_one_spring_strength_and_wind_up():
 
 def test_one_spring_coils_misprint():
     """The thesis computes i = 3.1 from its garbled eq. (15) and takes i = 4 (l. 1011);
-    3.1 is not reproducible with D = 60 mm ([Lopukhov], §12.1): the
+    3.1 is not reproducible with D = 60 mm ([Lopukhov] §2.1): the
     reconstructed (φ − φ1)·E·J/(π·D·T) gives 2.60 (→ 3), so i = 4 is on the safe side."""
     v = spring_results(pzdn(motor=MOTOR, spring=[ONE_SPRING]))
     assert_ref(v["i_required"], 2.600, 0.001, "reconstructed eq. (15)")
@@ -88,7 +88,7 @@ def test_one_spring_coils_misprint():
 
 
 def test_two_springs_stiffness():
-    """§2.2, [Lopukhov] (cases PZDN-S2a, S2b): the printed stiffnesses 25 and
+    """§2.2, [Lopukhov] §2.2 (cases PZDN-S2a, S2b): the printed stiffnesses 25 and
     8.33 N·m/rad and twists 1.2 and 0.9 rad."""
     doc = pzdn(spring=[KNITTING, TAKE_DOWN])
     a, b = spring_results(doc, 1), spring_results(doc, 2)
@@ -112,7 +112,7 @@ def test_two_springs_stiffness():
 
 def test_text_variant_stiffnesses():
     """The text of §2.2 (l. 1616) quotes C12 = 6.25, C13 = 33.3 N·m/rad: spring 11 with
-    i = 4 and spring 10 with i = 3 — the other coil-number variant ([Lopukhov])."""
+    i = 4 and spring 10 with i = 3 — the other coil-number variant ([Lopukhov] §2.2)."""
     a = spring_results(pzdn(spring=[dict(KNITTING, coils=3)]))
     b = spring_results(pzdn(spring=[dict(TAKE_DOWN, coils=4)]))
     assert_ref(a["C"], 33.3, 0.05, "C13 of the text variant")
@@ -123,7 +123,7 @@ def test_text_variant_stiffnesses():
 
 
 def test_startup_breakaway_time_and_frequencies():
-    """Appendix B, [Lopukhov] (case PZDN-D1)."""
+    """Appendix B, [Lopukhov] appendix B (case PZDN-D1)."""
     r = pzdn(startup=dict(D1, method="closed_form", t_end=2.0, history_points=0))["results"]
     c, m = r["closed_form"], r["startup_model"]
     assert_ref(c["tau1"], 0.04148, 0.000005, "τ1, printed 0.04148 s (l. 2149)")
@@ -170,7 +170,7 @@ def test_startup_corrected_peaks(method):
     """Printed T12max = 16.07, T13max = 28.3 N·m, k12 = 3.65, k13 = 1.6 (l. 1618-1632,
     2327-2328) are not reproducible: the mode-shape relation of eq. (18) has the wrong sign
     (A13 = +(J1/C12)(ω12² − β²)A12 instead of −) on top of the slips above.  Corrected
-    ([Lopukhov]): T12max = 12.53, T13max = 35.20 N·m, k12 = 2.85, k13 = 1.99 — the
+    ([Lopukhov] appendix B): T12max = 12.53, T13max = 35.20 N·m, k12 = 2.85, k13 = 1.99 — the
     stage-3 envelope of eq. (27) in the closed form; the integration of the same model
     (undamped step, no sticking) reaches it over a long start (30 s) within 0.1 %."""
     if method == "closed_form":
@@ -206,7 +206,7 @@ def test_closed_form_and_integration_agree():
 
 
 def test_regression_at_24_7():
-    """§2.3, [Lopukhov] (case PZDN-R1): series stiffness 24.7 N·m/rad (printed,
+    """§2.3, [Lopukhov] §2.3 (case PZDN-R1): series stiffness 24.7 N·m/rad (printed,
     l. 1757), T23max = 48.08 N·m (printed "4808"), k23 = 2.72.  The printed T12max = 77.906
     N·m is a slip (79.914 transposed to 79.194, then mis-added): the equation gives 79.906."""
     r = pzdn(regression={"pzdn_stiffness": 25.0, "drive_stiffness": 1940.0})["results"]
@@ -237,7 +237,7 @@ GEAR = {"z1": 20, "z2": 42, "module": 2.5, "face_width": 20.0, "planets": 2, "to
 
 
 def test_coupling_gear_by_the_spur_calculator():
-    """§2.1, [Lopukhov] (case PZDN-G1), rated by the spur calculator (GOST 21354-87)
+    """§2.1, [Lopukhov] §2.1 (case PZDN-G1), rated by the spur calculator (GOST 21354-87)
     with the thesis' factors: printed d 50/105, d_a 55/110, d_f 43.75/98.75, a_w 77.5 mm,
     v = 2.49 m/s, F_t = 2·22.1/(2·0.105) = 210.48 N, σ_F2 = 29.16 MPa, σ_F1 = 32.8 MPa,
     σ_H0 = 2HB + 70 = 570/530 MPa, [σ]_H2 = 530/1.1 = 481.82 MPa."""

@@ -1,7 +1,8 @@
 """Sliding along the line of action: the printed relations of the paper (V5).
 
 Source: I. V. Dobrov, A. V. Semichev, A. V. Koptil'nyi, I. I. Get'man, "Mechanical model of
-the sliding kinematics of reducer gear wheels", Bulletin of NTU "KhPI" 2017 No. 25 ([Dobrov2017]).  Its example pair is z = 18/34
+the sliding kinematics of reducer gear wheels", Bulletin of NTU "KhPI" 2017 No. 25 ([Dobrov2017]).
+Its example pair is z = 18/34
 (Fig. 4); the paper prints no numbers for it, only the relations tested here exactly:
 
 * eq. (2): the normal velocity components of both flanks are equal at every contact point
@@ -11,7 +12,7 @@ the sliding kinematics of reducer gear wheels", Bulletin of NTU "KhPI" 2017 No. 
 * eqs. (10) and (20): the relative sliding σ12 lies in (−1, 0] on the approach and [0, 1)
   on the recess.
 
-The numbers of V5 (ε_α = 1.6052, ϑ1(A) = −6.349, ...) are [GOST21354] own
+The numbers of V5 (ε_α = 1.6052, ϑ1(A) = −6.349, ...) are the synthetic
 recomputation and are regression values (tests/regression/test_spur_method_note.py).
 """
 

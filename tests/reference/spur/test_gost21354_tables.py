@@ -13,7 +13,7 @@
   to μ_H and μ_F(6) reproduces I, II, IV, V and predicts 0.031); geardesign uses 0.04.
 * δ·g_0: two programs print the factors differently (ZPCIL δ_H = 0.006, g_0 = 56; MATLAB
   DANNYE δ_H = 0.06, g_0 = 5.6); the product must be 0.336 for spur ≤ 350 HB, grade 8,
-  m ≤ 3.55 ([ZPCIL]: [GOST21354] is 10× too large).
+  m ≤ 3.55 ([ZPCIL] DLTH.h, WV.h; [DANNYE]: a textbook 3.36 is 10× too large).
 """
 
 import pytest

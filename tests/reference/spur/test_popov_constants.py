@@ -2,8 +2,8 @@
 
 Source: A. P. Popov, A. I. Mironenko, M. G. Mozgovoi, O. I. Savenkov, "Contact strength of
 gears accounting for the nonlinear relation between tooth deformations and stresses",
-Bulletin of NTU "KhPI" 2017 No. 25 ([Popov2017]; [GOST21354] spur_helical.md
-§4.4, V4).  Each printed constant (3 decimals; tolerance half a unit of the last digit,
+Bulletin of NTU "KhPI" 2017 No. 25 ([Popov2017]).  Each printed constant (3 decimals; tolerance half
+a unit of the last digit,
 one unit where the paper rounds a rounded value) is derived from the general formulas of
 geardesign.spur.strength.contact_models for equal steels, ν = 0.3.
 

@@ -1,13 +1,13 @@
-"""Printed values of the source papers ([KhPI2017] Bulletin of NTU "KhPI" 2017 No. 25).
+"""Printed values of the source papers ([KhPI2017], Bulletin of NTU "KhPI" 2017 No. 25).
 
 V1 — N. N. Ishin, A. M. Goman, A. S. Skorokhodov, S. A. Gavrilov, "Comparative estimate of
 vibro-activity of gears with involute and modified tooth profile at the design stage",
-pp. 78–81 ([Ishin2017]; [GOST21354] and §9 V1).
+pp. 78–81 ([Ishin2017] worked example).
 Input: m = 6.5 mm, z = 13/69, x1 = 0.3077, x2 = 0, α = 20°, GOST 13755 rack.
 Printed: ρ1 = 2.815·10⁻³ m (pinion, lower point of active profile: the paper's "start of
 mesh"), ρ2 = 93.87·10⁻³ m (wheel tip; the text says "dedendum", the definition at L7677
 shows it is the tip value).  geardesign gives 2.802 / 93.893 mm: the paper's ρ1 is 0.5 %
-larger (its numbers are rounded from an unprinted a_w); the tolerances of [GOST21354]
+larger (its numbers are rounded from an unprinted a_w); the tolerances we allow
 are used, 0.03 mm and 0.05 mm.  The paper's values need the tip shortening Δy in d_a:
 without it ρ_a2 would be 94.022 mm, outside the tolerance (asserted below).
 """

@@ -2,14 +2,14 @@
 
 Source: A. V. Ustinenko, R. V. Protasov, S. V. Andrienko, "Study of contact pressures
 along the tooth height in gears with evolute meshing", Bulletin of NTU "KhPI" 2017 No. 25
-([Ustinenko2017]; [GOST21354] , V3).  Involute pair z = 32/33,
+([Ustinenko2017] tables).  Involute pair z = 32/33,
 m = 5 mm, b = 15 mm, T1 = 280 N·m, x = 0 (α = 20° assumed: the paper does not print it for
 the involute analogue; 15° would give 910 MPa, far from the FE values).  FE contact
 pressure in the single-pair zone (table, positions 11, 12, 13): 765, 785, 766 MPa.
 
 The Hertz stress of the single-pair zone at the pitch point (Z_ε = 1, K_H = 1, steel
 E = 2.06·10⁵ MPa, ν = 0.3) is 803 MPa: 2.3…5.0 % above the FE values, the expected
-direction (FE contact spreads over the mesh).  Tolerance band: +2 % … +6 % ([GOST21354]).
+direction (FE contact spreads over the mesh).  Tolerance band: +2 % … +6 %.
 """
 
 import math
