@@ -138,7 +138,8 @@ def _clamp_flag(x: float, lo: float, hi: float) -> str:
 
 def load_factors(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: float | None = None,
                  V: float = 1.0, C_0r: float | None = None, f0: float | None = None,
-                 e_given: float | None = None, Y_given: float | None = None) -> LoadFactors:
+                 e_given: float | None = None, Y_given: float | None = None,
+                 Y1_given: float | None = None) -> LoadFactors:
     """X, Y, e for P = X·V·F_r + Y·F_a (ISO 281:2007 Table 3 / GOST 18855-94; [GOST18855]
     §A.4.3–A.4.5).  F_a/(V·F_r) <= e gives the "<= e" column (X = 1, Y = 0 for single-row
     bearings).  V = 1 in ISO 281; GOST 18855-94 practice compares F_a/(V·F_r) with e.
@@ -148,7 +149,9 @@ def load_factors(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: f
     α = 20…45° fixed rows (linear interpolation between printed angles).
     Self-aligning ball, tapered and spherical roller: e = 1.5·tan α (α from the catalogue e
     when e is given); a catalogue Y (for F_a/F_r > e) may replace 0.4·cot α / 0.67·cot α.
-    Cylindrical roller: X = 1, Y = 0 (axial load not counted).  Thrust with α = 90°: P = F_a.
+    A catalogue Y1 (for F_a/F_r <= e of double-row and spherical roller bearings) replaces
+    the scaled Y.  Cylindrical roller: X = 1, Y = 0 (axial load not counted).  Thrust with
+    α = 90°: P = F_a.
     """
     ratio = _ratio(Fr, Fa, V)
     if kind == "cylindrical_roller":
@@ -244,6 +247,9 @@ def load_factors(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: f
         if Y_given is not None:
             Y_le, Y_gt = Y_given * scale, Y_given
             note = "catalogue Y"
+        if Y1_given is not None and Y_le > 0.0:
+            Y_le = Y1_given
+            note = "catalogue Y1, Y"
         if ratio <= e:
             return LoadFactors(e, X_le, Y_le, ratio, note=note)
         return LoadFactors(e, X_gt, Y_gt, ratio, note=note)
@@ -302,9 +308,10 @@ class StaticLoad:
 
 
 def static_load(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: float | None = None,
-                e_given: float | None = None) -> StaticLoad:
+                e_given: float | None = None, Y0_given: float | None = None) -> StaticLoad:
     """Equivalent static load P0 = max(F_r, X0·F_r + Y0·F_a) (ISO 76 / GOST 18854; [GOST18855]
-    §A.4.7).  Cylindrical roller: P0 = F_r; thrust with α = 90°: P0a = F_a."""
+    §A.4.7).  Cylindrical roller: P0 = F_r; thrust with α = 90°: P0a = F_a.  A catalogue Y0
+    (tapered, spherical and self-aligning bearings) replaces 0.22·cot α / 0.44·cot α."""
     if kind == "cylindrical_roller":
         return StaticLoad(1.0, 0.0, Fr)
     if kind in T.THRUST_TYPES:
@@ -320,7 +327,7 @@ def static_load(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: fl
         cot = 1.0 / _alpha_tan(alpha_deg, e_given)
         r = 2 if (rows == 2 or kind == "self_aligning_ball") else 1
         X0, y = T.STATIC_ROLLER[r]
-        Y0 = y * cot
+        Y0 = y * cot if Y0_given is None else Y0_given
     return StaticLoad(X0, Y0, max(Fr, X0 * Fr + Y0 * Fa))
 
 
