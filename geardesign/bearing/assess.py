@@ -164,6 +164,10 @@ def assess(b: Bearing, blocks: list, c: Conditions) -> Assessment:
         name = "L_nmh"
         for r in results:
             r.life_h = a1 * r.L10h
+    if not all(math.isfinite(x) and x > 0.0 for x in (L10, L10h, life_h)):
+        raise L.BearingError("load", f"the life is not a finite positive number (P = {P:.3g} N "
+                                     f"against C_r = {b.C_r:.3g} N): the load is too small for "
+                                     f"a rating life; give the real loads")
     a_eff = life_h / L10h
 
     out = Assessment(b, c, p, results, P, P0, n, L10, L10h, a1, a23, life_h, name, a_eff)

@@ -275,15 +275,15 @@ def resolve_viscosity(lub: dict, spec: ValidatedSpec) -> tuple:
                                     f"not an ISO VG grade{hint}; grades: "
                                     + ", ".join(o.grade for o in OIL.grades()))
             nu40 = oil.nu40
-            if VI is None:
-                VI = oil.VI
+            if VI is None and lub["nu100"] is None:
+                VI = lub["viscosity_index"] = oil.VI
                 spec.assumed.append("lubrication.viscosity_index")
             oil_info.update(oil=oil.grade, oil_source=oil.cite)
         else:
             nu40 = lub["nu40"]
         try:
             if lub["nu100"] is not None:
-                if VI is not None and lub["viscosity_index"] is not None:
+                if lub["viscosity_index"] is not None:
                     raise InputError.at("lubrication.viscosity_index", VI,
                                         "give nu100 or viscosity_index, not both")
                 nu100 = lub["nu100"]
@@ -632,9 +632,12 @@ def _select(spec: ValidatedSpec, blocks: list, checks: list, new_result) -> Resu
                                     f"catalogue; known: " + ", ".join(f'"{k}"' for k in known))
     rows = CAT.candidates(kind, d, series)
     if not rows:
+        all_bores = CAT.bores(kind)
+        near = sorted(sorted(all_bores, key=lambda x: abs(x - d))[:2])
         raise InputError.at("bearing.d", d, f"no catalogue {_type_words(kind)} bearing has this "
-                                            f"bore; catalogue bores: "
-                                            + ", ".join(_f(x) for x in CAT.bores(kind)) + " mm")
+                                            f"bore; nearest catalogue bores: "
+                                            + ", ".join(_f(x) for x in near) + f" mm (of "
+                                            f"{_f(all_bores[0])}…{_f(all_bores[-1])} mm)")
     results = []
     cond0 = None
     for row in rows:

@@ -144,9 +144,17 @@ def find(designation: str, maker: str | None = None) -> CatalogueBearing | None:
 
 
 def close_matches(designation: str, n: int = 3) -> list[str]:
-    names = sorted({b.designation for b in bearings()} | {b.gost for b in bearings() if b.gost})
-    keyed = {_key(x): x for x in names}
-    return [keyed[m] for m in difflib.get_close_matches(_key(designation), list(keyed), n, 0.5)]
+    """ISO designations close to a mistyped one (GOST names only when no ISO name is close)."""
+    for names in (sorted({b.designation for b in bearings()}),
+                  sorted({b.gost for b in bearings() if b.gost})):
+        keyed = {_key(x): x for x in names}
+        k = _key(designation)
+        swapped = [m for m in keyed if sorted(m) == sorted(k) and m != k]   # transposed digits
+        found = list(dict.fromkeys(swapped + difflib.get_close_matches(k, list(keyed), n, 0.5)))
+        found = found[:n]
+        if found:
+            return [keyed[m] for m in found]
+    return []
 
 
 def candidates(kind: str, d: float, series: list | None = None,

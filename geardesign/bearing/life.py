@@ -43,7 +43,7 @@ def is_ball(kind: str) -> bool:
 
 def life_exponent(kind: str) -> float:
     """p = 3 for ball bearings, 10/3 for roller bearings (GOST 18855-94 / ISO 281 L10 formula;
-    seed paper (2), Haidamaka 2017)."""
+    [Haidamaka2017] eq. (2))."""
     return 3.0 if is_ball(kind) else 10.0 / 3.0
 
 
@@ -83,10 +83,10 @@ def dynamic_rating(kind: str, Z: int, D_w: float, D_pw: float, alpha_deg: float 
                    rows: int = 1, L_we: float | None = None) -> RatingFromGeometry:
     """Basic dynamic radial load rating C_r [N] from the internal geometry.
 
-    Ball bearings (ISO 281:2007 / GOST 18855-94; seed paper (3), (4)):
+    Ball bearings (ISO 281:2007 / GOST 18855-94; [Haidamaka2017] eqs. (3), (4)):
     D_w <= 25.4 mm: C_r = b_m·f_c·(i·cos α)^0.7·Z^(2/3)·D_w^1.8;
     D_w > 25.4 mm:  C_r = 3.647·b_m·f_c·(i·cos α)^0.7·Z^(2/3)·D_w^1.4 (3.647 = 25.4^0.4).
-    Roller bearings (seed paper (5)): C_r = b_m·f_c·(i·L_we·cos α)^(7/9)·Z^(3/4)·D_we^(29/27).
+    Roller bearings ([Haidamaka2017] eq. (5)): C_r = b_m·f_c·(i·L_we·cos α)^(7/9)·Z^(3/4)·D_we^(29/27).
     Z rolling elements per row, D_w/D_we element diameter [mm], D_pw pitch diameter [mm],
     α contact angle, i = rows, L_we effective roller length [mm].
     """
@@ -288,7 +288,7 @@ def equivalent_load(Fr: float, Fa: float, lf: LoadFactors, V: float = 1.0, K_b: 
                     K_t: float = 1.0, thrust: bool = False) -> float:
     """Equivalent dynamic load [N].
 
-    Radial bearings: P = (X·V·F_r + Y·F_a)·K_б·K_т (GOST 18855-94 practice, seed paper (6));
+    Radial bearings: P = (X·V·F_r + Y·F_a)·K_б·K_т (GOST 18855-94 practice, [Haidamaka2017] eq. (6));
     ISO 281: P = X·F_r + Y·F_a (V = K_б = K_т = 1 unless given as application factors).
     Thrust bearings: P_a = X·F_r + Y·F_a (α = 90°: P_a = F_a).
     """
@@ -335,12 +335,16 @@ def static_load(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: fl
 
 
 def basic_life(C: float, P: float, p: float) -> float:
-    """Basic rating life L10 = (C/P)^p [10⁶ rev] (GOST 18855-94 / ISO 281; seed paper (2))."""
-    return (C / P) ** p
+    """Basic rating life L10 = (C/P)^p [10⁶ rev] (GOST 18855-94 / ISO 281; [GOST18855]);
+    infinite when it exceeds the float range (the caller refuses it)."""
+    try:
+        return (C / P) ** p
+    except OverflowError:
+        return math.inf
 
 
 def hours(L_mrev: float, n: float) -> float:
-    """Life in hours at constant speed n [min⁻¹]: L_h = 10⁶·L/(60·n) (seed paper (2))."""
+    """Life in hours at constant speed n [min⁻¹]: L_h = 10⁶·L/(60·n) ([Haidamaka2017] eq. (2))."""
     return 1.0e6 * L_mrev / (60.0 * n)
 
 

@@ -89,6 +89,14 @@ def find(name: str) -> Oil | None:
 
 
 def close_matches(name: str, n: int = 3) -> list[str]:
+    """The grades nearest in viscosity to a number that is not a grade, else by spelling."""
+    try:
+        x = float(_key(name)[2:])
+    except ValueError:
+        x = None
+    if x is not None and x > 0:
+        near = sorted(grades(), key=lambda o: abs(math.log(o.nu40 / x)))[:2]
+        return [o.grade for o in sorted(near, key=lambda o: o.nu40)]
     names = {_key(o.grade): o.grade for o in grades()}
     return [names[m] for m in difflib.get_close_matches(_key(name), list(names), n, 0.6)]
 
