@@ -163,7 +163,7 @@ PAIR = Table("pair", "bearing B of a pair (mode = \"pair\"): its data and radial
           default=None, minimum=0.1, maximum=2.0,
           hint="default: k = 0.5 (ISO 281 practice, SKF, NTN; NSK uses 0.6); R of the SKF "
                "table by contact angle (0.5 at 20°, 0.57 at 25°, 0.66 at 30°, 0.88 at 40°)"),
-), required=False)
+), required=False, in_template=False)
 
 REQUIREMENTS = Table("requirements", "what the design must achieve", (
     Field("life", "number", "required life", "h", "[L_h]", default=None, minimum=1.0, maximum=1e7,
