@@ -133,7 +133,7 @@ def resolve_bearing(spec: ValidatedSpec) -> tuple[Bearing, dict]:
     f0 = b["f0"] if b["f0"] is not None else (row.f0 if row else None)
     bearing = Bearing(kind, rows, alpha, e, pick("Y", row.Y if row else None), C_r, C_0r,
                       C_u, False, f0, D_pw, row.designation if row else "", Y1, Y0)
-    info.update(d=d, D=D, B=row.B if row else None)
+    info.update(d=d, D=D, B=row.B if row else None, lubricant=b["lubricant"])
     return bearing, info
 
 
@@ -533,11 +533,33 @@ def life_checks(a: Assessment, info: dict, blocks: list, cond: Conditions) -> li
                 f"{lf.entry_name} = {_f(lf.entry, 3)}{where} is below the X/Y table: e and Y of "
                 f"its first row are used", "", lf.entry, None, src))
         if b.kind == "cylindrical_roller" and r.block.F_a > 0:
+            row = info.get("catalogue")
+            design = row.designation.split()[0] if row is not None else ""
+            if design == "NU":
+                out.append(check(
+                    "AXIAL_CAPACITY", False, "error",
+                    f"F_a = {_kn(r.block.F_a)}{where} on {row.designation}: an NU bearing has "
+                    f"no rib on the inner ring and carries no axial load; use NJ or NUP "
+                    f"{row.designation[3:]} or take the axial load on another bearing", "",
+                    r.block.F_a, 0.0, S.SKF + " p. 518"))
+            elif design in ("NJ", "NUP"):
+                rc = L.rib_capacity(b.C_0r, r.block.F_r, r.block.n, row.d, row.D, row.series,
+                                    info.get("lubricant", "oil"))
+                out.append(check(
+                    "AXIAL_CAPACITY", r.block.F_a <= rc.limit, "error",
+                    f"F_a = {_kn(r.block.F_a)}{where} > {_kn(rc.limit)}, the continuous axial "
+                    f"load the ribs of {row.designation} carry (F_ap = {_kn(rc.F_ap)}, rib "
+                    f"strength {_kn(rc.F_a_max)}); lower the speed or the axial load, or take "
+                    f"it on a thrust or angular contact bearing",
+                    f"F_a = {_kn(r.block.F_a)}{where} <= {_kn(rc.limit)} (rib capacity of "
+                    f"{row.designation})", r.block.F_a, rc.limit, S.SKF + " p. 518"))
             out.append(check(
                 "AXIAL_LOAD_IGNORED", False, "warning",
                 f"F_a = {_kn(r.block.F_a)}{where} is not counted in the life of a cylindrical "
-                f"roller bearing; check the rib capacity (manufacturer) or take the axial load "
-                f"on another bearing", "", r.block.F_a, None, src))
+                f"roller bearing" + ("" if design in ("NU", "NJ", "NUP") else
+                                     "; check the rib capacity (manufacturer) or take the "
+                                     "axial load on another bearing"),
+                "", r.block.F_a, None, src))
         if r.block.n < T.LOW_SPEED:
             out.append(check(
                 "LOW_SPEED", False, "warning",

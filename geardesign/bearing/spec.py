@@ -55,6 +55,8 @@ BEARING = Table("bearing", "the bearing: a catalogue designation or its type and
           default=None, minimum=0.3, maximum=500),
     Field("L_we", "number", "effective roller length (roller rating from geometry)", "mm", "L_we",
           default=None, minimum=0.3, maximum=1000),
+    Field("lubricant", "string", "oil or grease lubrication (axial capacity of NJ/NUP ribs)",
+          default="oil", choices=("oil", "grease")),
     Field("series", "array", "catalogue series to search in select mode (e.g. [\"62\", \"63\"])",
           default=None, items="string"),
 ))
