@@ -341,6 +341,12 @@ def validate_cmd(specs: List[Path] = ARG_SPECS, quiet: bool = OPT_QUIET) -> None
         raise typer.Exit(2)
 
 
+# browsing the built-in data (geardesign/browse.py): geardesign materials, geardesign bearings
+from geardesign import browse as _browse  # noqa: E402
+
+_browse.register(app, _choose_format)
+
+
 def main() -> None:
     """Console entry point: never a traceback for the user."""
     _register_kinds()

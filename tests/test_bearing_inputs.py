@@ -23,13 +23,15 @@ def rep(old, new, text=GOOD):
     return text.replace(old, new)
 
 
-CATALOGUE = ("it holds deep groove 60/62/63 (GOST 1xx/2xx/3xx) and tapered 302/303 (GOST "
-             "72xx/73xx) series; or give bearing.type, C_r and C_0r instead")
+CATALOGUE = ("it holds deep groove 60/62/63/64, angular contact 72 B/73 B, cylindrical roller "
+             "NU/NJ/NUP 2/3/22/23, tapered roller 302/303/313/322/323, spherical roller "
+             "222/223/230/231 and thrust ball 511/512 (`geardesign bearings` lists them); or "
+             "give bearing.type, C_r and C_0r instead")
 
 CASES = [
     ("unknown designation, close matches", rep('"6208"', '"6280"'),
      [f's.toml: bearing.designation = "6280": not in the built-in catalogue (did you mean '
-      f'"6210", "6209", "6208"?); {CATALOGUE}']),
+      f'"6028", "6208", "6328"?); {CATALOGUE}']),
     ("unknown designation", rep('"6208"', '"XYZ-9"'),
      [f's.toml: bearing.designation = "XYZ-9": not in the built-in catalogue; {CATALOGUE}']),
     ("negative radial load", rep("F_r = 3000.0", "F_r = -3000.0"),
@@ -47,8 +49,8 @@ CASES = [
      ['s.toml: requirements.reliability = 99.5: GOST 18855-94 tabulates a1 only up to 99 %; '
       'use method = "iso281_2007" for up to 99.95 %']),
     ("a_ISO without viscosity", ISO + '[lubrication]\ncontamination = "normal"\n',
-     ["s.toml: lubrication.viscosity: missing; required: a number >= 0.01 and <= 100000 (mm^2/s) "
-      "(kinematic viscosity at the operating temperature)"]),
+     ["s.toml: lubrication.viscosity: missing; give the viscosity at the operating temperature "
+      "(mm^2/s), or oil and temperature, or nu40 (and nu100) and temperature, or kappa"]),
     ("a_ISO without contamination", ISO + "[lubrication]\nviscosity = 20.0\n",
      ['s.toml: lubrication.contamination: missing; give contamination (one of "extreme", '
       '"high", "normal", "slight", "typical", "severe", "very_severe") or e_C']),
@@ -99,12 +101,41 @@ CASES = [
          rep('method = "gost18855_94"', 'method = "gost18855_94"\nmode = "select"'))
      + "[requirements]\nlife = 1000.0\n",
      ["s.toml: bearing.d = 42.0: no catalogue deep groove ball bearing has this bore; "
-      "catalogue bores: 17, 20, 25, 30, 35, 40, 45, 50 mm"]),
+      "nearest catalogue bores: 40, 45 mm (of 10…200 mm)"]),
     ("select with a designation",
      rep('method = "gost18855_94"', 'method = "gost18855_94"\nmode = "select"')
      + "[requirements]\nlife = 1000.0\n",
      ['s.toml: bearing.designation = "6208": mode = "select" chooses the bearing from the '
       'catalogue; remove it']),
+    ("bare 72xx is ambiguous", rep('"6208"', '"7208"'),
+     ['s.toml: bearing.designation = "7208": ambiguous: ISO 7208 B (angular contact ball, '
+      'α = 40°) or GOST 7208 = ISO 30208 (tapered roller); write "7208 B" or "30208"']),
+    ("unknown maker", rep('designation = "6208"', 'designation = "6208"\nmaker = "XYZ"'),
+     ['s.toml: bearing.maker = "XYZ": not in the built-in catalogue; known: "SKF", "NTN"']),
+    ("maker without the row", rep('designation = "6208"', 'designation = "NU 208"\nmaker = "NTN"'),
+     ['s.toml: bearing.designation = "NU 208": not in the NTN tables of the built-in catalogue; '
+      'SKF lists it: remove bearing.maker or set it to "SKF"']),
+    ("unknown oil grade", ISO + '[lubrication]\noil = "VG 250"\ntemperature = 70.0\n'
+                                'contamination = "normal"\n',
+     ['s.toml: lubrication.oil = "VG 250": not an ISO VG grade (did you mean "VG 220", "VG 320"?); '
+      'grades: VG 2, VG 3, VG 5, VG 7, VG 10, VG 15, VG 22, VG 32, VG 46, VG 68, VG 100, '
+      'VG 150, VG 220, VG 320, VG 460, VG 680, VG 1000, VG 1500']),
+    ("oil without temperature", ISO + '[lubrication]\noil = "VG 68"\ncontamination = "normal"\n',
+     ["s.toml: lubrication.temperature: missing; required with lubrication.oil: the operating "
+      "temperature (°C)"]),
+    ("two viscosity routes", ISO + '[lubrication]\noil = "VG 68"\nviscosity = 20.0\n'
+                                  'temperature = 60.0\ncontamination = "normal"\n',
+     ['s.toml: lubrication.oil = "VG 68": give one of lubrication.viscosity, oil or nu40, not '
+      'viscosity and oil']),
+    ("pair table without pair mode", GOOD + '[pair]\narrangement = "back_to_back"\nF_r = 1.0\n',
+     ['s.toml: pair: used only with mode = "pair"; remove [pair] or set mode = "pair"']),
+    ("pair of deep groove bearings", rep('method = "gost18855_94"', 'method = "gost18855_94"\n'
+                                         'mode = "pair"') + '[pair]\narrangement = '
+                                         '"back_to_back"\nF_r = 1000.0\n',
+     ['s.toml: bearing.designation = "6208": a pair with induced axial loads is one of angular '
+      'contact ball or tapered roller bearings']),
+    ("speed beyond any bearing", rep("speed = 1000.0", "speed = 1e300"),
+     ["s.toml: load.speed = 1e+300: must be a number >= 0.01 and <= 200000 (min^-1)"]),
 ]
 
 

@@ -24,6 +24,8 @@ class Bearing:
     f0: float | None = None
     D_pw: float | None = None           # mm
     designation: str = ""
+    Y1: float | None = None             # catalogue Y for F_a/F_r <= e (double row, spherical)
+    Y0: float | None = None             # catalogue static axial factor
 
 
 @dataclass(frozen=True)
@@ -43,6 +45,9 @@ class Conditions:
     K_t: float = 1.0
     a23: float | None = None            # GOST method
     viscosity: float | None = None      # mm²/s at operating temperature (ISO a_ISO)
+    nu1: float | None = None            # given rated viscosity, mm²/s (replaces ISO 281 ν1)
+    kappa: float | None = None          # given viscosity ratio κ
+    oil: dict | None = None             # oil data for the report (grade, ν40, ν100, VI, t)
     e_C: float | None = None
     ep_additives: bool = False
     K_E: float | None = None            # typical load regime
@@ -52,6 +57,11 @@ class Conditions:
     F_a0: float | None = None
     system_lives: tuple = ()            # h, other bearings of the system
     weibull_slope: float | None = None
+
+    @property
+    def lubricated(self) -> bool:
+        """a_ISO is applied (a viscosity or κ is known)."""
+        return self.viscosity is not None or self.kappa is not None
 
 
 @dataclass
@@ -108,7 +118,7 @@ def assess(b: Bearing, blocks: list, c: Conditions) -> Assessment:
     results = []
     for blk in blocks:
         lf = L.load_factors(b.kind, blk.F_r, blk.F_a, rows=b.rows, alpha_deg=b.alpha, V=V,
-                            C_0r=b.C_0r, f0=b.f0, e_given=b.e, Y_given=b.Y)
+                            C_0r=b.C_0r, f0=b.f0, e_given=b.e, Y_given=b.Y, Y1_given=b.Y1)
         P = L.equivalent_load(blk.F_r, blk.F_a, lf, V, c.K_b, c.K_t, thrust)
         if P <= 0.0:
             raise L.BearingError("load.F_r", "the equivalent load is zero: give a radial or "
@@ -134,12 +144,16 @@ def assess(b: Bearing, blocks: list, c: Conditions) -> Assessment:
         name = "L_sah"
         for r in results:
             r.life_h = a1 * a23 * r.L10h
-    elif c.viscosity is not None:
+    elif c.lubricated:
         k_e = c.K_E if c.K_E is not None else 1.0
         for r in results:
             P_r = r.P * k_e
-            r.nu1 = L.nu1(r.block.n, b.D_pw)
-            r.kappa = c.viscosity / r.nu1
+            if c.kappa is not None:
+                r.kappa = c.kappa
+                r.nu1 = c.viscosity / c.kappa if c.viscosity is not None else None
+            else:
+                r.nu1 = c.nu1 if c.nu1 is not None else L.nu1(r.block.n, b.D_pw)
+                r.kappa = c.viscosity / r.nu1
             r.a_iso = L.a_iso(b.kind, r.kappa, c.e_C, b.C_u, P_r, c.ep_additives)
             r.life_h = a1 * r.a_iso.value * L.hours(L.basic_life(b.C_r, P_r, p), r.block.n)
         life_h = results[0].life_h if len(results) == 1 else L.miner_hours(
@@ -150,6 +164,10 @@ def assess(b: Bearing, blocks: list, c: Conditions) -> Assessment:
         name = "L_nmh"
         for r in results:
             r.life_h = a1 * r.L10h
+    if not all(math.isfinite(x) and x > 0.0 for x in (L10, L10h, life_h)):
+        raise L.BearingError("load", f"the life is not a finite positive number (P = {P:.3g} N "
+                                     f"against C_r = {b.C_r:.3g} N): the load is too small for "
+                                     f"a rating life; give the real loads")
     a_eff = life_h / L10h
 
     out = Assessment(b, c, p, results, P, P0, n, L10, L10h, a1, a23, life_h, name, a_eff)
@@ -162,7 +180,7 @@ def assess(b: Bearing, blocks: list, c: Conditions) -> Assessment:
         F_r0 = c.F_r0 if c.F_r0 is not None else max(x.F_r for x in blocks) * c.K_b
         F_a0 = c.F_a0 if c.F_a0 is not None else max(x.F_a for x in blocks) * c.K_b
         out.static = L.static_load(b.kind, F_r0, F_a0, rows=b.rows, alpha_deg=b.alpha,
-                                   e_given=b.e)
+                                   e_given=b.e, Y0_given=b.Y0)
         out.s0 = b.C_0r / out.static.P0 if out.static.P0 > 0 else math.inf
     if c.system_lives:
         out.slope = c.weibull_slope or T.WEIBULL_SLOPE["ball" if L.is_ball(b.kind) else "roller"]

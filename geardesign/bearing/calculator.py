@@ -12,6 +12,7 @@ from dataclasses import replace
 
 from geardesign.bearing import catalogue as CAT
 from geardesign.bearing import life as L
+from geardesign.bearing import pair as PR
 from geardesign.bearing import sources as S
 from geardesign.bearing import tables as T
 from geardesign.bearing.assess import Assessment, Bearing, Block, Conditions, assess
@@ -48,21 +49,34 @@ def resolve_bearing(spec: ValidatedSpec) -> tuple[Bearing, dict]:
     b = spec.data["bearing"]
     info: dict = {"source": "given", "note": "", "geometry": None, "catalogue": None}
     row = None
+    if b["maker"] is not None and b["maker"].upper() not in {m.upper() for m in CAT.makers()}:
+        raise InputError.at("bearing.maker", b["maker"], "not in the built-in catalogue; known: "
+                            + ", ".join(f'"{m}"' for m in CAT.makers()))
     if b["designation"] is not None:
-        row = CAT.find(b["designation"])
+        try:
+            row = CAT.find(b["designation"], b["maker"])
+        except CAT.AmbiguousDesignation as exc:
+            raise InputError.at("bearing.designation", b["designation"], str(exc)) from None
         if row is None:
+            other = CAT.find(b["designation"]) if b["maker"] is not None else None
+            if other is not None:
+                raise InputError.at("bearing.designation", b["designation"],
+                                    f"not in the {b['maker']} tables of the built-in catalogue; "
+                                    f"{other.maker} lists it: remove bearing.maker or set it to "
+                                    f"\"{other.maker}\"")
             close = CAT.close_matches(b["designation"])
             hint = (" (did you mean " + ", ".join(f'"{c}"' for c in close) + "?)") if close else ""
             raise InputError.at(
                 "bearing.designation", b["designation"],
-                f"not in the built-in catalogue{hint}; it holds deep groove 60/62/63 (GOST 1xx/2xx/"
-                f"3xx) and tapered 302/303 (GOST 72xx/73xx) series; or give bearing.type, C_r "
-                f"and C_0r instead")
+                f"not in the built-in catalogue{hint}; it holds deep groove 60/62/63/64, angular "
+                f"contact 72 B/73 B, cylindrical roller NU/NJ/NUP 2/3/22/23, tapered roller "
+                f"302/303/313/322/323, spherical roller 222/223/230/231 and thrust ball 511/512 "
+                f"(`geardesign bearings` lists them); or give bearing.type, C_r and C_0r instead")
         if b["type"] is not None and b["type"] != row.type:
             raise InputError.at("bearing.type", b["type"],
                                 f"contradicts the catalogue: {row.designation} is a "
                                 f"{_type_words(row.type)} bearing; remove bearing.type")
-        info.update(source=row.source, note=row.note, catalogue=row)
+        info.update(source=row.cite, note=row.note, catalogue=row)
     kind = b["type"] if b["type"] is not None else (row.type if row else None)
     if kind is None:
         raise InputError(Problem("bearing.type", "missing; required without bearing.designation: "
@@ -77,6 +91,8 @@ def resolve_bearing(spec: ValidatedSpec) -> tuple[Bearing, dict]:
     if d is not None and D is not None and D <= d:
         raise InputError.at("bearing.D", D, f"must be larger than the bore d = {_f(d)} mm")
     alpha = b["contact_angle"]
+    if alpha is None and row is not None and row.alpha is not None:
+        alpha = row.alpha
     if alpha is not None and kind in ("deep_groove_ball", "cylindrical_roller") and alpha != 0:
         raise InputError.at("bearing.contact_angle", alpha,
                             f"does not apply to a {_type_words(kind)} bearing (α = 0); remove it "
@@ -108,9 +124,16 @@ def resolve_bearing(spec: ValidatedSpec) -> tuple[Bearing, dict]:
         info.update(rating="geometry (ISO 281)", geometry=g)
     C_0r = pick("C_0r", row.C_0r if row else None)
     C_u = pick("C_u", row.C_u if row else None)
-    bearing = Bearing(kind, b["rows"], alpha, e, pick("Y", row.Y if row else None), C_r, C_0r,
-                      C_u, False, b["f0"], D_pw, row.designation if row else "")
-    info.update(d=d, D=D, B=row.B if row else None)
+    rows = b["rows"]
+    if row is not None and row.type == "spherical_roller" and "bearing.rows" in spec.assumed:
+        rows = 2                        # a spherical roller bearing has two rows
+    own_angle = b["contact_angle"] is not None or b["e"] is not None
+    Y1 = row.Y1 if row is not None and not own_angle else None
+    Y0 = row.Y0 if row is not None and not own_angle else None
+    f0 = b["f0"] if b["f0"] is not None else (row.f0 if row else None)
+    bearing = Bearing(kind, rows, alpha, e, pick("Y", row.Y if row else None), C_r, C_0r,
+                      C_u, False, f0, D_pw, row.designation if row else "", Y1, Y0)
+    info.update(d=d, D=D, B=row.B if row else None, lubricant=b["lubricant"])
     return bearing, info
 
 
@@ -193,10 +216,12 @@ def resolve_conditions(spec: ValidatedSpec, bearing: Bearing, blocks: list,
     K_t = L.k_t(fac["temperature"])
     viscosity = e_C = None
     ep = False
+    nu1 = kappa = None
+    oil: dict = {}
     if not gost and lub is not None:
-        viscosity = lub["viscosity"]
+        viscosity, nu1, kappa, oil = resolve_viscosity(lub, spec)
         ep = lub["ep_additives"]
-        if bearing.D_pw is None:
+        if bearing.D_pw is None and nu1 is None and kappa is None:
             raise InputError(Problem("bearing.D_pw", "missing; required for ν1 of a_ISO: give "
                                                      "D_pw, or d and D (mm)"))
         if lub["e_C"] is not None:
@@ -210,14 +235,77 @@ def resolve_conditions(spec: ValidatedSpec, bearing: Bearing, blocks: list,
     K_E = T.K_E[ld["regime"]] if ld["regime"] is not None else None
     return Conditions(
         method=method, reliability=req["reliability"], V=V, K_b=fac["K_b"], K_t=K_t, a23=a23,
-        viscosity=viscosity, e_C=e_C, ep_additives=ep, K_E=K_E, life_required=req["life"],
+        viscosity=viscosity, nu1=nu1, kappa=kappa, oil=oil, e_C=e_C, ep_additives=ep, K_E=K_E,
+        life_required=req["life"],
         s0_min=req["s0_min"], F_r0=ld["F_r0"], F_a0=ld["F_a0"],
         system_lives=tuple(req["system_lives"] or ()), weibull_slope=req["weibull_slope"])
 
 
+def resolve_viscosity(lub: dict, spec: ValidatedSpec) -> tuple:
+    """(ν at the operating temperature or None, given ν1 or None, given κ or None, the oil's
+    data for the report) of [lubrication]."""
+    from geardesign.materials import lubricants as OIL
+
+    routes = [k for k in ("viscosity", "oil", "nu40") if lub[k] is not None]
+    if len(routes) > 1:
+        raise InputError.at(f"lubrication.{routes[1]}", lub[routes[1]],
+                            f"give one of lubrication.viscosity, oil or nu40, not "
+                            f"{' and '.join(routes)}")
+    if lub["kappa"] is not None and lub["nu1"] is not None:
+        raise InputError.at("lubrication.nu1", lub["nu1"], "give kappa or nu1, not both")
+    if not routes and lub["kappa"] is None:
+        raise InputError(Problem("lubrication.viscosity", "missing; give the viscosity at the "
+                                 "operating temperature (mm^2/s), or oil and temperature, or "
+                                 "nu40 (and nu100) and temperature, or kappa"))
+    oil_info: dict = {}
+    viscosity = lub["viscosity"]
+    if lub["oil"] is not None or lub["nu40"] is not None:
+        if lub["temperature"] is None:
+            key = "oil" if lub["oil"] is not None else "nu40"
+            raise InputError(Problem("lubrication.temperature", f"missing; required with "
+                                     f"lubrication.{key}: the operating temperature (°C)"))
+        VI = lub["viscosity_index"]
+        if lub["oil"] is not None:
+            oil = OIL.find(lub["oil"])
+            if oil is None:
+                close = OIL.close_matches(lub["oil"])
+                hint = (" (did you mean " + ", ".join(f'"{c}"' for c in close) + "?)"
+                        if close else "")
+                raise InputError.at("lubrication.oil", lub["oil"],
+                                    f"not an ISO VG grade{hint}; grades: "
+                                    + ", ".join(o.grade for o in OIL.grades()))
+            nu40 = oil.nu40
+            if VI is None and lub["nu100"] is None:
+                VI = lub["viscosity_index"] = oil.VI
+                spec.assumed.append("lubrication.viscosity_index")
+            oil_info.update(oil=oil.grade, oil_source=oil.cite)
+        else:
+            nu40 = lub["nu40"]
+        try:
+            if lub["nu100"] is not None:
+                if lub["viscosity_index"] is not None:
+                    raise InputError.at("lubrication.viscosity_index", VI,
+                                        "give nu100 or viscosity_index, not both")
+                nu100 = lub["nu100"]
+                if nu100 >= nu40:
+                    raise InputError.at("lubrication.nu100", nu100,
+                                        f"must be below nu40 = {nu40:g} mm^2/s")
+                VI = OIL.viscosity_index(nu40, nu100)
+            else:
+                if VI is None:
+                    raise InputError(Problem("lubrication.nu100", "missing; give nu100 or "
+                                             "viscosity_index with nu40"))
+                nu100 = OIL.nu100_from_vi(nu40, VI)
+            viscosity = OIL.viscosity_at(lub["temperature"], nu40, nu100)
+        except OIL.OilError as exc:
+            raise InputError(Problem("lubrication", str(exc))) from None
+        oil_info.update(nu40=nu40, nu100=nu100, VI=VI, t=lub["temperature"])
+    return viscosity, lub["nu1"], lub["kappa"], oil_info
+
+
 def _with_c_u(bearing: Bearing, cond: Conditions) -> Bearing:
     """Fill in an estimated C_u when a_ISO needs it."""
-    if cond.viscosity is None or bearing.C_u is not None:
+    if not cond.lubricated or bearing.C_u is not None:
         return bearing
     if bearing.C_0r is None:
         raise InputError(Problem("bearing.C_u", "missing; required for a_ISO: give C_u (N), or "
@@ -275,7 +363,7 @@ def add_rows(res: Result, a: Assessment, info: dict) -> None:
     s.add("C_r", b.C_r, "N", "C_r", "basic dynamic load rating", src)
     if b.C_0r is not None:
         s.add("C_0r", b.C_0r, "N", "C_0r", "basic static load rating", S.ISO76)
-    if b.C_u is not None and c.viscosity is not None:
+    if b.C_u is not None and c.lubricated:
         s.add("C_u", b.C_u, "N", "C_u", "fatigue load limit" + (" (estimated from C_0r)"
                                                                 if b.C_u_estimated else ""), S.ISO2007)
     if b.D_pw is not None:
@@ -323,14 +411,32 @@ def add_rows(res: Result, a: Assessment, info: dict) -> None:
         f.add("a23", a.a23, "-", "a23", "combined material and operating factor", S.RU_PRACTICE)
         f.add("L_sah", a.life_h, "h", "L_sah", "adjusted life a1·a23·L10h", S.GOST94)
     else:
-        if c.viscosity is not None:
+        if c.lubricated:
             r0 = a.blocks[0]
+            o = c.oil or {}
+            if "oil" in o:
+                f.add("oil", o["oil"], None, "", "lubricant, ISO VG grade (ν40 of ISO 3448)",
+                      o["oil_source"])
+            if "nu40" in o:
+                f.add("nu40", o["nu40"], "mm^2/s", "ν40", "oil viscosity at 40 °C",
+                      o.get("oil_source", "given"))
+                f.add("nu100", o["nu100"], "mm^2/s", "ν100", "oil viscosity at 100 °C", S.D2270)
+                f.add("VI", o["VI"], "-", "VI", "viscosity index", S.D2270)
+                f.add("t_oil", o["t"], "°C", "t", "operating temperature", "given")
+            if c.viscosity is not None:
+                f.add("nu", c.viscosity, "mm^2/s", "ν", "viscosity at the operating temperature",
+                      S.D341 if o else "given")
+            given = " (given)" if c.nu1 is not None else ""
             if len(a.blocks) == 1:
-                f.add("nu1", r0.nu1, "mm^2/s", "ν1", "reference viscosity", S.ISO2007)
-                f.add("kappa", r0.kappa, "-", "κ", "viscosity ratio ν/ν1", S.ISO2007)
+                if r0.nu1 is not None:
+                    f.add("nu1", r0.nu1, "mm^2/s", "ν1", "reference viscosity" + given,
+                          S.ISO2007)
+                f.add("kappa", r0.kappa, "-", "κ", "viscosity ratio ν/ν1" + (
+                    " (given)" if c.kappa is not None else ""), S.ISO2007)
             else:
-                f.add("nu1", [r.nu1 for r in a.blocks], "mm^2/s", "ν1_j", "reference viscosity of "
-                      "each block", S.ISO2007)
+                if r0.nu1 is not None:
+                    f.add("nu1", [r.nu1 for r in a.blocks], "mm^2/s", "ν1_j", "reference "
+                          "viscosity of each block" + given, S.ISO2007)
                 f.add("kappa", [r.kappa for r in a.blocks], "-", "κ_j", "viscosity ratio of each "
                       "block", S.ISO2007)
             f.add("e_C", c.e_C, "-", "e_C", "contamination factor", S.ISO2007)
@@ -427,11 +533,33 @@ def life_checks(a: Assessment, info: dict, blocks: list, cond: Conditions) -> li
                 f"{lf.entry_name} = {_f(lf.entry, 3)}{where} is below the X/Y table: e and Y of "
                 f"its first row are used", "", lf.entry, None, src))
         if b.kind == "cylindrical_roller" and r.block.F_a > 0:
+            row = info.get("catalogue")
+            design = row.designation.split()[0] if row is not None else ""
+            if design == "NU":
+                out.append(check(
+                    "AXIAL_CAPACITY", False, "error",
+                    f"F_a = {_kn(r.block.F_a)}{where} on {row.designation}: an NU bearing has "
+                    f"no rib on the inner ring and carries no axial load; use NJ or NUP "
+                    f"{row.designation[3:]} or take the axial load on another bearing", "",
+                    r.block.F_a, 0.0, S.SKF + " p. 518"))
+            elif design in ("NJ", "NUP"):
+                rc = L.rib_capacity(b.C_0r, r.block.F_r, r.block.n, row.d, row.D, row.series,
+                                    info.get("lubricant", "oil"))
+                out.append(check(
+                    "AXIAL_CAPACITY", r.block.F_a <= rc.limit, "error",
+                    f"F_a = {_kn(r.block.F_a)}{where} > {_kn(rc.limit)}, the continuous axial "
+                    f"load the ribs of {row.designation} carry (F_ap = {_kn(rc.F_ap)}, rib "
+                    f"strength {_kn(rc.F_a_max)}); lower the speed or the axial load, or take "
+                    f"it on a thrust or angular contact bearing",
+                    f"F_a = {_kn(r.block.F_a)}{where} <= {_kn(rc.limit)} (rib capacity of "
+                    f"{row.designation})", r.block.F_a, rc.limit, S.SKF + " p. 518"))
             out.append(check(
                 "AXIAL_LOAD_IGNORED", False, "warning",
                 f"F_a = {_kn(r.block.F_a)}{where} is not counted in the life of a cylindrical "
-                f"roller bearing; check the rib capacity (manufacturer) or take the axial load "
-                f"on another bearing", "", r.block.F_a, None, src))
+                f"roller bearing" + ("" if design in ("NU", "NJ", "NUP") else
+                                     "; check the rib capacity (manufacturer) or take the "
+                                     "axial load on another bearing"),
+                "", r.block.F_a, None, src))
         if r.block.n < T.LOW_SPEED:
             out.append(check(
                 "LOW_SPEED", False, "warning",
@@ -467,10 +595,13 @@ def life_checks(a: Assessment, info: dict, blocks: list, cond: Conditions) -> li
 
 def _catalogue_bearing(row, template: Bearing | None = None) -> Bearing:
     kind = row.type
-    alpha = 90.0 if kind in T.THRUST_TYPES else None
-    return Bearing(kind, 1, alpha, row.e, row.Y, row.C_r, row.C_0r, row.C_u, False,
-                   template.f0 if template is not None and template.designation == "" else None,
-                   0.5 * (row.d + row.D), row.designation)
+    alpha = 90.0 if kind in T.THRUST_TYPES else row.alpha
+    f0 = row.f0
+    if f0 is None and template is not None and template.designation == "":
+        f0 = template.f0
+    return Bearing(kind, 2 if kind == "spherical_roller" else 1, alpha, row.e, row.Y, row.C_r,
+                   row.C_0r, row.C_u, False, f0, 0.5 * (row.d + row.D), row.designation, row.Y1,
+                   row.Y0)
 
 
 def _common_checks(spec: ValidatedSpec, info: dict) -> list[Check]:
@@ -523,9 +654,12 @@ def _select(spec: ValidatedSpec, blocks: list, checks: list, new_result) -> Resu
                                     f"catalogue; known: " + ", ".join(f'"{k}"' for k in known))
     rows = CAT.candidates(kind, d, series)
     if not rows:
+        all_bores = CAT.bores(kind)
+        near = sorted(sorted(all_bores, key=lambda x: abs(x - d))[:2])
         raise InputError.at("bearing.d", d, f"no catalogue {_type_words(kind)} bearing has this "
-                                            f"bore; catalogue bores: "
-                                            + ", ".join(_f(x) for x in CAT.bores(kind)) + " mm")
+                                            f"bore; nearest catalogue bores: "
+                                            + ", ".join(_f(x) for x in near) + f" mm (of "
+                                            f"{_f(all_bores[0])}…{_f(all_bores[-1])} mm)")
     results = []
     cond0 = None
     for row in rows:
@@ -573,6 +707,13 @@ def compute(spec: ValidatedSpec) -> Result:
 
     blocks = resolve_blocks(spec)
     checks: list[Check] = []
+    if spec.data["mode"] == "pair":
+        res = _pair(spec, blocks, checks, CALCULATOR.new_result)
+        res.checks.extend(checks)
+        return res
+    if spec.data["pair"] is not None:
+        raise InputError(Problem("pair", "used only with mode = \"pair\"; remove [pair] or set "
+                                         "mode = \"pair\""))
     if spec.data["mode"] == "select":
         res = _select(spec, blocks, checks, CALCULATOR.new_result)
         res.checks.extend(checks)
@@ -588,3 +729,139 @@ def compute(spec: ValidatedSpec) -> Result:
     res.checks.extend(life_checks(a, info, blocks, cond))
     res.checks.extend(_common_checks(spec, info))
     return res
+
+
+# ----------------------------------------------------------------------------- pair
+
+_PAIR_RATING_KEYS = ("C_r", "C_0r", "C_u", "e", "Y", "contact_angle", "d", "D")
+
+
+def _bearing_b(spec: ValidatedSpec, a_info: dict, kind: str) -> tuple[Bearing, dict]:
+    """Bearing B of a pair from [pair] (its designation, or its ratings, or bearing A's
+    designation), resolved like [bearing]."""
+    p = spec.data["pair"]
+    a = spec.data["bearing"]
+    b = {k: None for k in a}
+    b.update(rows=1, series=None)
+    given = {k: p[k] for k in _PAIR_RATING_KEYS if p[k] is not None}
+    b.update(given)
+    if p["designation"] is not None:
+        b.update(designation=p["designation"], maker=p["maker"])
+    elif not given and a["designation"] is not None:
+        b.update(designation=a["designation"], maker=a["maker"])
+    else:
+        b["type"] = kind
+    if b["designation"] is None:
+        b["type"] = kind
+    sub = ValidatedSpec(dict(spec.data, bearing=b), list(spec.assumed), spec.source,
+                        spec.base_dir)
+    try:
+        bearing, info = resolve_bearing(sub)
+    except InputError as exc:
+        raise InputError([replace(pr, key=pr.key.replace("bearing.", "pair.", 1))
+                          for pr in exc.problems]) from None
+    if bearing.kind != kind:
+        raise InputError.at("pair.designation", p["designation"],
+                            f"bearing B must be a {_type_words(kind)} bearing like bearing A")
+    return bearing, info
+
+
+def _induced(b: Bearing, F_r: float, factor: float | None, key: str) -> float:
+    if b.kind == "tapered_roller":
+        Y = b.Y
+        if Y is None:
+            tan_a = (b.e / 1.5) if b.e is not None else (
+                math.tan(math.radians(b.alpha)) if b.alpha else None)
+            if not tan_a:
+                raise InputError(Problem(f"{key}.Y", "missing; the induced axial force of a "
+                                         "tapered roller bearing needs its catalogue Y or e"))
+            Y = T.ROLLER_RADIAL[1]["Y_gt_cot"] / tan_a
+        return PR.induced_tapered(F_r, Y, PR.K_TAPERED if factor is None else factor)
+    if b.alpha is None:
+        raise InputError(Problem(f"{key}.contact_angle", "missing; the induced axial force of "
+                                 "an angular contact ball bearing needs its contact angle"))
+    return PR.induced_angular(F_r, b.alpha, factor)
+
+
+def _pair(spec: ValidatedSpec, blocks: list, checks: list, new_result) -> Result:
+    p = spec.data["pair"]
+    if p is None:
+        raise InputError(Problem("pair", "missing; required in mode = \"pair\": bearing B's "
+                                         "arrangement and radial load F_r"))
+    if len(blocks) != 1:
+        raise InputError(Problem("load.spectrum", "mode = \"pair\" takes a single load case "
+                                 "(load.F_r, F_a, speed), not a spectrum"))
+    A, info_a = resolve_bearing(spec)
+    if A.kind not in PR.pair_types():
+        raise InputError.at("bearing.type" if spec.data["bearing"]["type"] else
+                            "bearing.designation", spec.data["bearing"]["type"] or
+                            spec.data["bearing"]["designation"],
+                            "a pair with induced axial loads is one of angular contact ball "
+                            "or tapered roller bearings")
+    B, info_b = _bearing_b(spec, info_a, A.kind)
+    blk = blocks[0]
+    F_rA, F_rB, F_a = blk.F_r, p["F_r"], blk.F_a
+    ld = spec.data["load"]
+    if "load.F_a" not in spec.assumed and ld["F_a"] is not None:
+        F_a = ld["F_a"]
+    k = p["induced_factor"]
+    F_iA = _induced(A, F_rA, k, "bearing")
+    F_iB = _induced(B, F_rB, k, "pair")
+    who = PR.carrier(p["arrangement"], F_a)
+    if who == "B":
+        sol = PR.solve(F_iA, F_iB, abs(F_a))
+        F_aA, F_aB = sol.F_aA, sol.F_aB
+    else:
+        sol = PR.solve(F_iB, F_iA, abs(F_a))
+        F_aA, F_aB = sol.F_aB, sol.F_aA
+    cond = resolve_conditions(spec, A, blocks, checks)
+    A = _with_c_u(A, cond)
+    B = _with_c_u(B, cond)
+    bA = [Block(F_rA, F_aA, blk.n, 1.0)]
+    bB = [Block(F_rB, F_aB, blk.n, 1.0)]
+    cond_b = replace(cond, F_r0=None, F_a0=None)
+    xa = run_assessment(A, bA, cond, spec)
+    xb = run_assessment(B, bB, cond_b, spec)
+
+    res = new_result(spec)
+    s = res.section("pair", "Pair: induced axial loads")
+    s.add("arrangement", p["arrangement"].replace("_", "-"), None, "", "arrangement", "given")
+    s.add("F_rA", F_rA, "N", "F_rA", "radial load on bearing A", "given")
+    s.add("F_rB", F_rB, "N", "F_rB", "radial load on bearing B", "given")
+    s.add("K_a", abs(F_a), "N", "K_a", "external axial load on the shaft", "given")
+    s.add("K_a_carrier", who, None, "", "bearing that carries K_a", S.PAIR)
+    name = "k·F_r/Y" if A.kind == "tapered_roller" else "R·F_r"
+    s.add("F_iA", F_iA, "N", "F_iA", f"induced axial force of A ({name})", S.PAIR)
+    s.add("F_iB", F_iB, "N", "F_iB", f"induced axial force of B ({name})", S.PAIR)
+    s.add("F_aA", F_aA, "N", "F_aA", "axial load on bearing A", S.PAIR)
+    s.add("F_aB", F_aB, "N", "F_aB", "axial load on bearing B", S.PAIR)
+    c, o = ("B", "A") if who == "B" else ("A", "B")       # carrier, other
+    F_io = F_iA if o == "A" else F_iB
+    F_ic = F_iB if c == "B" else F_iA
+    case = (f"F_a{o} = F_i{o}, F_a{c} = F_i{o} + K_a" if F_io + abs(F_a) >= F_ic
+            else f"F_a{c} = F_i{c}, F_a{o} = F_i{c} − K_a")
+    s.add("case", case, None, "", "governing case", S.PAIR)
+    add_rows(res, xa, info_a)
+    _add_b_rows(res, xb, info_b)
+    checks.extend(life_checks(xa, info_a, bA, cond))
+    checks.extend(replace(c, message="bearing B: " + c.message)
+                  for c in life_checks(xb, info_b, bB, cond_b))
+    checks.extend(_common_checks(spec, info_a))
+    return res
+
+
+def _add_b_rows(res: Result, x: Assessment, info: dict) -> None:
+    src = S.method_source(x.cond.method)
+    row = info.get("catalogue")
+    t = res.section("bearing_B", "Bearing B")
+    t.add("designation", row.name if row else "—", None, "", "catalogue designation",
+          info.get("source") or S.CATALOGUE)
+    t.add("C_r", x.bearing.C_r, "N", "C_rB", "basic dynamic load rating", src)
+    lf = x.blocks[0].factors
+    t.add("X", lf.X, "-", "X_B", "radial load factor", src)
+    t.add("Y", lf.Y, "-", "Y_B", "axial load factor", src)
+    t.add("P", x.P, "N", "P_B", "equivalent dynamic load", src)
+    t.add("L10h", x.L10h, "h", "L10h,B", "basic rating life in hours", src)
+    t.add("life_h", x.life_h, "h", x.life_name + ",B", "adjusted life", src)
+    if x.s0 is not None:
+        t.add("s0", x.s0, "-", "s_0B", "static safety factor C_0r/P_0", S.ISO76)

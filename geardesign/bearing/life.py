@@ -138,9 +138,10 @@ def _clamp_flag(x: float, lo: float, hi: float) -> str:
 
 def load_factors(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: float | None = None,
                  V: float = 1.0, C_0r: float | None = None, f0: float | None = None,
-                 e_given: float | None = None, Y_given: float | None = None) -> LoadFactors:
-    """X, Y, e for P = X·V·F_r + Y·F_a (ISO 281:2007 Table 3 / GOST 18855-94; [ISO281] table 3).
-    F_a/(V·F_r) <= e gives the "<= e" column (X = 1, Y = 0 for single-row
+                 e_given: float | None = None, Y_given: float | None = None,
+                 Y1_given: float | None = None) -> LoadFactors:
+    """X, Y, e for P = X·V·F_r + Y·F_a (ISO 281:2007 Table 3 / GOST 18855-94; [GOST18855]
+    §A.4.3–A.4.5).  F_a/(V·F_r) <= e gives the "<= e" column (X = 1, Y = 0 for single-row
     bearings).  V = 1 in ISO 281; GOST 18855-94 practice compares F_a/(V·F_r) with e.
 
     Deep groove: entry f0·Fa/C0r when f0 is given, else the textbook Fa/C0r column.
@@ -148,7 +149,9 @@ def load_factors(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: f
     α = 20…45° fixed rows (linear interpolation between printed angles).
     Self-aligning ball, tapered and spherical roller: e = 1.5·tan α (α from the catalogue e
     when e is given); a catalogue Y (for F_a/F_r > e) may replace 0.4·cot α / 0.67·cot α.
-    Cylindrical roller: X = 1, Y = 0 (axial load not counted).  Thrust with α = 90°: P = F_a.
+    A catalogue Y1 (for F_a/F_r <= e of double-row and spherical roller bearings) replaces
+    the scaled Y.  Cylindrical roller: X = 1, Y = 0 (axial load not counted).  Thrust with
+    α = 90°: P = F_a.
     """
     ratio = _ratio(Fr, Fa, V)
     if kind == "cylindrical_roller":
@@ -244,6 +247,9 @@ def load_factors(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: f
         if Y_given is not None:
             Y_le, Y_gt = Y_given * scale, Y_given
             note = "catalogue Y"
+        if Y1_given is not None and Y_le > 0.0:
+            Y_le = Y1_given
+            note = "catalogue Y1, Y"
         if ratio <= e:
             return LoadFactors(e, X_le, Y_le, ratio, note=note)
         return LoadFactors(e, X_gt, Y_gt, ratio, note=note)
@@ -302,9 +308,10 @@ class StaticLoad:
 
 
 def static_load(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: float | None = None,
-                e_given: float | None = None) -> StaticLoad:
-    """Equivalent static load P0 = max(F_r, X0·F_r + Y0·F_a) (ISO 76 / GOST 18854; [ISO76]).
-    Cylindrical roller: P0 = F_r; thrust with α = 90°: P0a = F_a."""
+                e_given: float | None = None, Y0_given: float | None = None) -> StaticLoad:
+    """Equivalent static load P0 = max(F_r, X0·F_r + Y0·F_a) (ISO 76 / GOST 18854; [GOST18855]
+    §A.4.7).  Cylindrical roller: P0 = F_r; thrust with α = 90°: P0a = F_a.  A catalogue Y0
+    (tapered, spherical and self-aligning bearings) replaces 0.22·cot α / 0.44·cot α."""
     if kind == "cylindrical_roller":
         return StaticLoad(1.0, 0.0, Fr)
     if kind in T.THRUST_TYPES:
@@ -320,7 +327,7 @@ def static_load(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: fl
         cot = 1.0 / _alpha_tan(alpha_deg, e_given)
         r = 2 if (rows == 2 or kind == "self_aligning_ball") else 1
         X0, y = T.STATIC_ROLLER[r]
-        Y0 = y * cot
+        Y0 = y * cot if Y0_given is None else Y0_given
     return StaticLoad(X0, Y0, max(Fr, X0 * Fr + Y0 * Fa))
 
 
@@ -328,8 +335,12 @@ def static_load(kind: str, Fr: float, Fa: float, *, rows: int = 1, alpha_deg: fl
 
 
 def basic_life(C: float, P: float, p: float) -> float:
-    """Basic rating life L10 = (C/P)^p [10⁶ rev] (GOST 18855-94 / ISO 281; [Haidamaka2017] eq. (2))."""
-    return (C / P) ** p
+    """Basic rating life L10 = (C/P)^p [10⁶ rev] (GOST 18855-94 / ISO 281; [GOST18855]);
+    infinite when it exceeds the float range (the caller refuses it)."""
+    try:
+        return (C / P) ** p
+    except OverflowError:
+        return math.inf
 
 
 def hours(L_mrev: float, n: float) -> float:
@@ -481,3 +492,35 @@ def spectrum_mean(P: list, n: list, t: list, p: float) -> SpectrumResult:
 def miner_hours(block_hours: list, t: list) -> float:
     """Palmgren–Miner over time shares: 1/L = Σ t_j/L_j (L_j the life [h] at block j)."""
     return 1.0 / sum(tj / Lj for tj, Lj in zip(t, block_hours))
+
+
+@dataclass(frozen=True)
+class RibCapacity:
+    F_ap: float          # permissible continuous axial load (rib and roller ends), N
+    F_a_max: float       # flange strength limit for a continuous axial load, N
+    k1: float
+    k2: float
+
+    @property
+    def limit(self) -> float:
+        return min(self.F_ap, self.F_a_max)
+
+
+def rib_capacity(C_0r: float, F_r: float, n: float, d: float, D: float, series: str,
+                 lubricant: str = "oil") -> RibCapacity:
+    """Axial load a single-row cylindrical roller bearing with ribs on both rings (NJ, NUP)
+    carries continuously ([SKF6000] p. 518):
+
+    F_ap = k1·C0·10⁴/(n·(d + D)) − k2·F_r   [kN, kN, min⁻¹, mm]; k1 = 1.5, k2 = 0.15 with
+    oil, 1 and 0.1 with grease (the base oil's κ >= 2, 60 K above ambient); and never more
+    than F_a,max = 0.0045·D^1.5 (diameter series 2) or 0.0023·D^1.7 (other series) [kN, mm].
+    Forces in N here; short axial loads may be twice, shocks three times F_ap (not used).
+
+    >>> round(rib_capacity(53000.0, 5000.0, 1500.0, 40.0, 80.0, "2").F_ap)
+    3667
+    """
+    k1, k2 = (1.5, 0.15) if lubricant == "oil" else (1.0, 0.1)
+    F_ap = (k1 * (C_0r / 1000.0) * 1.0e4 / (n * (d + D)) - k2 * F_r / 1000.0) * 1000.0
+    diameter_series_2 = series in ("2", "22")
+    F_a_max = (0.0045 * D ** 1.5 if diameter_series_2 else 0.0023 * D ** 1.7) * 1000.0
+    return RibCapacity(max(F_ap, 0.0), F_a_max, k1, k2)

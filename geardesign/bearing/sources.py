@@ -22,6 +22,10 @@ GOST21354_REGIMES = "GOST 21354-87 regimes (Russian textbooks)"
 CATALOGUE = "catalogue"
 LP = "Lundberg–Palmgren; NTN CAT. No. 2202/E (3.6)"
 PRACTICE = "design practice"
+D341 = "ASTM D341 (Ubbelohde–Walther)"
+D2270 = "ASTM D2270 / ISO 2909"
+SKF = "[SKF6000]"
+PAIR = "[SKF6000] pp. 415–416, table 4; [NSK] A-36"
 
 
 def method_source(method: str) -> str:

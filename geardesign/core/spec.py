@@ -236,6 +236,8 @@ class Table:
     open: bool = False
     """An open table keeps keys it does not declare, unvalidated (e.g. a drive stage: its
     own calculator validates them)."""
+    in_template: bool = True
+    """False: the template shows the table commented out (a table of another mode)."""
 
     def member(self, key: str) -> "Field | Table | None":
         for f in self.fields:
@@ -674,12 +676,13 @@ def _template_table(t: Table, path: str, lines: list[str], alternatives: dict | 
         if isinstance(sub, TableList):
             _template_items(sub, sub_path, lines)
         elif isinstance(sub, Table):
-            if sub.key in alternatives:
-                first = alternatives[sub.key]
+            if sub.key in alternatives or not sub.in_template:
                 alt: list[str] = []
                 _template_table(sub, sub_path, alt)
                 lines.append("")
-                lines.append(f"# Instead of [{first}]: [{sub.key}] ({sub.description}).")
+                lines.append(f"# Instead of [{alternatives[sub.key]}]: [{sub.key}] "
+                             f"({sub.description})." if sub.key in alternatives else
+                             f"# [{sub.key}]: {sub.description}.")
                 lines.extend(("# " + line if line and not line.startswith("#") else line)
                              for line in alt[1:])
                 continue

@@ -69,6 +69,20 @@ def normalize_grade(name: str) -> str:
     return latin if latin in library()["steel"] else name
 
 
+def _plain(name: str) -> str:
+    return "".join(name.split()).upper().replace("AISI", "").replace("SAE", "")
+
+
+def equivalent_of(name: str) -> str | None:
+    """The library grade that lists ``name`` among its equivalent grades (``"4140"``,
+    ``"AISI 4140"`` -> ``"42CrMo4"``; ``"C45"`` -> ``"45"``), or None."""
+    k = _plain(name)
+    for grade, steel in library()["steel"].items():
+        if any(_plain(e) == k for e in steel.get("equivalents", ())):
+            return grade
+    return None
+
+
 def grades() -> tuple[str, ...]:
     return tuple(library()["steel"])
 
@@ -183,15 +197,23 @@ def resolve(m: dict, key: str) -> GearMaterial:
     treat = lib["treatment"][treat_key]
     grade = m.get("grade")
     steel = None
+    alias_note = ""
     if grade is not None:
         grade = normalize_grade(grade)
+        if grade not in lib["steel"] and equivalent_of(grade) is not None:
+            alias = equivalent_of(grade)
+            alias_note = (f"{key}: grade {m['grade']} read as {alias} "
+                          f"({lib['steel'][alias]['standard']}), a grade of about the same "
+                          f"chemistry; its data are that standard's")
+            grade = alias
         steel = lib["steel"].get(grade)
         if steel is None:
             close = difflib.get_close_matches(grade, list(lib["steel"]), 3, 0.5)
             hint = f" (did you mean {', '.join(repr(c) for c in close)}?)" if close else ""
             raise InputError.at(f"{key}.grade", m["grade"],
-                                f"unknown steel{hint}; known: {', '.join(lib['steel'])}; or leave "
-                                f"out grade and give the properties")
+                                f"unknown steel{hint}; known: {', '.join(lib['steel'])} (and "
+                                f"equivalents such as C45, 41Cr4, 4140: `geardesign materials` "
+                                f"lists them); or leave out grade and give the properties")
         if treat_key not in steel["treatments"]:
             raise InputError.at(f"{key}.treatment", treat_key,
                                 f"not a treatment for steel {grade}; use one of "
@@ -222,7 +244,7 @@ def resolve(m: dict, key: str) -> GearMaterial:
                                  "missing; required for a nitrided gear (σ_Flim = 12·HRC_core + 290), "
                                  "or give sigma_Flim"))
 
-    warnings = []
+    warnings = [alias_note] if alias_note else []
     lo, hi = treat["range"]
     if not lo <= given_hardness <= hi:
         warnings.append(f"{key}: hardness {given_hardness:g} {kind} is outside the range "
@@ -243,6 +265,12 @@ def resolve(m: dict, key: str) -> GearMaterial:
         for min_hb, t, value in steel["sigma_T"]:
             if t == treat_key and HB >= min_hb:
                 sigma_T = value
+        if treat_key == "through_hardened" and sigma_T is not None:
+            warnings.append(
+                f"{key}: σ_T = {sigma_T:g} MPa is the {steel['standard']} minimum of the "
+                f"grade after quenching and tempering at 500 °C or above, far below the "
+                f"yield strength at {given_hardness:g} {kind}; σ_HPmax = 2.8·σ_T is then on "
+                f"the safe side; give the blank's yield strength as sigma_T")
     values = {"HB": HB, "HRC": HRC, "HV": HV, "HRC_core": core, "sigma_T": sigma_T}
     S_F = treat.get("S_F_Ni", treat["S_F"]) if ni else treat["S_F"]
     blank_SF, Y_z = BLANKS[m["blank"]]

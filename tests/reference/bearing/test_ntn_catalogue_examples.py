@@ -29,7 +29,7 @@ NO_A23 = {"factors": {"a23": 1.0}}          # NTN's basic rating life: a1 = a23 
 
 def test_example_1_6208_radial_load():
     # 6208, Fr = 3.2 kN, 650 min^-1: f_h = 3.36, "approximately 19,000 hours" (chart).
-    v = bearing(GOST, {"designation": "6208"}, {"F_r": 3200.0, "speed": 650.0}, **NO_A23)
+    v = bearing(GOST, {"designation": "6208", "maker": "NTN"}, {"F_r": 3200.0, "speed": 650.0}, **NO_A23)
     assert_ref(v["C_r"], 29100.0, 0.0, "6208 C_r from the bearing table")
     assert_ref(v["P"], 3200.0, 1e-9, "Ex. 1 P_r = F_r")
     assert_ref(v["L10h"], 19000.0, 0.02 * 19000.0, "Ex. 1 L10h (chart read, ±2 %)")
@@ -38,7 +38,7 @@ def test_example_1_6208_radial_load():
 def test_example_2_6208_with_axial_load():
     # Same bearing and speed plus Fa = 1.8 kN: Cor = 17.8 kN, Fa/Cor = 0.10 -> e = 0.29;
     # Fa/Fr = 0.56 > e -> X = 0.56, Y = 1.48; Pr = 4.46 kN; f_h = 2.41 -> about 7,000 h.
-    v = bearing(GOST, {"designation": "6208"}, {"F_r": 3200.0, "F_a": 1800.0, "speed": 650.0},
+    v = bearing(GOST, {"designation": "6208", "maker": "NTN"}, {"F_r": 3200.0, "F_a": 1800.0, "speed": 650.0},
                 **NO_A23)
     assert_ref(v["C_0r"], 17800.0, 0.0, "6208 C_0r from the bearing table")
     assert_ref(v["entry"], 0.10, 0.0015, "Ex. 2 Fa/Cor (printed to 2 digits)")
