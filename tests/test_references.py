@@ -34,7 +34,8 @@ LOCATOR = (r" (?:eqs?\.|table|tables|fig\.|§|system|appendix|p\.|pp\.|worked ex
            r"|[A-Za-z0-9_]+\.(?:h|m|py|pas|f|for|cs)\b)")
 NAMED = re.compile(NOT_A_NAME + r"(?<=[(;,:\"'` ])\[([A-Z][A-Za-z0-9-]{2,})\]"
                    rf"(?=[);,.:\"'`]|{LOCATOR})")
-UNITS = {"MPa", "GPa", "Hz", "kHz", "rpm", "Nm", "Nmm", "Pa", "RPM"}
+UNITS = {"MPa", "GPa", "Hz", "kHz", "rpm", "Nm", "Nmm", "Pa", "RPM",
+         "FILTER"}  # units and command-line metavars, not keys
 FORBIDDEN = re.compile(r"seed [0-9]|seed l|method note|shared/|standards_check", re.I)
 SUFFIXES = (".py", ".md", ".toml", ".json", ".txt", ".csv")
 
