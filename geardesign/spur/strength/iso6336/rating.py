@@ -190,10 +190,17 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
     z_n1 = p.z1 / (cb * cb * math.cos(p.beta))
     z_n2 = None if internal else p.z2 / (cb * cb * math.cos(p.beta))
     x2 = -p.x2 if internal else p.x2      # ISO 21771 sign for an internal gear
-    c_th = R.factor(F, "c_th", lambda: P1.theoretical_single_stiffness(z_n1, z_n2, p.x1, x2),
-                    "N/(mm·µm)", "c'_th", "theoretical single stiffness", S1)
-    h_fP = p.rack.h_a + p.rack.c
-    C_B = R.put(F, "C_B", P1.basic_rack_factor(h_fP, h_fP, a_n), "-", "C_B", "basic rack factor", S1)
+    # the standard's pinion is the gear with fewer teeth (a sun larger than its planet)
+    stiff = ((z_n2, x2, z_n1, p.x1) if z_n2 is not None and z_n2 < z_n1
+             else (z_n1, p.x1, z_n2, x2))
+    c_th = R.factor(F, "c_th", lambda: P1.theoretical_single_stiffness(*stiff[::2], *stiff[1::2]),
+                    "N/(mm·µm)", "c'_th", "theoretical single stiffness (gear with fewer "
+                    "teeth as the pinion)", S1)
+    racks = (p.rack, getattr(p, "rack2", p.rack))
+    h_fPs = [rk.h_a + rk.c for rk in racks]
+    h_fP = h_fPs[0]
+    C_B = R.put(F, "C_B", P1.basic_rack_factor(h_fPs[0], h_fPs[1], a_n), "-", "C_B",
+                "basic rack factor", S1)
     C_R = R.put(F, "C_R", min(P1.blank_factor(ig.web_ratio, (ig.rim_thickness or m_n) / m_n)
                               for ig in iso.gears), "-", "C_R", "gear blank factor", S1)
     R.put(F, "C_M", P1.C_M, "-", "C_M", "correction factor of the single stiffness", S1)
@@ -363,8 +370,8 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
             # the internal gear as the rack it tends to: z → ∞ with its own addendum
             d_rack = Z_BIG * g.m_t
             tf = P3.tooth_form(Z_BIG, x2, m_n, a_n, p.beta, g.beta_b, d_rack,
-                               d_rack + (gr.d - gr.d_a), g.eps_alpha, h_fP * m_n,
-                               p.rack.rho_f * m_n, iso.protuberance * m_n)
+                               d_rack + (gr.d - gr.d_a), g.eps_alpha, h_fPs[1] * m_n,
+                               racks[1].rho_f * m_n, iso.protuberance * m_n)
             how = " (internal gear: rack approximation, conservative)"
         else:
             tf = P3.tooth_form(gr.z, gr.x, m_n, a_n, p.beta, g.beta_b, gr.d, gr.d_a, g.eps_alpha,
