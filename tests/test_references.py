@@ -8,6 +8,9 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 REFERENCES = (ROOT / "docs" / "references.md").read_text(encoding="utf-8")
 DEFINED = set(re.findall(r"^\| \[([^\]]+)\] \|", REFERENCES, flags=re.M))
+# entries of a branch waiting to be merged into references.md (docs/refs_<branch>.md)
+for _p in sorted((ROOT / "docs").glob("refs_*.md")):
+    DEFINED |= set(re.findall(r"^\| \[([^\]]+)\] \|", _p.read_text(encoding="utf-8"), flags=re.M))
 
 # A citation key: a standard (GOST21354, ISO281, EN13906-3) or an author/journal and a year
 # (Korotkin2017); other bracketed names in the code are Python types ([Row], [Path]).

@@ -515,11 +515,29 @@ def _pct(x: float) -> str:
 
 
 def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
-           peak: bool = False, internal: bool = False, clamped: tuple = ()) -> list[Check]:
+           peak: bool = False, internal: bool = False, clamped: tuple = (),
+           found: dict | None = None) -> list[Check]:
     """Checks of an ISO 6336 rating ``v``: S_H ≥ S_Hmin and S_F ≥ S_Fmin per gear (of the
     spectrum when one is given), the static safety factors at the peak torque, and notes.
-    The advice follows the scaling of the formulas: σ_H ∝ 1/√b and ∝ a^(-3/2) at a fixed
-    ratio b/a; σ_F ∝ 1/(b m_n)."""
+
+    The advice names the face width and the scale of the pair (centre distance, module and
+    face width in proportion) that pass, when ``found`` carries them (``{"b": (b_w,
+    b_pitting, b_bending), "k": (a_w, k_pitting, k_bending)}``, found by re-rating); else
+    it follows the scaling of the formulas at the present load factors: σ_H ∝ 1/√b and
+    ∝ a^(-3/2) at a fixed ratio b/a; σ_F ∝ 1/(b m_n)."""
+    found = found or {}
+
+    def by_rerating(kind: int) -> str | None:
+        parts = []
+        if "k" in found and found["k"][kind] is not None:
+            a_w, k = found["k"][0], found["k"][kind]
+            parts.append(f"increase the centre distance to at least {k * a_w:.1f} mm "
+                         f"(+{100 * (k - 1):.0f} %, module and face width in proportion)")
+        if "b" in found and found["b"][kind] is not None:
+            b_w, b = found["b"][0], found["b"][kind]
+            parts.append(f"the face width to at least {b:.1f} mm (+{100 * (b / b_w - 1):.0f} %)")
+        return (" or ".join(parts) + " (found by re-rating)") if parts else None
+
     out: list[Check] = []
     S_Hmin, S_Fmin = v["S_Hmin"], v["S_Fmin"]
     for k in (1, 2):
@@ -530,10 +548,11 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
         out.append(check(
             f"ISO_PITTING_{up}", S >= S_Hmin * (1 - 1e-12), "error",
             f"ISO 6336 pitting, {who}: S_H{k} = {S:.2f} < S_Hmin = {S_Hmin:.2f}"
-            + (" (load spectrum)" if spectrum else "") + f": increase the centre distance by "
-            f"{_pct(r ** (2 / 3) - 1)} (module and face width in proportion), or the face width "
-            f"by {_pct(r * r - 1)}, or use a {who} material with σ_Hlim at least "
-            f"{v[f'sigma_Hlim{k}'] * r:.0f} MPa",
+            + (" (load spectrum)" if spectrum else "") + ": "
+            + (by_rerating(1) or f"increase the centre distance by {_pct(r ** (2 / 3) - 1)} "
+               f"(module and face width in proportion), or the face width by {_pct(r * r - 1)} "
+               f"(at the present load factors)")
+            + f", or use a {who} material with σ_Hlim at least {v[f'sigma_Hlim{k}'] * r:.0f} MPa",
             f"ISO 6336 pitting, {who}: S_H{k} = {S:.2f} >= {S_Hmin:.2f}", S, S_Hmin, S2))
     for k in (1, 2):
         who, up = members[k - 1], members[k - 1].upper()
@@ -544,9 +563,10 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
             f"ISO_BENDING_{up}", S >= S_Fmin * (1 - 1e-12), "error",
             f"ISO 6336 tooth bending, {who}: S_F{k} = {S:.2f} < S_Fmin = {S_Fmin:.2f}"
             + (" (load spectrum)" if spectrum else "") + f": increase the module by "
-            f"{_pct(r - 1)} (same centre distance, fewer teeth), or the face width by "
-            f"{_pct(r - 1)}, or use a {who} material with σ_Flim at least "
-            f"{v[f'sigma_Flim{k}'] * r:.0f} MPa",
+            f"{_pct(r - 1)} (same centre distance, fewer teeth), or "
+            + (by_rerating(2) or f"the face width by {_pct(r - 1)} (at the present load "
+                                 f"factors)")
+            + f", or use a {who} material with σ_Flim at least {v[f'sigma_Flim{k}'] * r:.0f} MPa",
             f"ISO 6336 tooth bending, {who}: S_F{k} = {S:.2f} >= {S_Fmin:.2f}", S, S_Fmin, S3))
     if peak:
         for kind, sym, need, src in (("PITTING", "S_Hst", S_Hmin, S2), ("BENDING", "S_Fst", S_Fmin, S3)):
@@ -577,7 +597,14 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
     return out
 
 
-def rating_checks(rating: Rating, internal: bool = False, members=WHO) -> list[Check]:
+def passes(v: dict, kind: str) -> bool:
+    """Whether a rating ``v`` passes pitting (``"H"``) or bending (``"F"``) on both gears."""
+    spec = "spec" if f"S_{kind}spec1" in v else ""
+    return all(v[f"S_{kind}{spec}{k}"] >= v[f"S_{kind}min"] * (1 - 1e-12) for k in (1, 2))
+
+
+def rating_checks(rating: Rating, internal: bool = False, members=WHO,
+                  found: dict | None = None) -> list[Check]:
     """:func:`checks` of a finished rating (what a calculator calls)."""
     v = rating.v
     clamped = []
@@ -587,4 +614,4 @@ def rating_checks(rating: Rating, internal: bool = False, members=WHO) -> list[C
         line = T.MATERIAL_LINES[typ]
         if "clamped" in row.name:
             clamped.append((k, (*line["range"], line["scale"])))
-    return checks(v, members, "S_Hspec1" in v, "S_Hst1" in v, internal, tuple(clamped))
+    return checks(v, members, "S_Hspec1" in v, "S_Hst1" in v, internal, tuple(clamped), found)
