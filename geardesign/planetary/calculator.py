@@ -871,8 +871,14 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
         for row in rating.rows:
             sec.add(row.key, row.value, row.unit, row.symbol, _members_words(row.name, md.members),
                     row.source)
-        for c in strength_checks(rating.v, pair, mesh.geom.inp.beta > 0.0, st["accuracy_grade"],
-                                 peak_ratio is not None):
+        if st["method"] == "ISO 6336:2019":
+            from geardesign.spur.strength.iso6336.rating import rating_checks
+
+            found = rating_checks(rating, bool(mesh.spec.internal))
+        else:
+            found = strength_checks(rating.v, pair, mesh.geom.inp.beta > 0.0,
+                                    st["accuracy_grade"], peak_ratio is not None)
+        for c in found:
             out.append(_rename(c, mesh.name, md.members))
     return out
 

@@ -264,6 +264,9 @@ def _strength_inputs(spec: ValidatedSpec, gear: dict):
                       (mat["pinion"]["roughness_Ra"], mat["wheel"]["roughness_Ra"]),
                       dict(d["factors"] or {}), d["options"]["contact_model"],
                       d["options"]["crowning"])
+    from geardesign.spur.strength.iso6336.spec import prepare
+
+    prepare(spec)
     return mats, duty, setting
 
 
@@ -289,13 +292,28 @@ def _drop_unused_defaults(spec: ValidatedSpec, paths: tuple[str, ...]) -> None:
 
 
 def add_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inputs) -> None:
-    """Rate the pair (``inputs`` from :func:`_strength_inputs`); add rows and checks."""
+    """Rate the pair by every method the spec names (``options.method`` or
+    ``options.methods``), each under its own sections."""
+    from geardesign.spur.strength.iso6336.spec import ISO_NAME, chosen
+
+    names = chosen(spec.data["options"])
+    if "GOST 21354-87" in names:
+        _add_gost_strength(res, geom, spec, inputs)
+    if ISO_NAME in names:
+        from geardesign.spur.strength.iso6336.report import add_iso_strength
+
+        add_iso_strength(res, geom, spec, inputs)
+
+
+def _add_gost_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inputs) -> None:
+    """Rate the pair to GOST 21354-87 (``inputs`` from :func:`_strength_inputs`); add rows
+    and checks."""
     from geardesign.spur.checks import strength_checks
     from geardesign.spur.strength import method
 
     mats, duty, setting = inputs
-    rating = method(spec.data["options"]["method"]).rate(geom, mats, duty, setting)
-    res.methods.append(spec.data["options"]["method"])
+    rating = method("GOST 21354-87").rate(geom, mats, duty, setting)
+    res.methods.append("GOST 21354-87")
     sec = res.section("materials", "Materials")
     for k, m in enumerate(mats, 1):
         sec.add(f"material{k}", m.label, None, f"mat{k}", ("pinion", "wheel")[k - 1],
@@ -318,7 +336,7 @@ def add_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inputs) -
         from geardesign.spur.checks import least_passing
         from geardesign.spur.geometry import pair_geometry
 
-        rate = method(spec.data["options"]["method"]).rate
+        rate = method("GOST 21354-87").rate
         inp = geom.inp
 
         def rerate(b: float) -> dict:

@@ -11,6 +11,7 @@ from __future__ import annotations
 from geardesign.core.spec import Field, SpecSchema, Table, TableList
 from geardesign.spur.strength import METHODS
 from geardesign.spur.strength import tables as T
+from geardesign.spur.strength.iso6336.spec import ISO, ISO_FACTORS, OPTIONS_METHODS
 
 ACCURACY = Field("accuracy_grade", "integer", "accuracy grade (GOST 1643-81 smoothness norm)",
                  symbol="n_st", default=8, minimum=6, maximum=11)
@@ -219,6 +220,7 @@ FACTORS = Table("factors", "load and strength factors given instead of computed"
 OPTIONS = Table("options", "calculation options", (
     Field("method", "string", "strength method", default="GOST 21354-87",
           choices=tuple(METHODS)),
+    OPTIONS_METHODS,
     Field("contact_model", "string", "extra contact stress model, informative: the n = 0.7 "
           "deformation law of Popov et al. 2017", default="hertz", choices=("hertz", "popov_n07")),
     Field("crowning", "number", "crowning depth of the pinion at the face ends (informative "
@@ -228,8 +230,8 @@ OPTIONS = Table("options", "calculation options", (
 SCHEMA = SpecSchema(
     kind="spur",
     description="external spur/helical gear pair: geometry (GOST 16532-70) and strength "
-                "(GOST 21354-87)",
-    tables=(GEAR, DESIGN, RACK, LOAD, MATERIAL, FACTORS, OPTIONS),
+                "(GOST 21354-87 or ISO 6336:2019)",
+    tables=(GEAR, DESIGN, RACK, LOAD, MATERIAL, FACTORS, OPTIONS, ISO, ISO_FACTORS),
     title_example="Reducer stage 25/100, m = 4",
     one_of=(("gear", "design"),),
 )

@@ -1,10 +1,9 @@
 """Strength rating of external cylindrical gear pairs.
 
 A method is a module with ``rate(geometry, materials, duty, setting) -> Rating``; the
-spec's ``options.method`` selects one from :data:`METHODS`.  GOST 21354-87 is
-:mod:`.rating` (on the formulas of :mod:`.gost21354`); a second method (ISO 6336-2/-3
-method B) would add its own formula and rating modules and one line here, without
-touching the GOST code.
+spec's ``options.method`` selects one from :data:`METHODS` (``options.methods`` several).
+GOST 21354-87 is :mod:`.rating` (on the formulas of :mod:`.gost21354`); ISO 6336:2019
+method B is the package :mod:`.iso6336`.
 """
 
 from __future__ import annotations
@@ -13,6 +12,7 @@ import importlib
 
 METHODS = {
     "GOST 21354-87": "geardesign.spur.strength.rating",
+    "ISO 6336:2019": "geardesign.spur.strength.iso6336.rating",
 }
 
 

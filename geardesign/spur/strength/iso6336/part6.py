@@ -1,0 +1,67 @@
+"""ISO 6336-6:2019 — service life under variable load: Palmgren–Miner damage sum of a load
+spectrum on the S-N curves of ISO 6336-2 (contact) and ISO 6336-3 (bending).
+
+Pure functions.  The S-N curve is given as a callable σ_G(N_L) [MPa] (the limit stress with
+its life and influence factors at N_L cycles, falling with N_L); a block stress above it at
+N_L ≤ the static point has no life.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Callable, Sequence
+
+N_MIN = 1.0
+N_MAX = 1e10
+"""Beyond 10¹⁰ cycles the curves of ISO 6336-2/-3 are flat: a stress below σ_G(10¹⁰) does no
+damage."""
+
+
+def cycles_to_failure(sigma: float, sigma_G: Callable[[float], float]) -> float:
+    """Cycles N at which σ_G(N) = σ (bisection on log N); ``math.inf`` when σ ≤ σ_G(10¹⁰),
+    0 when σ exceeds the static limit σ_G(1).  [ISO6336-6] (S-N curve, Miner's rule)."""
+    if sigma <= sigma_G(N_MAX):
+        return math.inf
+    if sigma > sigma_G(N_MIN):
+        return 0.0
+    lo, hi = 0.0, math.log10(N_MAX)
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        if sigma_G(10.0 ** mid) >= sigma:
+            lo = mid
+        else:
+            hi = mid
+    return 10.0 ** lo
+
+
+def damage(stresses: Sequence[float], cycles: Sequence[float],
+           sigma_G: Callable[[float], float]) -> float:
+    """Damage sum D = Σ n_i/N_i of the blocks (stress σ_i [MPa], n_i cycles).
+    [ISO6336-6] (Palmgren–Miner rule)."""
+    D = 0.0
+    for s, n in zip(stresses, cycles):
+        N = cycles_to_failure(s, sigma_G)
+        if n <= 0.0:
+            continue
+        D += math.inf if N == 0.0 else (0.0 if math.isinf(N) else n / N)
+    return D
+
+
+def spectrum_safety(stresses: Sequence[float], cycles: Sequence[float],
+                    sigma_G: Callable[[float], float]) -> float:
+    """Safety factor of a spectrum: the factor S by which every block stress may grow until
+    the damage sum reaches 1 (D(S·σ_i) = 1).  [ISO6336-6] (safety factor from a load
+    spectrum)."""
+    peak = max(stresses)
+    if peak <= 0.0:
+        return math.inf
+    lo, hi = 1e-3, sigma_G(N_MIN) / peak * 1.000001
+    if damage([hi * s for s in stresses], cycles, sigma_G) < 1.0:
+        return hi
+    for _ in range(80):
+        mid = math.sqrt(lo * hi)
+        if damage([mid * s for s in stresses], cycles, sigma_G) < 1.0:
+            lo = mid
+        else:
+            hi = mid
+    return lo

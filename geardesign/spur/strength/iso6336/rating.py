@@ -1,0 +1,617 @@
+"""Rating of a gear pair to ISO 6336:2019 method B: every factor, stress, permissible stress
+and safety factor, from the part modules or from ``[iso_factors]`` where the designer gives
+it; the checks that judge the result.
+
+:func:`rate` has the signature of the GOST rating (``rate(geometry, materials, duty,
+setting)``) plus the ISO inputs :class:`IsoSetting`; without them the defaults of
+:func:`default_setting` apply (a calculator that only knows the GOST inputs, e.g. the
+planetary meshes, still gets an ISO rating).  Rows go to the sections ``iso6336_*``, so that
+both methods' results stay apart in one report.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from geardesign.core.result import Check, check
+from geardesign.spur.strength.iso6336 import iso1328
+from geardesign.spur.strength.iso6336 import part1 as P1
+from geardesign.spur.strength.iso6336 import part2 as P2
+from geardesign.spur.strength.iso6336 import part3 as P3
+from geardesign.spur.strength.iso6336 import part5 as P5
+from geardesign.spur.strength.iso6336 import tables as T
+from geardesign.spur.strength.rating import Rating
+
+NAME = "ISO 6336:2019"
+S1, S2, S3 = "[ISO6336-1]", "[ISO6336-2]", "[ISO6336-3]"
+S5, S6, S1328 = "[ISO6336-5]", "[ISO6336-6]", "[ISO1328-1]"
+WHO = ("pinion", "wheel")
+
+SECTIONS = {"iso6336_materials": "ISO 6336: materials", "iso6336_factors": "ISO 6336: load factors",
+            "iso6336_contact": "ISO 6336: pitting", "iso6336_bending": "ISO 6336: tooth bending",
+            "iso6336_static": "ISO 6336: static (peak torque)",
+            "iso6336_spectrum": "ISO 6336: load spectrum (Miner)"}
+
+Z_BIG = 100000
+"""Teeth of the rack that stands in for an internal gear in the form-factor calculation."""
+
+
+@dataclass(frozen=True)
+class IsoGear:
+    """ISO inputs of one gear."""
+
+    material: str | None = None       # ISO 6336-5 type; None: from the heat treatment
+    quality: str = "MQ"
+    sigma_Hlim: float | None = None
+    sigma_Flim: float | None = None
+    Rz_flank: float | None = None     # µm; None: 6·Ra of the flank
+    Rz_root: float = 10.0             # µm
+    inner_diameter: float = 0.0       # bore of the gear body, mm
+    rim_thickness: float | None = None  # s_R below the root, mm; None: solid
+    web_ratio: float | None = None    # b_s/b of a web gear; None: solid
+
+
+@dataclass(frozen=True)
+class IsoSetting:
+    """ISO 6336 inputs of a pair beyond the GOST setting."""
+
+    grade: int | None = None           # ISO 1328-1 flank tolerance class; None: the spec's grade
+    nu40: float = 220.0                # mm²/s
+    C_a: float | None = None           # tip relief, µm; None: C_ay from running-in
+    modification: str = "none"
+    f_ma: float | None = None          # µm
+    f_sh: float | None = None          # µm
+    K_prime: float = 0.0
+    shaft_span: float | None = None
+    pinion_offset: float = 0.0
+    shaft_diameter: float | None = None
+    f_pb: float | None = None          # µm
+    f_falpha: float | None = None      # µm
+    F_beta: float | None = None        # µm
+    S_Hmin: float = 1.0
+    S_Fmin: float = 1.4
+    limited_pitting: bool = False
+    optimum: bool = False
+    protuberance: float = 0.0          # s_pr/m_n
+    K_gamma: float = 1.0
+    gears: tuple[IsoGear, IsoGear] = (IsoGear(), IsoGear())
+    overrides: dict = field(default_factory=dict)
+
+
+def default_setting(setting) -> IsoSetting:
+    """The ISO inputs a caller that has only the GOST setting gets: its accuracy grade,
+    every other ISO input at its default."""
+    return IsoSetting(grade=setting.grade)
+
+
+class _Rows:
+    """Rows and values of the rating, with the ``[iso_factors]`` overrides."""
+
+    def __init__(self, overrides: dict):
+        self.r = Rating()
+        self.o = overrides
+
+    def put(self, sec, key, value, unit, symbol, name, source):
+        return self.r.put(sec, key, value, unit, symbol, name, source)
+
+    def factor(self, sec, key, computed, unit, symbol, name, source):
+        if self.o.get(key) is not None:
+            return self.r.put(sec, key, float(self.o[key]), unit, symbol, name + " (given)", "spec")
+        value = computed() if callable(computed) else computed
+        return self.r.put(sec, key, value, unit, symbol, name, source)
+
+
+def _material(i: int, mat, ig: IsoGear, R: _Rows) -> dict:
+    """ISO material data of gear ``i`` (type, σ_Hlim, σ_Flim and their sources)."""
+    k, who = i + 1, WHO[i]
+    typ = ig.material or P5.type_from_treatment(mat.treatment, mat.label)
+    line = P5.limits(typ, ig.quality, P5.hardness_on_scale(T.MATERIAL_LINES[typ]["scale"],
+                                                            mat.HB, mat.HV))
+    sec = "iso6336_materials"
+    R.put(sec, f"type{k}", typ, None, f"type{k}", f"material type, {who}"
+          + ("" if ig.material else " (from the heat treatment)"), S5)
+    R.put(sec, f"quality{k}", ig.quality, None, f"grade{k}", f"material quality grade, {who}", S5)
+    R.put(sec, f"hardness{k}", line.hardness, line.scale, f"H{k}",
+          f"surface hardness on the line's scale{' (clamped to its range)' if line.clamped else ''}, {who}",
+          S5)
+    if ig.sigma_Hlim is not None:
+        sH, srcH = ig.sigma_Hlim, "spec"
+    elif "sigma_Hlim" in mat.given:
+        sH, srcH = mat.sigma_Hlim, "spec ([material])"
+    else:
+        sH, srcH = line.sigma_Hlim, S5
+    if ig.sigma_Flim is not None:
+        sF, srcF = ig.sigma_Flim, "spec"
+    else:
+        sF, srcF = line.sigma_Flim, S5
+    R.put(sec, f"sigma_Hlim{k}", sH, "MPa", f"σ_Hlim{k}", f"endurance limit for contact, {who}", srcH)
+    R.put(sec, f"sigma_Flim{k}", sF, "MPa", f"σ_Flim{k}", f"endurance limit for bending "
+          f"(σ_FE = Y_ST·σ_Flim), {who}", srcF)
+    return {"type": typ, "sigma_Hlim": sH, "sigma_Flim": sF, "clamped": line.clamped,
+            "range": T.MATERIAL_LINES[typ]["range"], "scale": line.scale}
+
+
+def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
+    """Rate the pair to ISO 6336:2019 (method B; K_Hβ by method C)."""
+    iso = iso or default_setting(setting)
+    R = _Rows(iso.overrides)
+    p = g.inp
+    internal = bool(getattr(g, "internal", False))
+    helical = p.beta > 0.0
+    gears = (g.g1, g.g2)
+    z = (p.z1, p.z2)
+    d1, b, m_n, u = g.g1.d, p.b_w, p.m_n, g.u
+    a_n = p.rack.alpha_n
+    A = iso.grade if iso.grade is not None else setting.grade
+    F_t = 2000.0 * duty.T1 / d1
+    v = math.pi * d1 * duty.n1 / 60000.0
+    K_A, K_g = duty.K_A, iso.K_gamma
+    F = "iso6336_factors"
+
+    # ------------------------------------------------------------------ materials, life
+    M = [_material(i, mats[i], iso.gears[i], R) for i in range(2)]
+    sHlim = [m["sigma_Hlim"] for m in M]
+    n = (duty.n1, duty.n1 / u)
+    N_L = [60.0 * n[i] * duty.life.c[i] * duty.life.L_h for i in range(2)]
+    for i in range(2):
+        R.put("iso6336_materials", f"N_L{i + 1}", N_L[i], "-", f"N_L{i + 1}",
+              f"load cycles in the required life, {WHO[i]}", S2)
+
+    # ------------------------------------------------------------------ forces, accuracy
+    R.put(F, "F_t", F_t, "N", "F_t", "nominal tangential force at the reference circle", S1)
+    R.put(F, "v", v, "m/s", "v", "circumferential velocity at the reference circle", S1)
+    R.put(F, "K_A", K_A, "-", "K_A", "application factor", "spec")
+    if K_g != 1.0:
+        R.put(F, "K_gamma", K_g, "-", "K_γ", "mesh load factor (load sharing)", S1)
+    line_load = K_A * K_g * F_t / b
+    R.put(F, "w", line_load, "N/mm", "K_A F_t/b", "line load", S1)
+    R.put(F, "grade", float(A), "-", "A", "flank tolerance class", S1328)
+    fpb = [iso1328.base_pitch(gr.d, m_n, g.alpha_t, A) for gr in gears]
+    ffa = [iso1328.profile_form(gr.d, m_n, A) for gr in gears]
+    Fb = [iso1328.helix_total(gr.d, b, A) for gr in gears]
+    fHb = [iso1328.helix_slope(gr.d, b, A) for gr in gears]
+    f_pb = R.put(F, "f_pb", iso.f_pb if iso.f_pb is not None else max(fpb), "µm", "f_pb",
+                 "transverse base pitch deviation (larger of the pair, f_pT·cos α_t)"
+                 + (" (given)" if iso.f_pb is not None else ""),
+                 "spec" if iso.f_pb is not None else S1328)
+    f_fa = R.put(F, "f_falpha", iso.f_falpha if iso.f_falpha is not None else max(ffa), "µm",
+                 "f_fα", "profile form deviation (larger of the pair)"
+                 + (" (given)" if iso.f_falpha is not None else ""),
+                 "spec" if iso.f_falpha is not None else S1328)
+    F_beta = R.put(F, "F_beta", iso.F_beta if iso.F_beta is not None else max(Fb), "µm", "F_β",
+                   "total helix deviation (larger of the pair)"
+                   + (" (given)" if iso.F_beta is not None else ""),
+                   "spec" if iso.F_beta is not None else S1328)
+    f_Hb = max(fHb)
+
+    # ------------------------------------------------------------------ stiffness
+    cb = math.cos(g.beta_b)
+    z_n1 = p.z1 / (cb * cb * math.cos(p.beta))
+    z_n2 = None if internal else p.z2 / (cb * cb * math.cos(p.beta))
+    x2 = -p.x2 if internal else p.x2      # ISO 21771 sign for an internal gear
+    # the standard's pinion is the gear with fewer teeth (a sun larger than its planet)
+    stiff = ((z_n2, x2, z_n1, p.x1) if z_n2 is not None and z_n2 < z_n1
+             else (z_n1, p.x1, z_n2, x2))
+    c_th = R.factor(F, "c_th", lambda: P1.theoretical_single_stiffness(*stiff[::2], *stiff[1::2]),
+                    "N/(mm·µm)", "c'_th", "theoretical single stiffness (gear with fewer "
+                    "teeth as the pinion)", S1)
+    racks = (p.rack, getattr(p, "rack2", p.rack))
+    h_fPs = [rk.h_a + rk.c for rk in racks]
+    h_fP = h_fPs[0]
+    C_B = R.put(F, "C_B", P1.basic_rack_factor(h_fPs[0], h_fPs[1], a_n), "-", "C_B",
+                "basic rack factor", S1)
+    C_R = R.put(F, "C_R", min(P1.blank_factor(ig.web_ratio, (ig.rim_thickness or m_n) / m_n)
+                              for ig in iso.gears), "-", "C_R", "gear blank factor", S1)
+    R.put(F, "C_M", P1.C_M, "-", "C_M", "correction factor of the single stiffness", S1)
+    c_p = R.factor(F, "c_prime", lambda: P1.single_stiffness(c_th, C_R, C_B, p.beta, line_load),
+                   "N/(mm·µm)", "c'", "single stiffness", S1)
+    c_ga = R.factor(F, "c_gamma_alpha", lambda: P1.mesh_stiffness_alpha(c_p, g.eps_alpha),
+                    "N/(mm·µm)", "c_γα", "mesh stiffness (K_v, K_Hα)", S1)
+    c_gb = R.put(F, "c_gamma_beta", P1.mesh_stiffness_beta(c_ga), "N/(mm·µm)", "c_γβ",
+                 "mesh stiffness (K_Hβ)", S1)
+
+    # ------------------------------------------------------------------ running-in
+    types = [m["type"] for m in M]
+    y_a = R.put(F, "y_alpha", P1.pair_mean(*(P1.running_in_alpha(f_pb, types[i], sHlim[i], v)
+                                             for i in range(2))),
+                "µm", "y_α", "running-in allowance of f_pb", S1)
+    y_f = R.put(F, "y_f", P1.pair_mean(*(P1.running_in_alpha(f_fa, types[i], sHlim[i], v)
+                                         for i in range(2))),
+                "µm", "y_f", "running-in allowance of f_fα", S1)
+    if iso.C_a is not None:
+        C_a = R.put(F, "C_a", iso.C_a, "µm", "C_a", "tip relief (given)", "spec")
+    else:
+        C_a = R.put(F, "C_a", P1.pair_mean(*(P1.tip_relief_running_in(s) for s in sHlim)),
+                    "µm", "C_ay", "tip relief from running-in (no tip relief given)", S1)
+
+    # ------------------------------------------------------------------ dynamic factor
+    m1 = P1.gear_mass(g.g1.d_a, g.g1.d_f, g.g1.d_b, iso.gears[0].inner_diameter)
+    m2 = None if internal else P1.gear_mass(g.g2.d_a, g.g2.d_f, g.g2.d_b,
+                                            iso.gears[1].inner_diameter)
+    m_red = R.put(F, "m_red", P1.reduced_mass(m1, m2), "kg/mm", "m_red",
+                  "reduced mass per face width" + (" (internal gear rigid)" if internal else ""),
+                  S1)
+    n_E1 = R.put(F, "n_E1", P1.resonance_speed(p.z1, c_ga, m_red), "min^-1", "n_E1",
+                 "resonance speed of the pinion", S1)
+    N = R.put(F, "N", duty.n1 / n_E1, "-", "N", "resonance ratio n1/n_E1", S1)
+    N_S = R.put(F, "N_S", P1.lower_resonance_limit(line_load), "-", "N_S",
+                "lower limit of the main resonance range", S1)
+    K_v_calc, rng = P1.dynamic_factor(N, N_S, c_p, f_pb - y_a, f_fa - y_f, C_a, line_load,
+                                      g.eps_gamma)
+    R.put(F, "K_v_range", rng, None, "range", "resonance range of K_v", S1)
+    K_v = R.factor(F, "K_v", K_v_calc, "-", "K_v", "dynamic factor (method B)", S1)
+
+    # ------------------------------------------------------------------ face load factors
+    F_m_b = F_t * K_A * K_g * K_v / b
+    if iso.f_sh is not None:
+        f_sh = R.put(F, "f_sh", iso.f_sh, "µm", "f_sh", "misalignment from shaft deflection "
+                     "(given)", "spec")
+    else:
+        f_sh = R.put(F, "f_sh", P1.shaft_deflection(F_m_b, b, d1, iso.K_prime, iso.shaft_span,
+                                                    iso.pinion_offset, iso.shaft_diameter),
+                     "µm", "f_sh", "misalignment from the pinion shaft deflection", S1)
+    f_ma = R.put(F, "f_ma", iso.f_ma if iso.f_ma is not None else F_beta, "µm", "f_ma",
+                 "mesh misalignment from manufacturing" + (" (given)" if iso.f_ma is not None
+                                                           else " (= F_β, no adjustment)"),
+                 "spec" if iso.f_ma is not None else S1)
+    F_bx = R.put(F, "F_betax", P1.initial_misalignment(f_sh, f_ma, iso.modification, F_m_b, f_Hb),
+                 "µm", "F_βx", f"initial equivalent misalignment (helix: {iso.modification})", S1)
+    y_b = R.put(F, "y_beta", P1.pair_mean(*(P1.running_in_beta(F_bx, types[i], sHlim[i], v)
+                                            for i in range(2))),
+                "µm", "y_β", "running-in allowance of F_βx", S1)
+    F_by = R.put(F, "F_betay", F_bx - y_b, "µm", "F_βy", "effective equivalent misalignment", S1)
+    K_Hb = R.factor(F, "K_Hbeta", lambda: P1.face_load_factor(F_by, c_gb, F_m_b), "-", "K_Hβ",
+                    "face load factor, contact (method C)", S1)
+    b_h = min(b / gr.h for gr in gears)
+    R.put(F, "N_F", P1.n_f(b_h), "-", "N_F", f"exponent of K_Fβ (b/h = {b_h:.3f}, at least 3)",
+          S1)
+    K_Fb = R.factor(F, "K_Fbeta", lambda: P1.face_load_factor_bending(K_Hb, b_h), "-", "K_Fβ",
+                    "face load factor, bending", S1)
+
+    # ------------------------------------------------------------------ transverse load factors
+    Z_eps = R.factor("iso6336_contact", "Z_eps", lambda: P2.z_eps(g.eps_alpha, g.eps_beta, helical),
+                     "-", "Z_ε", "contact ratio factor", S2)
+    F_tH_b = F_t * K_A * K_g * K_v * K_Hb / b
+    f_eff = max(f_pb, f_fa) - y_a
+    K_alpha = P1.transverse_load_factor(g.eps_gamma, c_ga, f_eff, F_tH_b)
+    KHa_max = R.put(F, "K_Halpha_max", P1.transverse_limit_contact(g.eps_gamma, g.eps_alpha, Z_eps),
+                    "-", "K_Hα,max", "upper limit of K_Hα: ε_γ/(ε_α Z_ε²)", S1)
+    KFa_max = R.put(F, "K_Falpha_max", P1.transverse_limit_bending(g.eps_gamma, g.eps_alpha),
+                    "-", "K_Fα,max", "upper limit of K_Fα: ε_γ/(0.25ε_α + 0.75)", S1)
+    K_Ha = R.factor(F, "K_Halpha", lambda: P1.limited(K_alpha, KHa_max)[0], "-", "K_Hα",
+                    "transverse load factor, contact", S1)
+    K_Fa = R.factor(F, "K_Falpha", lambda: P1.limited(K_alpha, KFa_max)[0], "-", "K_Fα",
+                    "transverse load factor, bending", S1)
+
+    # ------------------------------------------------------------------ pitting
+    C = "iso6336_contact"
+    Z_H = R.factor(C, "Z_H", lambda: P2.z_h(g.beta_b, g.alpha_t, g.alpha_tw), "-", "Z_H",
+                   "zone factor", S2)
+    m_1, m_2 = mats
+    Z_E = R.factor(C, "Z_E", lambda: P2.z_e(m_1.E, m_1.nu, m_2.E, m_2.nu), "MPa^0.5", "Z_E",
+                   "elasticity factor", S2)
+    Z_b = R.factor(C, "Z_beta", lambda: P2.z_beta(p.beta), "-", "Z_β", "helix angle factor", S2)
+    ZB, ZD, M1, M2 = P2.single_pair_factors(g.alpha_tw, (g.g1.d_a, g.g2.d_a),
+                                            (g.g1.d_b, g.g2.d_b), z, g.eps_alpha, g.eps_beta,
+                                            helical, internal)
+    R.put(C, "M1", M1, "-", "M1", "auxiliary of Z_B", S2)
+    if not internal:
+        R.put(C, "M2", M2, "-", "M2", "auxiliary of Z_D", S2)
+    Z_BD = [R.factor(C, "Z_B", ZB, "-", "Z_B", "single pair tooth contact factor, pinion", S2),
+            R.factor(C, "Z_D", ZD, "-", "Z_D", "single pair tooth contact factor, wheel"
+                     + (" (internal gear: 1)" if internal else ""), S2)]
+    sH0 = R.put(C, "sigma_H0", P2.nominal_contact_stress(Z_H, Z_E, Z_eps, Z_b, F_t, d1, b, u,
+                                                         internal),
+                "MPa", "σ_H0", "nominal contact stress", S2)
+    sH = [R.put(C, f"sigma_H{k}", P2.contact_stress(Z_BD[k - 1], sH0, K_A, K_g, K_v, K_Hb, K_Ha),
+                "MPa", f"σ_H{k}", f"contact stress, {WHO[k - 1]}", S2) for k in (1, 2)]
+    s_min = min(sHlim)
+    Z_L = R.factor(C, "Z_L", lambda: P2.z_l(s_min, iso.nu40), "-", "Z_L",
+                   f"lubricant factor (ν40 = {iso.nu40:g} mm²/s)", S2)
+    Z_v = R.factor(C, "Z_v", lambda: P2.z_v(s_min, v), "-", "Z_v", "velocity factor", S2)
+    Rz = [iso.gears[i].Rz_flank if iso.gears[i].Rz_flank is not None
+          else 6.0 * setting.Ra[i] for i in range(2)]
+    rho = P2.rho_red(g.g1.d_b, g.g2.d_b, g.alpha_tw, internal)
+    R.put(C, "rho_red", rho, "mm", "ρ_red", "relative radius of curvature at the pitch point", S2)
+    for i in range(2):
+        R.put(C, f"Rz_flank{i + 1}", Rz[i], "µm", f"R_zH{i + 1}", "flank roughness"
+              + ("" if iso.gears[i].Rz_flank is not None else " (6·Ra)") + f", {WHO[i]}",
+              "spec" if iso.gears[i].Rz_flank is not None else S2)
+    Z_R = R.factor(C, "Z_R", lambda: P2.z_r(s_min, Rz[0], Rz[1], rho), "-", "Z_R",
+                   "roughness factor", S2)
+    hard = [t in T.SURFACE_HARDENED for t in types]
+    S_Hmin = R.put(C, "S_Hmin", iso.S_Hmin, "-", "S_Hmin", "required safety factor, pitting",
+                   "spec" if iso.S_Hmin != 1.0 else "spec default")
+    sHG = []
+    for i in range(2):
+        k, who = i + 1, WHO[i]
+        soft_vs_hard = hard[1 - i] and not hard[i] and types[i] not in T.CAST_IRON_GREY
+        ZW_ref = P2.z_w(mats[i].HB, Rz[1 - i], Rz[i], rho, v, iso.nu40) if soft_vs_hard else 1.0
+        N_st, N_ref = P2.reference_cycles_contact(types[i], iso.limited_pitting)
+        ZNT = R.factor(C, f"Z_NT{k}", lambda: P2.z_nt(types[i], N_L[i], iso.limited_pitting,
+                                                       iso.optimum),
+                       "-", f"Z_NT{k}", f"life factor, contact (reference {N_ref:.0e} cycles), {who}",
+                       S2)
+        infl = {}
+        for key, ref, name in (("Z_L", Z_L, "lubricant"), ("Z_v", Z_v, "velocity"),
+                               ("Z_R", Z_R, "roughness")):
+            infl[key] = P2.interpolated(ref, N_L[i], N_st, N_ref)
+        ZW = R.factor(C, f"Z_W{k}", lambda: P2.interpolated(ZW_ref, N_L[i], N_st, N_ref), "-",
+                      f"Z_W{k}", "work hardening factor" + (" (through-hardened against a "
+                                                            "surface-hardened mate)"
+                                                            if soft_vs_hard else "") + f", {who}",
+                      S2)
+        ZX = R.factor(C, f"Z_X{k}", lambda: P2.z_x(types[i], m_n), "-", f"Z_X{k}",
+                      f"size factor, contact, {who}", S2)
+        if N_L[i] < N_ref:
+            R.put(C, f"ZLvR{k}", infl["Z_L"] * infl["Z_v"] * infl["Z_R"], "-", f"Z_LvR{k}",
+                  f"Z_L·Z_v·Z_R at N_L (interpolated towards 1 at the static point), {who}", S2)
+        G = sHlim[i] * ZNT * infl["Z_L"] * infl["Z_v"] * infl["Z_R"] * ZW * ZX
+        sHG.append(R.put(C, f"sigma_HG{k}", G, "MPa", f"σ_HG{k}",
+                         f"pitting stress limit σ_Hlim Z_NT Z_L Z_v Z_R Z_W Z_X, {who}", S2))
+        R.put(C, f"sigma_HP{k}", G / iso.S_Hmin, "MPa", f"σ_HP{k}",
+              f"permissible contact stress σ_HG/S_Hmin, {who}", S2)
+        R.put(C, f"S_H{k}", P2.safety(G, sH[i]), "-", f"S_H{k}",
+              f"safety factor for pitting σ_HG/σ_H, {who}", S2)
+
+    # ------------------------------------------------------------------ bending
+    B = "iso6336_bending"
+    Y_beta = R.factor(B, "Y_beta", lambda: P3.y_beta(g.eps_beta, p.beta) if helical else 1.0,
+                      "-", "Y_β", "helix angle factor", S3)
+    eps_an = g.eps_alpha / (cb * cb)
+    Y_DT = R.factor(B, "Y_DT", lambda: P3.y_dt(eps_an, A), "-", "Y_DT", "deep tooth factor", S3)
+    S_Fmin = R.put(B, "S_Fmin", iso.S_Fmin, "-", "S_Fmin", "required safety factor, bending",
+                   "spec" if iso.S_Fmin != 1.4 else "spec default")
+    forms = []
+    for i in range(2):
+        k, who, gr = i + 1, WHO[i], gears[i]
+        if internal and i == 1:
+            # the internal gear as the rack it tends to: z → ∞ with its own addendum
+            d_rack = Z_BIG * g.m_t
+            tf = P3.tooth_form(Z_BIG, x2, m_n, a_n, p.beta, g.beta_b, d_rack,
+                               d_rack + (gr.d - gr.d_a), g.eps_alpha, h_fPs[1] * m_n,
+                               racks[1].rho_f * m_n, iso.protuberance * m_n)
+            how = " (internal gear: rack approximation, conservative)"
+        else:
+            tf = P3.tooth_form(gr.z, gr.x, m_n, a_n, p.beta, g.beta_b, gr.d, gr.d_a, g.eps_alpha,
+                               h_fP * m_n, p.rack.rho_f * m_n, iso.protuberance * m_n)
+            how = ""
+        forms.append(tf)
+        R.put(B, f"s_Fn{k}", tf.s_Fn, "mm", f"s_Fn{k}", f"root chord at the 30° tangents, {who}", S3)
+        R.put(B, f"h_Fe{k}", tf.h_Fe, "mm", f"h_Fe{k}", f"bending moment arm, {who}", S3)
+        R.put(B, f"rho_F{k}", tf.rho_F, "mm", f"ρ_F{k}", f"root fillet radius, {who}", S3)
+        R.put(B, f"alpha_Fen{k}", math.degrees(tf.alpha_Fen), "deg", f"α_Fen{k}",
+              f"load direction angle at the outer single contact point, {who}", S3)
+        R.put(B, f"q_s{k}", tf.q_s, "-", f"q_s{k}", f"notch parameter, {who}", S3)
+        YF = R.factor(B, f"Y_F{k}", tf.Y_F, "-", f"Y_F{k}", f"tooth form factor{how}, {who}", S3)
+        YS = R.factor(B, f"Y_S{k}", tf.Y_S, "-", f"Y_S{k}", f"stress correction factor, {who}", S3)
+        YB = R.factor(B, f"Y_B{k}", lambda: P3.y_b(iso.gears[i].rim_thickness, gr.h, m_n,
+                                                  internal and i == 1),
+                      "-", f"Y_B{k}", f"rim thickness factor, {who}", S3)
+        sF0 = R.put(B, f"sigma_F0{k}", P3.nominal_root_stress(F_t, b, m_n, YF, YS, Y_beta, YB, Y_DT),
+                    "MPa", f"σ_F0{k}", f"nominal tooth root stress, {who}", S3)
+        sF = R.put(B, f"sigma_F{k}", P3.root_stress(sF0, K_A, K_g, K_v, K_Fb, K_Fa), "MPa",
+                   f"σ_F{k}", f"tooth root stress, {who}", S3)
+        N_st, N_ref = P3.reference_cycles_bending(types[i])
+        YNT = R.factor(B, f"Y_NT{k}", lambda: P3.y_nt(types[i], N_L[i], iso.optimum), "-",
+                       f"Y_NT{k}", f"life factor, bending, {who}", S3)
+        sigma_02 = mats[i].sigma_T
+        rp = P3.rho_prime(types[i], 3.4 * mats[i].HB, sigma_02)
+        Yd_st = P3.y_delta_rel_static(types[i], YS, sigma_02)
+        Yd = R.factor(B, f"Y_deltarelT{k}",
+                      lambda: P2.interpolated(P3.y_delta_rel(tf.q_s, rp), N_L[i], N_st, N_ref, Yd_st),
+                      "-", f"Y_δrelT{k}", f"relative notch sensitivity factor (ρ' = {rp:.4f} mm), {who}",
+                      S3)
+        Rz_root = iso.gears[i].Rz_root
+        YR = R.factor(B, f"Y_RrelT{k}", lambda: P2.interpolated(P3.y_r_rel(types[i], Rz_root),
+                                                               N_L[i], N_st, N_ref),
+                      "-", f"Y_RrelT{k}", f"relative surface factor (R_z = {Rz_root:g} µm), {who}", S3)
+        YX = R.factor(B, f"Y_X{k}", lambda: P2.interpolated(P3.y_x(types[i], m_n), N_L[i], N_st,
+                                                           N_ref),
+                      "-", f"Y_X{k}", f"size factor, bending, {who}", S3)
+        rev = duty.reverse_ratio if duty.reverse_ratios is None else duty.reverse_ratios[i]
+        YM = R.factor(B, f"Y_M{k}", lambda: P3.y_m(rev), "-", f"Y_M{k}",
+                      f"mean stress influence factor (T_rev/T = {rev:g}), {who}", S3)
+        G = M[i]["sigma_Flim"] * P3.Y_ST * YNT * Yd * YR * YX * YM
+        R.put(B, f"sigma_FG{k}", G, "MPa", f"σ_FG{k}",
+              f"tooth root stress limit σ_Flim Y_ST Y_NT Y_δrelT Y_RrelT Y_X Y_M, {who}", S3)
+        R.put(B, f"sigma_FP{k}", G / iso.S_Fmin, "MPa", f"σ_FP{k}",
+              f"permissible tooth root stress σ_FG/S_Fmin, {who}", S3)
+        R.put(B, f"S_F{k}", G / sF, "-", f"S_F{k}", f"safety factor for bending σ_FG/σ_F, {who}", S3)
+
+    # ------------------------------------------------------------------ static (peak torque)
+    if duty.T_peak is not None:
+        St = "iso6336_static"
+        ratio = duty.T_peak / duty.T1
+        R.put(St, "T_peak", duty.T_peak, "N·m", "T_max", "peak pinion torque (an actual torque: "
+              "K_A = 1; the other load factors as at the nominal torque)", "spec")
+        for i in range(2):
+            k, who = i + 1, WHO[i]
+            s = sH[i] * math.sqrt(ratio / K_A)
+            R.put(St, f"sigma_Hst{k}", s, "MPa", f"σ_H,st{k}", f"contact stress at the peak "
+                  f"torque, {who}", S2)
+            pts = T.ZNT_CURVES[T.ZNT_GROUP[types[i]]]
+            ZW_st = 1.0
+            Gs = sHlim[i] * pts[0][1] * ZW_st
+            R.put(St, f"sigma_HGst{k}", Gs, "MPa", f"σ_HG,st{k}", "static pitting limit "
+                  f"σ_Hlim·Z_NT,st (Z_NT,st = {pts[0][1]:g}; Z_L Z_v Z_R Z_X = 1), {who}", S2)
+            R.put(St, f"S_Hst{k}", Gs / s, "-", f"S_H,st{k}", f"static safety factor, pitting, "
+                  f"{who}", S2)
+        for i in range(2):
+            k, who = i + 1, WHO[i]
+            s = R.r.v[f"sigma_F{k}"] * ratio / K_A
+            R.put(St, f"sigma_Fst{k}", s, "MPa", f"σ_F,st{k}", f"root stress at the peak torque, "
+                  f"{who}", S3)
+            pts = T.YNT_CURVES[T.YNT_GROUP[types[i]]]
+            Yd_st = P3.y_delta_rel_static(types[i], forms[i].Y_S, mats[i].sigma_T)
+            Gs = M[i]["sigma_Flim"] * P3.Y_ST * pts[0][1] * Yd_st
+            R.put(St, f"Y_deltarelTst{k}", Yd_st, "-", f"Y_δrelT,st{k}",
+                  f"relative notch sensitivity factor, static, {who}", S3)
+            R.put(St, f"sigma_FGst{k}", Gs, "MPa", f"σ_FG,st{k}", "static root stress limit "
+                  f"σ_Flim·Y_ST·Y_NT,st·Y_δrelT,st (Y_NT,st = {pts[0][1]:g}; Y_RrelT = Y_X = 1), "
+                  f"{who}", S3)
+            R.put(St, f"S_Fst{k}", Gs / s, "-", f"S_F,st{k}", f"static safety factor, bending, "
+                  f"{who}", S3)
+
+    # ------------------------------------------------------------------ load spectrum
+    if duty.life.blocks:
+        _spectrum(R, g, duty, types, sHlim, M, N_L, iso)
+    return R.r
+
+
+def _spectrum(R: _Rows, g, duty, types, sHlim, M, N_L, iso: IsoSetting) -> None:
+    """Miner's damage sums and the safety factors of the spectrum.  Each block's stress is the
+    nominal one scaled with its torque (σ_H ∝ √T, σ_F ∝ T; the load factors kept at their
+    nominal-torque values)."""
+    from geardesign.spur.strength.iso6336 import part6 as P6
+
+    v, Sp = R.r.v, "iso6336_spectrum"
+    life = duty.life
+    R.put(Sp, "method", "Palmgren–Miner on the S-N curves of parts 2 and 3; block stresses "
+          "scaled from the nominal torque", None, "Σn/N", "damage accumulation", S6)
+    for i in range(2):
+        k, who = i + 1, WHO[i]
+        n_i = [60.0 * (duty.n1 / (1.0 if i == 0 else g.u)) * blk.speed_ratio * life.c[i]
+               * life.L_h * blk.time_share for blk in life.blocks]
+        N_st, N_ref = P2.reference_cycles_contact(types[i], iso.limited_pitting)
+        fixed = v[f"Z_W{k}"] * v[f"Z_X{k}"]
+        infl = v["Z_L"] * v["Z_v"] * v["Z_R"]
+
+        def s_HG(N: float, i=i, N_st=N_st, N_ref=N_ref, fixed=fixed, infl=infl) -> float:
+            return sHlim[i] * P2.z_nt(types[i], N, iso.limited_pitting, iso.optimum) * \
+                P2.interpolated(infl, N, N_st, N_ref) * fixed
+
+        sH = [v[f"sigma_H{k}"] * math.sqrt(blk.torque_ratio) for blk in life.blocks]
+        D = P6.damage(sH, n_i, s_HG)
+        S = P6.spectrum_safety(sH, n_i, s_HG)
+        R.put(Sp, f"D_H{k}", D, "-", f"D_H{k}", f"damage sum, pitting (stresses as computed), {who}", S6)
+        R.put(Sp, f"S_Hspec{k}", S, "-", f"S_H,spec{k}", f"safety factor for pitting of the "
+              f"spectrum (D = 1 at S·σ_Hi), {who}", S6)
+        Nb_st, Nb_ref = P3.reference_cycles_bending(types[i])
+        Ybase = M[i]["sigma_Flim"] * P3.Y_ST * v[f"Y_M{k}"]
+        refs = (v[f"Y_deltarelT{k}"], v[f"Y_RrelT{k}"], v[f"Y_X{k}"])
+        Yd_st = P3.y_delta_rel_static(types[i], v[f"Y_S{k}"], None)
+
+        def s_FG(N: float, i=i, Ybase=Ybase, refs=refs, Yd_st=Yd_st, a=Nb_st, r=Nb_ref) -> float:
+            return Ybase * P3.y_nt(types[i], N, iso.optimum) * \
+                P2.interpolated(refs[0], N, a, r, Yd_st) * P2.interpolated(refs[1], N, a, r) * \
+                P2.interpolated(refs[2], N, a, r)
+
+        sF = [v[f"sigma_F{k}"] * blk.torque_ratio for blk in life.blocks]
+        D = P6.damage(sF, n_i, s_FG)
+        S = P6.spectrum_safety(sF, n_i, s_FG)
+        R.put(Sp, f"D_F{k}", D, "-", f"D_F{k}", f"damage sum, bending (stresses as computed), {who}", S6)
+        R.put(Sp, f"S_Fspec{k}", S, "-", f"S_F,spec{k}", f"safety factor for bending of the "
+              f"spectrum (D = 1 at S·σ_Fi), {who}", S6)
+
+
+# ----------------------------------------------------------------------------- checks
+
+
+def _pct(x: float) -> str:
+    return f"{100 * x:.0f} %" if x <= 3.0 else "more than 300 % (far from passing: check the " \
+                                                 "inputs and their units)"
+
+
+def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
+           peak: bool = False, internal: bool = False, clamped: tuple = (),
+           found: dict | None = None) -> list[Check]:
+    """Checks of an ISO 6336 rating ``v``: S_H ≥ S_Hmin and S_F ≥ S_Fmin per gear (of the
+    spectrum when one is given), the static safety factors at the peak torque, and notes.
+
+    The advice names the face width and the scale of the pair (centre distance, module and
+    face width in proportion) that pass, when ``found`` carries them (``{"b": (b_w,
+    b_pitting, b_bending), "k": (a_w, k_pitting, k_bending)}``, found by re-rating); else
+    it follows the scaling of the formulas at the present load factors: σ_H ∝ 1/√b and
+    ∝ a^(-3/2) at a fixed ratio b/a; σ_F ∝ 1/(b m_n)."""
+    found = found or {}
+
+    def by_rerating(kind: int) -> str | None:
+        parts = []
+        if "k" in found and found["k"][kind] is not None:
+            a_w, k = found["k"][0], found["k"][kind]
+            parts.append(f"increase the centre distance to at least {k * a_w:.1f} mm "
+                         f"(+{100 * (k - 1):.0f} %, module and face width in proportion)")
+        if "b" in found and found["b"][kind] is not None:
+            b_w, b = found["b"][0], found["b"][kind]
+            parts.append(f"the face width to at least {b:.1f} mm (+{100 * (b / b_w - 1):.0f} %)")
+        return (" or ".join(parts) + " (found by re-rating)") if parts else None
+
+    out: list[Check] = []
+    S_Hmin, S_Fmin = v["S_Hmin"], v["S_Fmin"]
+    for k in (1, 2):
+        who, up = members[k - 1], members[k - 1].upper()
+        key = f"S_Hspec{k}" if spectrum else f"S_H{k}"
+        S = v[key]
+        r = S_Hmin / S
+        out.append(check(
+            f"ISO_PITTING_{up}", S >= S_Hmin * (1 - 1e-12), "error",
+            f"ISO 6336 pitting, {who}: S_H{k} = {S:.2f} < S_Hmin = {S_Hmin:.2f}"
+            + (" (load spectrum)" if spectrum else "") + ": "
+            + (by_rerating(1) or f"increase the centre distance by {_pct(r ** (2 / 3) - 1)} "
+               f"(module and face width in proportion), or the face width by {_pct(r * r - 1)} "
+               f"(at the present load factors)")
+            + f", or use a {who} material with σ_Hlim at least {v[f'sigma_Hlim{k}'] * r:.0f} MPa",
+            f"ISO 6336 pitting, {who}: S_H{k} = {S:.2f} >= {S_Hmin:.2f}", S, S_Hmin, S2))
+    for k in (1, 2):
+        who, up = members[k - 1], members[k - 1].upper()
+        key = f"S_Fspec{k}" if spectrum else f"S_F{k}"
+        S = v[key]
+        r = S_Fmin / S
+        out.append(check(
+            f"ISO_BENDING_{up}", S >= S_Fmin * (1 - 1e-12), "error",
+            f"ISO 6336 tooth bending, {who}: S_F{k} = {S:.2f} < S_Fmin = {S_Fmin:.2f}"
+            + (" (load spectrum)" if spectrum else "") + f": increase the module by "
+            f"{_pct(r - 1)} (same centre distance, fewer teeth), or "
+            + (by_rerating(2) or f"the face width by {_pct(r - 1)} (at the present load "
+                                 f"factors)")
+            + f", or use a {who} material with σ_Flim at least {v[f'sigma_Flim{k}'] * r:.0f} MPa",
+            f"ISO 6336 tooth bending, {who}: S_F{k} = {S:.2f} >= {S_Fmin:.2f}", S, S_Fmin, S3))
+    if peak:
+        for kind, sym, need, src in (("PITTING", "S_Hst", S_Hmin, S2), ("BENDING", "S_Fst", S_Fmin, S3)):
+            for k in (1, 2):
+                who, up = members[k - 1], members[k - 1].upper()
+                S = v[f"{sym}{k}"]
+                expo = 2.0 if kind == "PITTING" else 1.0
+                out.append(check(
+                    f"ISO_STATIC_{kind}_{up}", S >= need * (1 - 1e-12), "error",
+                    f"ISO 6336 static {kind.lower()}, {who}: {sym}{k} = {S:.2f} < {need:.2f} at "
+                    f"the peak torque: limit the peak torque to "
+                    f"{v['T_peak'] * (S / need) ** expo:.0f} N·m (e.g. a slip coupling), or "
+                    f"enlarge the gears",
+                    f"ISO 6336 static {kind.lower()}, {who}: {sym}{k} = {S:.2f} >= {need:.2f}",
+                    S, need, src))
+    if internal:
+        out.append(check("ISO_INTERNAL_FORM_FACTOR", False, "info",
+                         "ISO 6336: the internal gear's Y_F and Y_S are those of the rack it "
+                         "tends to (conservative); give Y_F2 and Y_S2 under [iso_factors] from "
+                         "the standard's internal-gear method for a closer rating", "",
+                         None, None, S3))
+    for k, (lo, hi, scale) in clamped:
+        out.append(check(f"ISO_HARDNESS_RANGE_{members[k - 1].upper()}", False, "warning",
+                         f"ISO 6336-5: the {members[k - 1]} hardness lies outside the material "
+                         f"line's range {lo:g}…{hi:g} {scale}; σ_Hlim and σ_Flim were taken at "
+                         f"the nearer end: give sigma_Hlim and sigma_Flim under [iso.{WHO[k - 1]}]",
+                         "", None, None, S5))
+    return out
+
+
+def passes(v: dict, kind: str) -> bool:
+    """Whether a rating ``v`` passes pitting (``"H"``) or bending (``"F"``) on both gears."""
+    spec = "spec" if f"S_{kind}spec1" in v else ""
+    return all(v[f"S_{kind}{spec}{k}"] >= v[f"S_{kind}min"] * (1 - 1e-12) for k in (1, 2))
+
+
+def rating_checks(rating: Rating, internal: bool = False, members=WHO,
+                  found: dict | None = None) -> list[Check]:
+    """:func:`checks` of a finished rating (what a calculator calls)."""
+    v = rating.v
+    clamped = []
+    for k in (1, 2):
+        row = next(r for r in rating.rows if r.key == f"hardness{k}")
+        typ = v[f"type{k}"]
+        line = T.MATERIAL_LINES[typ]
+        if "clamped" in row.name:
+            clamped.append((k, (*line["range"], line["scale"])))
+    return checks(v, members, "S_Hspec1" in v, "S_Hst1" in v, internal, tuple(clamped), found)

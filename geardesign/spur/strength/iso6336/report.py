@@ -1,0 +1,51 @@
+"""The ISO 6336 rating of a spur spec as report sections and checks."""
+
+from __future__ import annotations
+
+from geardesign.spur.strength.iso6336 import rating as IR
+from geardesign.spur.strength.iso6336.spec import ISO_NAME, gear_checks, iso_setting
+
+
+def add_iso_strength(res, geom, spec, inputs) -> None:
+    """Rate the pair of a spur spec to ISO 6336 (``inputs`` from the calculator's
+    ``_strength_inputs``): rows under the sections ``iso6336_*``, checks, method name."""
+    mats, duty, setting = inputs
+    gear_checks(spec.data["iso"], geom)
+    iso = iso_setting(spec)
+    rating = IR.rate(geom, mats, duty, setting, iso)
+    res.methods.append(ISO_NAME)
+    for row in rating.rows:
+        res.section(row.section, IR.SECTIONS[row.section]).add(
+            row.key, row.value, row.unit, row.symbol, row.name, row.source)
+    internal = bool(getattr(geom, "internal", False))
+    res.checks.extend(IR.rating_checks(rating, internal, found=None if internal else
+                                       _advice(rating.v, geom, mats, duty, setting, iso)))
+
+
+def _advice(v: dict, geom, mats, duty, setting, iso) -> dict | None:
+    """Face width and scale of the pair that pass pitting and bending, found by re-rating
+    (the load factors change with the size); ``None`` when the rating passes."""
+    from dataclasses import replace
+
+    from geardesign.spur.checks import least_passing
+    from geardesign.spur.geometry import pair_geometry
+
+    fails = [kind for kind in ("H", "F") if not IR.passes(v, kind)]
+    if not fails:
+        return None
+    inp = geom.inp
+
+    def rerate(b: float) -> dict:
+        return IR.rate(pair_geometry(replace(inp, b_w=b)), mats, duty, setting, iso).v
+
+    def rescale(k: float) -> dict:
+        return IR.rate(pair_geometry(replace(inp, m_n=k * inp.m_n, b_w=k * inp.b_w)), mats,
+                       duty, setting, iso).v
+
+    b = [inp.b_w, None, None]
+    k = [geom.a_w, None, None]
+    for i, kind in ((1, "H"), (2, "F")):
+        if kind in fails:
+            b[i] = least_passing(rerate, inp.b_w, lambda x, kind=kind: IR.passes(x, kind))
+            k[i] = least_passing(rescale, 1.0, lambda x, kind=kind: IR.passes(x, kind), 4.0)
+    return {"b": tuple(b), "k": tuple(k)}

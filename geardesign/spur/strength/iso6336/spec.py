@@ -1,0 +1,217 @@
+"""Spec tables of the ISO 6336 rating: ``[iso]`` (with ``[iso.pinion]``, ``[iso.wheel]``) and
+``[iso_factors]``, and the :class:`~.rating.IsoSetting` built from them.
+
+Both tables are optional: a spec that selects ``options.method = "ISO 6336:2019"`` without
+them gets every default, echoed as assumed.
+"""
+
+from __future__ import annotations
+
+from geardesign.core.errors import InputError, Problem
+from geardesign.core.spec import Field, Table
+from geardesign.spur.strength.iso6336 import tables as T
+
+ISO_NAME = "ISO 6336:2019"
+
+
+def _gear(who: str) -> Table:
+    return Table(who, f"ISO 6336 data of the {who}", (
+        Field("material_type", "string", "material type of ISO 6336-5 (St normalized, V/V_alloy "
+              "through-hardened, Eh case-hardened, IF induction/flame hardened, NT/NV "
+              "nitrided, GG/GGG/GTS cast iron, …)", default=None, choices=tuple(T.MATERIAL_LINES),
+              hint="leave out to take it from material.treatment"),
+        Field("quality", "string", "material quality grade of ISO 6336-5", default="MQ",
+              choices=T.QUALITIES),
+        Field("sigma_Hlim", "number", "endurance limit for contact (instead of the ISO 6336-5 "
+              "line)", "MPa", "σ_Hlim", default=None, gt=0, maximum=5000),
+        Field("sigma_Flim", "number", "endurance limit for bending (instead of the ISO 6336-5 "
+              "line; σ_FE = 2σ_Flim)", "MPa", "σ_Flim", default=None, gt=0, maximum=3000),
+        Field("Rz_flank", "number", "mean peak-to-valley roughness of the flank", "µm", "R_zH",
+              default=None, gt=0, maximum=100, hint="6·roughness_Ra of [material] when not given"),
+        Field("Rz_root", "number", "mean peak-to-valley roughness of the root fillet", "µm",
+              "R_zF", default=10.0, gt=0, maximum=100),
+        Field("inner_diameter", "number", "bore of the gear body (reduced mass)", "mm", "d_i",
+              default=0.0, minimum=0, maximum=1e5),
+        Field("rim_thickness", "number", "rim thickness below the tooth root (Y_B, C_R)", "mm",
+              "s_R", default=None, gt=0, hint="leave out for a solid gear"),
+        Field("web_ratio", "number", "web width over face width of a web gear (C_R)", symbol="b_s/b",
+              default=None, minimum=0.1, maximum=1.2, hint="leave out for a solid gear"),
+    ), required=False)
+
+
+ISO = Table("iso", "ISO 6336:2019 rating data (used when options.method or options.methods "
+            "names ISO 6336:2019)", (
+    Field("accuracy_grade", "integer", "flank tolerance class of ISO 1328-1:2013", symbol="A",
+          default=None, minimum=1, maximum=11, hint="gear.accuracy_grade when not given"),
+    Field("lubricant_viscosity", "number", "kinematic viscosity of the oil at 40 °C (ISO VG)",
+          "mm^2/s", "ν40", default=220.0, minimum=2, maximum=3200),
+    Field("tip_relief", "number", "amount of tip relief C_a (K_v)", "µm", "C_a", default=None,
+          minimum=0, maximum=1000, hint="the running-in amount C_ay when not given"),
+    Field("helix_modification", "string", "helix modification (K_Hβ method C)", default="none",
+          choices=tuple(T.HELIX_MODIFICATION)),
+    Field("f_ma", "number", "mesh misalignment from manufacturing", "µm", "f_ma", default=None,
+          minimum=0, maximum=1000, hint="F_β of the pair when not given (no adjustment)"),
+    Field("f_sh", "number", "mesh misalignment from the shaft deflections", "µm", "f_sh",
+          default=None, minimum=0, maximum=1000, hint="computed from the pinion shaft when not given"),
+    Field("shaft_K_prime", "number", "constant K' of the pinion arrangement (ISO 6336-1 "
+          "figure: 0.48/0.8 arrangement a, −0.48/−0.8 b, 1.33 c, −0.36/−0.6 d, −0.6/−1.0 e)",
+          symbol="K'", default=0.0, minimum=-1.5, maximum=1.5),
+    Field("shaft_span", "number", "bearing span of the pinion shaft", "mm", "l", default=None,
+          gt=0),
+    Field("pinion_offset", "number", "offset of the pinion from the middle of the span", "mm",
+          "s", default=0.0, minimum=0, maximum=1e5),
+    Field("shaft_diameter", "number", "diameter of the pinion shaft", "mm", "d_sh", default=None,
+          gt=0),
+    Field("f_pb", "number", "transverse base pitch deviation of the pair (instead of ISO 1328)",
+          "µm", "f_pb", default=None, minimum=0, maximum=1000),
+    Field("f_falpha", "number", "profile form deviation of the pair (instead of ISO 1328)", "µm",
+          "f_fα", default=None, minimum=0, maximum=1000),
+    Field("F_beta", "number", "total helix deviation of the pair (instead of ISO 1328)", "µm",
+          "F_β", default=None, minimum=0, maximum=1000),
+    Field("S_Hmin", "number", "required safety factor for pitting", symbol="S_Hmin",
+          default=1.0, minimum=1.0, maximum=5.0),
+    Field("S_Fmin", "number", "required safety factor for tooth bending", symbol="S_Fmin",
+          default=1.4, minimum=1.0, maximum=5.0),
+    Field("limited_pitting", "boolean", "limited pitting permitted (Z_NT reference 10⁹ cycles)",
+          default=False),
+    Field("optimum_conditions", "boolean", "optimum lubrication, material, manufacturing and "
+          "experience (Z_NT, Y_NT = 1 at 10¹⁰ cycles instead of 0.85)", default=False),
+    Field("protuberance", "number", "residual protuberance undercut of the tool s_pr/m_n",
+          symbol="s_pr*", default=0.0, minimum=0, maximum=0.5),
+    _gear("pinion"),
+    _gear("wheel"),
+), required=False)
+
+_FACTORS = (
+    ("K_v", "dynamic factor", 1.0, 10.0), ("K_Hbeta", "face load factor, contact", 1.0, 10.0),
+    ("K_Fbeta", "face load factor, bending", 1.0, 10.0),
+    ("K_Halpha", "transverse load factor, contact", 1.0, 10.0),
+    ("K_Falpha", "transverse load factor, bending", 1.0, 10.0),
+    ("c_th", "theoretical single stiffness [N/(mm·µm)]", 5.0, 40.0),
+    ("c_prime", "single stiffness [N/(mm·µm)]", 1.0, 40.0),
+    ("c_gamma_alpha", "mesh stiffness [N/(mm·µm)]", 1.0, 60.0),
+    ("Z_E", "elasticity factor [√MPa]", 50.0, 300.0), ("Z_H", "zone factor", 1.0, 3.5),
+    ("Z_eps", "contact ratio factor", 0.5, 1.0), ("Z_beta", "helix angle factor", 1.0, 1.5),
+    ("Z_B", "single pair contact factor, pinion", 1.0, 1.5),
+    ("Z_D", "single pair contact factor, wheel", 1.0, 1.5),
+    ("Z_L", "lubricant factor", 0.7, 1.3), ("Z_v", "velocity factor", 0.7, 1.3),
+    ("Z_R", "roughness factor", 0.5, 1.3),
+    ("Z_NT1", "life factor, contact, pinion", 0.5, 1.7),
+    ("Z_NT2", "life factor, contact, wheel", 0.5, 1.7),
+    ("Z_W1", "work hardening factor, pinion", 0.7, 1.3),
+    ("Z_W2", "work hardening factor, wheel", 0.7, 1.3),
+    ("Z_X1", "size factor, contact, pinion", 0.5, 1.1),
+    ("Z_X2", "size factor, contact, wheel", 0.5, 1.1),
+    ("Y_F1", "tooth form factor, pinion", 0.5, 5.0), ("Y_F2", "tooth form factor, wheel", 0.5, 5.0),
+    ("Y_S1", "stress correction factor, pinion", 1.0, 4.0),
+    ("Y_S2", "stress correction factor, wheel", 1.0, 4.0),
+    ("Y_beta", "helix angle factor, bending", 0.5, 1.3), ("Y_DT", "deep tooth factor", 0.7, 1.0),
+    ("Y_B1", "rim thickness factor, pinion", 1.0, 2.0),
+    ("Y_B2", "rim thickness factor, wheel", 1.0, 2.0),
+    ("Y_NT1", "life factor, bending, pinion", 0.5, 2.5),
+    ("Y_NT2", "life factor, bending, wheel", 0.5, 2.5),
+    ("Y_deltarelT1", "relative notch sensitivity factor, pinion", 0.5, 1.5),
+    ("Y_deltarelT2", "relative notch sensitivity factor, wheel", 0.5, 1.5),
+    ("Y_RrelT1", "relative surface factor, pinion", 0.5, 1.2),
+    ("Y_RrelT2", "relative surface factor, wheel", 0.5, 1.2),
+    ("Y_X1", "size factor, bending, pinion", 0.5, 1.1),
+    ("Y_X2", "size factor, bending, wheel", 0.5, 1.1),
+    ("Y_M1", "mean stress influence factor, pinion", 0.5, 1.0),
+    ("Y_M2", "mean stress influence factor, wheel", 0.5, 1.0),
+)
+ISO_FACTORS = Table("iso_factors", "ISO 6336 factors given instead of computed", tuple(
+    Field(key, "number", name, symbol=key.replace("beta", "β").replace("alpha", "α")
+          .replace("eps", "ε").replace("delta", "δ"), default=None, minimum=lo, maximum=hi)
+    for key, name, lo, hi in _FACTORS), required=False,
+    hint="each given factor replaces the computed one and is marked in the report")
+
+OPTIONS_METHODS = Field(
+    "methods", "array", "several strength methods in one run, each reported under its own name",
+    default=None, items="string", min_items=1, max_items=2,
+    choices=("GOST 21354-87", ISO_NAME), hint="instead of method, e.g. [\"GOST 21354-87\", "
+    "\"ISO 6336:2019\"]")
+
+
+def chosen(options: dict) -> list[str]:
+    """The strength methods a spec asks for, in the order given (``methods`` wins over
+    ``method``; a method named twice counts once)."""
+    names = options.get("methods") or [options["method"]]
+    return list(dict.fromkeys(names))
+
+
+def prepare(spec) -> None:
+    """When the spec rates by ISO 6336: fill the defaults of ``[iso]`` (echoed as assumed) and
+    check the inputs that depend on each other.  Raises :class:`InputError`."""
+    from geardesign.core.spec import _validate_table
+
+    d = spec.data
+    if ISO_NAME not in chosen(d["options"]):
+        return
+    problems: list = []
+    if d.get("iso") is None:
+        d["iso"] = _validate_table(ISO, {}, "iso", problems, spec.assumed)
+    iso = d["iso"]
+    for who in ("pinion", "wheel"):
+        if iso.get(who) is None:
+            iso[who] = _validate_table(ISO.member(who), {}, f"iso.{who}", problems, spec.assumed)
+    if iso["pinion_offset"] and (iso["shaft_span"] is None or iso["shaft_diameter"] is None):
+        problems.append(Problem("iso.pinion_offset", "given without iso.shaft_span and "
+                                "iso.shaft_diameter: the shaft deflection needs all three "
+                                "(or give iso.f_sh)", iso["pinion_offset"]))
+    if iso["shaft_span"] is not None and iso["pinion_offset"] > 0.5 * iso["shaft_span"]:
+        problems.append(Problem("iso.pinion_offset", f"lies outside the bearing span "
+                                f"(s <= l/2 = {0.5 * iso['shaft_span']:g} mm)",
+                                iso["pinion_offset"]))
+    if problems:
+        raise InputError(problems)
+
+
+def gear_checks(iso: dict, geom) -> None:
+    """Inputs that need the geometry: a bore inside the root circle, a rim within the
+    domain of Y_B.  Raises :class:`InputError`."""
+    from geardesign.spur.strength.iso6336.part3 import y_b_domain
+
+    problems = []
+    internal = bool(getattr(geom, "internal", False))
+    for i, who in enumerate(("pinion", "wheel")):
+        t = iso[who]
+        gear = geom.gears[i]
+        if internal and i == 1:
+            continue
+        if t["inner_diameter"] >= gear.d_f:
+            problems.append(Problem(f"iso.{who}.inner_diameter", f"must be smaller than the root "
+                                    f"diameter d_f = {gear.d_f:.3f} mm", t["inner_diameter"]))
+        if t["rim_thickness"] is not None:
+            low = y_b_domain(t["rim_thickness"], gear.h, geom.inp.m_n)
+            if t["rim_thickness"] <= low:
+                problems.append(Problem(f"iso.{who}.rim_thickness", f"too thin: ISO 6336-3 rates "
+                                        f"rims thicker than 0.5·h = {low:.3f} mm (Y_B); "
+                                        f"thicken the rim", t["rim_thickness"]))
+            elif 2.0 * t["rim_thickness"] > gear.d_f - t["inner_diameter"]:
+                problems.append(Problem(f"iso.{who}.rim_thickness", "larger than the gear body "
+                                        "between the bore and the root circle",
+                                        t["rim_thickness"]))
+    if problems:
+        raise InputError(problems)
+
+
+def iso_setting(spec, overrides: dict | None = None):
+    """The :class:`~.rating.IsoSetting` of a validated, prepared spec."""
+    from geardesign.spur.strength.iso6336.rating import IsoGear, IsoSetting
+
+    iso = spec.data["iso"]
+    gears = tuple(IsoGear(t["material_type"], t["quality"], t["sigma_Hlim"], t["sigma_Flim"],
+                          t["Rz_flank"], t["Rz_root"], t["inner_diameter"], t["rim_thickness"],
+                          t["web_ratio"]) for t in (iso["pinion"], iso["wheel"]))
+    o = {k: v for k, v in (spec.data.get("iso_factors") or {}).items() if v is not None}
+    if overrides:
+        o.update(overrides)
+    return IsoSetting(
+        grade=iso["accuracy_grade"], nu40=iso["lubricant_viscosity"], C_a=iso["tip_relief"],
+        modification=iso["helix_modification"], f_ma=iso["f_ma"], f_sh=iso["f_sh"],
+        K_prime=iso["shaft_K_prime"], shaft_span=iso["shaft_span"],
+        pinion_offset=iso["pinion_offset"], shaft_diameter=iso["shaft_diameter"],
+        f_pb=iso["f_pb"], f_falpha=iso["f_falpha"], F_beta=iso["F_beta"],
+        S_Hmin=iso["S_Hmin"], S_Fmin=iso["S_Fmin"], limited_pitting=iso["limited_pitting"],
+        optimum=iso["optimum_conditions"], protuberance=iso["protuberance"], gears=gears,
+        overrides=o)

@@ -1,0 +1,229 @@
+"""ISO 6336 rating of the spur calculator: choice of method, input errors of every new key
+(one line, exit 2), checks with advice, overrides, spectrum and peak load."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from geardesign.core.errors import format_value
+from geardesign.core.registry import run_data
+from geardesign.spur.strength.iso6336.spec import ISO, ISO_FACTORS, OPTIONS_METHODS
+from tests.helpers_cli import cli, run_bad
+
+GOOD = """kind = "spur"
+[gear]
+module = 3.0
+z1 = 20
+z2 = 60
+face_width = 30.0
+bearing_scheme = 5
+[load]
+speed1 = 1450.0
+torque1 = 70.0
+life_hours = 20000.0
+[material.pinion]
+grade = "20KhN3A"
+treatment = "carburized"
+hardness_HRC = 59.0
+[material.wheel]
+grade = "20KhN3A"
+treatment = "carburized"
+hardness_HRC = 58.0
+[options]
+method = "ISO 6336:2019"
+"""
+
+DATA = {
+    "kind": "spur",
+    "gear": {"module": 3.0, "z1": 20, "z2": 60, "face_width": 30.0, "bearing_scheme": 5},
+    "load": {"speed1": 1450.0, "torque1": 70.0, "life_hours": 20000.0},
+    "material": {"pinion": {"grade": "20KhN3A", "treatment": "carburized", "hardness_HRC": 59.0},
+                 "wheel": {"grade": "20KhN3A", "treatment": "carburized", "hardness_HRC": 58.0}},
+    "options": {"method": "ISO 6336:2019"},
+}
+
+
+def _run(**tables) -> dict:
+    data = json.loads(json.dumps(DATA))
+    for key, value in tables.items():
+        if isinstance(value, dict) and isinstance(data.get(key), dict):
+            data[key].update(value)
+        else:
+            data[key] = value
+    return run_data(data).document()
+
+
+# ----------------------------------------------------------------------------- method choice
+
+
+def test_iso_alone_reports_iso_sections_only():
+    doc = _run()
+    assert doc["methods"][-1] == "ISO 6336:2019" and "GOST 21354-87" not in doc["methods"]
+    keys = set(doc["results"])
+    assert {"iso6336_factors", "iso6336_contact", "iso6336_bending"} <= keys
+    assert not {"contact", "bending", "factors"} & keys
+    assert "iso.lubricant_viscosity" in doc["assumed"] and "iso.pinion.quality" in doc["assumed"]
+    assert doc["verdict"] == "pass", [c for c in doc["checks"] if not c["passed"]]
+
+
+def test_both_methods_side_by_side():
+    doc = _run(options={"method": "GOST 21354-87",
+                        "methods": ["GOST 21354-87", "ISO 6336:2019"]})
+    assert doc["methods"][-2:] == ["GOST 21354-87", "ISO 6336:2019"]
+    r = doc["results"]
+    assert "sigma_H" in r["contact"] and "sigma_H1" in r["iso6336_contact"]
+    codes = {c["code"] for c in doc["checks"]}
+    assert {"CONTACT_FATIGUE", "ISO_PITTING_PINION", "BENDING_FATIGUE_WHEEL",
+            "ISO_BENDING_WHEEL"} <= codes
+
+
+def test_gost_stays_the_default():
+    doc = _run(options={"method": "GOST 21354-87"})
+    assert "iso6336_contact" not in doc["results"] and "iso" not in doc["inputs"]
+
+
+def test_given_factor_replaces_the_computed_one():
+    doc = _run(iso_factors={"K_Hbeta": 1.3, "Y_F1": 1.5})
+    f, b = doc["results"]["iso6336_factors"], doc["results"]["iso6336_bending"]
+    assert f["K_Hbeta"] == 1.3 and b["Y_F1"] == 1.5
+    assert b["sigma_F01"] == pytest.approx(b["sigma_F01"] / b["Y_F1"] * 1.5)
+
+
+def test_failing_pitting_and_bending_carry_advice(tmp_path):
+    doc = _run(load={"torque1": 900.0})
+    failed = {c["code"]: c["message"] for c in doc["checks"] if not c["passed"]}
+    assert doc["verdict"] == "fail"
+    assert "ISO_PITTING_PINION" in failed and "increase the centre distance to at least" in \
+        failed["ISO_PITTING_PINION"]
+    assert "σ_Hlim at least" in failed["ISO_PITTING_PINION"]
+    assert "ISO_BENDING_WHEEL" in failed and "increase the module by" in failed["ISO_BENDING_WHEEL"]
+
+
+def test_advice_leads_to_a_passing_design():
+    """The advised face width and centre distance are found by re-rating: with them the
+    pair passes pitting."""
+    import re
+
+    doc = _run(load={"torque1": 300.0})
+    msg = next(c["message"] for c in doc["checks"] if c["code"] == "ISO_PITTING_PINION")
+    a_w = float(re.search(r"centre distance to at least ([0-9.]+) mm", msg).group(1))
+    b = float(re.search(r"face width to at least ([0-9.]+) mm", msg).group(1))
+    wider = _run(load={"torque1": 300.0}, gear={"face_width": b + 0.1})["results"]
+    assert min(wider["iso6336_contact"]["S_H1"], wider["iso6336_contact"]["S_H2"]) >= 1.0
+    k = (a_w + 0.1) / 120.0
+    bigger = _run(load={"torque1": 300.0}, gear={"module": 3.0 * k, "face_width": 30.0 * k})
+    c = bigger["results"]["iso6336_contact"]
+    assert min(c["S_H1"], c["S_H2"]) >= 1.0
+
+
+def test_peak_torque_gives_static_checks():
+    doc = _run(load={"peak_torque1": 300.0})
+    st = doc["results"]["iso6336_static"]
+    assert st["S_Hst1"] > 0 and st["S_Fst2"] > 0
+    codes = {c["code"] for c in doc["checks"]}
+    assert {"ISO_STATIC_PITTING_PINION", "ISO_STATIC_BENDING_WHEEL"} <= codes
+
+
+def test_spectrum_miner_sums():
+    spectrum = [{"torque_ratio": 1.0, "time_share": 0.2}, {"torque_ratio": 0.5, "time_share": 0.8}]
+    doc = _run(load={"spectrum": spectrum})
+    sp = doc["results"]["iso6336_spectrum"]
+    c = doc["results"]["iso6336_contact"]
+    # lighter blocks: the spectrum is safer than the nominal torque over the whole life
+    assert sp["S_Hspec1"] > c["S_H1"] and sp["S_Fspec2"] > doc["results"]["iso6336_bending"]["S_F2"]
+    assert 0.0 <= sp["D_H1"] < 1.0
+
+
+def test_planetary_meshes_rated_by_iso():
+    from pathlib import Path
+
+    import tomllib
+
+    spec = tomllib.loads((Path(__file__).parent.parent / "specs" /
+                          "planetary_2kh_reducer.toml").read_text(encoding="utf-8"))
+    spec["strength"]["method"] = "ISO 6336:2019"
+    doc = run_data(spec).document()
+    codes = {c["code"] for c in doc["checks"]}
+    assert "SUN_PLANET_ISO_PITTING_SUN" in codes and "PLANET_RING_ISO_BENDING_RING" in codes
+    assert "PLANET_RING_ISO_INTERNAL_FORM_FACTOR" in codes
+
+
+# ----------------------------------------------------------------------------- input errors
+
+
+def _bad_value(field):
+    if field.type == "boolean":
+        return '"yes"', "yes"
+    if field.type == "string":
+        return '"nonsense"', "nonsense"
+    if field.type == "integer":
+        return str(int(field.maximum) + 1), int(field.maximum) + 1
+    if field.maximum is not None:
+        return repr(float(field.maximum) * 2 + 1), float(field.maximum) * 2 + 1
+    return "-1.0", -1.0
+
+
+def _fields():
+    for f in ISO.fields:
+        if hasattr(f, "type"):
+            yield "iso", f
+    for sub in ("pinion", "wheel"):
+        for f in ISO.member(sub).fields:
+            yield f"iso.{sub}", f
+    for f in ISO_FACTORS.fields:
+        yield "iso_factors", f
+
+
+FIELDS = list(_fields())
+
+
+@pytest.mark.parametrize("table, field", FIELDS, ids=[f"{t}.{f.key}" for t, f in FIELDS])
+def test_every_new_key_has_its_domain(tmp_path, table, field):
+    text, value = _bad_value(field)
+    lines = run_bad(tmp_path, GOOD + f"[{table}]\n{field.key} = {text}\n")
+    assert len(lines) == 1
+    assert lines[0].startswith(f"s.toml: {table}.{field.key} = {format_value(value)}: must be "
+                               f"{field.rule()}")
+
+
+@pytest.mark.parametrize("text", ['["ISO 6336"]', "[]", '"ISO 6336:2019"'])
+def test_methods_list(tmp_path, text):
+    lines = run_bad(tmp_path, GOOD.replace('method = "ISO 6336:2019"', f"methods = {text}"))
+    assert len(lines) == 1 and lines[0].startswith("s.toml: options.methods = ")
+    assert lines[0].endswith(f"must be {OPTIONS_METHODS.rule()}")
+
+
+CROSS = [
+    ("offset without shaft", "[iso]\npinion_offset = 20.0\n",
+     ["s.toml: iso.pinion_offset = 20.0: given without iso.shaft_span and iso.shaft_diameter: "
+      "the shaft deflection needs all three (or give iso.f_sh)"]),
+    ("offset beyond the span", "[iso]\npinion_offset = 80.0\nshaft_span = 100.0\n"
+     "shaft_diameter = 40.0\n",
+     ["s.toml: iso.pinion_offset = 80.0: lies outside the bearing span (s <= l/2 = 50 mm)"]),
+    ("bore beyond the root", "[iso.pinion]\ninner_diameter = 60.0\n",
+     ["s.toml: iso.pinion.inner_diameter = 60.0: must be smaller than the root diameter "
+      "d_f = 52.500 mm"]),
+    ("rim too thin", "[iso.wheel]\nrim_thickness = 3.0\n",
+     ["s.toml: iso.wheel.rim_thickness = 3.0: too thin: ISO 6336-3 rates rims thicker than "
+      "0.5·h = 3.375 mm (Y_B); thicken the rim"]),
+    ("rim larger than the body", "[iso.wheel]\nrim_thickness = 80.0\ninner_diameter = 100.0\n",
+     ["s.toml: iso.wheel.rim_thickness = 80.0: larger than the gear body between the bore "
+      "and the root circle"]),
+]
+
+
+@pytest.mark.parametrize("name, extra, expected", CROSS, ids=[c[0] for c in CROSS])
+def test_inputs_that_depend_on_each_other(tmp_path, name, extra, expected):
+    assert run_bad(tmp_path, GOOD + extra) == expected
+
+
+def test_iso_tables_need_no_material_for_geometry(tmp_path):
+    """A geometry-only spec may name ISO 6336: nothing to rate, no error."""
+    text = GOOD.split("[load]")[0] + '[options]\nmethod = "ISO 6336:2019"\n'
+    path = tmp_path / "g.toml"
+    path.write_text(text, encoding="utf-8")
+    code, out, err = cli("run", path, "--format", "json")
+    assert code == 0, err
+    assert "iso6336_contact" not in json.loads(out)["results"]
