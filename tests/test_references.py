@@ -25,9 +25,6 @@ ROOT = Path(__file__).resolve().parent.parent
 REFERENCES = (ROOT / "docs" / "references.md").read_text(encoding="utf-8").split(
     "## Known misprints")[0]
 DEFINED = set(re.findall(r"^\| \[([^\]]+)\] \|", REFERENCES, flags=re.M))
-# entries of a branch waiting to be merged into references.md (docs/refs_<branch>.md)
-for _p in sorted((ROOT / "docs").glob("refs_*.md")):
-    DEFINED |= set(re.findall(r"^\| \[([^\]]+)\] \|", _p.read_text(encoding="utf-8"), flags=re.M))
 
 NOT_A_NAME = r"(?<![\w\])])"
 STANDARD = r"(?:GOST|ISOTR|ISO|EN|DIN|AGMA|VDI)[0-9][0-9A-Za-z.-]*"
