@@ -362,6 +362,7 @@ def compute(spec: ValidatedSpec) -> Result:
     if strength is None:
         _drop_unused_defaults(spec, STRENGTH_ONLY)
     res = CALCULATOR.new_result(spec)
+    res.pair_geometry = geom  # for --profile and --plot (geardesign.spur.export)
     if notes is not None:
         sec = res.section("design", "Design proposal")
         for row in notes:

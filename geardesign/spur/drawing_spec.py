@@ -43,8 +43,10 @@ ACCURACY = Table("accuracy", "accuracy, tooth thickness allowances and backlash"
         "without its sign)", hint="from the backlash balance when not given"),
     _um("E_Hs2", "least additional rack shift of the wheel, −E_Hs"),
     _um("T_H1", "tolerance on the additional rack shift of the pinion (GOST 1643-81)",
-        example=None, hint="required with GOST 1643-81"),
-    _um("T_H2", "tolerance on the additional rack shift of the wheel (GOST 1643-81)"),
+        example=100.0, hint="required with GOST 1643-81 (T_H by F_r and the type of backlash "
+                            "tolerance)"),
+    _um("T_H2", "tolerance on the additional rack shift of the wheel (GOST 1643-81)",
+        example=160.0),
     _um("A_sne1", "upper tooth thickness allowance of the pinion (ISO 1328-1 pairs: "
         "DIN 3967 / ISO 21771), ≤ 0", lo=-10000.0, hi=0.0,
         hint="from the backlash balance when not given"),

@@ -14,7 +14,7 @@ GOST 13755-81 basic rack; ISO 21771:2007 (same quantities, ISO notation);
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from geardesign.involute import inv, inv_inverse
 
@@ -77,7 +77,7 @@ class PairInput:
     beta: float
     b_w: float
     rack: BasicRack
-    tip_shortening: bool = True
+    tip_shortening: bool = field(default=True, kw_only=True)
 
 
 @dataclass(frozen=True)

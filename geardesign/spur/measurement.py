@@ -80,7 +80,7 @@ class OverBalls:
 def _K(t: Tooth, s_n: float) -> float:
     """inv α_Mt − (±D/(d_b cos β_b)): the part of the ball-centre equation without D."""
     if t.internal:
-        return inv(t.alpha_t) + math.pi / t.z - s_n / (t.m_n * t.z)
+        return inv(t.alpha_t) + s_n / (t.m_n * t.z)
     return inv(t.alpha_t) + s_n / (t.m_n * t.z) - math.pi / t.z
 
 
