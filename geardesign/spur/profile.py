@@ -104,7 +104,7 @@ def flank(g: PairGeometry, i: int, allowance_um: float = 0.0, n: int = 80,
     r_l = math.hypot(r_b, max(rho_l, 0.0))
     # radii: the fillet, then the involute, with the reference and working pitch circles
     # as exact vertices
-    r_lo = max(r_f, fr[0]) if len(fr) else r_f
+    r_lo = r_f   # the rounding touches the root circle; θ there is the trochoid's end value
     extra = [r for r in (r_ref, 0.5 * gi.d_w) if max(r_l, r_b, r_lo) < r < r_a]
     radii = np.unique(np.concatenate([
         np.linspace(r_lo, max(r_l, r_lo), n_fillet),
@@ -113,7 +113,7 @@ def flank(g: PairGeometry, i: int, allowance_um: float = 0.0, n: int = 80,
     inv_ok = radii >= max(r_l, r_b) - 1e-12
     th[inv_ok] = _half_angle_involute(radii[inv_ok], r_b, psi0)
     if len(fr) > 1:
-        in_fil = (radii >= fr[0]) & (radii <= fr[-1])
+        in_fil = radii <= fr[-1]     # below fr[0] (the root circle) θ is the end value
         tf = np.interp(radii[in_fil], fr, ft)
         th[in_fil] = np.minimum(th[in_fil], tf)
     keep = np.isfinite(th)
