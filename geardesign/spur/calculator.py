@@ -361,6 +361,10 @@ def compute(spec: ValidatedSpec) -> Result:
     strength = _strength_inputs(spec, gear)
     if strength is None:
         _drop_unused_defaults(spec, STRENGTH_ONLY)
+    if spec.data.get("accuracy") is not None:
+        from geardesign.spur.drawing import assume_expansion
+
+        assume_expansion(spec)
     res = CALCULATOR.new_result(spec)
     res.pair_geometry = geom  # for --profile and --plot (geardesign.spur.export)
     if notes is not None:

@@ -95,22 +95,32 @@ def _error(exc: ToleranceError | MeasurementError) -> InputError:
     return InputError.at(exc.key, exc.value, str(exc))
 
 
-def _thermal(acc: dict, spec: ValidatedSpec) -> Thermal | None:
-    temps = ("temperature_housing", "temperature_pinion", "temperature_wheel")
-    if all(acc[k] is None for k in temps):
-        for k in ("expansion_housing", "expansion_pinion", "expansion_wheel"):
+TEMPS = ("temperature_housing", "temperature_pinion", "temperature_wheel")
+EXPANSIONS = ("expansion_housing", "expansion_pinion", "expansion_wheel")
+
+
+def assume_expansion(spec: ValidatedSpec) -> None:
+    """Steel's expansion coefficient for a member without one, when a temperature is given
+    (echoed as assumed); called before the inputs are echoed."""
+    acc = spec.data["accuracy"]
+    if all(acc[k] is None for k in TEMPS):
+        for k in EXPANSIONS:
             if acc[k] is not None:
                 raise InputError.at(f"accuracy.{k}", acc[k], "applies only with an operating "
                                     "temperature (temperature_housing, _pinion, _wheel)")
-        return None
-    vals = []
-    for k in temps:
-        vals.append(20.0 if acc[k] is None else acc[k])
-    for k in ("expansion_housing", "expansion_pinion", "expansion_wheel"):
+        return
+    for k in EXPANSIONS:
         if acc[k] is None:
             acc[k] = STEEL_EXPANSION
             spec.assumed.append(f"accuracy.{k}")
-        vals.append(acc[k] * 1e-6)
+
+
+def _thermal(acc: dict, spec: ValidatedSpec) -> Thermal | None:
+    if all(acc[k] is None for k in TEMPS):
+        return None
+    assume_expansion(spec)
+    vals = [20.0 if acc[k] is None else acc[k] for k in TEMPS]
+    vals += [acc[k] * 1e-6 for k in EXPANSIONS]
     return Thermal(*vals)
 
 

@@ -96,8 +96,9 @@ def _write_dxf(m, g, path: Path) -> Path:
     msp.add_line(tuple(loa["N1"]), tuple(loa["N2"]), dxfattribs={"layer": "LINE_OF_ACTION"})
     lo = np.minimum(m.pinion.min(axis=0), m.wheel.min(axis=0))
     hi = np.maximum(m.pinion.max(axis=0), m.wheel.max(axis=0))
-    doc.header["$EXTMIN"] = (float(lo[0]), float(lo[1]), 0.0)
-    doc.header["$EXTMAX"] = (float(hi[0]), float(hi[1]), 0.0)
+    ext = ((float(lo[0]), float(lo[1]), 0.0), (float(hi[0]), float(hi[1]), 0.0))
+    doc.header["$EXTMIN"], doc.header["$EXTMAX"] = ext
+    msp.dxf.extmin, msp.dxf.extmax = ext     # ezdxf writes the header from the layout
     with atomic_path(path) as tmp:
         doc.saveas(tmp)
     return path

@@ -10,7 +10,7 @@ the rack (α_t, π·m_t) with the rounding radius taken in the transverse sectio
 involute part is exact; the fillet approximate).  No tip chamfer or rounding.
 
 References: [ISO21771] 5 (tooth flank, generating rack); [GOST16532] (form circle, undercut);
-[Litvin] ch. 10 (envelope of the generating rack, instantaneous centre).
+[Litvin2004] (envelope of the generating rack, instantaneous centre of rolling).
 """
 
 from __future__ import annotations
