@@ -91,7 +91,11 @@ def _write_dxf(m, g, path: Path) -> Path:
     doc.layers.add("LINE_OF_ACTION", color=3)
     msp = doc.modelspace()
     for name, pts in zip(LAYERS, (m.pinion, m.wheel)):
-        msp.add_lwpolyline([tuple(p) for p in pts], close=True, dxfattribs={"layer": name})
+        poly = msp.add_lwpolyline([], close=True, dxfattribs={"layer": name})
+        v = np.zeros((len(pts), 5))             # x, y, start width, end width, bulge
+        v[:, :2] = pts
+        poly.lwpoints.set(v)                     # in one piece (appending point by point is
+        #                                          quadratic in ezdxf)
     loa = line_of_action(g)
     msp.add_line(tuple(loa["N1"]), tuple(loa["N2"]), dxfattribs={"layer": "LINE_OF_ACTION"})
     lo = np.minimum(m.pinion.min(axis=0), m.wheel.min(axis=0))
