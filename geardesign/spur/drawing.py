@@ -241,13 +241,27 @@ def tests_of(g: PairGeometry, spec: ValidatedSpec, acc: Accuracy | None) -> tupl
         if lim is None:
             W_l = M_l = s_l = c_l = None
         else:
+            if gi.s_n + lim[1] <= 0.1 * gi.s_n:
+                raise InputError(Problem(
+                    "accuracy", f"the thickness allowances ({acc.upper[i]:.1f}…"
+                    f"{acc.lower[i]:.1f} µm) leave less than a tenth of the {who(i)}'s tooth "
+                    f"thickness s_n = {gi.s_n:.4f} mm: give smaller allowances or tolerances"))
             W_l = tuple(W + e * cos_a for e in lim)
-            M_l = tuple(over_balls(t, D, gi.s_n + e).M for e in lim)
+            try:
+                M_l = tuple(over_balls(t, D, gi.s_n + e).M for e in lim)
+            except MeasurementError:
+                raise InputError.at(f"drawing.ball_diameter{n}", D, "the ball sinks below the "
+                                    "base circle of the thinnest tooth the allowances permit: "
+                                    "choose a larger ball") from None
             s_l = tuple(chordal(t, gi.s_n + e).s_c for e in lim)
             c_l = tuple(constant_chord(t, gi.s_n + e).s_c for e in lim)
         out.append(GearTests(k, W, d_W, W_l, D, chosen, res.M, res.d_c, M_l, ch.s_c, ch.h_c,
                              s_l, cc.s_c, cc.h_c, c_l))
     return tuple(out)
+
+
+def who(i: int) -> str:
+    return ("pinion", "wheel")[i]
 
 
 def ideal_ok(t: Tooth, D: float) -> bool:

@@ -311,7 +311,8 @@ def pair_geometry(p: PairInput) -> PairGeometry:
     * inv α_tw = 2x_Σ tan α/(z1 + z2) + inv α_t;  a_w = a·cos α_t / cos α_tw
     * y = (a_w − a)/m_n; Δy = x_Σ − y (tip shortening, ≥ 0)
     * d_w1 = 2a_w/(u + 1); d_w2 = 2a_w·u/(u + 1)
-    * d_a = d + 2(h_a* + x − Δy)m_n (Δy = 0 without tip shortening); d_f = d − 2(h_a* + c* − x)m_n
+    * d_a = d + 2(h_a* + x − Δy)m_n (Δy = 0 without tip shortening);
+      d_f = d − 2(h_a* + c* − x)m_n
     * ρ_a = ½ d_b tan α_a, cos α_a = d_b/d_a; g_w = a_w sin α_tw = ρ_1 + ρ_2
     * lower active points ρ_p1 = g_w − ρ_a2, ρ_p2 = g_w − ρ_a1
     * form points ρ_l = ½ d sin α_t − (h_l* − h_a* − x)m_n / sin α_t

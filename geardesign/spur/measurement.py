@@ -184,7 +184,8 @@ def chordal(t: Tooth, s_n: float | None = None) -> Chordal:
     .. math:: ψ = \\frac{s_n}{d_n}, \\quad \\bar s = d_n \\sin ψ, \\quad
               \\bar h = h_a + \\tfrac12 d_n (1 - \\cos ψ), \\quad h_a = \\tfrac12 (d_a - d)
 
-    >>> c = chordal(Tooth(12, 10.0, math.radians(20), 0.0, 10 * (math.pi / 2 + 0.6 * math.tan(math.radians(20))), 146.0, 110.0))
+    >>> s_n = 10 * (math.pi / 2 + 0.6 * math.tan(math.radians(20)))     # m = 10, x = 0.3
+    >>> c = chordal(Tooth(12, 10.0, math.radians(20), 0.0, s_n, 146.0, 110.0))
     >>> round(c.s_c, 4), round(c.h_c, 4)
     (17.8256, 13.6657)
     """

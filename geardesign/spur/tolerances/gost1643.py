@@ -57,7 +57,8 @@ def it_value(grade: int, size: float) -> float:
         if size <= upper:
             return d["IT"][str(grade)][i]
     raise ToleranceError("gear.center_distance", size,
-                         f"beyond the {d['upper'][-1]} mm of the backlash tables of GOST 1643-81")
+                         f"beyond the {d['upper'][-1]} mm of the backlash tables of GOST 1643-81: "
+                         f"give accuracy.jn_min and accuracy.fa")
 
 
 def check_grade(grade: int) -> int:
