@@ -123,6 +123,9 @@ def _write_plot(results: list, plot: Path) -> None:
     from geardesign.pzdn.plot import PlotError, write_plot
 
     with_history = [r for r in results if any(s.key == "history" for s in r.sections)]
+    if not with_history and len(results) == 1 and results[0].kind == "spur":
+        _write_spur_file(results[0], plot, "write_plot")
+        return
     if len(with_history) != 1:
         _err(f"{plot}: --plot needs exactly one spec with a start-up time history (a pzdn "
              f"spec with [startup] and history_points >= 2); {len(with_history)} given")
@@ -134,9 +137,21 @@ def _write_plot(results: list, plot: Path) -> None:
         raise typer.Exit(2)
 
 
+def _write_spur_file(result, path: Path, writer: str) -> None:
+    """``--plot`` / ``--profile`` of a spur result (geardesign.spur.export)."""
+    from geardesign.spur import export
+
+    try:
+        getattr(export, writer)(result, path)
+    except export.ExportError as exc:
+        _err(f"{path}: {exc}")
+        raise typer.Exit(2)
+
+
 def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quiet: bool,
           expect_kind: Optional[str] = None, mode: Optional[str] = None,
-          plot: Optional[Path] = None, keep_going: bool = False) -> None:
+          plot: Optional[Path] = None, keep_going: bool = False,
+          profile: Optional[Path] = None) -> None:
     from geardesign.core.render import render, write_atomic
 
     fmt_name = _choose_format(fmt, output)
@@ -147,6 +162,11 @@ def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quie
             raise typer.Exit(2)
     if plot is not None:
         _write_plot(results, plot)
+    if profile is not None:
+        if len(results) != 1 or results[0].kind != "spur":
+            _err(f"{profile}: --profile needs exactly one spur spec")
+            raise typer.Exit(2)
+        _write_spur_file(results[0], profile, "write_profile")
     to_terminal = output is None and sys.stdout.isatty()
     color = to_terminal and not os.environ.get("NO_COLOR")
     width = None
@@ -178,8 +198,11 @@ OPT_QUIET = typer.Option(False, "--quiet", "-q",
                               "the verdict (input errors are still printed).")
 ARG_SPECS = typer.Argument(..., help="Spec file(s), TOML.", show_default=False)
 OPT_PLOT = typer.Option(None, "--plot", help="Write the start-up transient of a pzdn spec "
-                        "with [startup] to FILE (.png or .svg; needs matplotlib).",
+                        "with [startup], or the mesh of a spur pair, to FILE (.png or .svg; "
+                        "needs matplotlib).",
                         dir_okay=False)
+OPT_PROFILE = typer.Option(None, "--profile", help="Write the tooth profiles of a spur pair "
+                           "in mesh to FILE (.dxf needs ezdxf, or .svg).", dir_okay=False)
 OPT_SELECT = typer.Option(False, "--select",
                           help="Selection mode, as mode = \"select\" in the spec (bearing: the "
                                "smallest catalogue bearing that meets the required life).")
@@ -206,10 +229,10 @@ OPT_KEEP_GOING = typer.Option(False, "--keep-going", "-k",
 def run_cmd(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
             output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET,
             keep_going: bool = OPT_KEEP_GOING, select: bool = OPT_SELECT,
-            plot: Optional[Path] = OPT_PLOT) -> None:
+            plot: Optional[Path] = OPT_PLOT, profile: Optional[Path] = OPT_PROFILE) -> None:
     """Compute one or more specs ("-" reads standard input), dispatching on each `kind`."""
     _emit(specs, format, output, quiet, mode="select" if select else None, plot=plot,
-          keep_going=keep_going)
+          keep_going=keep_going, profile=profile)
 
 
 def _kind_command(kind: str):
@@ -226,6 +249,13 @@ def _kind_command(kind: str):
                     keep_going: bool = OPT_KEEP_GOING, plot: Optional[Path] = OPT_PLOT) -> None:
             _emit(specs, format, output, quiet, expect_kind=kind, plot=plot,
                   keep_going=keep_going)
+    elif kind == "spur":
+        def command(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
+                    output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET,
+                    keep_going: bool = OPT_KEEP_GOING, plot: Optional[Path] = OPT_PLOT,
+                    profile: Optional[Path] = OPT_PROFILE) -> None:
+            _emit(specs, format, output, quiet, expect_kind=kind, plot=plot,
+                  keep_going=keep_going, profile=profile)
     else:
         def command(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
                     output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET,

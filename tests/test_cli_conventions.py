@@ -68,9 +68,9 @@ def test_each_command_shows_only_its_options():
     _, spur, _ = cli("spur", "--help")
     _, bearing, _ = cli("bearing", "--help")
     _, pzdn, _ = cli("pzdn", "--help")
-    assert "--select" not in spur and "--plot" not in spur
-    assert "--select" in bearing and "--plot" not in bearing
-    assert "--plot" in pzdn and "--select" not in pzdn
+    assert "--select" not in spur and "--plot" in spur and "--profile" in spur
+    assert "--select" in bearing and "--plot" not in bearing and "--profile" not in bearing
+    assert "--plot" in pzdn and "--select" not in pzdn and "--profile" not in pzdn
 
 
 def test_top_level_help_names_every_exit_code_and_completion():

@@ -105,6 +105,10 @@ def pair_input_from_spec(spec: ValidatedSpec) -> tuple[PairInput, str]:
 def solve_geometry(spec: ValidatedSpec) -> tuple[PairGeometry, str]:
     """Pair geometry of a spec; impossible geometry becomes a one-line input error."""
     p, how = pair_input_from_spec(spec)
+    if not spec.data["gear"].get("tip_shortening", True):
+        from dataclasses import replace
+
+        p = replace(p, tip_shortening=False)
     try:
         return pair_geometry(p), how
     except GeometryError as exc:
@@ -375,12 +379,21 @@ def compute(spec: ValidatedSpec) -> Result:
     strength = _strength_inputs(spec, gear)
     if strength is None:
         _drop_unused_defaults(spec, STRENGTH_ONLY)
+    if spec.data.get("accuracy") is not None:
+        from geardesign.spur.drawing import assume_expansion
+
+        assume_expansion(spec)
     res = CALCULATOR.new_result(spec)
+    res.pair_geometry = geom  # for --profile and --plot (geardesign.spur.export)
     if notes is not None:
         sec = res.section("design", "Design proposal")
         for row in notes:
             sec.add(*row)
     add_geometry_rows(res, geom, how)
+    if spec.data.get("accuracy") is not None or spec.data.get("drawing") is not None:
+        from geardesign.spur.drawing import add_drawing
+
+        add_drawing(res, geom, spec)
 
     sl = sliding_at_ends(geom)
     k = res.section("kinematics", "Kinematics and sliding")

@@ -14,7 +14,7 @@ GOST 13755-81 basic rack; ISO 21771:2007 (same quantities, ISO notation);
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from geardesign.involute import inv, inv_inverse
 
@@ -66,7 +66,8 @@ class BasicRack:
 @dataclass(frozen=True)
 class PairInput:
     """Data of an external pair.  ``beta`` is the reference helix angle [rad] (0 = spur);
-    ``b_w`` the working face width [mm]."""
+    ``b_w`` the working face width [mm]; ``tip_shortening`` false keeps the nominal tips
+    d_a = d + 2(h_a* + x)m_n instead of shortening them by Δy·m_n."""
 
     m_n: float
     z1: int
@@ -76,6 +77,7 @@ class PairInput:
     beta: float
     b_w: float
     rack: BasicRack
+    tip_shortening: bool = field(default=True, kw_only=True)
 
 
 @dataclass(frozen=True)
@@ -309,7 +311,8 @@ def pair_geometry(p: PairInput) -> PairGeometry:
     * inv α_tw = 2x_Σ tan α/(z1 + z2) + inv α_t;  a_w = a·cos α_t / cos α_tw
     * y = (a_w − a)/m_n; Δy = x_Σ − y (tip shortening, ≥ 0)
     * d_w1 = 2a_w/(u + 1); d_w2 = 2a_w·u/(u + 1)
-    * d_a = d + 2(h_a* + x − Δy)m_n; d_f = d − 2(h_a* + c* − x)m_n
+    * d_a = d + 2(h_a* + x − Δy)m_n (Δy = 0 without tip shortening);
+      d_f = d − 2(h_a* + c* − x)m_n
     * ρ_a = ½ d_b tan α_a, cos α_a = d_b/d_a; g_w = a_w sin α_tw = ρ_1 + ρ_2
     * lower active points ρ_p1 = g_w − ρ_a2, ρ_p2 = g_w − ρ_a1
     * form points ρ_l = ½ d sin α_t − (h_l* − h_a* − x)m_n / sin α_t
@@ -346,7 +349,7 @@ def pair_geometry(p: PairInput) -> PairGeometry:
     partial = []
     for i, (z, x, d) in enumerate(((p.z1, p.x1, d1), (p.z2, p.x2, d2))):
         d_b = d * math.cos(alpha_t)
-        d_a = d + 2.0 * (rack.h_a + x - dy) * p.m_n
+        d_a = d + 2.0 * (rack.h_a + x - (dy if p.tip_shortening else 0.0)) * p.m_n
         d_f = d - 2.0 * (rack.h_a + rack.c - x) * p.m_n
         if d_a <= d_b:
             raise GeometryError(f"TIP_INSIDE_BASE_{i + 1}",

@@ -9,6 +9,7 @@ ratio and then checks it.
 from __future__ import annotations
 
 from geardesign.core.spec import Field, SpecSchema, Table, TableList
+from geardesign.spur import drawing_spec as DR
 from geardesign.spur.strength import METHODS
 from geardesign.spur.strength import tables as T
 from geardesign.spur.strength.iso6336.spec import ISO, ISO_FACTORS, OPTIONS_METHODS
@@ -52,6 +53,9 @@ GEAR = Table("gear", "gear pair (external, spur or helical)", (
     Field("allow_undercut", "boolean",
           "accept an undercut tooth (deliberate, e.g. a small pinion): the check only warns",
           default=False),
+    Field("tip_shortening", "boolean",
+          "shorten the tips by Δy·m_n (GOST 16532-70); false keeps d_a = d + 2(h_a* + x)m_n",
+          default=True),
     ACCURACY,
     TIP_RELIEF,
     SCHEME,
@@ -231,7 +235,8 @@ SCHEMA = SpecSchema(
     kind="spur",
     description="external spur/helical gear pair: geometry (GOST 16532-70) and strength "
                 "(GOST 21354-87 or ISO 6336:2019)",
-    tables=(GEAR, DESIGN, RACK, LOAD, MATERIAL, FACTORS, OPTIONS, ISO, ISO_FACTORS),
+    tables=(GEAR, DESIGN, RACK, LOAD, MATERIAL, FACTORS, OPTIONS, ISO, ISO_FACTORS, DR.ACCURACY,
+            DR.DRAWING),
     title_example="Reducer stage 25/100, m = 4",
     one_of=(("gear", "design"),),
 )
