@@ -98,8 +98,8 @@ def _render(rows: list[dict], columns, fmt: str) -> str:
         return "".join(json.dumps(r, ensure_ascii=False) + "\n" for r in rows)
     if fmt == "csv":
         buf = io.StringIO()
-        keys = list(rows[0]) if rows else [c[0] for c in columns]
-        w = csv.DictWriter(buf, keys, lineterminator="\n")
+        keys = list(dict.fromkeys(k for r in rows for k in r)) or [c[0] for c in columns]
+        w = csv.DictWriter(buf, keys, lineterminator="\n", restval="")
         w.writeheader()
         for r in rows:
             w.writerow({k: _cell(v) if isinstance(v, (list, tuple)) else v
