@@ -148,7 +148,7 @@ def compute(spec: ValidatedSpec) -> Result:
         return res
 
     duty = Duty(load["life_hours"], load["regime"], load["application_factor"],
-                motor["peak_ratio"])
+                motor["peak_ratio"], load["method"])
     if load["torque"] is not None:
         # first pass for the ratios and efficiencies, then rate for the machine's torque
         probe = _run_chain(stages, T_m, n_m, duty)

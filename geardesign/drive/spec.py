@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from geardesign.core.spec import Field, SpecSchema, Table, TableList
+from geardesign.spur.strength import METHODS
 from geardesign.spur.strength.tables import REGIMES
 
 STAGE_KINDS = ("spur", "worm", "novikov", "planetary", "drive")
@@ -33,6 +34,9 @@ LOAD = Table("load", "the driven machine and the duty", (
           "give their own", default="0", choices=REGIMES),
     Field("application_factor", "number", "application factor K_A of the stages that do not "
           "give their own", symbol="K_A", default=1.0, minimum=1.0, maximum=3.0),
+    Field("method", "string", "strength method of the spur and planetary stages that do not "
+          "give their own (spur: options.method, planetary: strength.method)", default=None,
+          choices=tuple(METHODS)),
 ))
 
 STAGE = Table("stage", "a stage, from the input", (

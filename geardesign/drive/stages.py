@@ -30,6 +30,7 @@ class Duty:
     regime: str
     K_A: float
     peak_ratio: float | None
+    method: str | None = None      # strength method of the stages that give none
 
 
 @dataclass(frozen=True)
@@ -68,6 +69,28 @@ def _values(doc: dict) -> dict:
     for section in doc["results"].values():
         if isinstance(section, dict):
             out.update(section)
+    return out
+
+
+def _margins(section: dict, prefix: str = "") -> dict:
+    """Safety margins S/S_min of one rating section: GOST 21354-87 rows give each gear's
+    S_min (``S_H1_min``), ISO 6336 rows one for the pair (``S_Hmin``)."""
+    out = {}
+    for k in ("S_H1", "S_H2", "S_F1", "S_F2"):
+        need = section.get(f"{k}_min", section.get(f"{k[:3]}min"))
+        if section.get(k) is not None and need:
+            out[prefix + k] = section[k] / need
+    return out
+
+
+def _strength_margins(results: dict) -> dict:
+    """Margins of every method a spur stage was rated by (GOST sections ``contact`` and
+    ``bending``; ISO 6336 ``iso6336_contact`` and ``iso6336_bending``, named with ``ISO``)."""
+    out = {}
+    for name, prefix in (("contact", ""), ("bending", ""), ("iso6336_contact", "ISO "),
+                         ("iso6336_bending", "ISO ")):
+        if isinstance(results.get(name), dict):
+            out.update(_margins(results[name], prefix))
     return out
 
 
@@ -163,6 +186,10 @@ def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
         _put(load, "regime", duty.regime)
     if duty.peak_ratio is not None:
         _put(load, "peak_torque1", T_in * duty.peak_ratio)
+    if duty.method is not None:
+        opts = d.setdefault("options", {})
+        if isinstance(opts, dict) and not opts.get("method") and not opts.get("methods"):
+            opts["method"] = duty.method
     _validate(d, where)
     if d.get("material") is None:
         raise InputError(Problem(f"{where}: material", "missing table [material.pinion] and "
@@ -171,9 +198,11 @@ def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
     v = _values(res.document())
     u = v["u"]
     e, src = (eta, "spec") if eta is not None else (ETA_CYLINDRICAL, "assumed (handbook)")
-    margins = {k: v[k] / v[f"{k}_min"] for k in ("S_H1", "S_H2", "S_F1", "S_F2")}
+    results = res.document()["results"]
+    margins = _strength_margins(results)
     worst = min(margins, key=margins.get)
-    F_t, F_r, F_a = v["F_t"], v["F_r"], v["F_a"]
+    forces = results["forces"]     # the mesh forces (an ISO section also prints an F_t)
+    F_t, F_r, F_a = forces["F_t"], forces["F_r"], forces["F_a"]
     return StageRun(res, u, e, src, T_in, n_in, T_in * u * e, n_in / u,
                     (Member(F_t, F_r, F_a, v["d_w1"] / 2), Member(F_t, F_r, F_a, v["d_w2"] / 2)),
                     margins[worst], worst, True)
@@ -244,6 +273,7 @@ def run_planetary(data: dict, T_in: float, n_in: float, duty: Duty, eta: float |
         _put(st, "life_hours", duty.L_h)
         _put(st, "application_factor", duty.K_A)
         _put(st, "regime", duty.regime)
+        _put(st, "method", duty.method)
         if duty.peak_ratio is not None:
             _put(st, "peak_torque", T_in * duty.peak_ratio)
     res = _run(d, where, data)
@@ -260,8 +290,7 @@ def run_planetary(data: dict, T_in: float, n_in: float, duty: Duty, eta: float |
     for mesh in ("sun_planet", "planet_ring"):
         v = r.get(f"strength_{mesh}")
         if v:
-            for k in ("S_H1", "S_H2", "S_F1", "S_F2"):
-                margins[f"{mesh}.{k}"] = v[k] / v[f"{k}_min"]
+            margins.update(_margins(v, f"{mesh}."))
     worst = min(margins, key=margins.get) if margins else ""
     zero = Member(0.0, 0.0, 0.0, 0.0)
     return StageRun(res, abs(n_in / n_out), e, src, T_in, n_in, T_out, abs(n_out), (zero, zero),

@@ -546,15 +546,21 @@ def _coupling_rows(res: Result, g: dict, est: dict, spur_spec: dict) -> None:
             ("S_F1", "-", "S_F1", "bending safety factor, pinion"),
             ("S_F2", "-", "S_F2", "bending safety factor, wheel")):
         if key in v:
-            sec.add(key, v[key], unit, sym, name + " (from the spur report)", S.SPUR)
+            sec.add(key, v[key], unit, sym, name + " (from the spur report)",
+                    f"spur calculator ({g['method']})")
     failed = [c.code for c in spur.failed]
+    if "sigma_H" in v and "sigma_HP" in v:      # GOST 21354-87: one σ_H of the pair
+        passed = (f"coupling gear passes every check of the spur calculator (σ_H = "
+                  f"{v['sigma_H']:.0f} MPa <= σ_HP = {v['sigma_HP']:.0f} MPa)")
+    else:                                       # ISO 6336: safety factors per gear
+        passed = (f"coupling gear passes every check of the spur calculator ({g['method']}: "
+                  f"S_H = {min(v['S_H1'], v['S_H2']):.2f}, "
+                  f"S_F = {min(v['S_F1'], v['S_F2']):.2f})")
     res.checks.append(check(
         "COUPLING_GEAR", not failed, "error",
         f"coupling gear fails {', '.join(failed)} of the spur calculator: see its report below "
         f"for what to change (module, face width, materials)",
-        f"coupling gear passes every check of the spur calculator (σ_H = "
-        f"{v.get('sigma_H', math.nan):.0f} MPa <= σ_HP = {v.get('sigma_HP', math.nan):.0f} MPa)",
-        None, None, S.SPUR))
+        passed, None, None, f"spur calculator ({g['method']})"))
     res.checks.append(check(
         "GEAR_MODULE", est["module"] >= est["m_est"] - 1e-9, "warning",
         f"coupling gear: module {_fmt(est['module'])} mm below the bending estimate "

@@ -50,7 +50,7 @@ def spur_spec(g: dict, module: float, face_width: float, T1: float,
     for who in ("pinion", "wheel"):
         mats[who] = {k: v for k, v in g[who].items() if k in _MATERIAL_KEYS and v is not None}
     spec = {"kind": "spur", "title": "PZDN coupling gear", "gear": gear, "load": load,
-            "material": mats}
+            "material": mats, "options": {"method": g.get("method", "GOST 21354-87")}}
     factors = {k: v for k, v in (g.get("factors") or {}).items() if v is not None}
     if factors:
         spec["factors"] = factors
@@ -64,7 +64,8 @@ def _pzdn_key(key: str) -> str:
                        ("factors.", "coupling_gear.factors."), ("gear.", "coupling_gear."),
                        ("load.torque1", "coupling_gear.torque"),
                        ("load.peak_torque1", "coupling_gear.peak_torque"),
-                       ("load.speed1", "coupling_gear.speed"), ("load.", "coupling_gear.")):
+                       ("load.speed1", "coupling_gear.speed"),
+                       ("options.method", "coupling_gear.method"), ("load.", "coupling_gear.")):
         if key.startswith(spur):
             return ours + key[len(spur):]
     return "coupling_gear" + (f" ({key})" if key else "")

@@ -16,6 +16,7 @@ from __future__ import annotations
 from geardesign.core.spec import Field, SpecSchema, Table, TableList
 from geardesign.materials import spring_steel
 from geardesign.pzdn.spring import CURVATURE_MODELS, LEG_MODELS
+from geardesign.spur.strength import METHODS
 
 STIFFNESS = "N·m/rad"
 INERTIA = "kg*m^2"
@@ -172,6 +173,8 @@ COUPLING_GEAR = Table("coupling_gear", "open spur gear of the coupling (rated by
     Field("bearing_scheme", "integer", "arrangement of the gears on their shafts, GOST "
           "21354-87 chart 1…7 (1: overhung gear on ball bearings)", default=1, minimum=1,
           maximum=7),
+    Field("method", "string", "strength method of the spur calculator (the given [factors] "
+          "are GOST 21354-87 factors)", default="GOST 21354-87", choices=tuple(METHODS)),
     _gear_material("pinion"),
     _gear_material("wheel"),
     Table("factors", "load factors given instead of computed (e.g. the thesis' values)",

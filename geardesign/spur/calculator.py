@@ -303,6 +303,14 @@ def add_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inputs) -
     names = chosen(spec.data["options"])
     if "GOST 21354-87" in names:
         _add_gost_strength(res, geom, spec, inputs)
+    else:   # the mesh forces (shafts, bearings, a drive) whatever the method
+        from geardesign.spur.strength.rating import Rating, put_forces
+
+        forces = Rating()
+        put_forces(forces, geom, inputs[1])
+        for row in forces.rows:
+            res.section(row.section, _SECTIONS[row.section]).add(
+                row.key, row.value, row.unit, row.symbol, row.name, row.source)
     if ISO_NAME in names:
         from geardesign.spur.strength.iso6336.report import add_iso_strength
 

@@ -132,18 +132,11 @@ def _informative_contact(r: Rating, g: PairGeometry, F_n: float, sigma_H: float,
               "contact stress of the crowned flank, n = 0.7 (informative)", src + " (21)")
 
 
-def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
-         s: Setting) -> Rating:
-    """Rate the pair: contact and bending fatigue, peak loads (GOST 21354-87)."""
-    r = Rating()
-    p = g.inp
-    helical = p.beta > 0.0
-    internal = getattr(g, "internal", False)
+def put_forces(r: Rating, g: PairGeometry, duty: Duty):
+    """The ``forces`` rows of a pair: torques and mesh forces ([GOST21354] §2; the same
+    statics as [ISO6336-1] §5.1), the same for every strength method.  Returns the mesh
+    forces, F_tH = 2000·T1/d1 [N] and v = π·d1·n1/60000 [m/s]."""
     u = g.u
-    m1, m2 = mats
-    gears = (g.g1, g.g2)
-
-    # ------------------------------------------------------------------ forces, speeds
     f = mesh_forces(g, duty.T1)
     r.put("forces", "T1", duty.T1, "N·m", "T1", "pinion torque (nominal)", "spec")
     r.put("forces", "T2", duty.T1 * u, "N·m", "T2", "wheel torque (no mesh loss)", SRC)
@@ -163,6 +156,22 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
     v = math.pi * g.g1.d * duty.n1 / 60000.0
     r.put("forces", "v_H", v, "m/s", "v", "circumferential velocity at d1 (for K_v, Z_v)",
           SRC_ZPCIL)
+    return f, F_tH, v
+
+
+def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
+         s: Setting) -> Rating:
+    """Rate the pair: contact and bending fatigue, peak loads (GOST 21354-87)."""
+    r = Rating()
+    p = g.inp
+    helical = p.beta > 0.0
+    internal = getattr(g, "internal", False)
+    u = g.u
+    m1, m2 = mats
+    gears = (g.g1, g.g2)
+
+    # ------------------------------------------------------------------ forces, speeds
+    f, F_tH, v = put_forces(r, g, duty)
 
     # ------------------------------------------------------------------ life
     life = duty.life

@@ -251,9 +251,12 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
         f_sh = R.put(F, "f_sh", P1.shaft_deflection(F_m_b, b, d1, iso.K_prime, iso.shaft_span,
                                                     iso.pinion_offset, iso.shaft_diameter),
                      "µm", "f_sh", "misalignment from the pinion shaft deflection", S1)
-    f_ma = R.put(F, "f_ma", iso.f_ma if iso.f_ma is not None else F_beta, "µm", "f_ma",
+    R.put(F, "f_Hbeta", f_Hb, "µm", "f_Hβ", "helix slope deviation (larger of the pair)", S1328)
+    # f_ma = 1.0·f_Hβ for gears without provision for adjustment ([ISO6336-1] 7.6.2.4; the
+    # same rule in DIN 3990-1 §3.4.2.4); the helix modification acts through B2
+    f_ma = R.put(F, "f_ma", iso.f_ma if iso.f_ma is not None else f_Hb, "µm", "f_ma",
                  "mesh misalignment from manufacturing" + (" (given)" if iso.f_ma is not None
-                                                           else " (= F_β, no adjustment)"),
+                                                           else " (= f_Hβ, no adjustment)"),
                  "spec" if iso.f_ma is not None else S1)
     F_bx = R.put(F, "F_betax", P1.initial_misalignment(f_sh, f_ma, iso.modification, F_m_b, f_Hb),
                  "µm", "F_βx", f"initial equivalent misalignment (helix: {iso.modification})", S1)

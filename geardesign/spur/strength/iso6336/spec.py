@@ -50,7 +50,7 @@ ISO = Table("iso", "ISO 6336:2019 rating data (used when options.method or optio
     Field("helix_modification", "string", "helix modification (K_Hβ method C)", default="none",
           choices=tuple(T.HELIX_MODIFICATION)),
     Field("f_ma", "number", "mesh misalignment from manufacturing", "µm", "f_ma", default=None,
-          minimum=0, maximum=1000, hint="F_β of the pair when not given (no adjustment)"),
+          minimum=0, maximum=1000, hint="f_Hβ, the larger helix slope tolerance of the pair, when not given (no provision for adjustment; give 0.5·f_Hβ for gears adjusted at assembly or lapped)"),
     Field("f_sh", "number", "mesh misalignment from the shaft deflections", "µm", "f_sh",
           default=None, minimum=0, maximum=1000, hint="computed from the pinion shaft when not given"),
     Field("shaft_K_prime", "number", "constant K' of the pinion arrangement (ISO 6336-1 "
