@@ -155,6 +155,7 @@ def test_tip_shortening_option():
 
 
 def test_profile_and_plot_files(tmp_path):
+    pytest.importorskip("matplotlib")
     spec = write_spec(tmp_path, GOST)
     code, _, err = cli("spur", spec, "-q", "--profile", tmp_path / "p.svg",
                        "--plot", tmp_path / "m.svg")
