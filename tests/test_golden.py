@@ -41,3 +41,15 @@ def test_error_estimates_compare_below_their_bound_only():
     c = {"results": {"resonance": {"floquet_max_dev": 1e-3, "Omega": 1.0 + 1e-6}}}
     moved = [d.path for d in compare_documents(c, b)]
     assert moved == ["results.resonance.floquet_max_dev", "results.resonance.Omega"]
+
+
+def test_error_estimate_checks_compare_to_their_bound():
+    """A check whose value is an error estimate (FLOQUET) passes while both values stay under
+    its bound, whatever digits the LAPACK build gives, in the value and in the message."""
+    def doc(v):
+        return {"checks": [{"code": "FLOQUET", "value": v, "limit": 1e-6,
+                            "message": f"agree (max |Δa| = {v:.1e})"}]}
+    assert compare_documents(doc(1.2437e-9), doc(1.2373e-9)) == []
+    assert compare_documents(doc(3.1e-9), doc(1.2e-9)) == []
+    moved = [d.path for d in compare_documents(doc(2e-3), doc(1.2e-9))]
+    assert moved == ["checks[0].value"]
