@@ -20,17 +20,20 @@ from geardesign.spur.strength.iso6336 import part1 as P1
 from geardesign.spur.strength.iso6336 import part2 as P2
 from geardesign.spur.strength.iso6336 import part3 as P3
 from geardesign.spur.strength.iso6336 import part5 as P5
+from geardesign.spur.strength.iso6336 import part21 as P21
 from geardesign.spur.strength.iso6336 import tables as T
 from geardesign.spur.strength.rating import Rating
 
 NAME = "ISO 6336:2019"
 S1, S2, S3 = "[ISO6336-1]", "[ISO6336-2]", "[ISO6336-3]"
 S5, S6, S1328 = "[ISO6336-5]", "[ISO6336-6]", "[ISO1328-1]"
+S21 = "[ISO6336-21]"
 WHO = ("pinion", "wheel")
 
 SECTIONS = {"iso6336_materials": "ISO 6336: materials", "iso6336_factors": "ISO 6336: load factors",
             "iso6336_contact": "ISO 6336: pitting", "iso6336_bending": "ISO 6336: tooth bending",
             "iso6336_static": "ISO 6336: static (peak torque)",
+            "iso6336_scuffing": "ISO/TS 6336-21: scuffing (integral temperature)",
             "iso6336_spectrum": "ISO 6336: load spectrum (Miner)"}
 
 Z_BIG = 100000
@@ -50,6 +53,23 @@ class IsoGear:
     inner_diameter: float = 0.0       # bore of the gear body, mm
     rim_thickness: float | None = None  # s_R below the root, mm; None: solid
     web_ratio: float | None = None    # b_s/b of a web gear; None: solid
+
+
+@dataclass(frozen=True)
+class ScuffingSetting:
+    """Oil and lubrication of the scuffing rating (ISO/TS 6336-21)."""
+
+    fzg_load_stage: int                # FZG A/8.3/90 failure load stage of the oil, 1..14
+    oil_temperature: float             # °C, before the mesh (sump or injection)
+    nu100: float | None = None         # mm²/s; None: from ν40 with VI 95
+    density15: float = 890.0           # kg/m³
+    lubricant: str = "mineral"         # key of tables.SCUFFING_X_L
+    lubrication: str = "dip"           # key of tables.SCUFFING_X_S
+    meshes: int = 1                    # gears the pinion meshes with (X_mp)
+    driving: str = "pinion"
+    structure: str | None = None       # key of tables.SCUFFING_X_WRELT; None: from the types
+    B_M: float = T.B_M_STEEL           # N/(mm·s^½·K)
+    S_Smin: float = 1.8
 
 
 @dataclass(frozen=True)
@@ -76,6 +96,7 @@ class IsoSetting:
     protuberance: float = 0.0          # s_pr/m_n
     K_gamma: float = 1.0
     gears: tuple[IsoGear, IsoGear] = (IsoGear(), IsoGear())
+    scuffing: ScuffingSetting | None = None
     overrides: dict = field(default_factory=dict)
 
 
@@ -423,6 +444,11 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
               f"permissible tooth root stress σ_FG/S_Fmin, {who}", S3)
         R.put(B, f"S_F{k}", G / sF, "-", f"S_F{k}", f"safety factor for bending σ_FG/σ_F, {who}", S3)
 
+    # ------------------------------------------------------------------ scuffing
+    if iso.scuffing is not None:
+        _scuffing(R, g, mats, setting, iso, types, F_t, v, K_A, K_g * K_v * K_Hb * K_Ha,
+                  c_ga, C_a)
+
     # ------------------------------------------------------------------ static (peak torque)
     if duty.T_peak is not None:
         St = "iso6336_static"
@@ -461,6 +487,122 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
     if duty.life.blocks:
         _spectrum(R, g, duty, types, sHlim, M, N_L, iso)
     return R.r
+
+
+def _scuffing(R: _Rows, g, mats, setting, iso: IsoSetting, types, F_t: float, v: float,
+              K_A: float, K_rest: float, c_ga: float, C_a: float) -> None:
+    """Scuffing by the integral temperature method ([ISO6336-21]): the factors, Θ_int,
+    Θ_intS and the safety factors, in the section ``iso6336_scuffing``."""
+    from geardesign.materials.lubricants import nu100_from_vi, viscosity_at
+
+    sc, p, Sc = iso.scuffing, g.inp, "iso6336_scuffing"
+    internal = bool(getattr(g, "internal", False))
+    b, u, a = p.b_w, g.u, g.a_w
+    a_wt, a_t = g.alpha_tw, g.alpha_t
+    R.put(Sc, "method", "integral temperature method (ISO/TS 6336-21:2017 = ISO/TR "
+          "13989-2:2000)", None, "", "method", S21)
+    # oil
+    R.put(Sc, "fzg_load_stage", float(sc.fzg_load_stage), "-", "FZG", "FZG A/8.3/90 failure "
+          "load stage of the oil (ISO 14635-1)", "spec")
+    R.put(Sc, "theta_oil", sc.oil_temperature, "°C", "Θ_oil", "oil temperature", "spec")
+    nu100 = sc.nu100 if sc.nu100 is not None else nu100_from_vi(iso.nu40, 95.0)
+    R.put(Sc, "nu100", nu100, "mm^2/s", "ν100", "kinematic viscosity at 100 °C"
+          + ("" if sc.nu100 is not None else " (from ν40 with VI 95)"),
+          "spec" if sc.nu100 is not None else "ASTM D2270")
+    nu_oil = viscosity_at(sc.oil_temperature, iso.nu40, nu100)
+    R.put(Sc, "nu_oil", nu_oil, "mm^2/s", "ν_oil", "kinematic viscosity at the oil "
+          "temperature (Ubbelohde–Walther)", "ASTM D341")
+    eta = R.factor(Sc, "eta_oil", lambda: nu_oil * P21.oil_density(sc.density15, sc.oil_temperature)
+                   / 1000.0, "mPa·s", "η_oil", f"dynamic viscosity at the oil temperature "
+                   f"(ρ15 = {sc.density15:g} kg/m³, expansion {T.OIL_EXPANSION:g}/K)", S21)
+    X_L = R.put(Sc, "X_L", T.SCUFFING_X_L[sc.lubricant], "-", "X_L",
+                f"lubricant factor ({sc.lubricant.replace('_', ' ')} oil)", S21)
+    X_S = R.put(Sc, "X_S", T.SCUFFING_X_S[sc.lubrication], "-", "X_S",
+                f"lubrication factor ({sc.lubrication} lubrication)", S21)
+    X_mp = R.put(Sc, "X_mp", P21.multiple_mesh_factor(sc.meshes), "-", "X_mp",
+                 f"multiple mesh factor ({sc.meshes} mesh{'es' if sc.meshes > 1 else ''})", S21)
+    if sc.structure is not None:
+        structure, how = sc.structure, " (given)"
+    else:
+        structure = min((T.SCUFFING_STRUCTURE[t] for t in types),
+                        key=lambda k: T.SCUFFING_X_WRELT[k])
+        how = " (from the material types)"
+    X_W = R.factor(Sc, "X_WrelT", T.SCUFFING_X_WRELT[structure], "-", "X_WrelT",
+                   f"relative welding factor ({structure.replace('_', ' ')}){how}", S21)
+    # load
+    eps_g = g.eps_alpha + g.eps_beta
+    K_Bg = R.factor(Sc, "K_Bgamma", lambda: P21.helical_load_factor(eps_g), "-", "K_Bγ",
+                    "helical load factor", S21)
+    w_Bt = R.put(Sc, "w_Bt", K_A * K_rest * F_t / b, "N/mm", "w_Bt",
+                 "transverse unit load K_A K_γ K_v K_Hβ K_Hα F_t/b", S21)
+    # geometry at the pinion tip E
+    rho_E1 = 0.5 * math.sqrt(g.g1.d_a ** 2 - g.g1.d_b ** 2)
+    path = a * math.sin(a_wt)
+    rho_E2 = rho_E1 + path if internal else path - rho_E1
+    R.put(Sc, "rho_E1", rho_E1, "mm", "ρ_E1", "radius of curvature of the pinion at its tip", S21)
+    R.put(Sc, "rho_E2", rho_E2, "mm", "ρ_E2", "radius of curvature of the wheel at the pinion "
+          "tip", S21)
+    tan_wt = math.tan(a_wt)
+    eps_1 = p.z1 / (2.0 * math.pi) * (2.0 * rho_E1 / g.g1.d_b - tan_wt)
+    eps_2 = g.eps_alpha - eps_1
+    R.put(Sc, "eps_1", eps_1, "-", "ε_1", "addendum contact ratio, pinion", S21)
+    R.put(Sc, "eps_2", eps_2, "-", "ε_2", "addendum contact ratio, wheel", S21)
+    E_r = 2.0 / sum((1.0 - m.nu ** 2) / m.E for m in mats)
+    X_M = R.factor(Sc, "X_M", lambda: P21.flash_factor(E_r, sc.B_M), "K·N^-0.75·s^0.5·m^-0.5·mm",
+                   "X_M", f"flash factor (B_M = {sc.B_M:g} N/(mm·s^½·K))", S21)
+    X_ab = R.factor(Sc, "X_alphabeta", lambda: P21.angle_factor(a_wt, p.rack.alpha_n, a_t, p.beta),
+                    "-", "X_αβ", "angle factor", S21)
+    X_BE = R.factor(Sc, "X_BE", lambda: P21.geometry_factor_tip(rho_E1, rho_E2, u, internal), "-",
+                    "X_BE", "geometry factor at the pinion tip", S21)
+    X_eps_c, branch = P21.contact_ratio_factor(eps_1, eps_2)
+    X_eps = R.factor(Sc, "X_eps", X_eps_c, "-", "X_ε", f"contact ratio factor ({branch})", S21)
+    R.r.v["X_eps_branch"] = branch if "X_eps" not in iso.overrides else ""
+    R.r.v["nu40_scuffing"] = iso.nu40
+    e_f, e_a = (eps_2, eps_1) if sc.driving == "pinion" else (eps_1, eps_2)
+    X_Q = R.factor(Sc, "X_Q", lambda: P21.approach_factor(e_f, e_a), "-", "X_Q",
+                   f"approach factor (driving: {sc.driving}, ε_f/ε_a = {e_f / e_a:.3f})", S21)
+    C_eff = R.put(Sc, "C_eff", K_A * F_t / (b * c_ga), "µm", "C_eff",
+                  "optimal tip relief K_A F_t/(b c_γ)", S21)
+    X_Ca = R.factor(Sc, "X_Ca", lambda: P21.tip_relief_factor(C_a, C_eff, max(eps_1, eps_2)), "-",
+                    "X_Ca", f"tip relief factor (C_a = {min(C_a, C_eff):.3g} µm)", S21)
+    X_E = R.factor(Sc, "X_E", 1.0, "-", "X_E", "running-in factor (well run in)", S21)
+    # friction
+    k_u = (u - 1.0) if internal else (u + 1.0)
+    rho_C = R.put(Sc, "rho_redC", u / k_u ** 2 * path / math.cos(g.beta_b), "mm", "ρ_redC",
+                  "relative radius of curvature at the pitch point (normal section)", S21)
+    v_sum = R.put(Sc, "v_sumC", 2.0 * v * math.sin(a_wt), "m/s", "v_ΣC",
+                  "sum of the tangential velocities at the pitch point", S21)
+    Ra = 0.5 * (setting.Ra[0] + setting.Ra[1])
+    X_R = R.put(Sc, "X_R", P21.roughness_factor(Ra, rho_C), "-", "X_R",
+                f"roughness factor (Ra = {Ra:g} µm, mean of the flanks)", S21)
+    mu = R.factor(Sc, "mu_mC", lambda: P21.mean_friction(w_Bt * K_Bg, v_sum, rho_C, eta, X_R, X_L),
+                  "-", "μ_mC", "mean coefficient of friction", S21)
+    # temperatures
+    th_E = R.put(Sc, "theta_flaE", P21.flash_temperature_tip(mu, X_M, X_BE, X_ab, w_Bt * K_Bg, v,
+                                                           a, X_E, X_Q, X_Ca),
+                 "K", "Θ_flaE", "flash temperature at the pinion tip", S21)
+    th_fl = R.put(Sc, "theta_flaint", th_E * X_eps, "K", "Θ_flaint", "mean flash temperature "
+                  "Θ_flaE·X_ε", S21)
+    th_M = R.put(Sc, "theta_M", P21.bulk_temperature(sc.oil_temperature, th_fl, X_S, X_mp), "°C",
+                 "Θ_M", "bulk temperature Θ_oil + C_1 X_mp X_S Θ_flaint", S21)
+    th_int = R.put(Sc, "theta_int", th_M + P21.C_2 * th_fl, "°C", "Θ_int",
+                   "integral temperature Θ_M + C_2 Θ_flaint", S21)
+    th_S, th_MT, th_flT = P21.integral_scuffing_temperature(sc.fzg_load_stage, iso.nu40, X_L, X_W)
+    R.put(Sc, "T_1T", P21.fzg_torque(sc.fzg_load_stage), "N·m", "T_1T",
+          "pinion torque of the FZG load stage", "[ISO14635-1]")
+    R.put(Sc, "theta_MT", th_MT, "°C", "Θ_MT", "bulk temperature of the test gears", S21)
+    R.put(Sc, "theta_flaintT", th_flT, "K", "Θ_flaintT", "mean flash temperature of the test "
+          "gears", S21)
+    R.put(Sc, "theta_intS", th_S, "°C", "Θ_intS", "integral scuffing temperature "
+          "Θ_MT + C_2 X_WrelT Θ_flaintT", S21)
+    R.put(Sc, "S_Smin", sc.S_Smin, "-", "S_Smin", "required safety factor, scuffing",
+          "spec" if sc.S_Smin != 1.8 else "spec default")
+    R.put(Sc, "S_intS", th_S / th_int, "-", "S_intS", "safety factor for scuffing "
+          "Θ_intS/Θ_int", S21)
+    # 0 when the oil alone is at the scuffing temperature (no load is safe)
+    R.put(Sc, "S_SL", max(0.0, th_S - sc.oil_temperature) / (th_int - sc.oil_temperature), "-",
+          "S_SL", "safety factor for scuffing referred to the load (Θ_intS − Θ_oil)/(Θ_int − "
+          "Θ_oil)", S21)
 
 
 def _spectrum(R: _Rows, g, duty, types, sHlim, M, N_L, iso: IsoSetting) -> None:
@@ -585,6 +727,8 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
                     f"enlarge the gears",
                     f"ISO 6336 static {kind.lower()}, {who}: {sym}{k} = {S:.2f} >= {need:.2f}",
                     S, need, src))
+    if "S_intS" in v:
+        out.extend(scuffing_checks(v))
     if internal:
         out.append(check("ISO_INTERNAL_FORM_FACTOR", False, "info",
                          "ISO 6336: the internal gear's Y_F and Y_S are those of the rack it "
@@ -597,6 +741,42 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
                          f"line's range {lo:g}…{hi:g} {scale}; σ_Hlim and σ_Flim were taken at "
                          f"the nearer end: give sigma_Hlim and sigma_Flim under [iso.{WHO[k - 1]}]",
                          "", None, None, S5))
+    return out
+
+
+def scuffing_checks(v: dict) -> list[Check]:
+    """S_intS ≥ S_Smin ([ISO6336-21]) with advice: the FZG load stage of an oil that passes,
+    or how far to lower the oil temperature (Θ_int moves with Θ_oil nearly one to one)."""
+    S, need = v["S_intS"], v["S_Smin"]
+    th_int, th_S = v["theta_int"], v["theta_intS"]
+    ok = S >= need * (1 - 1e-12)
+    advice = []
+    if not ok:
+        from geardesign.spur.strength.iso6336 import part21 as P21
+
+        target = need * th_int
+        nu40 = v["nu40_scuffing"]
+        stage = next((k for k in sorted(T.FZG_TORQUE) if P21.integral_scuffing_temperature(
+            k, nu40, v["X_L"], v["X_WrelT"])[0] >= target), None)
+        if stage is not None:
+            advice.append(f"use an oil of FZG load stage {stage} or higher (Θ_intS >= "
+                          f"{target:.0f} °C)")
+        drop = th_int - th_S / need
+        if drop < v["theta_oil"]:
+            advice.append(f"lower the oil temperature by at least {drop:.0f} K (cooling)")
+        advice.append("reduce the sliding at the tips (smaller module with more teeth, tip "
+                      "relief, balanced profile shifts) or the flank roughness")
+    out = [check("ISO_SCUFFING", ok, "error",
+                 f"ISO/TS 6336-21 scuffing: S_intS = {S:.2f} < S_Smin = {need:.2f} "
+                 f"(Θ_int = {th_int:.0f} °C, Θ_intS = {th_S:.0f} °C): " + ", or ".join(advice),
+                 f"ISO/TS 6336-21 scuffing: S_intS = {S:.2f} >= {need:.2f} (Θ_int = "
+                 f"{th_int:.0f} °C)", S, need, S21)]
+    if "(nearest)" in v.get("X_eps_branch", ""):
+        out.append(check("ISO_SCUFFING_CONTACT_RATIO", False, "warning",
+                         f"ISO/TS 6336-21: ε_α = {v['eps_1'] + v['eps_2']:.2f} with ε_1 = "
+                         f"{v['eps_1']:.2f}, ε_2 = {v['eps_2']:.2f} lies outside the table of "
+                         f"X_ε; the nearest branch was used: give X_eps under [iso_factors] "
+                         f"for a closer rating", "", None, None, S21))
     return out
 
 

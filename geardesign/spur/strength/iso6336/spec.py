@@ -39,6 +39,39 @@ def _gear(who: str) -> Table:
     ), required=False)
 
 
+SCUFFING = Table("scuffing", "scuffing by the integral temperature method (ISO/TS 6336-21): the "
+                 "oil and how it reaches the mesh; leave the table out for no scuffing rating", (
+    Field("fzg_load_stage", "integer", "failure load stage of the oil in the FZG A/8.3/90 test "
+          "(ISO 14635-1), from the oil's data sheet", symbol="FZG", minimum=1, maximum=14,
+          example=12, hint="\"> 12\" on a data sheet: give 12 (or 14 when the sheet says it "
+          "passed stage 14)"),
+    Field("oil_temperature", "number", "oil temperature before the mesh (sump or injection)",
+          "°C", "Θ_oil", minimum=0, maximum=150, example=70.0),
+    Field("oil_viscosity_100", "number", "kinematic viscosity of the oil at 100 °C", "mm^2/s",
+          "ν100", default=None, minimum=1.5, maximum=300,
+          hint="from iso.lubricant_viscosity with viscosity index 95 when not given"),
+    Field("oil_density", "number", "density of the oil at 15 °C", "kg/m^3", "ρ15", default=890.0,
+          minimum=700, maximum=1300),
+    Field("lubricant", "string", "base oil (lubricant factor X_L)", default="mineral",
+          choices=tuple(T.SCUFFING_X_L)),
+    Field("lubrication", "string", "how the oil reaches the mesh (X_S)", default="dip",
+          choices=tuple(T.SCUFFING_X_S)),
+    Field("meshes", "integer", "number of gears the pinion meshes with (X_mp; a planet: 2)",
+          symbol="n_p", default=1, minimum=1, maximum=12),
+    Field("driving", "string", "the driving gear (approach factor X_Q)", default="pinion",
+          choices=("pinion", "wheel")),
+    Field("structure", "string", "flank material structure for the relative welding factor "
+          "X_WrelT", default=None, choices=tuple(T.SCUFFING_X_WRELT),
+          hint="from the ISO 6336-5 material types when not given (the smaller X_WrelT of the "
+          "pair)"),
+    Field("thermal_contact_coefficient", "number", "thermal contact coefficient "
+          "√(λ ρ c) of the gear material", "N/(mm·s^0.5·K)", "B_M", default=T.B_M_STEEL,
+          minimum=1.0, maximum=60.0),
+    Field("S_Smin", "number", "required safety factor for scuffing (integral temperature)",
+          symbol="S_Smin", default=1.8, minimum=1.0, maximum=5.0),
+), required=False)
+
+
 ISO = Table("iso", "ISO 6336:2019 rating data (used when options.method or options.methods "
             "names ISO 6336:2019)", (
     Field("accuracy_grade", "integer", "flank tolerance class of ISO 1328-1:2013", symbol="A",
@@ -80,6 +113,7 @@ ISO = Table("iso", "ISO 6336:2019 rating data (used when options.method or optio
           symbol="s_pr*", default=0.0, minimum=0, maximum=0.5),
     _gear("pinion"),
     _gear("wheel"),
+    SCUFFING,
 ), required=False)
 
 _FACTORS = (
@@ -118,6 +152,18 @@ _FACTORS = (
     ("Y_X2", "size factor, bending, wheel", 0.5, 1.1),
     ("Y_M1", "mean stress influence factor, pinion", 0.5, 1.0),
     ("Y_M2", "mean stress influence factor, wheel", 0.5, 1.0),
+    ("eta_oil", "dynamic viscosity of the oil at the oil temperature [mPa·s] (scuffing)",
+     0.5, 20000.0),
+    ("K_Bgamma", "helical load factor (scuffing)", 1.0, 1.3),
+    ("X_M", "flash factor [K·N^-0.75·s^0.5·m^-0.5·mm] (scuffing)", 5.0, 200.0),
+    ("X_alphabeta", "angle factor (scuffing)", 0.8, 1.3),
+    ("X_BE", "geometry factor at the pinion tip (scuffing)", 0.0, 2.0),
+    ("X_eps", "contact ratio factor (scuffing)", 0.05, 2.0),
+    ("X_Q", "approach factor (scuffing)", 0.6, 1.0),
+    ("X_Ca", "tip relief factor (scuffing)", 1.0, 3.0),
+    ("X_E", "running-in factor (scuffing)", 1.0, 3.0),
+    ("mu_mC", "mean coefficient of friction (scuffing)", 0.005, 0.3),
+    ("X_WrelT", "relative welding factor (scuffing)", 0.3, 2.0),
 )
 ISO_FACTORS = Table("iso_factors", "ISO 6336 factors given instead of computed", tuple(
     Field(key, "number", name, symbol=key.replace("beta", "β").replace("alpha", "α")
@@ -162,6 +208,13 @@ def prepare(spec) -> None:
         problems.append(Problem("iso.pinion_offset", f"lies outside the bearing span "
                                 f"(s <= l/2 = {0.5 * iso['shaft_span']:g} mm)",
                                 iso["pinion_offset"]))
+    sc = iso.get("scuffing")
+    if sc is not None and sc["oil_viscosity_100"] is not None \
+            and sc["oil_viscosity_100"] >= iso["lubricant_viscosity"]:
+        problems.append(Problem("iso.scuffing.oil_viscosity_100", f"must be smaller than the "
+                                f"viscosity at 40 °C (iso.lubricant_viscosity = "
+                                f"{iso['lubricant_viscosity']:g} mm²/s)",
+                                sc["oil_viscosity_100"]))
     if problems:
         raise InputError(problems)
 
@@ -197,7 +250,7 @@ def gear_checks(iso: dict, geom) -> None:
 
 def iso_setting(spec, overrides: dict | None = None):
     """The :class:`~.rating.IsoSetting` of a validated, prepared spec."""
-    from geardesign.spur.strength.iso6336.rating import IsoGear, IsoSetting
+    from geardesign.spur.strength.iso6336.rating import IsoGear, IsoSetting, ScuffingSetting
 
     iso = spec.data["iso"]
     gears = tuple(IsoGear(t["material_type"], t["quality"], t["sigma_Hlim"], t["sigma_Flim"],
@@ -214,4 +267,14 @@ def iso_setting(spec, overrides: dict | None = None):
         f_pb=iso["f_pb"], f_falpha=iso["f_falpha"], F_beta=iso["F_beta"],
         S_Hmin=iso["S_Hmin"], S_Fmin=iso["S_Fmin"], limited_pitting=iso["limited_pitting"],
         optimum=iso["optimum_conditions"], protuberance=iso["protuberance"], gears=gears,
-        overrides=o)
+        overrides=o, scuffing=_scuffing(iso.get("scuffing"), ScuffingSetting))
+
+
+def _scuffing(t: dict | None, cls):
+    if t is None:
+        return None
+    return cls(fzg_load_stage=t["fzg_load_stage"], oil_temperature=t["oil_temperature"],
+               nu100=t["oil_viscosity_100"], density15=t["oil_density"],
+               lubricant=t["lubricant"], lubrication=t["lubrication"], meshes=t["meshes"],
+               driving=t["driving"], structure=t["structure"],
+               B_M=t["thermal_contact_coefficient"], S_Smin=t["S_Smin"])

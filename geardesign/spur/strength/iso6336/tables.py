@@ -140,3 +140,41 @@ HELIX_MODIFICATION = {
 
 # --- gear material density for the reduced mass [kg/mm³]: steel --------------------
 RHO_STEEL = 7.83e-6
+
+# --- scuffing, integral temperature method (ISO/TS 6336-21:2017, ISO/TR 13989-2:2000) -----
+# Pinion torque T_1T [N·m] of the FZG A/8.3/90 load stages 1 to 14 (ISO 14635-1, load arm
+# 0.5 m), as tabulated in C. Fernandes, Gear-Calculation, file GearC/LoadStage.py
+# ([Fernandes2020]); stage 14 reproduces KISSsoft's integral scuffing temperature 455.17 °C
+# for ν40 = 220 mm²/s ([KISSsoft2017], stage 3).
+FZG_TORQUE = {1: 3.3, 2: 13.7, 3: 35.25, 4: 60.75, 5: 94.1, 6: 135.3, 7: 183.35, 8: 239.25,
+              9: 302.0, 10: 372.7, 11: 450.1, 12: 534.5, 13: 626.9333, 14: 714.2}
+
+# Lubricant factor X_L of the mean coefficient of friction and of the test temperatures, by
+# the base oil ([ISO6336-21], X_L).
+SCUFFING_X_L = {"mineral": 1.0, "polyalphaolefin": 0.8, "polyglycol": 0.7,
+                "polyglycol_water_soluble": 0.6, "traction_fluid": 1.5, "phosphate_ester": 1.3}
+
+# Lubrication factor X_S of the bulk temperature, by the way the oil reaches the mesh
+# ([ISO6336-21], X_S): dip (oil bath) 1.0, spray 1.2, gears submerged in oil 0.2.
+SCUFFING_X_S = {"dip": 1.0, "spray": 1.2, "submerged": 0.2}
+
+# Relative welding factor X_WrelT by the material and treatment of the flanks
+# ([ISO6336-21], X_WrelT); the ISO 6336-5 material types map on the first column.
+SCUFFING_X_WRELT = {"through_hardened": 1.00, "phosphated": 1.25, "copper_plated": 1.50,
+                    "nitrided": 1.50, "carburized_low_austenite": 1.15, "carburized": 1.00,
+                    "carburized_high_austenite": 0.85, "austenitic": 0.45}
+SCUFFING_STRUCTURE = {"St": "through_hardened", "St_cast": "through_hardened",
+                      "GTS": "through_hardened", "GGG": "through_hardened",
+                      "GGG_ferr": "through_hardened", "GG": "through_hardened",
+                      "V": "through_hardened", "V_alloy": "through_hardened",
+                      "V_cast": "through_hardened", "V_cast_alloy": "through_hardened",
+                      "Eh": "carburized", "IF": "through_hardened", "NT": "nitrided",
+                      "NV": "nitrided", "NV_nitrocar": "nitrided"}
+
+# Thermal contact coefficient B_M = √(λ_M·ρ_M·c_M) of steel [N/(mm·s^½·K)], the value
+# KISSsoft prints for the NREL steels ([KISSsoft2017], stage 3: B_M 13.780).
+B_M_STEEL = 13.78
+
+# Volumetric thermal expansion of mineral oils [1/K] for the density at the oil temperature
+# (the coefficient of the density-temperature tables of petroleum products, DIN 51757).
+OIL_EXPANSION = 0.0007
