@@ -7,6 +7,8 @@ from __future__ import annotations
 
 import math
 
+from geardesign.core import xp
+
 
 def inv(alpha: float) -> float:
     """Involute function.
@@ -21,7 +23,7 @@ def inv(alpha: float) -> float:
     ----------
     GOST 16532-70 (notation inv α); ISO 21771:2007 (involute function).
     """
-    return math.tan(alpha) - alpha
+    return xp.tan(alpha) - alpha
 
 
 def inv_inverse(value: float, tol: float = 1e-12) -> float:
@@ -75,3 +77,38 @@ def inv_inverse(value: float, tol: float = 1e-12) -> float:
             theta_new = 0.5 * (lo + hi)
         theta = theta_new
     raise ValueError(f"inverse involute of {value!r} did not converge")
+
+
+def inv_inverse_array(value, tol: float = 1e-12):
+    """:func:`inv_inverse` of a numpy array of values > 0, element by element the same
+    safeguarded Newton iteration (each element stops at its own step below ``tol``)."""
+    import numpy as np
+
+    v = np.asarray(value, dtype=float)
+    if not np.all(v > 0.0) or not np.all(np.isfinite(v)):
+        raise ValueError("the inverse involute needs values > 0")
+    lo = np.zeros_like(v)
+    hi = np.full_like(v, 0.5 * math.pi)
+    theta = np.minimum(np.cbrt(3.0 * v), 1.5)
+    out = np.full_like(v, np.nan)
+    todo = np.ones(v.shape, dtype=bool)
+    for _ in range(200):
+        t = np.tan(theta[todo])
+        f = t - theta[todo] - v[todo]
+        up = f > 0.0
+        h, lw = hi[todo], lo[todo]
+        h[up] = theta[todo][up]
+        lw[~up] = theta[todo][~up]
+        hi[todo], lo[todo] = h, lw
+        step = f / (t * t)
+        idx = np.flatnonzero(todo)
+        fin = np.abs(step) < tol
+        out[idx[fin]] = theta[idx[fin]] - step[fin]
+        new = theta[todo] - step
+        bad = ~((lw < new) & (new < h))
+        new[bad] = 0.5 * (lw[bad] + h[bad])
+        theta[todo] = new
+        todo[idx[fin]] = False
+        if not todo.any():
+            return out
+    raise ValueError("inverse involute did not converge")

@@ -16,7 +16,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from geardesign.involute import inv, inv_inverse
+from geardesign.core import xp
+from geardesign.involute import inv, inv_inverse, inv_inverse_array
 
 
 class GeometryError(ValueError):
@@ -149,8 +150,8 @@ def transverse_angles(alpha_n: float, beta: float) -> tuple[float, float]:
 
     GOST 16532-70, table 1; ISO 21771:2007.
     """
-    alpha_t = math.atan(math.tan(alpha_n) / math.cos(beta))
-    beta_b = math.asin(math.sin(beta) * math.cos(alpha_n))
+    alpha_t = xp.atan(xp.tan(alpha_n) / xp.cos(beta))
+    beta_b = xp.asin(xp.sin(beta) * math.cos(alpha_n))
     return alpha_t, beta_b
 
 
@@ -163,7 +164,7 @@ def undercut_shift_limit(z: int, alpha_t: float, beta: float, rack: BasicRack) -
     References: GOST 16532-70 (quality checks); ZPCIL ``GEOM.h`` ([ZPCIL] GEOM.h).  The worm
     calculator uses it for the wheel's mid-plane (β = 0, α_t = α_x).
     """
-    return rack.h_straight - z * math.sin(alpha_t) ** 2 / (2.0 * math.cos(beta))
+    return rack.h_straight - z * xp.sin(alpha_t) ** 2 / (2.0 * xp.cos(beta))
 
 
 def working_pressure_angle(x_sum: float, z1: int, z2: int, alpha_n: float, alpha_t: float) -> float:
@@ -295,11 +296,91 @@ def tip_thickness(z: int, x: float, d: float, d_a: float, alpha_t: float, alpha_
     α_t, α_n transverse and normal pressure angles, β helix angle [rad]; a value <= 0 is a
     pointed tooth.  [GOST16532]
     """
-    d_b = d * math.cos(alpha_t)
-    alpha_a = math.acos(min(d_b / d_a, 1.0))
-    beta_a = math.atan(math.tan(beta) * d_a / d)
+    d_b = d * xp.cos(alpha_t)
+    alpha_a = xp.acos(xp.minimum(d_b / d_a, 1.0))
+    beta_a = xp.atan(xp.tan(beta) * d_a / d)
     return d_a * ((0.5 * math.pi + 2.0 * x * math.tan(alpha_n)) / z + inv(alpha_t)
-                  - inv(alpha_a)) * math.cos(beta_a)
+                  - inv(alpha_a)) * xp.cos(beta_a)
+
+
+GEAR_FIELDS = ("z", "x", "d", "d_b", "d_w", "d_a", "d_f", "h", "alpha_a", "rho_a", "rho_l",
+               "x_min", "s_n", "s_an", "rho_p", "d_l", "d_p")
+GEAR_KEYS = tuple(tuple(f + str(i) for f in GEAR_FIELDS) for i in (1, 2))
+"""The per-gear keys of :func:`pair_core` (``d_a1``, ``d_a2``, …)."""
+
+
+def pair_core(m_n, z1, z2, x1, x2, beta, b_w, rack: BasicRack, tip_shortening: bool = True
+              ) -> dict:
+    """The formulas of :func:`pair_geometry` (see there) for Python numbers or numpy arrays of
+    candidates: a dict of the pair values and the per-gear values with suffix 1/2.
+
+    For numbers it raises :class:`GeometryError` as :func:`pair_geometry` does; for arrays
+    it marks the candidates that admit no pair in ``valid`` (inv α_tw <= 0, a tip inside
+    its base circle) and computes the others (the invalid ones carry meaningless numbers).
+    """
+    scalar = xp.scalar(m_n, z1, z2, x1, x2, beta, b_w)
+    alpha_n = rack.alpha_n
+    alpha_t, beta_b = transverse_angles(alpha_n, beta)
+    m_t = m_n / xp.cos(beta)
+    u = z2 / z1
+    x_sum = x1 + x2
+    c: dict = {}
+    if scalar:
+        alpha_tw = working_pressure_angle(x_sum, z1, z2, alpha_n, alpha_t)
+        valid = True
+    else:
+        import numpy as np
+
+        value = 2.0 * x_sum * math.tan(alpha_n) / (z1 + z2) + inv(alpha_t)
+        valid = value > 0.0
+        alpha_tw = inv_inverse_array(np.where(valid, value, 1e-3))
+    d1, d2 = z1 * m_t, z2 * m_t
+    a = 0.5 * (d1 + d2)
+    a_w = a * xp.cos(alpha_t) / xp.cos(alpha_tw)
+    y = (a_w - a) / m_n
+    dy = x_sum - y
+    g_w = a_w * xp.sin(alpha_tw)
+    p_bt = math.pi * m_t * xp.cos(alpha_t)
+    p_bn = math.pi * m_n * math.cos(alpha_n)
+    d_w = (2.0 * a_w / (u + 1.0), 2.0 * a_w * u / (u + 1.0))
+    hl = rack.h_straight  # h_l* − h_a* in GOST 16532 notation (1.0 for the GOST 13755 rack)
+    sin_at = xp.sin(alpha_t)
+    for i, (z, x, d) in enumerate(((z1, x1, d1), (z2, x2, d2))):
+        k = str(i + 1)
+        d_b = d * xp.cos(alpha_t)
+        d_a = d + 2.0 * (rack.h_a + x - (dy if tip_shortening else 0.0)) * m_n
+        d_f = d - 2.0 * (rack.h_a + rack.c - x) * m_n
+        if scalar and d_a <= d_b:
+            raise GeometryError(f"TIP_INSIDE_BASE_{k}",
+                                f"tip circle d_a{k} = {d_a:.4f} mm lies inside the base circle "
+                                f"d_b{k} = {d_b:.4f} mm", d_a, d_b)
+        if not scalar:
+            valid = valid & (d_a > d_b)
+        alpha_a = xp.acos(xp.minimum(d_b / d_a, 1.0))
+        c.update({"z" + k: z, "x" + k: x, "d" + k: d, "d_b" + k: d_b, "d_w" + k: d_w[i],
+                  "d_a" + k: d_a, "d_f" + k: d_f, "h" + k: 0.5 * (d_a - d_f),
+                  "alpha_a" + k: alpha_a, "rho_a" + k: 0.5 * d_b * xp.tan(alpha_a),
+                  "rho_l" + k: 0.5 * d * sin_at - (hl - x) * m_n / sin_at,
+                  "x_min" + k: undercut_shift_limit(z, alpha_t, beta, rack),
+                  "s_n" + k: m_n * (0.5 * math.pi + 2.0 * x * math.tan(alpha_n)),
+                  "s_an" + k: tip_thickness(z, x, d, d_a, alpha_t, alpha_n, beta)})
+    c["rho_p1"] = g_w - c["rho_a2"]
+    c["rho_p2"] = g_w - c["rho_a1"]
+    for k in "12":
+        c["d_l" + k] = 2.0 * xp.hypot(0.5 * c["d_b" + k], xp.maximum(c["rho_l" + k], 0.0))
+        c["d_p" + k] = 2.0 * xp.hypot(0.5 * c["d_b" + k], c["rho_p" + k])
+    g_alpha = c["rho_a1"] + c["rho_a2"] - g_w
+    eps_alpha = g_alpha / p_bt
+    eps_alpha_z = (z1 * (xp.tan(c["alpha_a1"]) - xp.tan(alpha_tw))
+                   + z2 * (xp.tan(c["alpha_a2"]) - xp.tan(alpha_tw))) / (2.0 * math.pi)
+    eps_beta = b_w * xp.sin(beta) / (math.pi * m_n)
+    c.update(u=u, m_t=m_t, alpha_t=alpha_t, beta_b=beta_b, alpha_tw=alpha_tw, a=a, a_w=a_w,
+             x_sum=x_sum, y=y, dy=dy, g_w=g_w, g_alpha=g_alpha, p_bt=p_bt, p_bn=p_bn,
+             eps_alpha=eps_alpha, eps_alpha_z=eps_alpha_z, eps_beta=eps_beta,
+             eps_gamma=eps_alpha + eps_beta,
+             c_12=a_w - 0.5 * (c["d_a1"] + c["d_f2"]), c_21=a_w - 0.5 * (c["d_a2"] + c["d_f1"]),
+             valid=valid)
+    return c
 
 
 def pair_geometry(p: PairInput) -> PairGeometry:
@@ -327,64 +408,21 @@ def pair_geometry(p: PairInput) -> PairGeometry:
     ------
     GeometryError if inv α_tw <= 0 or a tip circle lies inside its base circle.
     """
-    rack = p.rack
-    alpha_n = rack.alpha_n
-    alpha_t, beta_b = transverse_angles(alpha_n, p.beta)
-    m_t = p.m_n / math.cos(p.beta)
-    u = p.z2 / p.z1
-    x_sum = p.x1 + p.x2
-    alpha_tw = working_pressure_angle(x_sum, p.z1, p.z2, alpha_n, alpha_t)
-    d1, d2 = p.z1 * m_t, p.z2 * m_t
-    a = 0.5 * (d1 + d2)
-    a_w = a * math.cos(alpha_t) / math.cos(alpha_tw)
-    y = (a_w - a) / p.m_n
-    dy = x_sum - y
-    g_w = a_w * math.sin(alpha_tw)
-    p_bt = math.pi * m_t * math.cos(alpha_t)
-    p_bn = math.pi * p.m_n * math.cos(alpha_n)
-    d_w = (2.0 * a_w / (u + 1.0), 2.0 * a_w * u / (u + 1.0))
-    hl = rack.h_straight  # h_l* − h_a* in GOST 16532 notation (1.0 for the GOST 13755 rack)
-    sin_at = math.sin(alpha_t)
-
-    partial = []
-    for i, (z, x, d) in enumerate(((p.z1, p.x1, d1), (p.z2, p.x2, d2))):
-        d_b = d * math.cos(alpha_t)
-        d_a = d + 2.0 * (rack.h_a + x - (dy if p.tip_shortening else 0.0)) * p.m_n
-        d_f = d - 2.0 * (rack.h_a + rack.c - x) * p.m_n
-        if d_a <= d_b:
-            raise GeometryError(f"TIP_INSIDE_BASE_{i + 1}",
-                                f"tip circle d_a{i + 1} = {d_a:.4f} mm lies inside the base circle "
-                                f"d_b{i + 1} = {d_b:.4f} mm", d_a, d_b)
-        alpha_a = math.acos(d_b / d_a)
-        rho_a = 0.5 * d_b * math.tan(alpha_a)
-        rho_l = 0.5 * d * sin_at - (hl - x) * p.m_n / sin_at
-        x_min = undercut_shift_limit(z, alpha_t, p.beta, rack)
-        s_n = p.m_n * (0.5 * math.pi + 2.0 * x * math.tan(alpha_n))
-        s_an = tip_thickness(z, x, d, d_a, alpha_t, alpha_n, p.beta)
-        partial.append(dict(z=z, x=x, d=d, d_b=d_b, d_w=d_w[i], d_a=d_a, d_f=d_f, h=0.5 * (d_a - d_f),
-                            alpha_a=alpha_a, rho_a=rho_a, rho_l=rho_l, x_min=x_min, s_n=s_n,
-                            s_an=s_an))
-    r1, r2 = partial
-    r1["rho_p"] = g_w - r2["rho_a"]
-    r2["rho_p"] = g_w - r1["rho_a"]
+    c = pair_core(p.m_n, p.z1, p.z2, p.x1, p.x2, p.beta, p.b_w, p.rack, p.tip_shortening)
+    alpha_n, alpha_t, beta_b = p.rack.alpha_n, c["alpha_t"], c["beta_b"]
+    partial = [{k[:-1]: c[k] for k in GEAR_KEYS[i]} for i in range(2)]
     for r in partial:
-        r["d_l"] = 2.0 * math.hypot(0.5 * r["d_b"], max(r["rho_l"], 0.0))
-        r["d_p"] = 2.0 * math.hypot(0.5 * r["d_b"], r["rho_p"])
         r["k"], r["W"], r["d_W"] = choose_span_teeth(
             r["z"], r["x"], p.m_n, alpha_n, alpha_t, beta_b, r["d"], r["d_b"],
             max(r["d_p"], r["d_l"]), r["d_a"], p.b_w)
+    r1, r2 = partial
     g1, g2 = GearGeometry(**r1), GearGeometry(**r2)
 
-    g_alpha = g1.rho_a + g2.rho_a - g_w
-    eps_alpha = g_alpha / p_bt
-    eps_alpha_z = (p.z1 * (math.tan(g1.alpha_a) - math.tan(alpha_tw))
-                   + p.z2 * (math.tan(g2.alpha_a) - math.tan(alpha_tw))) / (2.0 * math.pi)
-    eps_beta = p.b_w * math.sin(p.beta) / (math.pi * p.m_n)
     return PairGeometry(
-        inp=p, u=u, m_t=m_t, alpha_t=alpha_t, beta_b=beta_b, alpha_tw=alpha_tw, a=a, a_w=a_w,
-        x_sum=x_sum, y=y, dy=dy, g_w=g_w, g_alpha=g_alpha, p_bt=p_bt, p_bn=p_bn,
-        eps_alpha=eps_alpha, eps_alpha_z=eps_alpha_z, eps_beta=eps_beta,
-        eps_gamma=eps_alpha + eps_beta,
-        c_12=a_w - 0.5 * (g1.d_a + g2.d_f), c_21=a_w - 0.5 * (g2.d_a + g1.d_f),
+        inp=p, u=c["u"], m_t=c["m_t"], alpha_t=alpha_t, beta_b=beta_b, alpha_tw=c["alpha_tw"],
+        a=c["a"], a_w=c["a_w"], x_sum=c["x_sum"], y=c["y"], dy=c["dy"], g_w=c["g_w"],
+        g_alpha=c["g_alpha"], p_bt=c["p_bt"], p_bn=c["p_bn"], eps_alpha=c["eps_alpha"],
+        eps_alpha_z=c["eps_alpha_z"], eps_beta=c["eps_beta"], eps_gamma=c["eps_gamma"],
+        c_12=c["c_12"], c_21=c["c_21"],
         g1=g1, g2=g2,
     )

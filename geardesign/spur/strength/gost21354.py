@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 
+from geardesign.core import xp
 from geardesign.spur.strength import tables as T
 
 # ----------------------------------------------------------------------------- contact
@@ -25,7 +26,7 @@ def z_e(E1: float, nu1: float, E2: float, nu2: float) -> float:
     189.8 √MPa for two steels with E = 2.06·10⁵ MPa, ν = 0.3 (GOST 21354-87 tabulates 190).
     References: GOST 21354-87 (table 6 item 1 per ZPCIL ``CONTAU.h``); ISO 6336-2 eq. (4).
     """
-    return math.sqrt(1.0 / (math.pi * ((1 - nu1 ** 2) / E1 + (1 - nu2 ** 2) / E2)))
+    return xp.sqrt(1.0 / (math.pi * ((1 - nu1 ** 2) / E1 + (1 - nu2 ** 2) / E2)))
 
 
 def z_h(beta_b: float, alpha_t: float, alpha_tw: float) -> float:
@@ -37,7 +38,7 @@ def z_h(beta_b: float, alpha_t: float, alpha_tw: float) -> float:
     [ZPCIL] CONTAU.h (the textbook pairing with d_w1 understates σ_H of
     shifted pairs by cos α_tw/cos α_t).
     """
-    return math.sqrt(2.0 * math.cos(beta_b) / math.tan(alpha_tw)) / math.cos(alpha_t)
+    return xp.sqrt(2.0 * xp.cos(beta_b) / xp.tan(alpha_tw)) / xp.cos(alpha_t)
 
 
 def z_eps(eps_alpha: float, eps_beta: float) -> float:
@@ -50,11 +51,11 @@ def z_eps(eps_alpha: float, eps_beta: float) -> float:
 
     References: GOST 21354-87; ZPCIL ``GEOM.h``; [GOST21354].
     """
-    if eps_beta <= 0.0:
-        return math.sqrt((4.0 - eps_alpha) / 3.0)
-    if eps_beta < 1.0:
-        return math.sqrt((4.0 - eps_alpha) * (1.0 - eps_beta) / 3.0 + eps_beta / eps_alpha)
-    return math.sqrt(1.0 / eps_alpha)
+    spur = xp.sqrt(xp.maximum((4.0 - eps_alpha) / 3.0, 0.0))
+    low = xp.sqrt(xp.maximum((4.0 - eps_alpha) * (1.0 - eps_beta) / 3.0 + eps_beta / eps_alpha,
+                             0.0))
+    return xp.where(eps_beta <= 0.0, spur,
+                    xp.where(eps_beta < 1.0, low, xp.sqrt(1.0 / eps_alpha)))
 
 
 def sigma_h(Z_E: float, Z_H: float, Z_eps: float, F_t: float, K_H: float, u: float,
@@ -70,7 +71,7 @@ def sigma_h(Z_E: float, Z_H: float, Z_eps: float, F_t: float, K_H: float, u: flo
     ISO 6336-2 §5 (u < 0 for internal gears); [GOST21354].
     """
     s = -1.0 if internal else 1.0
-    return Z_E * Z_H * Z_eps * math.sqrt(F_t * K_H * (u + s) / (b_w * d1 * u))
+    return Z_E * Z_H * Z_eps * xp.sqrt(F_t * K_H * (u + s) / (b_w * d1 * u))
 
 
 def n_hg(HB: float) -> float:
@@ -78,7 +79,7 @@ def n_hg(HB: float) -> float:
 
     References: GOST 21354-87 (ZPCIL ``CONTAU.h`` «ГОСТ стр.24»; MATLAB DANNYE).
     """
-    return min(30.0 * HB ** 2.4, 1.2e8)
+    return xp.minimum(30.0 * HB ** 2.4, 1.2e8)
 
 
 def z_n(N_HG: float, N_HE: float, Z_N_max: float) -> float:
@@ -91,9 +92,8 @@ def z_n(N_HG: float, N_HE: float, Z_N_max: float) -> float:
     References: GOST 21354-87; ZPCIL ``ZLIFE.h``, ``CONTAU.h`` (floor 0.75);
     [ZPCIL] SGMHLB.h, CONTAU.h; [DANNYE].
     """
-    if N_HE <= N_HG:
-        return min((N_HG / N_HE) ** (1.0 / 6.0), Z_N_max)
-    return max((N_HG / N_HE) ** (1.0 / 20.0), 0.75)
+    return xp.where(N_HE <= N_HG, xp.minimum((N_HG / N_HE) ** (1.0 / 6.0), Z_N_max),
+                    xp.maximum((N_HG / N_HE) ** (1.0 / 20.0), 0.75))
 
 
 def z_v(v: float, soft: bool) -> float:
@@ -101,9 +101,7 @@ def z_v(v: float, soft: bool) -> float:
 
     References: GOST 21354-87; ZPCIL ``ZV.h``; [ZPCIL] (Z_v row).
     """
-    if v <= 5.0:
-        return 1.0
-    return 0.85 * v ** 0.1 if soft else 0.925 * v ** 0.05
+    return xp.where(v <= 5.0, 1.0, xp.where(soft, 0.85 * v ** 0.1, 0.925 * v ** 0.05))
 
 
 def z_r(Ra: float) -> float:
@@ -120,7 +118,7 @@ def z_x(d: float) -> float:
 
     References: GOST 21354-87; ZPCIL ``CONTAU.h``.
     """
-    return min(1.0, max(0.75, math.sqrt(max(1.07 - 1e-4 * d, 0.0))))
+    return xp.minimum(1.0, xp.maximum(0.75, xp.sqrt(xp.maximum(1.07 - 1e-4 * d, 0.0))))
 
 
 def sigma_hp_pair(s1: float, s2: float, helical: bool) -> float:
@@ -179,30 +177,27 @@ def y_beta(eps_beta: float, beta: float) -> float:
 
     References: GOST 21354-87; ZPCIL ``IZGIBU.h``.
     """
-    return max(1.0 - eps_beta * math.degrees(beta) / 120.0, 0.7)
+    return xp.maximum(1.0 - eps_beta * (beta * (180.0 / math.pi)) / 120.0, 0.7)
 
 
 def y_eps(eps_alpha: float, eps_beta: float) -> float:
     """Contact ratio factor for bending Y_ε: 1 (spur), 0.2 + 0.8/ε_α (0 < ε_β ≤ 1),
     1/ε_α (ε_β > 1).  References: GOST 21354-87; ZPCIL ``IZGIBU.h``;
     [ZPCIL] IZGIBU.h, YLIFE.h."""
-    if eps_beta <= 0.0:
-        return 1.0
-    if eps_beta <= 1.0:
-        return 0.2 + 0.8 / eps_alpha
-    return 1.0 / eps_alpha
+    return xp.where(eps_beta <= 0.0, 1.0,
+                    xp.where(eps_beta <= 1.0, 0.2 + 0.8 / eps_alpha, 1.0 / eps_alpha))
 
 
 def y_delta(m: float) -> float:
     """Notch sensitivity factor Y_δ = 1.082 − 0.172·lg m (m [mm]).
     GOST 21354-87; ZPCIL ``IZGIBU.h``."""
-    return 1.082 - 0.172 * math.log10(m)
+    return 1.082 - 0.172 * xp.log10(m)
 
 
 def y_x(d: float) -> float:
     """Size factor for bending Y_X = 1.05 − 1.25·10⁻⁴·d ≥ 0.8 (d [mm]).
     GOST 21354-87; ZPCIL ``IZGIBU.h`` (the textbook 1.03 − 0.006m is ISO 6336-3)."""
-    return max(1.05 - 1.25e-4 * d, 0.8)
+    return xp.maximum(1.05 - 1.25e-4 * d, 0.8)
 
 
 def y_a(gamma_A: float, reverse_ratio: float) -> float:
@@ -225,9 +220,8 @@ def y_n(N_FE: float, q_F: int, N_FG: float = N_FG) -> float:
     References: GOST 21354-87; ZPCIL ``YLIFE.h`` (which continues below 1 beyond N_FG
     with an exponent 0.05, a plant option; GOST keeps Y_N = 1).
     """
-    if N_FE >= N_FG:
-        return 1.0
-    return min((N_FG / N_FE) ** (1.0 / q_F), 4.0 if q_F == 6 else 2.5)
+    cap = xp.where(q_F == 6, 4.0, 2.5)
+    return xp.where(N_FE >= N_FG, 1.0, xp.minimum((N_FG / N_FE) ** (1.0 / q_F), cap))
 
 
 def sigma_f(F_t: float, K_F: float, b_w: float, m_n: float, Y_FS: float, Y_beta: float,
@@ -247,7 +241,7 @@ def sigma_f(F_t: float, K_F: float, b_w: float, m_n: float, Y_FS: float, Y_beta:
 
 def module_class(m: float) -> int:
     lo, hi = T.MODULE_CLASSES
-    return 0 if m <= lo else (1 if m <= hi else 2)
+    return xp.where(m <= lo, 0, xp.where(m <= hi, 1, 2))
 
 
 def dynamic_load(delta: float, grade: int, m: float, v: float, a_w: float, u: float) -> float:
@@ -261,7 +255,8 @@ def dynamic_load(delta: float, grade: int, m: float, v: float, a_w: float, u: fl
     product of the textbook pairing is 10× too large).
     """
     j = module_class(m)
-    return min(delta * T.G0[grade][j] * v * math.sqrt(a_w / u), T.W_MAX[grade][j])
+    return xp.minimum(delta * xp.take(T.G0[grade], j) * v * xp.sqrt(a_w / u),
+                      xp.take(T.W_MAX[grade], j))
 
 
 def k_v(w_v: float, b_w: float, F_t: float, K_A: float) -> float:
@@ -322,7 +317,7 @@ def mesh_stiffness(z_v1: float, z_v2: float, x1: float, x2: float) -> float:
 def base_pitch_deviation(m: float, d: float, grade: int) -> float:
     """Limit base pitch deviation f_pb [µm] (GOST 1643-81 tolerance as fitted by ZPCIL
     ``FPB.h``): f_pb = (1.25m + 0.31√d + 16)·0.94·1.4^(n − 8)."""
-    return (1.25 * m + 0.31 * math.sqrt(d) + 16.0) * 0.94 * 1.4 ** (grade - 8)
+    return (1.25 * m + 0.31 * xp.sqrt(d) + 16.0) * 0.94 * 1.4 ** (grade - 8)
 
 
 def tooth_direction_tolerance(b: float, grade: int) -> float:
@@ -347,21 +342,18 @@ def k_alpha(eps_alpha: float, eps_beta: float, c_gamma: float, b_w: float, f_pb:
     """
     eps_gamma = eps_alpha + eps_beta
     C = c_gamma * b_w * a_alpha * f_pb / (F_t * K_A * K_v * K_beta)
-    if eps_gamma >= 2.0:
-        k = 0.9 + 0.4 * C * math.sqrt(2.0 * (eps_gamma - 1.0) / eps_gamma)
-    else:
-        k = eps_gamma * (0.9 + 0.4 * C) / 2.0
-    return max(k, 1.0)
+    k = xp.where(eps_gamma >= 2.0,
+                 0.9 + 0.4 * C * xp.sqrt(xp.maximum(2.0 * (eps_gamma - 1.0) / eps_gamma, 0.0)),
+                 eps_gamma * (0.9 + 0.4 * C) / 2.0)
+    return xp.maximum(k, 1.0)
 
 
 def k_h_alpha_max(eps_alpha: float, eps_beta: float, Z_eps: float) -> float:
     """Upper limit of K_Hα: ε_γ/(ε_α Z_ε²) for ε_β < 1; 0.95ε_α for ε_β < ε_α;
     0.95ε_α²/ε_β otherwise.  ZPCIL ``CONTAU.h``."""
-    if eps_beta < 1.0:
-        return (eps_alpha + eps_beta) / (eps_alpha * Z_eps * Z_eps)
-    if eps_beta < eps_alpha:
-        return 0.95 * eps_alpha
-    return 0.95 * eps_alpha * eps_alpha / eps_beta
+    return xp.where(eps_beta < 1.0, (eps_alpha + eps_beta) / (eps_alpha * Z_eps * Z_eps),
+                    xp.where(eps_beta < eps_alpha, 0.95 * eps_alpha,
+                             0.95 * eps_alpha * eps_alpha / xp.maximum(eps_beta, 1.0)))
 
 
 def k_f_alpha_max(eps_alpha: float, eps_beta: float) -> float:
@@ -383,7 +375,7 @@ def limited(k: float, k_max: float) -> tuple[float, bool]:
     than its load.  Returns the factor and whether the cap was active.
     """
     capped = k > k_max
-    return max(1.0, min(k, k_max)), capped
+    return xp.maximum(1.0, xp.minimum(k, k_max)), capped
 
 
 # ----------------------------------------------------------------------------- peak loads

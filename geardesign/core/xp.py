@@ -1,0 +1,88 @@
+"""One formula for floats and arrays: the elementary functions a formula module calls, taken
+from :mod:`math` for Python numbers and from numpy for arrays.
+
+A rating formula written with these runs unchanged in the scalar calculator (plain floats,
+no numpy import, no overhead beyond a type test) and in the sweep kernel (numpy arrays of
+candidates, one call per chunk), so that one formula change reaches both paths.  numpy is
+imported only when an array arrives.
+
+Branches: :func:`where` picks ``a`` or ``b`` by a condition; for arrays both sides are
+evaluated (the kernel silences the warnings of the side it does not keep).
+"""
+
+from __future__ import annotations
+
+import math
+
+_SCALARS = (int, float)
+
+
+def _np():
+    import numpy
+
+    return numpy
+
+
+def scalar(*xs) -> bool:
+    """Whether every argument is a Python number (bool included)."""
+    return all(isinstance(x, _SCALARS) for x in xs)
+
+
+def sqrt(x):
+    return math.sqrt(x) if isinstance(x, _SCALARS) else _np().sqrt(x)
+
+
+def sin(x):
+    return math.sin(x) if isinstance(x, _SCALARS) else _np().sin(x)
+
+
+def cos(x):
+    return math.cos(x) if isinstance(x, _SCALARS) else _np().cos(x)
+
+
+def tan(x):
+    return math.tan(x) if isinstance(x, _SCALARS) else _np().tan(x)
+
+
+def acos(x):
+    return math.acos(x) if isinstance(x, _SCALARS) else _np().arccos(x)
+
+
+def asin(x):
+    return math.asin(x) if isinstance(x, _SCALARS) else _np().arcsin(x)
+
+
+def atan(x):
+    return math.atan(x) if isinstance(x, _SCALARS) else _np().arctan(x)
+
+
+def log10(x):
+    return math.log10(x) if isinstance(x, _SCALARS) else _np().log10(x)
+
+
+def hypot(x, y):
+    return math.hypot(x, y) if scalar(x, y) else _np().hypot(x, y)
+
+
+def minimum(a, b):
+    return min(a, b) if scalar(a, b) else _np().minimum(a, b)
+
+
+def maximum(a, b):
+    return max(a, b) if scalar(a, b) else _np().maximum(a, b)
+
+
+def where(cond, a, b):
+    """``a`` where ``cond`` holds, else ``b``: a Python conditional for a scalar condition,
+    ``numpy.where`` for an array."""
+    if isinstance(cond, (bool, int)) or type(cond).__name__ == "bool_":
+        return a if cond else b
+    return _np().where(cond, a, b)
+
+
+def take(table, index):
+    """``table[index]`` for an integer index, ``numpy.asarray(table)[index]`` for an array of
+    indices (a row of a data table chosen per candidate)."""
+    if isinstance(index, int):
+        return table[index]
+    return _np().asarray(table)[index]
