@@ -40,7 +40,7 @@ def _gear_steel_rows() -> list[dict]:
                 "iso6336_5": steel.get("iso6336_5", {}).get(t),
                 "equivalents": list(steel.get("equivalents", [])),
                 "section": steel.get("section"),
-                "source": steel.get("source", f"{steel['standard']}; [GOST21354] allowables"),
+                "source": G.source_of(grade),
             })
     return out
 
