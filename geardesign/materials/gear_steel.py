@@ -216,7 +216,7 @@ def resolve(m: dict, key: str) -> GearMaterial:
             hint = f" (did you mean {', '.join(repr(c) for c in close)}?)" if close else ""
             raise InputError.at(f"{key}.grade", m["grade"],
                                 f"unknown steel{hint}; known: {', '.join(lib['steel'])} (and "
-                                f"equivalents such as C45, 41Cr4, 4140: `geardesign materials` "
+                                f"equivalents such as 41Cr4, 4140, 1045: `geardesign materials` "
                                 f"lists them); or leave out grade and give the properties")
         if treat_key not in steel["treatments"]:
             raise InputError.at(f"{key}.treatment", treat_key,
@@ -325,10 +325,13 @@ def resolve(m: dict, key: str) -> GearMaterial:
 
 def source_of(grade: str) -> str:
     """Where the numbers of library grade ``grade`` were read: the row's ``source``, or for
-    the GOST rows (which carry none) the standard of the blank strength and [GOST21354] for
-    the allowables of the treatment table."""
+    the GOST rows (which carry none) the standard of the blank strength, [Dunaev] table 2.1
+    for the hardness bands of improved blanks and [GOST21354] for the allowables of the
+    treatment table (see the comment of ``gear_steel.toml``)."""
     steel = library()["steel"][grade]
-    return steel.get("source", f"{steel['standard']}; [GOST21354] allowables")
+    return steel.get("source", f"σ_T: {steel['standard']} test piece, of improved blanks by "
+                               f"hardness band after [Dunaev] table 2.1 (unverified); "
+                               f"allowables [GOST21354]")
 
 
 def data_used(m: GearMaterial) -> str:
