@@ -7,6 +7,7 @@ Tolerance: the values are stored as printed (MPa), or converted from ksi and rou
 """
 
 import json
+from pathlib import Path
 
 import pytest
 
@@ -15,6 +16,7 @@ from geardesign.materials import worm_wheel as W
 from tests.helpers_cli import cli
 
 KSI = 6.894757  # MPa per ksi
+ROOT = Path(__file__).resolve().parent.parent
 
 
 def _sigma_T(grade: str, treatment: str) -> list[tuple[float, float]]:
@@ -173,3 +175,37 @@ def test_spur_pair_of_18CrNiMo7_6_runs_by_both_methods(tmp_path, options, sectio
     assert mats["material1_source"].startswith("library row 18CrNiMo7-6: EN 10084")
     if "iso6336_materials" in doc["results"]:
         assert doc["results"]["iso6336_materials"]["type1"] == "Eh"
+
+
+def test_unknown_grade_in_a_spec_gets_did_you_mean():
+    m = {"grade": "18CrNiMo7", "treatment": "carburized", "hardness_HB": None,
+         "hardness_HRC": 60.0, "hardness_HV": None, "core_HRC": None, "blank": "forging",
+         "root_ground": False}
+    with pytest.raises(Exception) as exc:
+        G.resolve(m, "material.pinion")
+    assert "did you mean '18CrNiMo7-6'" in str(exc.value)
+
+
+def test_worm_report_names_the_wheel_row_and_its_source(tmp_path):
+    text = (ROOT / "specs" / "worm_single_start_reducer.toml").read_text(encoding="utf-8")
+    spec = tmp_path / "w.toml"
+    spec.write_text(text.replace('"BrO10F1_chill"', '"CuSn12-C-GZ"'), encoding="utf-8")
+    code, out, err = cli("run", str(spec), "--format", "json")
+    assert code in (0, 1), err
+    st = json.loads(out)["results"]["strength"]
+    assert (st["material"], st["sigma_B"], st["sigma_T"]) == ("CuSn12-C-GZ", 280.0, 150.0)
+    assert st["material_source"].startswith("library row CuSn12-C-GZ: [EN1982]")
+
+
+def test_bearing_and_drive_reports_name_their_rows():
+    code, out, _ = cli("run", str(ROOT / "specs" / "bearing_select_reducer.toml"),
+                       "--format", "json")
+    r = json.loads(out)["results"]
+    assert r["bearing"]["data_source"] == "[SKF6000] p. 526"
+    assert r["life"]["oil_source"] == "library row VG 150: [SKF6000] p. 59"
+    code, out, _ = cli("run", str(ROOT / "specs" / "drive_two_stage_reducer.toml"),
+                       "--format", "json")
+    r = json.loads(out)["results"]
+    assert all(b["source"].startswith("[SKF6000] p. ") for b in r["bearings"])
+    mats = r["stage_reports"][0]["results"]["materials"]
+    assert mats["material1_source"].startswith("library row 40Kh: ")
