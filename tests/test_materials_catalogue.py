@@ -209,3 +209,8 @@ def test_bearing_and_drive_reports_name_their_rows():
     assert all(b["source"].startswith("[SKF6000] p. ") for b in r["bearings"])
     mats = r["stage_reports"][0]["results"]["materials"]
     assert mats["material1_source"].startswith("library row 40Kh: ")
+
+
+def test_cyrillic_cast_steel_name():
+    assert G.normalize_grade("40ХЛ") == "40KhL"
+    assert G.normalize_grade("40XL") == "40KhL"

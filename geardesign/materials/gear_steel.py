@@ -56,12 +56,13 @@ def library() -> dict:
 _TRANSLIT = str.maketrans({"Х": "Kh", "х": "Kh", "Н": "N", "н": "N", "А": "A", "а": "A",
                            "М": "M", "м": "M", "Г": "G", "г": "G", "Т": "T", "т": "T",
                            "Ю": "Yu", "ю": "Yu", "С": "S", "с": "S", "Ф": "F", "В": "V",
-                           "Р": "R", "Ц": "Ts", "Ц".lower(): "Ts"})
+                           "Р": "R", "Ц": "Ts", "Ц".lower(): "Ts", "Л": "L", "л": "L"})
 
 
 def normalize_grade(name: str) -> str:
     """Library spelling of a grade: Cyrillic letters transliterated, spaces dropped
-    (``"40Х"`` and ``"40X"`` -> ``"40Kh"``, ``"12ХН3А"`` -> ``"12KhN3A"``)."""
+    (``"40Х"`` and ``"40X"`` -> ``"40Kh"``, ``"12ХН3А"`` -> ``"12KhN3A"``, cast steel
+    ``"40ХЛ"`` -> ``"40KhL"``)."""
     name = name.strip().replace(" ", "").translate(_TRANSLIT)
     if name in library()["steel"]:
         return name
