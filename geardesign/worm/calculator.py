@@ -86,7 +86,7 @@ def wheel_props(spec: ValidatedSpec) -> WheelProps:
                             "remove it for a group I (tin bronze) wheel")
     return WheelProps(name, group, props.get("sigma_B"), props.get("sigma_T"),
                       props.get("sigma_bu"), w["v_s_max"] if w["v_s_max"] is not None else v_max,
-                      w["sigma_HP"], w["sigma_FP"], source)
+                      w["sigma_HP"], w["sigma_FP"], source, tuple(given))
 
 
 def operation(spec: ValidatedSpec) -> Operation:
@@ -365,9 +365,10 @@ def add_rows(res: Result, a: Analysis, w: WheelProps, how: str) -> None:
                            ("sigma_T", "σ_T", "yield strength"),
                            ("sigma_bu", "σ_bu", "bending strength")):
         if getattr(w, key) is not None:
-            st.add(key, getattr(w, key), "MPa", sym, name, lib_src)
+            st.add(key, getattr(w, key), "MPa", sym, name,
+                   "spec" if key in w.given else lib_src)
     st.add("v_s_max", w.v_s_max, "m/s", "v_s,max", "highest sliding speed of the material",
-           lib_src)
+           "spec" if "v_s_max" in w.given else lib_src)
     st.add("theta", a.theta, "-", "θ", "worm deflection coefficient", S.CHERNAVSKY)
     st.add("X", a.sf.X, "-", "X", "load-regime factor", S.CHERNAVSKY)
     st.add("K_beta", a.K_beta, "-", "K_β", "load concentration factor", S.CHERNAVSKY)

@@ -56,6 +56,7 @@ class WheelProps:
     sigma_FP: float | None = None
     #: where the values come from: the library row's source, and the values the spec gave
     source: str = "given in the spec"
+    given: tuple = ()               # the keys of [wheel] the spec gave over the library row
 
 
 @dataclass(frozen=True)
