@@ -37,7 +37,7 @@ def test_bearings_in_every_format(fmt):
      'cylindrical_roller, tapered_roller, spherical_roller, thrust_ball'),
     (("materials", "42CrMo5"),
      'geardesign materials: no material matches "42CrMo5" (did you mean "42CrMo4", '
-     '"34CrAlMo5-10", "31CrMo12"?)'),
+     '"34CrAlMo5-10", "34CrNiMo6"?)'),
     (("bearings", "62", "--format", "xml"),
      'geardesign: --format "xml" is not one of table, json, jsonl, csv, markdown'),
 ])
@@ -50,7 +50,7 @@ def test_materials_find_equivalents_and_oils():
     code, out, _ = cli("materials", "4140", "--format", "json")
     rows = json.loads(out)
     assert code == 0 and {r["name"] for r in rows} == {"42CrMo4"}
-    assert rows[0]["iso6336_5"] in ("V", "IF") and "kooz.si" in rows[0]["source"]
+    assert rows[0]["iso6336_5"] in ("V_alloy", "IF") and "kooz.si" in rows[0]["source"]
     code, out, _ = cli("materials", "VG 220", "--format", "json")
     oil = json.loads(out)[0]
     assert oil["nu40"] == 220.0 and oil["source"] == "[SKF6000] p. 59"
@@ -69,8 +69,12 @@ def test_equivalent_names_resolve_with_a_note():
     m = _steel("AISI 4140")
     assert m.label.startswith("42CrMo4") and m.sigma_T == 500.0
     assert "read as 42CrMo4" in m.warnings[0]
-    m = _steel("C45")
-    assert m.label.startswith("45") and m.sigma_Hlim == 2 * 280.0 + 70.0
+    m = _steel("C45")   # a grade of its own (EN 10083-2), no longer read as GOST 45
+    assert m.label.startswith("C45") and m.sigma_T == 370.0 and not m.warnings
+    m = _steel("AISI 1045")
+    assert m.label.startswith("C45") and "read as C45" in m.warnings[0]
+    assert m.sigma_Hlim == 2 * 280.0 + 70.0
+    assert _steel("45").sigma_T == 650.0 and not _steel("45").warnings
     assert _steel("40Kh").label.startswith("40Kh") and not _steel("40Kh").warnings
 
 

@@ -209,7 +209,8 @@ CASES = [
                            material={**MATERIAL, "sun": {**MATERIAL["sun"], "grade": "20KhN3"}}),
      ["s.toml: material.sun.grade = \"20KhN3\": unknown steel (did you mean '20KhN3A', '20Kh', "
       "'12KhN3A'?); known: 45, 40Kh, 40KhN, 35KhM, 30KhGSA, 20Kh, 18KhGT, 20KhN3A, 12KhN3A, "
-      "38Kh2MYuA, 42CrMo4, 31CrMo12, 33CrMoV12-9, 34CrAlMo5-10 (and equivalents such as C45, 41Cr4, 4140: `geardesign materials` lists them); or leave out grade and give the properties"]),
+      "38Kh2MYuA, 42CrMo4, 31CrMo12, 33CrMoV12-9, 34CrAlMo5-10, C45, 34CrNiMo6, 16MnCr5, 20MnCr5, "
+      "18CrNiMo7-6, 4340, 8620, 9310, 40KhL (and equivalents such as 41Cr4, 4140, 1045: `geardesign materials` lists them); or leave out grade and give the properties"]),
     ("baseline without amplitudes", spec(frequencies={"baseline": [1.0, 2.0]}),
      ["s.toml: frequencies.amplitudes: missing; required with frequencies.baseline: the "
       "amplitudes measured now"]),

@@ -152,7 +152,7 @@ EXPECTED = {
         's.toml: coupling_gear.pinion.hardness_HB: missing; required: the surface hardness in HB for treatment "improved"',
     ],
     'gear_grade': [
-        's.toml: coupling_gear.pinion.grade = "46": unknown steel (did you mean \'45\'?); known: 45, 40Kh, 40KhN, 35KhM, 30KhGSA, 20Kh, 18KhGT, 20KhN3A, 12KhN3A, 38Kh2MYuA, 42CrMo4, 31CrMo12, 33CrMoV12-9, 34CrAlMo5-10 (and equivalents such as C45, 41Cr4, 4140: `geardesign materials` lists them); or leave out grade and give the properties',
+        's.toml: coupling_gear.pinion.grade = "46": unknown steel (did you mean \'45\'?); known: 45, 40Kh, 40KhN, 35KhM, 30KhGSA, 20Kh, 18KhGT, 20KhN3A, 12KhN3A, 38Kh2MYuA, 42CrMo4, 31CrMo12, 33CrMoV12-9, 34CrAlMo5-10, C45, 34CrNiMo6, 16MnCr5, 20MnCr5, 18CrNiMo7-6, 4340, 8620, 9310, 40KhL (and equivalents such as 41Cr4, 4140, 1045: `geardesign materials` lists them); or leave out grade and give the properties',
     ],
     'gear_treatment': [
         's.toml: coupling_gear.pinion.treatment = "carburized": not a treatment for steel 45; use one of normalized, improved, induction',

@@ -55,7 +55,7 @@ def test_base_passes_and_reports_every_factor():
 RULES = [
     ("unknown grade", spec(material__pinion__grade="50Kh"),
      ['s.toml: material.pinion.grade = "50Kh": unknown steel (did you mean \'40Kh\', \'20Kh\', \'40KhN\'?); '
-      "known: 45, 40Kh, 40KhN, 35KhM, 30KhGSA, 20Kh, 18KhGT, 20KhN3A, 12KhN3A, 38Kh2MYuA, 42CrMo4, 31CrMo12, 33CrMoV12-9, 34CrAlMo5-10 (and equivalents such as C45, 41Cr4, 4140: `geardesign materials` lists them); or "
+      "known: 45, 40Kh, 40KhN, 35KhM, 30KhGSA, 20Kh, 18KhGT, 20KhN3A, 12KhN3A, 38Kh2MYuA, 42CrMo4, 31CrMo12, 33CrMoV12-9, 34CrAlMo5-10, C45, 34CrNiMo6, 16MnCr5, 20MnCr5, 18CrNiMo7-6, 4340, 8620, 9310, 40KhL (and equivalents such as 41Cr4, 4140, 1045: `geardesign materials` lists them); or "
       "leave out grade and give the properties"]),
     ("treatment not for the grade", spec(material__pinion__treatment="carburized",
                                          material__pinion__hardness_HRC=60.0),

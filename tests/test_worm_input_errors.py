@@ -68,7 +68,7 @@ CASES = [
      ['s.toml: wheel.material = "bronze": must be one of "BrO10N1F1_centrifugal", '
       '"BrO10F1_sand", "BrO10F1_chill", "BrO5Ts5S5_sand", "BrO5Ts5S5_chill", '
       '"BrA10Zh4N4_centrifugal", "BrA10Zh4N4_chill", "BrA9Zh3L_sand", "BrA9Zh3L_chill", '
-      '"LTs23A6Zh3Mts2_sand", "LTs23A6Zh3Mts2_chill", "SCh15", "SCh18", "SCh20", "custom"']),
+      '"LTs23A6Zh3Mts2_sand", "LTs23A6Zh3Mts2_chill", "SCh15", "SCh18", "SCh20", "CuSn12-C-GZ", "CuSn12Ni2-C-GS", "CuSn12Ni2-C-GZ", "CuZn25Al5Mn4Fe3-C-GZ", "custom"']),
     ("spectrum share above 1", replace("[wheel]", SPECTRUM.format(r1=1.0, s1=1.5) + "[wheel]"),
      ["s.toml: load.spectrum[0].time_share = 1.5: must be a number > 0 and <= 1"]),
     ("torque ratio above 1", replace("[wheel]", SPECTRUM.format(r1=1.2, s1=1.0) + "[wheel]"),

@@ -417,6 +417,8 @@ def add_rows(res: Result, a: Assessment, info: dict) -> None:
             if "oil" in o:
                 f.add("oil", o["oil"], None, "", "lubricant, ISO VG grade (ν40 of ISO 3448)",
                       o["oil_source"])
+                f.add("oil_source", f"library row {o['oil']}: {o['oil_source']}", None, "",
+                      "data used, oil", "library")
             if "nu40" in o:
                 f.add("nu40", o["nu40"], "mm^2/s", "ν40", "oil viscosity at 40 °C",
                       o.get("oil_source", "given"))
@@ -692,7 +694,7 @@ def _select(spec: ValidatedSpec, blocks: list, checks: list, new_result) -> Resu
         f"{_kn(last[2].C_req)} is needed: use a larger bore, another type or two bearings",
         f"{pick[0].name} is the smallest {_type_words(kind)} bearing with d = {_f(d)} mm that "
         f"reaches {_h(req['life'])} h ({_h(pick[2].life_h)} h)", None, None, S.CATALOGUE))
-    info = {"catalogue": pick[0], "source": pick[0].source, "note": pick[0].note,
+    info = {"catalogue": pick[0], "source": pick[0].cite, "note": pick[0].note,
             "rating": "catalogue", "d": pick[0].d, "D": pick[0].D, "B": pick[0].B}
     add_rows(res, pick[2], info)
     # when nothing passes, SELECTION already names the life shortfall

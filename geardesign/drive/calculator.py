@@ -276,7 +276,8 @@ def _shafts(res: Result, shafts: list, runs: list[StageRun], n_m: float, L_h: fl
             balls.append("ball" in str(v.get("type", "ball")))
             rows.append(dict(shaft=idx, bearing=side.upper(), designation=v.get("designation"),
                              F_r=F_r, F_a=F_a, n=speeds[idx - 1], life=life,
-                             verdict=br.verdict))
+                             verdict=br.verdict,
+                             source=v.get("data_source") or "given in the spec"))
             res.parts.append(("bearing_reports", f"{name}, bearing {side.upper()}", br))
             failed = [c.code for c in br.failed]
             res.checks.append(check(
@@ -288,7 +289,8 @@ def _shafts(res: Result, shafts: list, runs: list[StageRun], n_m: float, L_h: fl
     res.tables.append(DataTable("bearings", "Bearings", [
         ("shaft", "shaft", None), ("bearing", "bearing", None),
         ("designation", "designation", None), ("F_r", "F_r", "N"), ("F_a", "F_a", "N"),
-        ("n", "n", "min^-1"), ("life", "life", "h"), ("verdict", "verdict", None)], rows))
+        ("n", "n", "min^-1"), ("life", "life", "h"), ("verdict", "verdict", None),
+        ("source", "data used", None)], rows))
     slope = 10.0 / 9.0 if any(balls) else 9.0 / 8.0
     L_sys = system_life(lives, slope)
     sec = res.section("drive", "Drive")

@@ -40,7 +40,7 @@ def _gear_steel_rows() -> list[dict]:
                 "iso6336_5": steel.get("iso6336_5", {}).get(t),
                 "equivalents": list(steel.get("equivalents", [])),
                 "section": steel.get("section"),
-                "source": steel.get("source", f"{steel['standard']}; [GOST21354] allowables"),
+                "source": G.source_of(grade),
             })
     return out
 
@@ -53,7 +53,7 @@ def _worm_wheel_rows() -> list[dict]:
         out.append({"name": m.name, "family": "worm_wheel", "standard": m.description,
                     "treatment": m.casting, "hardness": None, "sigma_T": m.sigma_T,
                     "sigma_B": m.sigma_B, "group": m.group, "v_s_max": m.v_s_max,
-                    "equivalents": [], "source": "[GOST19650] (indicative textbook values)"})
+                    "equivalents": [], "source": m.source})
     return out
 
 

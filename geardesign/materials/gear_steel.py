@@ -56,12 +56,13 @@ def library() -> dict:
 _TRANSLIT = str.maketrans({"Х": "Kh", "х": "Kh", "Н": "N", "н": "N", "А": "A", "а": "A",
                            "М": "M", "м": "M", "Г": "G", "г": "G", "Т": "T", "т": "T",
                            "Ю": "Yu", "ю": "Yu", "С": "S", "с": "S", "Ф": "F", "В": "V",
-                           "Р": "R", "Ц": "Ts", "Ц".lower(): "Ts"})
+                           "Р": "R", "Ц": "Ts", "Ц".lower(): "Ts", "Л": "L", "л": "L"})
 
 
 def normalize_grade(name: str) -> str:
     """Library spelling of a grade: Cyrillic letters transliterated, spaces dropped
-    (``"40Х"`` and ``"40X"`` -> ``"40Kh"``, ``"12ХН3А"`` -> ``"12KhN3A"``)."""
+    (``"40Х"`` and ``"40X"`` -> ``"40Kh"``, ``"12ХН3А"`` -> ``"12KhN3A"``, cast steel
+    ``"40ХЛ"`` -> ``"40KhL"``)."""
     name = name.strip().replace(" ", "").translate(_TRANSLIT)
     if name in library()["steel"]:
         return name
@@ -179,6 +180,10 @@ class GearMaterial:
     Y_z: float
     given: frozenset = field(default_factory=frozenset)
     warnings: tuple = ()
+    #: the library row used (grade name) and where its numbers were read, or None for a
+    #: material given by its properties
+    grade: str | None = None
+    source: str | None = None
 
     @property
     def soft(self) -> bool:
@@ -212,7 +217,7 @@ def resolve(m: dict, key: str) -> GearMaterial:
             hint = f" (did you mean {', '.join(repr(c) for c in close)}?)" if close else ""
             raise InputError.at(f"{key}.grade", m["grade"],
                                 f"unknown steel{hint}; known: {', '.join(lib['steel'])} (and "
-                                f"equivalents such as C45, 41Cr4, 4140: `geardesign materials` "
+                                f"equivalents such as 41Cr4, 4140, 1045: `geardesign materials` "
                                 f"lists them); or leave out grade and give the properties")
         if treat_key not in steel["treatments"]:
             raise InputError.at(f"{key}.treatment", treat_key,
@@ -295,6 +300,13 @@ def resolve(m: dict, key: str) -> GearMaterial:
         if was_given:
             given.add(name)
     if out["sigma_HPmax"] is None:
+        if steel is not None:
+            raise InputError(Problem(f"{key}.sigma_T",
+                                     f"missing; required for the static contact check of a "
+                                     f"\"{treat_key}\" gear (σ_HPmax = 2.8·σ_T) and the library "
+                                     f"row of steel {grade} has no yield strength for it "
+                                     f"(not found in its source): give the yield strength of "
+                                     f"the blank as sigma_T, or sigma_HPmax"))
         raise InputError(Problem(f"{key}.sigma_T",
                                  "missing; required for the static contact check of a "
                                  f"\"{treat_key}\" gear (σ_HPmax = 2.8·σ_T): give the yield "
@@ -308,8 +320,39 @@ def resolve(m: dict, key: str) -> GearMaterial:
         sigma_HPmax=out["sigma_HPmax"], sigma_Flim=out["sigma_Flim"], S_F=out["S_F"],
         sigma_FSt=out["sigma_FSt"], gamma_A=treat["gamma_A"],
         q_F=6 if m["root_ground"] else int(treat["q_F"]), Y_z=Y_z,
-        given=frozenset(given), warnings=tuple(warnings))
+        given=frozenset(given), warnings=tuple(warnings), grade=grade if steel else None,
+        source=source_of(grade) if steel else None)
+
+
+def source_of(grade: str) -> str:
+    """Where the numbers of library grade ``grade`` were read: the row's ``source``, or for
+    the GOST rows (which carry none) the standard of the blank strength, [Dunaev] table 2.1
+    for the hardness bands of improved blanks and [GOST21354] for the allowables of the
+    treatment table (see the comment of ``gear_steel.toml``)."""
+    steel = library()["steel"][grade]
+    return steel.get("source", f"σ_T: {steel['standard']} test piece, of improved blanks by "
+                               f"hardness band after [Dunaev] table 2.1 (unverified); "
+                               f"allowables [GOST21354]")
+
+
+def data_used(m: GearMaterial) -> str:
+    """One line naming where the data of material ``m`` come from, for the reports: the
+    library row and its source, and the values the spec gave instead."""
+    given = ", ".join(sorted(m.given))
+    if m.grade is None:
+        return "given in the spec" + (f" ({given})" if given else "") + \
+            "; allowables of the treatment table ([GOST21354])"
+    return f"library row {m.grade}: {m.source}" + (f"; given in the spec: {given}"
+                                                   if given else "")
+
+
+def iso_type(grade: str | None, treatment: str) -> str | None:
+    """The ISO 6336-5 material type the library row of ``grade`` gives for ``treatment``
+    (the ``iso6336_5`` table of the row), or None."""
+    if grade is None or grade not in library()["steel"]:
+        return None
+    return library()["steel"][grade].get("iso6336_5", {}).get(treatment)
 
 
 __all__ = ["GearMaterial", "resolve", "grades", "treatments", "hb_from_hrc", "hv_from_hrc",
-           "hrc_from_hv", "BLANKS"]
+           "hrc_from_hv", "BLANKS", "source_of", "iso_type", "data_used"]

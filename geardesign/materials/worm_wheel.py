@@ -10,9 +10,10 @@ The material groups are those of the classical worm-wheel strength calculation
   allowable contact stress limited by scuffing and falling with the sliding speed;
 * group III: grey cast iron, v_s up to about 2 m/s.
 
-The property values are indicative textbook values quoted from memory
-(Dunaev & Lelikov; Chernavsky); no located text confirmed them.
-A spec may override each one.
+The property values of the GOST grades are indicative textbook values quoted from memory
+(Dunaev & Lelikov; Chernavsky); no located text confirmed them.  The EN 1982 grades
+(CuSn12-C, CuSn12Ni2-C, CuZn25Al5Mn4Fe3-C) carry the minimum values of the standard as
+printed by the data sheet named in their ``source``.  A spec may override each value.
 """
 
 from __future__ import annotations
@@ -22,6 +23,10 @@ from functools import lru_cache
 from pathlib import Path
 
 GROUPS = ("I", "II", "III")
+
+TEXTBOOK_SOURCE = ("[Dunaev]; [Chernavsky] (indicative textbook values quoted from memory; "
+                   "unverified)")
+"""Source of the rows that name none (the GOST grades of the classical tables)."""
 
 GROUP_V_S_MAX = {"I": 25.0, "II": 5.0, "III": 2.0}
 """Highest sliding speed [m/s] of each material group, used when a material is given by its
@@ -42,6 +47,7 @@ class WheelMaterial:
     sigma_T : yield strength [MPa] (bronzes, brass), or None.
     sigma_bu : bending strength [MPa] (grey cast iron), or None.
     v_s_max : highest sliding speed for this material [m/s].
+    source : where the row's numbers were read.
     """
 
     name: str
@@ -52,6 +58,7 @@ class WheelMaterial:
     sigma_T: float | None
     sigma_bu: float | None
     v_s_max: float
+    source: str = TEXTBOOK_SOURCE
 
 
 @lru_cache(maxsize=1)
@@ -62,7 +69,7 @@ def _library() -> dict[str, WheelMaterial]:
     return {
         name: WheelMaterial(name, row["description"], row["group"], row["casting"],
                             row.get("sigma_B"), row.get("sigma_T"), row.get("sigma_bu"),
-                            row["v_s_max"])
+                            row["v_s_max"], row.get("source", TEXTBOOK_SOURCE))
         for name, row in data.items()
     }
 

@@ -839,6 +839,8 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
         raise InputError.at("strength.peak_torque", st["peak_torque"],
                             f"smaller than the input torque {_fmt(T_in)} N·m; give the largest "
                             f"short-time torque")
+    from geardesign.materials.gear_steel import data_used
+
     msec = res.section("materials", "Materials")
     for key, m in mats.items():
         if key in ("planet2",) and train.planet2 is None or key == "ring2" and \
@@ -846,6 +848,8 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
             continue
         msec.add(f"material_{key}", m.label, None, f"mat_{key}", key,
                  "library" if not m.given else "library + spec")
+        msec.add(f"material_{key}_source", data_used(m), None, f"src_{key}",
+                 f"data used, {key}", "library" if m.grade else "spec")
         msec.add(f"HB_{key}", m.HB, "HB", f"HB_{key}", "surface hardness in HB (converted)",
                  "GOST 21354-87 (ZPCIL fit)")
     out = []

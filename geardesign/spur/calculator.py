@@ -320,6 +320,7 @@ def add_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inputs) -
 def _add_gost_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inputs) -> None:
     """Rate the pair to GOST 21354-87 (``inputs`` from :func:`_strength_inputs`); add rows
     and checks."""
+    from geardesign.materials.gear_steel import data_used
     from geardesign.spur.checks import strength_checks
     from geardesign.spur.strength import method
 
@@ -330,6 +331,8 @@ def _add_gost_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inp
     for k, m in enumerate(mats, 1):
         sec.add(f"material{k}", m.label, None, f"mat{k}", ("pinion", "wheel")[k - 1],
                 "library" if not m.given else "library + spec")
+        sec.add(f"material{k}_source", data_used(m), None, f"src{k}",
+                f"data used, {('pinion', 'wheel')[k - 1]}", "library" if m.grade else "spec")
         sec.add(f"HB{k}", m.HB, "HB", f"HB{k}", "surface hardness in HB (converted)",
                 "GOST 21354-87 (ZPCIL fit)")
         if m.sigma_T is not None:

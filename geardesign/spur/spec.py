@@ -133,8 +133,12 @@ LOAD = Table("load", "operating data", (
 
 def _material(who: str) -> Table:
     return Table(who, f"material of the {who}", (
-        Field("grade", "string", "steel grade from the library: 45, 40Kh, 40KhN, 35KhM, 30KhGSA, "
-              "20Kh, 18KhGT, 20KhN3A, 12KhN3A, 38Kh2MYuA", default=None, example="40Kh",
+        Field("grade", "string", "steel grade from the library (`geardesign materials` lists "
+              "them): GOST 45, 40Kh, 40KhN, 35KhM, 30KhGSA, 20Kh, 18KhGT, 20KhN3A, 12KhN3A, "
+              "38Kh2MYuA, 40KhL (cast); EN 42CrMo4, C45, 34CrNiMo6, 16MnCr5, 20MnCr5, "
+              "18CrNiMo7-6, 31CrMo12, 33CrMoV12-9, 34CrAlMo5-10; AISI/SAE 4340, 8620, 9310; "
+              "equivalent names (1.7131, AISI 4140) are read as their row",
+              default=None, example="40Kh",
               hint="leave out to give the properties yourself"),
         Field("treatment", "string", "heat treatment", example="improved",
               choices=("normalized", "improved", "through_hardened", "induction", "carburized",

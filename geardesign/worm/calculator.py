@@ -58,14 +58,20 @@ def wheel_props(spec: ValidatedSpec) -> WheelProps:
             raise InputError(Problem("wheel.group", 'missing; required with material = "custom": '
                                      'one of "I", "II", "III" (material group)'))
         group, props, v_max = w["group"], {}, worm_wheel.GROUP_V_S_MAX[w["group"]]
+        source = "given in the spec (material = \"custom\")"
     else:
         lib = worm_wheel.get(name)
         group = w["group"] or lib.group
         props = {"sigma_B": lib.sigma_B, "sigma_T": lib.sigma_T, "sigma_bu": lib.sigma_bu}
         v_max = lib.v_s_max
+        source = f"library row {name}: {lib.source}"
+    given = [key for key in ("group", "sigma_B", "sigma_T", "sigma_bu", "v_s_max", "sigma_HP",
+                             "sigma_FP") if w[key] is not None]
     for key in ("sigma_B", "sigma_T", "sigma_bu"):
         if w[key] is not None:
             props[key] = w[key]
+    if given and name != "custom":
+        source += "; given in the spec: " + ", ".join(given)
     need = ("sigma_B", "sigma_T") if group in ("I", "II") else ("sigma_bu",)
     what = {"sigma_B": "tensile", "sigma_T": "yield", "sigma_bu": "bending"}
     problems = [Problem(f"wheel.{k}", f"missing; required for a group {group} wheel "
@@ -80,7 +86,7 @@ def wheel_props(spec: ValidatedSpec) -> WheelProps:
                             "remove it for a group I (tin bronze) wheel")
     return WheelProps(name, group, props.get("sigma_B"), props.get("sigma_T"),
                       props.get("sigma_bu"), w["v_s_max"] if w["v_s_max"] is not None else v_max,
-                      w["sigma_HP"], w["sigma_FP"])
+                      w["sigma_HP"], w["sigma_FP"], source, tuple(given))
 
 
 def operation(spec: ValidatedSpec) -> Operation:
@@ -351,15 +357,18 @@ def add_rows(res: Result, a: Analysis, w: WheelProps, how: str) -> None:
     f.add("F_r", a.ld.F_r, "N", "F_r", "radial force F_t2·tan α", S.TEXTBOOK)
 
     st = res.section("strength", "Strength of the wheel")
-    st.add("material", w.name, None, "", "wheel material", S.TEXTBOOK)
+    lib_src = "library" if w.name != "custom" else "spec"
+    st.add("material", w.name, None, "", "wheel material", lib_src)
+    st.add("material_source", w.source, None, "src", "data used, wheel material", lib_src)
     st.add("group", w.group, None, "", "material group", S.TEXTBOOK)
     for key, sym, name in (("sigma_B", "σ_B", "tensile strength"),
                            ("sigma_T", "σ_T", "yield strength"),
                            ("sigma_bu", "σ_bu", "bending strength")):
         if getattr(w, key) is not None:
-            st.add(key, getattr(w, key), "MPa", sym, name, S.TEXTBOOK)
+            st.add(key, getattr(w, key), "MPa", sym, name,
+                   "spec" if key in w.given else lib_src)
     st.add("v_s_max", w.v_s_max, "m/s", "v_s,max", "highest sliding speed of the material",
-           S.TEXTBOOK)
+           "spec" if "v_s_max" in w.given else lib_src)
     st.add("theta", a.theta, "-", "θ", "worm deflection coefficient", S.CHERNAVSKY)
     st.add("X", a.sf.X, "-", "X", "load-regime factor", S.CHERNAVSKY)
     st.add("K_beta", a.K_beta, "-", "K_β", "load concentration factor", S.CHERNAVSKY)

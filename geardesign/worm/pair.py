@@ -54,6 +54,9 @@ class WheelProps:
     v_s_max: float
     sigma_HP: float | None = None   # given allowable, replaces the computed one
     sigma_FP: float | None = None
+    #: where the values come from: the library row's source, and the values the spec gave
+    source: str = "given in the spec"
+    given: tuple = ()               # the keys of [wheel] the spec gave over the library row
 
 
 @dataclass(frozen=True)

@@ -56,9 +56,21 @@ FROM_TREATMENT = {"normalized": "St", "improved": "V_alloy", "through_hardened":
 
 
 def type_from_treatment(treatment: str, label: str) -> str:
-    """Material type of ISO 6336-5 for a library material: the nitriding steel 38Kh2MYuA is
-    NT, the carbon steel 45 through-hardened is V, otherwise :data:`FROM_TREATMENT`."""
+    """Material type of ISO 6336-5 for a library material: the type its grade's row names for
+    the treatment (``iso6336_5`` in ``materials/gear_steel.toml``: 42CrMo4 improved V_alloy,
+    31CrMo12 nitrided NT, 40KhL cast V_cast_alloy, ...); for a GOST row, which names none, the
+    nitriding steel 38Kh2MYuA is NT, the carbon steel 45 through-hardened is V, otherwise
+    :data:`FROM_TREATMENT`.
+
+    >>> type_from_treatment("improved", "40KhL, quenched and tempered (improved), 220 HB")
+    'V_cast_alloy'
+    """
+    from geardesign.materials.gear_steel import iso_type
+
     grade = label.split(",")[0].strip()
+    typ = iso_type(grade, treatment)
+    if typ is not None:
+        return typ
     if treatment == "nitrided" and grade == "38Kh2MYuA":
         return "NT"
     if treatment in ("improved", "through_hardened") and grade == "45":

@@ -130,8 +130,15 @@ def _material(i: int, mat, ig: IsoGear, R: _Rows) -> dict:
     line = P5.limits(typ, ig.quality, P5.hardness_on_scale(T.MATERIAL_LINES[typ]["scale"],
                                                             mat.HB, mat.HV))
     sec = "iso6336_materials"
-    R.put(sec, f"type{k}", typ, None, f"type{k}", f"material type, {who}"
-          + ("" if ig.material else " (from the heat treatment)"), S5)
+    from geardesign.materials.gear_steel import data_used, iso_type
+
+    R.put(sec, f"material{k}", mat.label, None, f"mat{k}", f"material, {who}",
+          "library" if getattr(mat, "grade", None) else "spec")
+    R.put(sec, f"material{k}_source", data_used(mat), None, f"src{k}", f"data used, {who}",
+          "library" if getattr(mat, "grade", None) else "spec")
+    how = ("" if ig.material else " (from the grade's library row)"
+           if iso_type(getattr(mat, "grade", None), mat.treatment) else " (from the heat treatment)")
+    R.put(sec, f"type{k}", typ, None, f"type{k}", f"material type, {who}{how}", S5)
     R.put(sec, f"quality{k}", ig.quality, None, f"grade{k}", f"material quality grade, {who}", S5)
     R.put(sec, f"hardness{k}", line.hardness, line.scale, f"H{k}",
           f"surface hardness on the line's scale{' (clamped to its range)' if line.clamped else ''}, {who}",
