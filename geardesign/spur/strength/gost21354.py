@@ -133,10 +133,8 @@ def sigma_hp_pair(s1: float, s2: float, helical: bool) -> float:
     ``SGHP=.45*(SGHP1+SGHP2)`` / ``IF(SGHP.GT.1.25*AU)`` that [ZPCIL] ``CONTAU.h`` keeps as a
     comment only (its active routine ``SGHPBE`` integrates along the contact lines).
     """
-    low = min(s1, s2)
-    if not helical:
-        return low
-    return min(max(0.45 * (s1 + s2), low), 1.25 * low)
+    low = xp.minimum(s1, s2)
+    return xp.where(helical, xp.minimum(xp.maximum(0.45 * (s1 + s2), low), 1.25 * low), low)
 
 
 # ----------------------------------------------------------------------------- bending
