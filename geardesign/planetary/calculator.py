@@ -23,7 +23,7 @@ from geardesign.spur import geometry as G
 from geardesign.spur import internal as I
 
 X_AGREE = 1e-3     # |given shift − shift from a_w| accepted when both are given
-MIN_RING_EXCESS = 4  # the ring needs at least this many teeth more than its planet crown
+MIN_RING_EXCESS = I.MIN_TEETH_DIFFERENCE  # ring teeth over its planet crown's, at least
 
 
 def _fmt(x: float) -> str:
@@ -399,19 +399,9 @@ def _mesh_rows(res: Result, mesh: PG.Mesh) -> None:
                                           sp.internal), "-", "η",
             "specific-pressure coefficient m/ρ_red", S.MATUSEVICH + " (34)")
     if sp.internal:
-        if g.delta_tip is not None:
-            sec.add("delta_tip", g.delta_tip, "-", "δ",
-                    "tip interference measure (≥ 0: none)", S.G19274_MEMORY)
-        if g.cutting is not None:
-            cg = g.cutting
-            sec.add("alpha_tw0", cg.alpha_tw0, "rad", "α_tw0", "cutting pressure angle (shaper)",
-                    S.G19274)
-            sec.add("a_w0", cg.a_w0, "mm", "a_w0", "cutting centre distance (shaper)", S.G19274)
-            sec.add("d_a0", cg.d_a0, "mm", "d_a0", "shaper tip diameter (at the ring root)",
-                    S.G19274)
-            if math.isfinite(cg.delta0):
-                sec.add("delta_cut", cg.delta0, "-", "δ_0",
-                        "cutting tip interference measure (≥ 0: none)", S.G19274_MEMORY)
+        from geardesign.spur.calculator import internal_rows
+
+        internal_rows(sec, g)
 
 
 def _members_gears(meshes: list[PG.Mesh]) -> dict:

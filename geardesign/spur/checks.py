@@ -170,10 +170,21 @@ def _tip_at_shift(g: PairGeometry, i: int, x: float) -> float:
     return tip_thickness(gear.z, x, gear.d, d_a, g.alpha_t, p.rack.alpha_n, p.beta)
 
 
+#: How the checks of an internal pair name its gears and keys (the spur spec).
+SPUR_INTERNAL = InternalNames("pinion", "internal gear", "gear.x1", "gear.x2", "gear.z1",
+                              "gear.z2", "internal gear's tip (gear.internal_tip_shortening")
+
+
 def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = False) -> list[Check]:
+    """Checks of an external pair, or of an internal pair
+    (:class:`geardesign.spur.internal.InternalPairGeometry`): there the internal gear has
+    no undercut, root or span check, and the interference at both roots is that of
+    :func:`internal_mesh_checks`."""
     p = g.inp
     m = p.m_n
     helical = p.beta > 0.0
+    internal = getattr(g, "internal", False)
+    src = S.G19274 if internal else S.G16532
     out: list[Check] = []
 
     # -- continuity of the mesh
@@ -182,14 +193,14 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
             "CONTACT_RATIO", g.eps_gamma >= EPS_MIN, "error",
             f"ε_γ = {g.eps_gamma:.3f} < 1: the mesh is not continuous; increase the face width "
             f"or the helix angle, increase the tooth numbers or reduce x1 + x2",
-            f"ε_γ = {g.eps_gamma:.3f} >= 1: continuous mesh", g.eps_gamma, EPS_MIN, S.G16532))
+            f"ε_γ = {g.eps_gamma:.3f} >= 1: continuous mesh", g.eps_gamma, EPS_MIN, src))
         low_value, low_name = g.eps_gamma, "ε_γ"
     else:
         out.append(check(
             "CONTACT_RATIO", g.eps_alpha >= EPS_MIN, "error",
             f"ε_α = {g.eps_alpha:.3f} < 1: the mesh is not continuous; increase the tooth "
             f"numbers, reduce x1 + x2 or use helical teeth",
-            f"ε_α = {g.eps_alpha:.3f} >= 1: continuous mesh", g.eps_alpha, EPS_MIN, S.G16532))
+            f"ε_α = {g.eps_alpha:.3f} >= 1: continuous mesh", g.eps_alpha, EPS_MIN, src))
         low_value, low_name = g.eps_alpha, "ε_α"
     if low_value >= EPS_MIN:
         out.append(check(
@@ -201,6 +212,9 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
     for i, gear in enumerate(g.gears):
         n, idx, suf = _NAMES[i], i + 1, _SUFFIX[i]
         mate_idx = 2 - i
+        if internal and i == 1:
+            out += _internal_gear_tip(gear, m)
+            continue
         # -- undercut
         z_needed = math.ceil(2.0 * math.cos(p.beta) * (p.rack.h_straight - gear.x)
                              / math.sin(g.alpha_t) ** 2 - 1e-9)
@@ -236,16 +250,26 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
                 f"(case-hardened teeth need {TIP_THICKNESS_HARD}·m_n)",
                 gear.s_an, TIP_THICKNESS_MIN * m, S.G16532))
         # -- involute interference: the mate's tip must work on the involute
-        out.append(interference_check(
-            f"INTERFERENCE_{suf}", gear, n, _NAMES[1 - i], str(idx),
-            f"increase x{idx} or z{idx}, or reduce x{mate_idx}",
-            f"increase x{idx}, reduce x{mate_idx} or the addendum coefficient, or increase "
-            f"z{idx}"))
+        if not internal:
+            out.append(interference_check(
+                f"INTERFERENCE_{suf}", gear, n, _NAMES[1 - i], str(idx),
+                f"increase x{idx} or z{idx}, or reduce x{mate_idx}",
+                f"increase x{idx}, reduce x{mate_idx} or the addendum coefficient, or increase "
+                f"z{idx}"))
         out.append(check(
             f"ROOT_DIAMETER_{suf}", gear.d_f > 0.0, "error",
             f"{n} root diameter d_f{idx} = {gear.d_f:.3f} mm <= 0: no gear body; increase "
             f"z{idx} or x{idx}",
             f"{n} root diameter d_f{idx} = {gear.d_f:.3f} mm > 0", gear.d_f, 0.0, S.G16532))
+
+    if internal:
+        out += internal_mesh_checks(g, "", SPUR_INTERNAL, S.G19274, S.G19274_MEMORY)
+        if g.cutting is None:
+            out.append(check(
+                "INTERNAL_FORM_CIRCLE", True, "info", "",
+                "the internal gear's form circle is that of the basic rack; give "
+                "gear.cutter_teeth for a shaper-cut gear (a smaller form circle) and the "
+                "cutting interference check", None, None, S.G19274))
 
     # -- radial clearance
     c = min(g.c_12, g.c_21)
@@ -253,7 +277,7 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
         "ROOT_CLEARANCE", c >= -1e-9, "error",
         f"radial clearance {c:.3f} mm < 0: a tip touches the mating root; reduce the addendum "
         f"coefficient or increase the clearance coefficient",
-        f"radial clearance {c:.3f} mm >= 0", c, 0.0, S.G16532))
+        f"radial clearance {c:.3f} mm >= 0", c, 0.0, src))
     if c >= -1e-9:
         out.append(check(
             "ROOT_CLEARANCE_SMALL", c >= CLEARANCE_WARN * m - 1e-9, "warning",
@@ -285,8 +309,8 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
             f"{sliding.theta1_A:.2f}, ϑ2(E) = {sliding.theta2_E:.2f})", worst, SLIDING_MAX,
             S.SLIDING))
 
-    # -- span measurement
-    for i, gear in enumerate(g.gears):
+    # -- span measurement (the internal gear's span is reported, not checked)
+    for i, gear in enumerate(g.gears[:1] if internal else g.gears):
         n, idx, suf = _NAMES[i], i + 1, _SUFFIX[i]
         lo = max(gear.d_p, gear.d_l)
         ok = span_measurable(gear.W, gear.d_W, lo, gear.d_a, g.beta_b, p.b_w)
@@ -305,6 +329,28 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
             f"span W{idx} over k{idx} = {gear.k} teeth measurable (contact on d = "
             f"{gear.d_W:.3f} mm)", gear.d_W, None, S.G16532_SPAN))
     return _no_contact_ratio_without_mesh(out)
+
+
+def _internal_gear_tip(gear, m: float) -> list[Check]:
+    """Pointed and thin tips of the internal gear (its tooth widens outwards: a larger
+    GOST-sign x2 or a longer tip thins the tip)."""
+    advice = ("reduce x2 (GOST 19274-73 sign: a larger one thins the internal teeth) or "
+              "shorten the tip (gear.internal_tip_shortening)")
+    out = [check(
+        "POINTED_TIP_WHEEL", gear.s_an > 0.0, "error",
+        f"internal gear tooth is pointed (s_an2 = {gear.s_an:.3f} mm <= 0); {advice}",
+        f"internal gear tip not pointed (s_an2 = {gear.s_an:.3f} mm)", gear.s_an, 0.0,
+        S.G19274)]
+    if gear.s_an > 0.0:
+        out.append(check(
+            "TIP_THICKNESS_WHEEL", gear.s_an >= TIP_THICKNESS_MIN * m, "warning",
+            f"internal gear tip is thin: s_an2 = {gear.s_an:.3f} mm = {gear.s_an / m:.2f}·m_n "
+            f"< {TIP_THICKNESS_MIN}·m_n ({TIP_THICKNESS_HARD}·m_n for case-hardened teeth); "
+            + advice,
+            f"internal gear tip thickness s_an2 = {gear.s_an / m:.2f}·m_n >= "
+            f"{TIP_THICKNESS_MIN}·m_n (case-hardened teeth need {TIP_THICKNESS_HARD}·m_n)",
+            gear.s_an, TIP_THICKNESS_MIN * m, S.G19274))
+    return out
 
 
 def _no_contact_ratio_without_mesh(out: list[Check]) -> list[Check]:
