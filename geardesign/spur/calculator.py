@@ -148,11 +148,13 @@ def internal_input_from_spec(spec: ValidatedSpec) -> tuple[I.InternalPairInput, 
                                 f"a shaper cuts an internal gear only with fewer teeth: at most "
                                 f"{z2 - n_min} for the {z2}-tooth internal gear (gear.z2; the "
                                 f"same rule as for the pinion)")
-        cutter = I.ShaperCutter(z0, g["cutter_shift"])
-    elif _given(spec, "gear.cutter_shift"):
-        raise InputError.at("gear.cutter_shift", g["cutter_shift"],
-                            "applies only with gear.cutter_teeth (the shaper cutter); give it or "
-                            "remove cutter_shift")
+        cutter = I.ShaperCutter(z0, g["cutter_shift"], g["cutter_tip_radius_coef"])
+    else:
+        for key in ("cutter_shift", "cutter_tip_radius_coef"):
+            if _given(spec, f"gear.{key}"):
+                raise InputError.at(f"gear.{key}", g[key],
+                                    "applies only with gear.cutter_teeth (the shaper cutter); "
+                                    f"give it or remove {key}")
     for path in ("gear.tip_shortening",) + (("gear.cutter_shift",) if cutter is None else ()):
         _drop_unused_defaults(spec, (path,))
 
@@ -237,10 +239,10 @@ def solve_geometry(spec: ValidatedSpec) -> tuple[PairGeometry, str]:
             raise InputError.at(path, gear[path.split(".")[1]],
                                 "applies to internal pairs only; set gear.internal = true or "
                                 "remove it")
-    if gear.get("cutter_teeth") is not None:
-        raise InputError.at("gear.cutter_teeth", gear["cutter_teeth"],
-                            "applies to internal pairs only; set gear.internal = true or "
-                            "remove it")
+    for key in ("cutter_teeth", "cutter_tip_radius_coef"):
+        if gear.get(key) is not None:
+            raise InputError.at(f"gear.{key}", gear[key], "applies to internal pairs only; set "
+                                "gear.internal = true or remove it")
     _drop_unused_defaults(spec, INTERNAL_ONLY)
     p, how = pair_input_from_spec(spec)
     if not spec.data["gear"].get("tip_shortening", True):

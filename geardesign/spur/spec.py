@@ -68,6 +68,9 @@ GEAR = Table("gear", "gear pair (external or internal, spur or helical)", (
                "[cutter]; at most z2 − 4"),
     Field("cutter_shift", "number", "profile shift coefficient of the shaper cutter "
           "(with cutter_teeth)", symbol="x_0", default=0.0, minimum=-1.0, maximum=1.5),
+    Field("cutter_tip_radius_coef", "number", "tip radius coefficient of the shaper cutter "
+          "(with cutter_teeth)", symbol="ρ_a0*", default=None, minimum=0, maximum=1.0,
+          hint="default: rack.root_radius_coef"),
     Field("internal_tip_shortening", "number", "tip shortening coefficient of the internal "
           "gear: d_a2 = d2 − 2(h_a* − x2 − k2)m_n (internal pairs only)", symbol="k2",
           default=0.0, minimum=-0.5, maximum=1.0,
