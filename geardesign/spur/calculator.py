@@ -303,7 +303,7 @@ def add_geometry_rows(res: Result, g: PairGeometry, how: str) -> None:
     if internal:
         sec.add("x2_iso", I.x_to_iso(p.x2), "-", "x2,ISO",
                 "profile shift coefficient, internal gear (ISO 21771 sign)", src)
-        sec.add("k2", p.k2, "-", "k2", "tip shortening coefficient of the internal gear", src)
+        sec.add("k_tip2", p.k2, "-", "k2", "tip shortening coefficient of the internal gear", src)
     sec.add("shift_source", how, None, "", "how the shifts were obtained", src)
     sec.add("alpha_tw", g.alpha_tw, "rad", "α_tw", "working transverse pressure angle", src)
     sec.add("a", g.a, "mm", "a", "reference centre distance"
