@@ -163,9 +163,12 @@ def ideal_ball(t: Tooth, d_contact: float | None = None, step: float = 0.01) -> 
 
 
 def _shift(t: Tooth) -> float:
-    """Profile shift coefficient implied by the thickness: s_n = m_n(π/2 ± 2x tan α)."""
-    x = (t.s_n / t.m_n - 0.5 * math.pi) / (2.0 * math.tan(t.alpha_n))
-    return -x if t.internal else x
+    """Profile shift coefficient implied by the thickness: s_n = m_n(π/2 + 2x tan α) of an
+    external gear; an internal gear's space width e_n = m_n(π/2 + 2x tan α) gives its shift
+    in the GOST 19274-73 sign, whose shifted reference circle d + 2x·m_n lies at mid-height
+    of the internal teeth as well (the ideal balls KISSsoft prints for the NREL rings touch
+    there, [KISSsoft2017])."""
+    return (t.s_n / t.m_n - 0.5 * math.pi) / (2.0 * math.tan(t.alpha_n))
 
 
 # ----------------------------------------------------------------------------- chords

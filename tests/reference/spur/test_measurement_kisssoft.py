@@ -108,3 +108,21 @@ def test_the_cases_cover_even_odd_internal_and_helical():
     kinds = {(c[3], c[2] > 0, c[0] % 2) for c in CASES.values()}
     assert {(False, False, 0), (False, False, 1), (True, False, 0), (True, False, 1),
             (False, True, 0), (False, True, 1)} <= kinds
+
+
+# KISSsoft's "theoretical diameter of ball/pin" D_M: the ball that touches the flanks on the
+# shifted reference circle d + 2x·m_n (mid-height of the teeth; for the rings x in the
+# GOST 19274-73 sign), :func:`geardesign.spur.measurement.ideal_ball` without rounding.
+# For the helical stage 3 KISSsoft's D_M (26.773, 24.554 mm) is 0.008 and 0.005 mm smaller:
+# it touches about 0.01 mm lower, on a contact circle the report does not define; those
+# two are not compared.
+IDEAL = {"1sun": 94.950, "1planet": 106.193, "1ring": 75.932, "2sun": 41.072,
+         "2planet": 38.726, "2ring": 34.704}
+
+
+@pytest.mark.parametrize("name", IDEAL)
+def test_ideal_ball_diameter(name):
+    from geardesign.spur.measurement import ideal_ball
+
+    t, _ = _tooth(name)
+    assert_ref(ideal_ball(t, step=1e-9), IDEAL[name], 0.0006, f"KISSsoft {name}: DM")
