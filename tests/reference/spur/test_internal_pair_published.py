@@ -6,7 +6,7 @@ geometry of internal pairs.
    x1 = 0, x2 = +0.5, a_x = 13.1683 mm), as reproduced in the public NUnit tests of GitHub
    ``bolsover/UtilitiesForAlibre`` (commit 1308ff3a66b719434834b8b3668b7ae25f07648d),
    ``UnitTests/Involute/Calculator/ProfileShiftedIntExtSpurGearCalculatorTest.cs``
-   ([KHK]; [UtilitiesForAlibre]).  KHK's internal-gear shift has the GOST 19274-73 sign
+   ([KHK]; [SDPSI] table 5-1; [UtilitiesForAlibre]).  KHK's internal-gear shift has the GOST 19274-73 sign
    (h_a2 = (1 − x2)m), and KHK shortens no tip, as the spur calculator's internal pair
    does not.  Tolerance: one unit of the printed last digit; α_w ±0.0004°, as the test
    computes it from the printed a_x = 13.1683 mm, whose rounding (±0.00005 mm) moves
