@@ -12,10 +12,14 @@ one line, exit 2.
 
 from __future__ import annotations
 
+import json
 import math
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
+from geardesign.core.errors import InputError
 from geardesign.core.registry import run_data
 from tests.conftest import flat
 from tests.helpers_cli import cli, write_spec
@@ -246,3 +250,40 @@ def test_iso6336_stresses_equal_planetary_mesh():
     for key in ("Z_H", "Z_E", "Z_B", "Z_D", "sigma_H0", "sigma_H1", "sigma_H2", "sigma_F1",
                 "sigma_F2", "Y_F2", "Y_S2", "S_H1", "S_H2", "S_F1", "S_F2"):
         assert v[key] == pytest.approx(st[key], rel=1e-9), key
+
+
+def test_a_pair_that_cannot_mesh_is_not_rated():
+    """The internal gear's tip reaches beyond the pinion's tangency point (ρ_p1 < 0): the
+    interference check fails and the rating is refused by a check, not by an exception
+    (a negative ε_α is refused as input by the result guard)."""
+    s = spur_doc(1830.0, 4250.0, z1=10, z2=181, x1=-0.735, x2=0.4916, cutter_teeth=126,
+                 internal_tip_shortening=0.277, bearing_scheme=6)
+    codes = {c["code"]: c for c in s["checks"]}
+    assert s["verdict"] == "fail"
+    assert codes["STRENGTH_NOT_RATED"]["passed"] is False
+    assert not codes["INTERFERENCE_PINION"]["passed"]
+
+
+@settings(max_examples=150, deadline=None)
+@given(z1=st.integers(5, 60), dz=st.integers(4, 120), x1=st.floats(-1.0, 2.0),
+       x2=st.floats(-1.0, 2.0), k2=st.floats(-0.5, 1.0), z0=st.one_of(st.none(),
+                                                                     st.integers(8, 60)),
+       beta=st.floats(0.0, 40.0), iso=st.booleans())
+def test_any_internal_pair_computes_or_is_refused(z1, dz, x1, x2, k2, z0, beta, iso):
+    """No exception, no NaN: a result (pass or fail) or a one-line input error."""
+    gear = {"internal": True, "module": 2.0, "z1": z1, "z2": z1 + dz, "x1": x1, "x2": x2,
+            "face_width": 20.0, "helix_angle": beta, "internal_tip_shortening": k2,
+            "bearing_scheme": 6}
+    if z0 is not None:
+        gear["cutter_teeth"] = z0
+    data = {"kind": "spur", "gear": gear,
+            "load": {"speed1": 1000.0, "torque1": 100.0, "life_hours": 1000.0},
+            "material": MATS}
+    if iso:
+        data["options"] = {"method": "ISO 6336:2019"}
+    try:
+        doc = run_data(data).document()
+    except InputError as exc:
+        assert len(str(exc).splitlines()) >= 1
+        return
+    json.dumps(doc, allow_nan=False)
