@@ -412,26 +412,3 @@ def internal_pair_geometry(p: InternalPairInput) -> InternalPairGeometry:
         c_12=0.5 * (d_f2 - g1.d_a) - a_w, c_21=0.5 * (d_a2 - g1.d_f) - a_w,
         delta_tip=delta_tip, cutting=cutting, g1=g1, g2=g2,
     )
-
-
-@dataclass(frozen=True)
-class InternalVelocities:
-    n1: float        # pinion speed relative to the carrier (or frame), min^-1
-    n2: float
-    v: float         # pitch-line velocity, m/s
-    v_s_A: float     # sliding velocity at A (pinion root), m/s
-    v_s_E: float     # sliding velocity at E (pinion tip), m/s
-
-
-def internal_velocities(g: InternalPairGeometry, n1: float) -> InternalVelocities:
-    """Pitch-line and sliding velocities of an internal pair (speeds relative to the
-    frame that carries both axes, i.e. the carrier of a planetary train):
-    :func:`geardesign.spur.kinematics.velocities`, which takes ω1 − ω2 as the relative
-    angular velocity of an internal pair (both gears turn the same way).
-    References: theory of gearing (Litvin, "Gear geometry and applied theory", internal
-    gears); [GOST19274].
-    """
-    from geardesign.spur.kinematics import velocities
-
-    v = velocities(g, n1)
-    return InternalVelocities(n1=v.n1, n2=v.n2, v=v.v, v_s_A=v.v_s_A, v_s_E=v.v_s_E)
