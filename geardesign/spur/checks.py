@@ -185,6 +185,8 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
     helical = p.beta > 0.0
     internal = getattr(g, "internal", False)
     src = S.G19274 if internal else S.G16532
+    # a smaller working pressure angle lengthens the line of action
+    smaller_angle = "reduce x2 − x1" if internal else "reduce x1 + x2"
     out: list[Check] = []
 
     # -- continuity of the mesh
@@ -192,21 +194,21 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
         out.append(check(
             "CONTACT_RATIO", g.eps_gamma >= EPS_MIN, "error",
             f"ε_γ = {g.eps_gamma:.3f} < 1: the mesh is not continuous; increase the face width "
-            f"or the helix angle, increase the tooth numbers or reduce x1 + x2",
+            f"or the helix angle, increase the tooth numbers or {smaller_angle}",
             f"ε_γ = {g.eps_gamma:.3f} >= 1: continuous mesh", g.eps_gamma, EPS_MIN, src))
         low_value, low_name = g.eps_gamma, "ε_γ"
     else:
         out.append(check(
             "CONTACT_RATIO", g.eps_alpha >= EPS_MIN, "error",
             f"ε_α = {g.eps_alpha:.3f} < 1: the mesh is not continuous; increase the tooth "
-            f"numbers, reduce x1 + x2 or use helical teeth",
+            f"numbers, {smaller_angle} or use helical teeth",
             f"ε_α = {g.eps_alpha:.3f} >= 1: continuous mesh", g.eps_alpha, EPS_MIN, src))
         low_value, low_name = g.eps_alpha, "ε_α"
     if low_value >= EPS_MIN:
         out.append(check(
             "CONTACT_RATIO_LOW", low_value >= EPS_WARN, "warning",
             f"{low_name} = {low_value:.3f} < {EPS_WARN}: little overlap of tooth pairs (noisy, "
-            f"sensitive to pitch errors); increase the tooth numbers or reduce x1 + x2",
+            f"sensitive to pitch errors); increase the tooth numbers or {smaller_angle}",
             f"{low_name} = {low_value:.3f} >= {EPS_WARN}", low_value, EPS_WARN, S.PRACTICE))
 
     for i, gear in enumerate(g.gears):
@@ -276,7 +278,9 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
     out.append(check(
         "ROOT_CLEARANCE", c >= -1e-9, "error",
         f"radial clearance {c:.3f} mm < 0: a tip touches the mating root; reduce the addendum "
-        f"coefficient or increase the clearance coefficient",
+        f"coefficient or increase the clearance coefficient"
+        + (", or shorten the internal gear's tip (gear.internal_tip_shortening)" if internal
+           else ""),
         f"radial clearance {c:.3f} mm >= 0", c, 0.0, src))
     if c >= -1e-9:
         out.append(check(
@@ -304,7 +308,8 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
             "SPECIFIC_SLIDING", worst <= SLIDING_MAX, "warning",
             f"specific sliding at the roots is high (ϑ1(A) = {sliding.theta1_A:.2f}, ϑ2(E) = "
             f"{sliding.theta2_E:.2f}; limit ±{SLIDING_MAX:g}): wear and scuffing risk; increase x1 "
-            f"(and reduce x2) to balance them, e.g. gear.shift_split = \"sliding\"",
+            + ("(and reduce x2, GOST sign) to balance them" if internal else
+               "(and reduce x2) to balance them, e.g. gear.shift_split = \"sliding\""),
             f"specific sliding at the roots within ±{SLIDING_MAX:g} (ϑ1(A) = "
             f"{sliding.theta1_A:.2f}, ϑ2(E) = {sliding.theta2_E:.2f})", worst, SLIDING_MAX,
             S.SLIDING))
