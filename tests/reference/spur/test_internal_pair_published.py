@@ -51,6 +51,37 @@ def test_khk_internal_gear_table_5_1():
     assert_ref(0.5 * (v["d_f2"] - v["d2"]), 5.25, 0.001, "KHK: h_f2")
 
 
+# KHK helical internal pair (normal system), the same source's
+# ``ProfileShiftedIntExtHelicalGearCalculatorTest.cs`` (commit
+# e2439210dac6746f4cd3c35a70266585daebde34): m_n = 3, β = 30°, z1 = 16, z2 = 24, x1 = 0,
+# x2 = 0.04263, a = 14 mm, b = 20 mm (from the printed ε_β).  The printed a = 14 mm and
+# x_n2 = 0.04263 do not agree in the normal system: a = 14 mm needs x_n2 − x_n1 =
+# (z2 − z1)(inv α_wt − inv α_t)/(2 tan α_n) = 0.0492 (0.042633 is what 2 tan α_t in the
+# denominator gives); the example's tip and root use x2 = 0.04263.  Compared: the
+# quantities that do not depend on the centre distance, with x2 = 0.04263.  Tolerance: one
+# unit of the last printed digit (the source truncates).
+KHK_HELICAL = {"internal": True, "module": 3.0, "z1": 16, "z2": 24, "helix_angle": 30.0,
+               "face_width": 20.0, "x1": 0.0, "x2": 0.04263}
+KHK_HELICAL_EXPECTED = {
+    "a": (13.8564, 0.0001), "alpha_t": (22.79587, 0.00001),
+    "d1": (55.4256, 0.0001), "d2": (83.1384, 0.0001), "d_b1": (51.0963, 0.0001),
+    "d_b2": (76.6445, 0.0001), "d_a1": (61.4256, 0.0001), "d_a2": (77.3942, 0.0001),
+    "d_f1": (47.9256, 0.0001), "d_f2": (90.8942, 0.0001), "eps_beta": (1.0610, 0.0001),
+}
+
+
+def test_khk_internal_helical_pair():
+    v = flat(spur(KHK_HELICAL))
+    for key, (expected, tol) in KHK_HELICAL_EXPECTED.items():
+        assert_ref(v[key], expected, tol, f"KHK helical internal: {key}")
+    assert_ref(0.5 * (v["d2"] - v["d_a2"]), 2.872, 0.0005, "KHK helical internal: h_a2")
+    assert_ref(0.5 * (v["d_f2"] - v["d2"]), 3.8778, 0.0001, "KHK helical internal: h_f2")
+    # the printed working angle is that of the printed a = 14 mm: cos α_wt = (d_b2 − d_b1)/2a
+    a_wt = math.acos((v["d_b2"] - v["d_b1"]) / 28.0)
+    assert_ref(math.degrees(a_wt), 24.1558, 0.0001, "KHK helical internal: α_wt")
+    assert_ref(math.tan(a_wt) - a_wt, 0.0268929, 0.00000005, "KHK helical internal: inv α_wt")
+
+
 def _nrel_planet_shift() -> float:
     x_sum, _ = shift_sum_for_center_distance(863.0, 45.0, 19, 17, math.radians(20.0), 0.0)
     return x_sum - 0.6170
