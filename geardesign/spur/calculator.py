@@ -593,6 +593,8 @@ def compute(spec: ValidatedSpec) -> Result:
                                          "external pairs only; remove [accuracy] and [drawing] "
                                          "for an internal pair"))
     res = CALCULATOR.new_result(spec)
+    if internal:
+        res.methods.append("GOST 19274-73")
     res.pair_geometry = geom  # for --profile and --plot (geardesign.spur.export)
     if notes is not None:
         sec = res.section("design", "Design proposal")
