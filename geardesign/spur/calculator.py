@@ -296,14 +296,15 @@ def add_geometry_rows(res: Result, g: PairGeometry, how: str) -> None:
     sec.add("beta_b", g.beta_b, "rad", "β_b", "base helix angle", src)
     if internal:
         sec.add("x_diff", g.x_diff, "-", "x_d", "shift difference x2 − x1 (GOST sign)", src)
-    else:
-        sec.add("x_sum", g.x_sum, "-", "x_Σ", "sum of profile shift coefficients", src)
-    _pair(sec, "x", (p.x1, p.x2), "-", "x", "profile shift coefficient"
-          + (" (internal gear: GOST 19274-73 sign)" if internal else ""), src)
-    if internal:
+        sec.add("x1", p.x1, "-", "x1", "profile shift coefficient, pinion", src)
+        sec.add("x2", p.x2, "-", "x2", "profile shift coefficient, internal gear "
+                "(GOST 19274-73 sign)", src)
         sec.add("x2_iso", I.x_to_iso(p.x2), "-", "x2,ISO",
                 "profile shift coefficient, internal gear (ISO 21771 sign)", src)
         sec.add("k_tip2", p.k2, "-", "k2", "tip shortening coefficient of the internal gear", src)
+    else:
+        sec.add("x_sum", g.x_sum, "-", "x_Σ", "sum of profile shift coefficients", src)
+        _pair(sec, "x", (p.x1, p.x2), "-", "x", "profile shift coefficient", src)
     sec.add("shift_source", how, None, "", "how the shifts were obtained", src)
     sec.add("alpha_tw", g.alpha_tw, "rad", "α_tw", "working transverse pressure angle", src)
     sec.add("a", g.a, "mm", "a", "reference centre distance"
@@ -315,8 +316,12 @@ def add_geometry_rows(res: Result, g: PairGeometry, how: str) -> None:
     _pair(sec, "d", (g1.d, g2.d), "mm", "d", "reference diameter", src)
     _pair(sec, "d_b", (g1.d_b, g2.d_b), "mm", "d_b", "base diameter", src)
     _pair(sec, "d_w", (g1.d_w, g2.d_w), "mm", "d_w", "working pitch diameter", src)
-    _pair(sec, "d_a", (g1.d_a, g2.d_a), "mm", "d_a", "tip diameter"
-          + (" (internal gear: d2 − 2(h_a* − x2 − k2)m_n)" if internal else ""), src)
+    if internal:
+        sec.add("d_a1", g1.d_a, "mm", "d_a1", "tip diameter, pinion", src)
+        sec.add("d_a2", g2.d_a, "mm", "d_a2", "tip diameter, internal gear: "
+                "d2 − 2(h_a* − x2 − k2)m_n", src)
+    else:
+        _pair(sec, "d_a", (g1.d_a, g2.d_a), "mm", "d_a", "tip diameter", src)
     _pair(sec, "d_f", (g1.d_f, g2.d_f), "mm", "d_f", "root diameter", src)
     _pair(sec, "h", (g1.h, g2.h), "mm", "h", "tooth depth", src)
     sec.add("c_12", g.c_12, "mm", "c_12", "radial clearance, pinion tip to wheel root", src)
