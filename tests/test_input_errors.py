@@ -65,7 +65,7 @@ CASES = [
      ["s.toml: gear.x1 = -1.0: the tip circle of gear 1 (d_a = 15.4528 mm) lies inside its "
       "base circle (d_b = 15.4904 mm): no involute flank; increase x1 or z1"]),
     ("missing table", 'kind = "spur"\n',
-     ["s.toml: give exactly one of [gear] (gear pair (external, spur or helical)) or [design] "
+     ["s.toml: give exactly one of [gear] (gear pair (external or internal, spur or helical)) or [design] "
       "(design mode: propose a pair for the load, then check it); the spec has neither"]),
     ("table given a value", GOOD.replace('kind = "spur"\n', 'kind = "spur"\nload = 5\n'),
      ["s.toml: load = 5: must be a table [load] (operating data)"]),

@@ -117,7 +117,7 @@ RULES = [
      ["s.toml: material: missing table [material.pinion] and [material.wheel]: the design "
       "mode sizes the pair for them"]),
     ("both gear and design", dict(BASE, design={"ratio": 4.0}),
-     ["s.toml: give exactly one of [gear] (gear pair (external, spur or helical)) or [design] "
+     ["s.toml: give exactly one of [gear] (gear pair (external or internal, spur or helical)) or [design] "
       "(design mode: propose a pair for the load, then check it); the spec has both"]),
 ]
 

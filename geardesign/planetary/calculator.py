@@ -21,9 +21,10 @@ from geardesign.planetary import kinematics as K
 from geardesign.planetary import sources as S
 from geardesign.spur import geometry as G
 from geardesign.spur import internal as I
+from geardesign.spur.kinematics import velocities
 
 X_AGREE = 1e-3     # |given shift − shift from a_w| accepted when both are given
-MIN_RING_EXCESS = 4  # the ring needs at least this many teeth more than its planet crown
+MIN_RING_EXCESS = I.MIN_TEETH_DIFFERENCE  # ring teeth over its planet crown's, at least
 
 
 def _fmt(x: float) -> str:
@@ -399,19 +400,9 @@ def _mesh_rows(res: Result, mesh: PG.Mesh) -> None:
                                           sp.internal), "-", "η",
             "specific-pressure coefficient m/ρ_red", S.MATUSEVICH + " (34)")
     if sp.internal:
-        if g.delta_tip is not None:
-            sec.add("delta_tip", g.delta_tip, "-", "δ",
-                    "tip interference measure (≥ 0: none)", S.G19274_MEMORY)
-        if g.cutting is not None:
-            cg = g.cutting
-            sec.add("alpha_tw0", cg.alpha_tw0, "rad", "α_tw0", "cutting pressure angle (shaper)",
-                    S.G19274)
-            sec.add("a_w0", cg.a_w0, "mm", "a_w0", "cutting centre distance (shaper)", S.G19274)
-            sec.add("d_a0", cg.d_a0, "mm", "d_a0", "shaper tip diameter (at the ring root)",
-                    S.G19274)
-            if math.isfinite(cg.delta0):
-                sec.add("delta_cut", cg.delta0, "-", "δ_0",
-                        "cutting tip interference measure (≥ 0: none)", S.G19274_MEMORY)
+        from geardesign.spur.calculator import internal_rows
+
+        internal_rows(sec, g)
 
 
 def _members_gears(meshes: list[PG.Mesh]) -> dict:
@@ -618,14 +609,8 @@ def _kinematics_and_power(res: Result, d: dict, train: K.Train, meshes: list[PG.
             ksec.add(f"v_{mesh.name}", v, "m/s", f"v_{mesh.name}",
                      f"pitch-line velocity of the {C.MESH_NAMES.get(mesh.name)} mesh (relative "
                      "to the carrier)", S.SLIDING)
-            if mesh.spec.internal:
-                iv = I.internal_velocities(g, abs(n1))
-                vs = max(abs(iv.v_s_A), abs(iv.v_s_E))
-            else:
-                w1 = abs(math.pi * n1 / 30.0)
-                w2 = w1 / g.u
-                rho_w1 = 0.5 * g.g1.d_w * math.sin(g.alpha_tw)
-                vs = (w1 + w2) * max(abs(g.g1.rho_p - rho_w1), abs(g.g1.rho_a - rho_w1)) / 1000.0
+            sv = velocities(g, abs(n1))   # ω1 ± ω2: external or internal mesh
+            vs = max(abs(sv.v_s_A), abs(sv.v_s_E))
             ksec.add(f"v_s_{mesh.name}", vs, "m/s", f"v_s,{mesh.name}",
                      f"largest sliding velocity of the {C.MESH_NAMES.get(mesh.name)} mesh",
                      S.SLIDING)

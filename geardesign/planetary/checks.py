@@ -17,7 +17,15 @@ import math
 from geardesign.core.result import Check, check
 from geardesign.planetary import sources as S
 from geardesign.planetary.geometry import Mesh
-from geardesign.spur.checks import CLEARANCE_WARN, EPS_MIN, EPS_WARN, interference_check
+from geardesign.spur.checks import (
+    CLEARANCE_WARN,
+    EPS_MIN,
+    EPS_WARN,
+    InternalNames,
+    interference_check,
+    internal_mesh_checks,
+    round_up,
+)
 
 NAMES = {"sun": "sun", "planet": "planet", "planet2": "second planet crown", "ring": "ring",
          "ring2": "second ring"}
@@ -25,10 +33,6 @@ SHIFT_REASONABLE = 3.0   # |x| beyond which a shift is no remedy (the spec's ran
 MESH_NAMES = {"sun_planet": "sun–planet", "planet_ring": "planet–ring",
               "planet2_ring": "planet2–ring", "planet_ring2": "planet–ring2",
               "planet2_ring2": "planet2–ring2"}
-
-
-def _up(x: float) -> str:
-    return f"{math.ceil(x * 1000 - 1e-9) / 1000:.3f}"
 
 
 def gear_checks(gears: dict, rack_h_straight: float, alpha_t: dict, beta: float,
@@ -47,7 +51,7 @@ def gear_checks(gears: dict, rack_h_straight: float, alpha_t: dict, beta: float,
                 f"UNDERCUT_{suf}", g.x >= g.x_min - 1e-9,
                 "warning" if allow_undercut else "error",
                 f"{n} undercut: x = {g.x:.4f} < x_min = {g.x_min:.4f}; increase shift.{member} "
-                f"to at least {_up(g.x_min)} (or use teeth.{member} >= {z_needed}), or set "
+                f"to at least {round_up(g.x_min)} (or use teeth.{member} >= {z_needed}), or set "
                 f"train.allow_undercut = true if it is deliberate",
                 f"{n} not undercut (x = {g.x:.4f} >= x_min = {g.x_min:.4f})", g.x, g.x_min,
                 S.G16532))
@@ -131,62 +135,13 @@ def mesh_checks(meshes: list[Mesh], sliding_max: float) -> list[Check]:
 
 
 def _internal_checks(g, code: str, mn: str, planet: str, ring: str) -> list[Check]:
-    """Involute interference at both roots, tip interference, cutting interference."""
-    out = []
-    g1, g2 = g.g1, g.g2
-    m = g.inp.m_n
-    # the ring tip radius that would put the planet's lower active point on its form circle
-    rho_need = g1.rho_l + g.g_w
-    d_a2_need = 2.0 * math.hypot(0.5 * g2.d_b, max(rho_need, 0.0))
-    k_more = (d_a2_need - g2.d_a) / (2.0 * m)
-    if g1.rho_p <= 0.0:
-        ok, msg = False, (
-            f"{mn}: the {NAMES[ring]} tip reaches beyond the {NAMES[planet]}'s tangency point "
-            f"(ρ_p = {g1.rho_p:.3f} mm <= 0): involute interference; shorten the ring tip "
-            f"(ring.tip_shortening += {_up(k_more)}), increase shift.{planet} or teeth.{ring}")
-    elif g1.rho_p < g1.rho_l - 1e-9:
-        ok, msg = False, (
-            f"involute interference at the {NAMES[planet]} root ({mn}): the {NAMES[ring]} tip "
-            f"works below the {NAMES[planet]}'s form circle (ρ_p = {g1.rho_p:.3f} mm < ρ_l = "
-            f"{g1.rho_l:.3f} mm); shorten the ring tip (ring.tip_shortening += {_up(k_more)}) "
-            f"or increase shift.{planet}")
-    else:
-        ok, msg = True, ""
-    out.append(check(
-        f"{code}_INTERFERENCE_{planet.upper()}", ok, "error", msg,
-        f"{mn}: no interference at the {NAMES[planet]} root (ρ_p = {g1.rho_p:.3f} mm >= ρ_l = "
-        f"{g1.rho_l:.3f} mm)", g1.rho_p, g1.rho_l, S.G19274))
-    how = "the shaper cutter" if g.cutting is not None else "the basic rack"
-    out.append(check(
-        f"{code}_INTERFERENCE_{ring.upper()}", g2.rho_p <= g2.rho_l + 1e-9, "error",
-        f"involute interference at the {NAMES[ring]} ({mn}): the {NAMES[planet]} tip works "
-        f"beyond the {NAMES[ring]}'s form circle made by {how} (ρ_p = {g2.rho_p:.3f} mm > "
-        f"ρ_l = {g2.rho_l:.3f} mm); reduce shift.{planet} (a smaller planet tip), or cut the ring "
-        f"with a shaper of more teeth (its form circle grows with them)",
-        f"{mn}: the {NAMES[planet]} tip works on the {NAMES[ring]}'s involute (ρ_p = "
-        f"{g2.rho_p:.3f} mm <= ρ_l = {g2.rho_l:.3f} mm, form circle from {how})",
-        g2.rho_p, g2.rho_l, S.G19274))
-    if g.delta_tip is not None:
-        out.append(check(
-            f"{code}_TIP_INTERFERENCE", g.delta_tip >= 0.0, "error",
-            f"{mn}: the tips of the {NAMES[planet]} and the {NAMES[ring]} interfere outside the "
-            f"line of action (trochoidal tip interference, δ = {g.delta_tip:.4f} < 0); increase "
-            f"teeth.{ring} − teeth.{planet}, shorten the ring tip (ring.tip_shortening) or "
-            f"increase shift.{ring} (GOST sign)",
-            f"{mn}: no tip interference (δ = {g.delta_tip:.4f} >= 0)", g.delta_tip, 0.0,
-            S.G19274_MEMORY))
-    if g.cutting is not None:
-        d0 = g.cutting.delta0
-        out.append(check(
-            f"{code}_CUTTING_INTERFERENCE", d0 >= 0.0, "error",
-            f"{mn}: the shaper cutter (z0 = {g.cutting.z0}) cuts into the {NAMES[ring]} tips "
-            f"(δ0 = {d0:.4f} < 0); use a cutter with fewer teeth (z0 well below "
-            f"{g.inp.z2}) or shorten the ring tips",
-            f"{mn}: the shaper cutter (z0 = {g.cutting.z0}) leaves the {NAMES[ring]} tips intact "
-            f"(δ0 = {d0:.4f} >= 0)" if math.isfinite(d0) else
-            f"{mn}: the shaper cutter (z0 = {g.cutting.z0}) leaves the {NAMES[ring]} tips intact "
-            f"(its tip circle does not cross them)", d0, 0.0, S.G19274_MEMORY))
-    return out
+    """Involute interference at both roots, tip interference, cutting interference: the
+    spur package's :func:`geardesign.spur.checks.internal_mesh_checks`, naming the
+    members and the spec keys of the train."""
+    names = InternalNames(NAMES[planet], NAMES[ring], f"shift.{planet}", f"shift.{ring}",
+                          f"teeth.{planet}", f"teeth.{ring}", "ring tip (ring.tip_shortening",
+                          mn, (planet.upper(), ring.upper()))
+    return internal_mesh_checks(g, f"{code}_", names, S.G19274, S.G19274_MEMORY)
 
 
 def coaxiality_checks(meshes: list[Mesh], tol: float, needed: dict, sign_note: dict

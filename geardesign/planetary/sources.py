@@ -1,6 +1,8 @@
 """Citations used in the planetary reports, in one place so that a reference is corrected
 once.  The docstring of the function that computes a quantity gives its formula."""
 
+from geardesign.spur import sources as _spur
+
 WILLIS = "Willis method (Kudryavtsev)"
 MATUSEVICH = "Matusevich et al. 2017"
 MATUSEVICH_1 = "Matusevich et al. 2017 eq. (1)"
@@ -10,8 +12,8 @@ KUDRYAVTSEV = "Kudryavtsev, Planetary gears"
 ASSEMBLY = "Kudryavtsev; Matusevich et al. 2017 (4)"
 PHASING = "Parker & Lin 2004"
 G16532 = "GOST 16532-70"
-G19274 = "GOST 19274-73; ISO 21771"
-G19274_MEMORY = "GOST 19274-73 (handbook form, verify)"
+G19274 = _spur.G19274
+G19274_MEMORY = _spur.G19274_MEMORY
 SLIDING = "theory of gearing; Dobrov 2017 (3)"
 HV = "ISO/TR 14179-2; Niemann"
 TORQUE = "torque method (Kudryavtsev); Malashchenko et al. 2017 (10)-(12)"

@@ -1,5 +1,5 @@
-"""Spur and helical external gear pairs: geometry to GOST 16532-70, strength to
-GOST 21354-87.
+"""Spur and helical gear pairs, external (GOST 16532-70) and internal (GOST 19274-73);
+strength to GOST 21354-87 or ISO 6336:2019.
 
 Modules: :mod:`.geometry` (pure geometry), :mod:`.kinematics` (velocities, sliding),
 :mod:`.loads` (forces, cycles), :mod:`.strength` (rating methods), :mod:`.checks`,
@@ -21,8 +21,8 @@ def _calculator():
 
     return Calculator(
         kind="spur",
-        summary="external spur/helical gear pair: geometry, contact ratio, sliding, "
-                "measurement; GOST 21354-87 strength; design mode",
+        summary="external or internal spur/helical gear pair: geometry, contact ratio, "
+                "sliding, measurement; GOST 21354-87 strength; design mode",
         methods=("GOST 16532-70", "GOST 13755-81"),
         schema=SCHEMA,
         compute=compute,

@@ -11,6 +11,7 @@ import math
 from geardesign.core.errors import InputError, Problem
 from geardesign.core.result import Result, Section, check
 from geardesign.core.spec import ValidatedSpec
+from geardesign.spur import internal as I
 from geardesign.spur import sources as S
 from geardesign.spur.checks import geometry_checks
 from geardesign.spur.geometry import (
@@ -25,6 +26,7 @@ from geardesign.spur.kinematics import balanced_shift_split, sliding_at_ends, ve
 
 X_AGREE = 1e-3  # |x1 + x2 − x_Σ(a_w)| accepted when all three are given
 X_SUM_RANGE = (-2.0, 4.0)  # x1 + x2 reachable with each shift in −1…2 (the spec's range)
+X_DIFF_RANGE = (-3.0, 3.0)  # x2 − x1 reachable likewise (internal pairs)
 
 
 def _fmt(x: float) -> str:
@@ -102,8 +104,146 @@ def pair_input_from_spec(spec: ValidatedSpec) -> tuple[PairInput, str]:
     return PairInput(m, z1, z2, x1, x_sum - x1, beta, b, rack), "equal specific sliding"
 
 
+#: Keys of internal pairs only: their defaults are not echoed for an external pair.
+INTERNAL_ONLY = ("gear.internal", "gear.cutter_shift", "gear.internal_tip_shortening")
+
+
+def _given(spec: ValidatedSpec, path: str) -> bool:
+    """Whether the spec gave ``path`` itself (not a default)."""
+    table, key = path.split(".")
+    return path not in spec.assumed and (spec.data.get(table) or {}).get(key) is not None
+
+
+def internal_input_from_spec(spec: ValidatedSpec) -> tuple[I.InternalPairInput, str]:
+    """The :class:`~geardesign.spur.internal.InternalPairInput` of a spec with
+    ``gear.internal = true``, resolving the shifts (GOST 19274-73 sign).
+
+    Without ``center_distance`` the shifts are x1, x2 (0 when absent, echoed as assumed).
+    With it, x2 − x1 follows from a_w (:func:`~geardesign.spur.internal.
+    shift_difference_for_center_distance`); x1 or x2 given, the other follows; neither, x1 = 0
+    (assumed).  Rules across keys are input errors naming the key."""
+    g, r = spec.data["gear"], spec.data["rack"]
+    rack = BasicRack(math.radians(g["pressure_angle"]), r["addendum_coef"], r["clearance_coef"],
+                     r["root_radius_coef"])
+    beta = math.radians(g["helix_angle"])
+    m, z1, z2, b = g["module"], g["z1"], g["z2"], g["face_width"]
+    n_min = I.MIN_TEETH_DIFFERENCE
+    if z2 - z1 < n_min:
+        raise InputError.at("gear.z2", z2, f"an internal gear needs at least {n_min} teeth more "
+                            f"than the pinion (gear.z1 = {z1}): with fewer the pair cannot run "
+                            f"(tip interference); use z2 >= {z1 + n_min}")
+    if _given(spec, "gear.tip_shortening"):
+        raise InputError.at("gear.tip_shortening", g["tip_shortening"],
+                            "applies to external pairs (the Δy shortening of GOST 16532-70); the "
+                            "tip of an internal gear is set by gear.internal_tip_shortening")
+    if g["shift_split"] is not None:
+        raise InputError.at("gear.shift_split", g["shift_split"],
+                            "applies to external pairs only; for an internal pair give x1 or "
+                            "x2 and the other follows from center_distance")
+    cutter = None
+    z0 = g["cutter_teeth"]
+    if z0 is not None:
+        if z0 + n_min > z2:
+            raise InputError.at("gear.cutter_teeth", z0,
+                                f"a shaper cuts an internal gear only with fewer teeth: at most "
+                                f"{z2 - n_min} for the {z2}-tooth internal gear (gear.z2; the "
+                                f"same rule as for the pinion)")
+        cutter = I.ShaperCutter(z0, g["cutter_shift"], g["cutter_tip_radius_coef"])
+    else:
+        for key in ("cutter_shift", "cutter_tip_radius_coef"):
+            if _given(spec, f"gear.{key}"):
+                raise InputError.at(f"gear.{key}", g[key],
+                                    "applies only with gear.cutter_teeth (the shaper cutter); "
+                                    f"give it or remove {key}")
+    for path in ("gear.tip_shortening",) + (("gear.cutter_shift",) if cutter is None else ()):
+        _drop_unused_defaults(spec, (path,))
+
+    def make(x1: float, x2: float) -> I.InternalPairInput:
+        return I.InternalPairInput(m, z1, z2, x1, x2, beta, b, rack,
+                                   k2=g["internal_tip_shortening"], cutter=cutter)
+
+    a_w, x1, x2 = g["center_distance"], g["x1"], g["x2"]
+    if a_w is None:
+        for key in ("x1", "x2"):
+            if g[key] is None:
+                g[key] = 0.0
+                spec.assumed.append(f"gear.{key}")
+        return make(g["x1"], g["x2"]), "given"
+    try:
+        x_diff, _ = I.shift_difference_for_center_distance(a_w, m, z1, z2, rack.alpha_n, beta)
+    except GeometryError as exc:
+        a = 0.5 * m * (z2 - z1) / math.cos(beta)
+        raise InputError.at(
+            "gear.center_distance", a_w,
+            f"smaller than possible for an internal pair: must exceed (d_b2 − d_b1)/2 = "
+            f"{_fmt(exc.limit)} mm, where the base circles touch (x2 − x1 = 0 gives a_w = "
+            f"{_fmt(a)} mm)") from None
+    lo, hi = X_DIFF_RANGE
+    if not lo <= x_diff <= hi:
+        a = 0.5 * m * (z2 - z1) / math.cos(beta)
+        raise InputError.at(
+            "gear.center_distance", a_w,
+            f"needs x2 − x1 = {x_diff:.3f}, outside what two shifts of −1…2 can give "
+            f"({lo:g}…{hi:g}); choose a_w nearer to a = {_fmt(a)} mm")
+    if x1 is not None and x2 is not None:
+        if abs(x2 - x1 - x_diff) > X_AGREE:
+            raise InputError(Problem(
+                "gear.x2 − gear.x1", f"does not match center_distance = {_fmt(a_w)} mm, which "
+                f"needs x2 − x1 = {x_diff:.4f} (internal pair); give x1 or x2 only and the "
+                f"other follows", x2 - x1))
+        return make(x1, x1 + x_diff), "x1 given, x2 = x1 + x_d"
+    if x2 is not None:
+        return make(x2 - x_diff, x2), "x2 given, x1 = x2 − x_d"
+    if x1 is None:
+        g["x1"] = 0.0
+        spec.assumed.append("gear.x1")
+    return make(g["x1"], g["x1"] + x_diff), "x1 given, x2 = x1 + x_d"
+
+
+def _solve_internal(spec: ValidatedSpec) -> tuple[I.InternalPairGeometry, str]:
+    p, how = internal_input_from_spec(spec)
+    try:
+        return I.internal_pair_geometry(p), how
+    except GeometryError as exc:
+        if exc.code == "INV_ALPHA_TW":
+            raise InputError(Problem(
+                "gear.x2 − gear.x1",
+                f"too negative for an internal pair: {exc}, no working pressure angle exists; "
+                f"x2 − x1 (GOST 19274-73 sign) must be > {exc.limit:.4f}", p.x2 - p.x1)) \
+                from None
+        if exc.code == "RING_TIP_INSIDE_BASE":
+            raise InputError.at(
+                "gear.x2", p.x2,
+                f"the tip circle of the internal gear (d_a2 = {exc.value:.4f} mm) lies inside "
+                f"its base circle (d_b2 = {exc.limit:.4f} mm): no involute at its tips; "
+                f"increase x2 (GOST 19274-73 sign) or gear.internal_tip_shortening") from None
+        if exc.code == "CUTTER_TIP":
+            raise InputError.at("gear.cutter_teeth", p.cutter.z0,
+                                f"{exc}; use another cutter") from None
+        raise InputError.at(
+            "gear.x1", p.x1,
+            f"the tip circle of the pinion (d_a = {exc.value:.4f} mm) lies inside its base "
+            f"circle (d_b = {exc.limit:.4f} mm): no involute flank; increase x1 or z1") \
+            from None
+
+
 def solve_geometry(spec: ValidatedSpec) -> tuple[PairGeometry, str]:
-    """Pair geometry of a spec; impossible geometry becomes a one-line input error."""
+    """Pair geometry of a spec; impossible geometry becomes a one-line input error.  An
+    internal pair (``gear.internal``) gives an
+    :class:`~geardesign.spur.internal.InternalPairGeometry`."""
+    gear = spec.data["gear"]
+    if gear.get("internal"):
+        return _solve_internal(spec)
+    for path in INTERNAL_ONLY[1:]:
+        if _given(spec, path):
+            raise InputError.at(path, gear[path.split(".")[1]],
+                                "applies to internal pairs only; set gear.internal = true or "
+                                "remove it")
+    for key in ("cutter_teeth", "cutter_tip_radius_coef"):
+        if gear.get(key) is not None:
+            raise InputError.at(f"gear.{key}", gear[key], "applies to internal pairs only; set "
+                                "gear.internal = true or remove it")
+    _drop_unused_defaults(spec, INTERNAL_ONLY)
     p, how = pair_input_from_spec(spec)
     if not spec.data["gear"].get("tip_shortening", True):
         from dataclasses import replace
@@ -138,67 +278,116 @@ def _pair(sec: Section, key: str, values: tuple, unit: str, symbol: str, name: s
 
 
 def add_geometry_rows(res: Result, g: PairGeometry, how: str) -> None:
-    """Report rows of the pair geometry (also used by calculators that reuse this pair)."""
+    """Report rows of the pair geometry (also used by calculators that reuse this pair).
+    An internal pair (``g.internal``) reports x2 − x1 instead of x1 + x2, the shift of the
+    internal gear in both signs, and its tip and cutting interference."""
     p = g.inp
     g1, g2 = g.gears
-    sec = res.section("geometry", "Geometry")
-    sec.add("u", g.u, "-", "u", "gear ratio z2/z1", S.G16532)
-    sec.add("m_t", g.m_t, "mm", "m_t", "transverse module", S.G16532)
-    sec.add("alpha_t", g.alpha_t, "rad", "α_t", "transverse pressure angle", S.G16532)
-    sec.add("beta_b", g.beta_b, "rad", "β_b", "base helix angle", S.G16532)
-    sec.add("x_sum", g.x_sum, "-", "x_Σ", "sum of profile shift coefficients", S.G16532)
-    _pair(sec, "x", (p.x1, p.x2), "-", "x", "profile shift coefficient", S.G16532)
-    sec.add("shift_source", how, None, "", "how the shifts were obtained", S.G16532)
-    sec.add("alpha_tw", g.alpha_tw, "rad", "α_tw", "working transverse pressure angle",
-            S.G16532)
-    sec.add("a", g.a, "mm", "a", "reference centre distance", S.G16532)
-    sec.add("a_w", g.a_w, "mm", "a_w", "working centre distance", S.G16532)
-    sec.add("y", g.y, "-", "y", "centre distance modification coefficient", S.G16532)
-    sec.add("delta_y", g.dy, "-", "Δy", "tip shortening coefficient (x_Σ − y)", S.G16532)
-    _pair(sec, "d", (g1.d, g2.d), "mm", "d", "reference diameter", S.G16532)
-    _pair(sec, "d_b", (g1.d_b, g2.d_b), "mm", "d_b", "base diameter", S.G16532)
-    _pair(sec, "d_w", (g1.d_w, g2.d_w), "mm", "d_w", "working pitch diameter", S.G16532)
-    _pair(sec, "d_a", (g1.d_a, g2.d_a), "mm", "d_a", "tip diameter", S.G16532)
-    _pair(sec, "d_f", (g1.d_f, g2.d_f), "mm", "d_f", "root diameter", S.G16532)
-    _pair(sec, "h", (g1.h, g2.h), "mm", "h", "tooth depth", S.G16532)
-    sec.add("c_12", g.c_12, "mm", "c_12", "radial clearance, pinion tip to wheel root", S.G16532)
-    sec.add("c_21", g.c_21, "mm", "c_21", "radial clearance, wheel tip to pinion root", S.G16532)
-    sec.add("p_bt", g.p_bt, "mm", "p_bt", "transverse base pitch", S.G16532)
-    sec.add("p_bn", g.p_bn, "mm", "p_bn", "normal base pitch", S.G16532)
-    sec.add("g_alpha", g.g_alpha, "mm", "g_α", "length of the active line of action",
-            S.G16532)
-    sec.add("eps_alpha", g.eps_alpha, "-", "ε_α", "transverse contact ratio", S.G16532)
-    sec.add("eps_beta", g.eps_beta, "-", "ε_β", "overlap ratio", S.G16532)
-    sec.add("eps_gamma", g.eps_gamma, "-", "ε_γ", "total contact ratio", S.G16532)
+    internal = getattr(g, "internal", False)
+    src = S.G19274 if internal else S.G16532
+    sec = res.section("geometry", "Geometry" + (" (internal pair)" if internal else ""))
+    if internal:
+        sec.add("internal", True, None, "", "internal pair: gear 2 is an internal gear", src)
+        sec.add("convention", "GOST 19274-73 (z2 > 0, x2 > 0 away from the axis)", None, "",
+                "sign convention of the internal gear (as given)", src)
+    sec.add("u", g.u, "-", "u", "gear ratio z2/z1", src)
+    sec.add("m_t", g.m_t, "mm", "m_t", "transverse module", src)
+    sec.add("alpha_t", g.alpha_t, "rad", "α_t", "transverse pressure angle", src)
+    sec.add("beta_b", g.beta_b, "rad", "β_b", "base helix angle", src)
+    if internal:
+        sec.add("x_diff", g.x_diff, "-", "x_d", "shift difference x2 − x1 (GOST sign)", src)
+        sec.add("x1", p.x1, "-", "x1", "profile shift coefficient, pinion", src)
+        sec.add("x2", p.x2, "-", "x2", "profile shift coefficient, internal gear "
+                "(GOST 19274-73 sign)", src)
+        sec.add("x2_iso", I.x_to_iso(p.x2), "-", "x2,ISO",
+                "profile shift coefficient, internal gear (ISO 21771 sign)", src)
+        sec.add("k_tip2", p.k2, "-", "k2", "tip shortening coefficient of the internal gear", src)
+    else:
+        sec.add("x_sum", g.x_sum, "-", "x_Σ", "sum of profile shift coefficients", src)
+        _pair(sec, "x", (p.x1, p.x2), "-", "x", "profile shift coefficient", src)
+    sec.add("shift_source", how, None, "", "how the shifts were obtained", src)
+    sec.add("alpha_tw", g.alpha_tw, "rad", "α_tw", "working transverse pressure angle", src)
+    sec.add("a", g.a, "mm", "a", "reference centre distance"
+            + (" m_t(z2 − z1)/2" if internal else ""), src)
+    sec.add("a_w", g.a_w, "mm", "a_w", "working centre distance", src)
+    sec.add("y", g.y, "-", "y", "centre distance modification coefficient", src)
+    sec.add("delta_y", g.dy, "-", "Δy", "x_d − y (not applied to the tips of an internal pair)"
+            if internal else "tip shortening coefficient (x_Σ − y)", src)
+    _pair(sec, "d", (g1.d, g2.d), "mm", "d", "reference diameter", src)
+    _pair(sec, "d_b", (g1.d_b, g2.d_b), "mm", "d_b", "base diameter", src)
+    _pair(sec, "d_w", (g1.d_w, g2.d_w), "mm", "d_w", "working pitch diameter", src)
+    if internal:
+        sec.add("d_a1", g1.d_a, "mm", "d_a1", "tip diameter, pinion", src)
+        sec.add("d_a2", g2.d_a, "mm", "d_a2", "tip diameter, internal gear: "
+                "d2 − 2(h_a* − x2 − k2)m_n", src)
+    else:
+        _pair(sec, "d_a", (g1.d_a, g2.d_a), "mm", "d_a", "tip diameter", src)
+    _pair(sec, "d_f", (g1.d_f, g2.d_f), "mm", "d_f", "root diameter", src)
+    _pair(sec, "h", (g1.h, g2.h), "mm", "h", "tooth depth", src)
+    sec.add("c_12", g.c_12, "mm", "c_12", "radial clearance, pinion tip to wheel root", src)
+    sec.add("c_21", g.c_21, "mm", "c_21", "radial clearance, wheel tip to pinion root", src)
+    sec.add("p_bt", g.p_bt, "mm", "p_bt", "transverse base pitch", src)
+    sec.add("p_bn", g.p_bn, "mm", "p_bn", "normal base pitch", src)
+    sec.add("g_alpha", g.g_alpha, "mm", "g_α", "length of the active line of action", src)
+    sec.add("eps_alpha", g.eps_alpha, "-", "ε_α", "transverse contact ratio"
+            + (" (internal mesh)" if internal else ""), src)
+    sec.add("eps_beta", g.eps_beta, "-", "ε_β", "overlap ratio", src)
+    sec.add("eps_gamma", g.eps_gamma, "-", "ε_γ", "total contact ratio", src)
     sec.add("psi_bd", p.b_w / g1.d_w, "-", "ψ_bd", "face width ratio b_w/d_w1", S.PRACTICE)
 
     q = res.section("quality", "Meshing quality")
-    _pair(q, "x_min", (g1.x_min, g2.x_min), "-", "x_min", "least shift without undercut",
-          S.G16532)
+    if internal:   # no undercut of an internal gear
+        q.add("x_min1", g1.x_min, "-", "x_min1", "least shift without undercut, pinion",
+              S.G16532)
+    else:
+        _pair(q, "x_min", (g1.x_min, g2.x_min), "-", "x_min", "least shift without undercut",
+              S.G16532)
     _pair(q, "alpha_a", (g1.alpha_a, g2.alpha_a), "rad", "α_a", "pressure angle at the tip",
-          S.G16532)
+          src)
     _pair(q, "rho_a", (g1.rho_a, g2.rho_a), "mm", "ρ_a", "radius of curvature at the tip",
-          S.G16532)
+          src)
     _pair(q, "rho_p", (g1.rho_p, g2.rho_p), "mm", "ρ_p",
-          "radius of curvature at the lower point of active profile", S.G16532)
+          "radius of curvature at the " + ("active limit of the profile" if internal else
+                                           "lower point of active profile"), src)
     _pair(q, "rho_l", (g1.rho_l, g2.rho_l), "mm", "ρ_l",
-          "radius of curvature at the form point (end of the generated involute)",
-          S.G16532)
-    _pair(q, "d_p", (g1.d_p, g2.d_p), "mm", "d_p", "diameter of the lower point of active profile",
-          S.G16532)
-    _pair(q, "d_l", (g1.d_l, g2.d_l), "mm", "d_l", "form circle diameter", S.G16532)
-    q.add("g_w", g.g_w, "mm", "g_w", "line of action N1N2 = a_w·sin α_tw", S.G16532)
+          "radius of curvature at the form point (end of the generated involute)", src)
+    _pair(q, "d_p", (g1.d_p, g2.d_p), "mm", "d_p", "diameter of the " + (
+        "active limit of the profile (internal gear: its outer end)" if internal else
+        "lower point of active profile"), src)
+    _pair(q, "d_l", (g1.d_l, g2.d_l), "mm", "d_l", "form circle diameter", src)
+    q.add("g_w", g.g_w, "mm", "g_w", "line of action N1N2 = a_w·sin α_tw", src)
+    if internal:
+        internal_rows(q, g)
 
     t = res.section("thickness", "Tooth thickness and measurement")
     _pair(t, "s_n", (g1.s_n, g2.s_n), "mm", "s_n", "normal tooth thickness at the reference circle",
-          S.G16532)
+          src)
     _pair(t, "s_an", (g1.s_an, g2.s_an), "mm", "s_an", "normal tooth thickness at the tip",
-          S.G16532)
-    _pair(t, "k", (g1.k, g2.k), "-", "k", "number of teeth spanned", S.G16532_SPAN)
-    _pair(t, "W", (g1.W, g2.W), "mm", "W", "base tangent length (span) over k teeth",
-          S.G16532_SPAN)
-    _pair(t, "d_W", (g1.d_W, g2.d_W), "mm", "d_W", "diameter of the calliper contact",
-          S.G16532_SPAN)
+          src)
+    span = S.G19274 if internal else S.G16532_SPAN
+    _pair(t, "k", (g1.k, g2.k), "-", "k", "number of teeth (internal gear: spaces) spanned",
+          span)
+    _pair(t, "W", (g1.W, g2.W), "mm", "W", "base tangent length (span) over k teeth", span)
+    _pair(t, "d_W", (g1.d_W, g2.d_W), "mm", "d_W", "diameter of the calliper contact", span)
+
+
+def internal_rows(sec: Section, g) -> None:
+    """Rows of an internal mesh's tip and cutting interference (an
+    :class:`~geardesign.spur.internal.InternalPairGeometry`), in the spur report and in
+    every planet–ring mesh of the planetary report."""
+    if g.delta_tip is not None:
+        sec.add("delta_tip", g.delta_tip, "-", "δ", "tip interference measure (≥ 0: none)",
+                S.G19274_MEMORY)
+    if g.cutting is not None:
+        cg = g.cutting
+        sec.add("alpha_tw0", cg.alpha_tw0, "rad", "α_tw0", "cutting pressure angle (shaper)",
+                S.G19274)
+        sec.add("a_w0", cg.a_w0, "mm", "a_w0", "cutting centre distance (shaper)", S.G19274)
+        sec.add("d_a0", cg.d_a0, "mm", "d_a0", "shaper tip diameter (at the ring root)",
+                S.G19274)
+        if math.isfinite(cg.delta0):
+            sec.add("delta_cut", cg.delta0, "-", "δ_0",
+                    "cutting tip interference measure (≥ 0: none)", S.G19274_MEMORY)
 
 
 def _strength_inputs(spec: ValidatedSpec, gear: dict):
@@ -371,9 +560,19 @@ def _add_gost_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inp
             b_bending = least_passing(
                 rerate, inp.b_w,
                 lambda x: all(x[f"S_F{k}"] >= x[f"S_F{k}_min"] * (1 - 1e-12) for k in (1, 2)))
+    internal = getattr(geom, "internal", False)   # no re-rated advice for an internal pair
     res.checks.extend(strength_checks(v, mats, geom.inp.beta > 0, setting.grade,
-                                      duty.T_peak is not None, geom.inp.b_w, b_contact,
+                                      duty.T_peak is not None,
+                                      None if internal else geom.inp.b_w, b_contact,
                                       b_bending, geom.a_w, k_contact))
+
+
+def _ratable(g) -> bool:
+    """Whether an internal pair has the geometry a strength rating needs: a continuous
+    transverse mesh (ε_α >= 1, which the contact-ratio factors of both methods presume),
+    both active limits before the tangency points and teeth that are not pointed."""
+    return (g.eps_alpha >= 1.0 and g.g1.rho_p > 0.0 and g.g2.rho_p > 0.0
+            and g.g1.s_an > 0.0 and g.g2.s_an > 0.0)
 
 
 def compute(spec: ValidatedSpec) -> Result:
@@ -394,7 +593,16 @@ def compute(spec: ValidatedSpec) -> Result:
         from geardesign.spur.drawing import assume_expansion
 
         assume_expansion(spec)
+    internal = getattr(geom, "internal", False)
+    if internal:
+        for table in ("accuracy", "drawing"):
+            if spec.data.get(table) is not None:
+                raise InputError(Problem(table, f"the drawing data ([{table}]) are computed for "
+                                         "external pairs only; remove [accuracy] and [drawing] "
+                                         "for an internal pair"))
     res = CALCULATOR.new_result(spec)
+    if internal:
+        res.methods.append("GOST 19274-73")
     res.pair_geometry = geom  # for --profile and --plot (geardesign.spur.export)
     if notes is not None:
         sec = res.section("design", "Design proposal")
@@ -421,9 +629,10 @@ def compute(spec: ValidatedSpec) -> Result:
     load = spec.data["load"]
     if load is not None:
         v = velocities(geom, load["speed1"])
-        k.add("n2", v.n2, "min^-1", "n2", "wheel speed", S.G16532)
+        same = " (same sense as the pinion: internal pair)" if internal else ""
+        k.add("n2", v.n2, "min^-1", "n2", "wheel speed" + same, S.G16532)
         k.add("omega1", v.omega1, "rad/s", "ω1", "pinion angular velocity", S.SLIDING)
-        k.add("omega2", v.omega2, "rad/s", "ω2", "wheel angular velocity", S.SLIDING)
+        k.add("omega2", v.omega2, "rad/s", "ω2", "wheel angular velocity" + same, S.SLIDING)
         k.add("v", v.v, "m/s", "v", "pitch-line velocity (at d_w1)", S.SLIDING)
         k.add("v_s_A", v.v_s_A, "m/s", "v_s(A)", "sliding velocity at A (approach)", S.SLIDING)
         k.add("v_s_E", v.v_s_E, "m/s", "v_s(E)", "sliding velocity at E (recess)", S.SLIDING)
@@ -441,6 +650,13 @@ def compute(spec: ValidatedSpec) -> Result:
             "UNITS_ANGLE", False, "warning",
             f"helix_angle = {beta:.6g}° is below 1°: check the units (degrees; {beta:.6g} rad "
             f"would be {math.degrees(beta):.2f}°)", "", beta, 1.0, "plausibility"))
-    if strength is not None:
+    if strength is not None and internal and not _ratable(geom):
+        res.checks.append(check(
+            "STRENGTH_NOT_RATED", False, "error",
+            "the strength was not rated: this internal pair cannot mesh as computed (ε_α "
+            "< 1, a tip beyond the mate's tangency point, or a pointed tooth; see the failed "
+            "geometry checks); correct the geometry first", "",
+            None, None, S.G19274))
+    elif strength is not None:
         add_strength(res, geom, spec, strength)
     return res

@@ -35,6 +35,9 @@ def _pair_of(result):
     if geom is None:
         raise ExportError("this result has no spur gear pair to draw (a kind = \"spur\" spec "
                           "is needed)")
+    if getattr(geom, "internal", False):
+        raise ExportError("the profile and the plot draw external pairs only; this spec is an "
+                          "internal pair (gear.internal = true)")
     allow = [0.0, 0.0]
     for sec in result.sections:
         if sec.key == "accuracy":

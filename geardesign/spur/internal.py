@@ -43,6 +43,10 @@ from geardesign.spur.geometry import (
     transverse_angles,
 )
 
+MIN_TEETH_DIFFERENCE = 4
+"""Least z2 − z1 of an internal pair (and of an internal gear and its shaper cutter): with
+fewer teeth difference the pair cannot run (tip interference) [Kudryavtsev]."""
+
 MATE_TEETH = 1000
 """Teeth of the virtual external mate used to obtain a pinion's own (not tip-shortened)
 geometry from :func:`geardesign.spur.geometry.pair_geometry` (x_mate = −x1 gives
@@ -407,34 +411,4 @@ def internal_pair_geometry(p: InternalPairInput) -> InternalPairGeometry:
         eps_alpha=eps_alpha, eps_beta=eps_beta, eps_gamma=eps_alpha + eps_beta,
         c_12=0.5 * (d_f2 - g1.d_a) - a_w, c_21=0.5 * (d_a2 - g1.d_f) - a_w,
         delta_tip=delta_tip, cutting=cutting, g1=g1, g2=g2,
-    )
-
-
-@dataclass(frozen=True)
-class InternalVelocities:
-    n1: float        # pinion speed relative to the carrier (or frame), min^-1
-    n2: float
-    v: float         # pitch-line velocity, m/s
-    v_s_A: float     # sliding velocity at A (pinion root), m/s
-    v_s_E: float     # sliding velocity at E (pinion tip), m/s
-
-
-def internal_velocities(g: InternalPairGeometry, n1: float) -> InternalVelocities:
-    """Pitch-line and sliding velocities of an internal pair (speeds relative to the
-    frame that carries both axes, i.e. the carrier of a planetary train).
-
-    .. math:: ω_2 = ω_1/u \\;(\\text{same sense}),\\quad v = ω_1 d_{w1}/2000,\\quad
-              v_s = (ω_1 - ω_2)(ρ_1 - ρ_{w1})/1000
-
-    The relative angular velocity of the flanks is ω1 − ω2 because both gears turn the
-    same way.  References: theory of gearing (Litvin, "Gear geometry and applied
-    theory", internal gears); [GOST19274].
-    """
-    omega1 = math.pi * n1 / 30.0
-    omega2 = omega1 / g.u
-    rho_w1 = 0.5 * g.g1.d_w * math.sin(g.alpha_tw)
-    return InternalVelocities(
-        n1=n1, n2=n1 / g.u, v=omega1 * g.g1.d_w / 2000.0,
-        v_s_A=(omega1 - omega2) * (g.g1.rho_p - rho_w1) / 1000.0,
-        v_s_E=(omega1 - omega2) * (g.g1.rho_a - rho_w1) / 1000.0,
     )

@@ -94,7 +94,10 @@ def velocities(g: PairGeometry, n1: float) -> Velocities:
 
     .. math::
         ω_1 = π n_1/30,\\quad ω_2 = ω_1/u,\\quad v = ω_1 d_{w1}/2000,\\quad
-        v_s = (ω_1 + ω_2)(ρ_1 - ρ_{w1})/1000, \\; ρ_{w1} = \\tfrac12 d_{w1} \\sin α_{tw}
+        v_s = (ω_1 \\pm ω_2)(ρ_1 - ρ_{w1})/1000, \\; ρ_{w1} = \\tfrac12 d_{w1} \\sin α_{tw}
+
+    "+" for an external pair (the gears turn in opposite senses), "−" for an internal pair
+    (``g.internal``: both turn the same way, ω2 has the sign of ω1).
 
     (v in m/s with d in mm.)  The sliding velocity is the same in the transverse and the
     normal section: the contact line lies in the plane of action, whose distance from the
@@ -104,12 +107,13 @@ def velocities(g: PairGeometry, n1: float) -> Velocities:
     """
     omega1 = math.pi * n1 / 30.0
     omega2 = omega1 / g.u
+    relative = omega1 - omega2 if getattr(g, "internal", False) else omega1 + omega2
     rho_w1 = 0.5 * g.g1.d_w * math.sin(g.alpha_tw)
     return Velocities(
         n1=n1, n2=n1 / g.u, omega1=omega1, omega2=omega2,
         v=omega1 * g.g1.d_w / 2000.0,
-        v_s_A=(omega1 + omega2) * (g.g1.rho_p - rho_w1) / 1000.0,
-        v_s_E=(omega1 + omega2) * (g.g1.rho_a - rho_w1) / 1000.0,
+        v_s_A=relative * (g.g1.rho_p - rho_w1) / 1000.0,
+        v_s_E=relative * (g.g1.rho_a - rho_w1) / 1000.0,
     )
 
 

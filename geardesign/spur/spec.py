@@ -26,7 +26,7 @@ SCHEME = Field("bearing_scheme", "integer",
 PRESSURE_ANGLE = Field("pressure_angle", "number", "normal pressure angle of the basic rack",
                        "deg", "α", default=20.0, gt=10, lt=35)
 
-GEAR = Table("gear", "gear pair (external, spur or helical)", (
+GEAR = Table("gear", "gear pair (external or internal, spur or helical)", (
     Field("module", "number", "normal module", "mm", "m_n", minimum=0.05, maximum=100, example=4.0,
           hint="GOST 9563 series preferred"),
     Field("z1", "integer", "number of teeth, pinion", symbol="z1", minimum=5, maximum=1000,
@@ -56,6 +56,26 @@ GEAR = Table("gear", "gear pair (external, spur or helical)", (
     Field("tip_shortening", "boolean",
           "shorten the tips by Δy·m_n (GOST 16532-70); false keeps d_a = d + 2(h_a* + x)m_n",
           default=True),
+    Field("internal", "boolean",
+          "gear 2 is an internal gear (a ring) meshing the external pinion: z2 > z1, both "
+          "given positive, x2 in the GOST 19274-73 sign (positive away from the axis, thinner "
+          "teeth; x2_ISO = −x2)", default=False,
+          hint="geometry GOST 19274-73 / ISO 21771, a_w = m_t(z2 − z1)/2 without shifts"),
+    Field("cutter_teeth", "integer", "teeth of the shaper cutter that generates the internal "
+          "gear (its form circle and the cutting interference; internal pairs only)",
+          symbol="z_0", default=None, minimum=8, maximum=300,
+          hint="leave out: the form circle of the basic rack, as for a planetary ring without "
+               "[cutter]; at most z2 − 4"),
+    Field("cutter_shift", "number", "profile shift coefficient of the shaper cutter "
+          "(with cutter_teeth)", symbol="x_0", default=0.0, minimum=-1.0, maximum=1.5),
+    Field("cutter_tip_radius_coef", "number", "tip radius coefficient of the shaper cutter "
+          "(with cutter_teeth)", symbol="ρ_a0*", default=None, minimum=0, maximum=1.0,
+          hint="default: rack.root_radius_coef"),
+    Field("internal_tip_shortening", "number", "tip shortening coefficient of the internal "
+          "gear: d_a2 = d2 − 2(h_a* − x2 − k2)m_n (internal pairs only)", symbol="k2",
+          default=0.0, minimum=-0.5, maximum=1.0,
+          hint="0: the ISO 21771 nominal tip; a zero-shift internal gear usually needs about "
+               "0.1-0.2 against interference at the pinion root"),
     ACCURACY,
     TIP_RELIEF,
     SCHEME,
@@ -237,8 +257,8 @@ OPTIONS = Table("options", "calculation options", (
 
 SCHEMA = SpecSchema(
     kind="spur",
-    description="external spur/helical gear pair: geometry (GOST 16532-70) and strength "
-                "(GOST 21354-87 or ISO 6336:2019)",
+    description="external or internal spur/helical gear pair: geometry (GOST 16532-70, "
+                "GOST 19274-73) and strength (GOST 21354-87 or ISO 6336:2019)",
     tables=(GEAR, DESIGN, RACK, LOAD, MATERIAL, FACTORS, OPTIONS, ISO, ISO_FACTORS, DR.ACCURACY,
             DR.DRAWING),
     title_example="Reducer stage 25/100, m = 4",
