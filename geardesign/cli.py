@@ -316,6 +316,110 @@ def schema_cmd(kind: str = typer.Argument(..., help="Calculator kind, e.g. spur.
                                 ensure_ascii=False) + "\n")
 
 
+@app.command("sweep")
+def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec with a [sweep] "
+                                                    "table.", show_default=False),
+              vary: List[str] = typer.Option([], "--vary", help="Vary a key: "
+                                             "KEY=FROM:TO:STEP or KEY=V1,V2,... (repeatable; "
+                                             "adds to or replaces [sweep])."),
+              samples: Optional[int] = typer.Option(None, "--samples", help="Evaluate a "
+                                                    "scrambled Sobol sample of N candidates "
+                                                    "instead of the full grid."),
+              seed: Optional[int] = typer.Option(None, "--seed", help="Seed of the sample."),
+              workers: int = typer.Option(1, "--workers", min=1, max=256,
+                                          help="Local processes evaluating chunks."),
+              scheduler: Optional[str] = typer.Option(None, "--scheduler", help="Dask "
+                                                      "scheduler address (tcp://HOST:8786): "
+                                                      "evaluate the chunks on that cluster."),
+              data: Optional[Path] = typer.Option(None, "--data", help="Write every "
+                                                  "candidate (inputs, key results, checks) "
+                                                  "to FILE.csv or FILE.parquet."),
+              emit_spec: Optional[int] = typer.Option(None, "--emit-spec", min=1,
+                                                      help="Print the spur spec of ranked "
+                                                           "variant K (geardesign run "
+                                                           "reproduces it)."),
+              plot: Optional[Path] = typer.Option(None, "--plot", help="Plot the feasible "
+                                                  "front (FILE.png|svg; needs matplotlib)."),
+              format: Optional[Format] = OPT_FORMAT, output: Optional[Path] = OPT_OUTPUT,
+              quiet: bool = OPT_QUIET) -> None:
+    """Sweep a spur pair over ranges of its data: every variant rated by the vectorised
+    kernel, ranked by the objectives, with the Pareto front (exit 1 when none is feasible)."""
+    from geardesign.core.render import render, write_atomic
+    from geardesign.spur import sweep as SW
+
+    fmt_name = _choose_format(format, output)
+    if data is not None and data.suffix.lower() not in (".csv", ".parquet"):
+        _err(f"{data}: --data must end in .csv or .parquet")
+        raise typer.Exit(2)
+    if plot is not None and plot.suffix.lower() not in (".png", ".svg", ".pdf"):
+        _err(f"{plot}: --plot must end in .png, .svg or .pdf")
+        raise typer.Exit(2)
+    try:
+        from geardesign.core.spec import load_toml
+
+        raw = load_toml(spec)
+        base, sw = SW.load_sweep(raw, str(spec), vary, samples, seed)
+    except InputError as exc:
+        _report_problems([p.line(str(spec)) for p in exc.problems])
+        raise typer.Exit(2)
+    sink = writer = None
+    if data is not None:
+        from geardesign.spur.sweep_io import DatasetWriter
+
+        try:
+            writer = DatasetWriter(data)
+        except (OSError, ImportError) as exc:
+            _err(f"{data}: cannot write ({exc})")
+            raise typer.Exit(2)
+        sink = writer.write
+    bar = None
+    if not quiet and sys.stderr.isatty():
+        from rich.progress import Progress
+
+        bar = Progress(transient=True)
+        task = bar.add_task("sweep", total=sw.size)
+        bar.start()
+    try:
+        summary = SW.run_sweep(base, sw, workers, scheduler,
+                               (lambda n: bar.advance(task, n)) if bar else None, sink)
+    finally:
+        if bar is not None:
+            bar.stop()
+        if writer is not None:
+            writer.close()
+    res = SW.sweep_result(base, sw, summary, str(spec))
+    if emit_spec is not None:
+        ranked = summary["head"]
+        if ranked is None or emit_spec > len(ranked["index"]):
+            n = 0 if ranked is None else len(ranked["index"])
+            _err(f"{spec}: --emit-spec {emit_spec}: the sweep ranked {n} variants")
+            raise typer.Exit(2)
+        from geardesign.spur.sweep_io import toml_text
+
+        text = toml_text(SW.variant_spec(base, sw, int(ranked["index"][emit_spec - 1])))
+        if output is not None:
+            write_atomic(output, text)
+        else:
+            sys.stdout.write(text)
+        raise typer.Exit(0)
+    if plot is not None:
+        from geardesign.spur.sweep_io import plot_front
+
+        try:
+            plot_front(summary, sw, plot)
+        except ImportError:
+            _err(f"{plot}: matplotlib is not installed, so no plot can be written; install "
+                 f"it with `pip install matplotlib` (the plot extra of geardesign)")
+            raise typer.Exit(2)
+    to_terminal = output is None and sys.stdout.isatty()
+    text = render([res], fmt_name, color=to_terminal and not os.environ.get("NO_COLOR"))
+    if output is not None:
+        write_atomic(output, text)
+    elif not quiet:
+        sys.stdout.write(text)
+    raise typer.Exit(res.exit_code)
+
+
 @app.command("check")
 def check_cmd(specs: List[Path] = ARG_SPECS,
               rtol: float = typer.Option(1e-9, "--rtol", min=0.0, max=1.0,

@@ -152,8 +152,14 @@ def check_golden(spec, update: bool = False, rtol: float = RTOL) -> list[Differe
     import json
 
     from geardesign.core.registry import run
+    from geardesign.core.spec import load_toml
 
-    doc = run(spec).document()
+    if "sweep" in load_toml(spec):
+        from geardesign.spur.sweep import run_file
+
+        doc = run_file(spec)[2].document()
+    else:
+        doc = run(spec).document()
     path = expected_path(spec)
     if update:
         path.write_text(golden_text(doc), encoding="utf-8")

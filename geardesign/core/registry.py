@@ -126,6 +126,9 @@ def load_data(data: dict, source: str = "",
     if expect_kind is not None and kind != expect_kind:
         raise InputError(Problem(
             "kind", f'this is a {kind} spec; use "geardesign {kind}" or "geardesign run"', kind))
+    if "sweep" in data:
+        raise InputError(Problem("sweep", "this spec describes a design sweep: run it with "
+                                 "`geardesign sweep SPEC.toml` (or remove [sweep])"))
     calc = get(kind)
     return calc, validate(calc.schema, data, source=source)
 

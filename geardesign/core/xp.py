@@ -75,7 +75,7 @@ def maximum(a, b):
 def where(cond, a, b):
     """``a`` where ``cond`` holds, else ``b``: a Python conditional for a scalar condition,
     ``numpy.where`` for an array."""
-    if isinstance(cond, (bool, int)) or type(cond).__name__ == "bool_":
+    if isinstance(cond, (bool, int)) or type(cond).__name__ in ("bool_", "bool"):
         return a if cond else b
     return _np().where(cond, a, b)
 

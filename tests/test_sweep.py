@@ -1,0 +1,183 @@
+"""`geardesign sweep`: ranked variants and the Pareto front of a grid or a Sobol sample,
+reproducible variants (--emit-spec), the same answer from one process, several processes
+and a Dask cluster, the candidate dataset, and one line with exit 2 for bad sweep input."""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+
+import numpy as np
+import pytest
+
+from geardesign.core.spec import load_toml
+from geardesign.spur import sweep as SW
+from tests.conftest import SPECS
+from tests.helpers_cli import cli, write_spec
+
+SPEC = SPECS / "sweep_spur_reducer.toml"
+BASE = SPEC.read_text(encoding="utf-8").split("[sweep]")[0]
+
+SMALL = BASE + """[sweep]
+"gear.module" = {values = [2.5, 3.0]}
+"gear.z1" = {from = 20, to = 26, step = 2}
+"gear.face_width" = {from = 40.0, to = 60.0, step = 10.0}
+objectives = ["mass", "margin"]
+top = 50
+"""
+
+
+def _json(*args):
+    code, out, err = cli("sweep", *args, "--format", "json")
+    assert "Traceback" not in err
+    return code, (json.loads(out) if out else None), err
+
+
+def test_golden_sweep_ranked_head_and_front_are_consistent():
+    code, doc, _ = _json(SPEC)
+    assert code == 0 and doc["kind"] == "sweep" and doc["verdict"] == "pass"
+    ranked, front = doc["results"]["ranked"], doc["results"]["pareto"]
+    masses = [r["mass"] for r in ranked]
+    assert masses == sorted(masses) and len(ranked) == 10
+    # the front: increasing mass, strictly increasing margin, and no ranked variant dominates
+    for a, b in zip(front, front[1:]):
+        assert a["mass"] <= b["mass"] and a["margin"] < b["margin"]
+    for f in front:
+        assert not any(r["mass"] <= f["mass"] and r["margin"] >= f["margin"] and
+                       (r["mass"], r["margin"]) != (f["mass"], f["margin"]) for r in ranked)
+    counts = doc["results"]["counts"]
+    assert counts["evaluated"] == 5 * 7 * 9 * 3 * 7
+    assert counts["feasible"] <= counts["passed"] <= counts["valid"] <= counts["evaluated"]
+
+
+def test_emitted_variant_reproduces_its_row(tmp_path):
+    """--emit-spec K prints a spur spec; geardesign run of it gives the row's numbers."""
+    code, doc, _ = _json(SPEC)
+    for k in (1, 4):
+        row = doc["results"]["ranked"][k - 1]
+        code, out, err = cli("sweep", SPEC, "--emit-spec", str(k))
+        assert code == 0, err
+        path = write_spec(tmp_path, out, f"v{k}.toml")
+        code, text, err = cli("run", path, "--format", "json")
+        assert code == 0, err
+        r = json.loads(text)["results"]
+        assert r["geometry"]["a_w"] == pytest.approx(row["a_w"], rel=1e-12)
+        assert r["contact"]["S_H1"] == pytest.approx(row["S_H1"], rel=1e-9)
+        assert r["bending"]["S_F1"] == pytest.approx(row["S_F1"], rel=1e-9)
+        assert r["bending"]["S_F2"] == pytest.approx(row["S_F2"], rel=1e-9)
+
+
+def test_dataset_holds_every_candidate_and_the_front_is_right(tmp_path):
+    """The CSV dataset has one row per candidate; the Pareto front computed from it by brute
+    force equals the reported one."""
+    spec = write_spec(tmp_path, SMALL)
+    code, doc, err = _json(spec, "--data", tmp_path / "c.csv")
+    assert code == 0, err
+    with open(tmp_path / "c.csv", newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    assert len(rows) == 2 * 4 * 3
+    feas = [(float(r["mass"]), float(r["margin"]), int(float(r["index"]))) for r in rows
+            if r["feasible"] == "1"]
+    front = sorted(i for m, g, i in feas
+                   if not any(m2 <= m and g2 >= g and (m2, g2) != (m, g) for m2, g2, _ in feas))
+    assert sorted(r["index"] for r in doc["results"]["pareto"]) == front
+    assert doc["results"]["counts"]["feasible"] == len(feas)
+
+
+def test_parquet_dataset(tmp_path):
+    pq = pytest.importorskip("pyarrow.parquet")
+    spec = write_spec(tmp_path, SMALL)
+    code, _, err = _json(spec, "--data", tmp_path / "c.parquet")
+    assert code == 0, err
+    assert pq.read_table(tmp_path / "c.parquet").num_rows == 24
+
+
+def test_vary_on_the_command_line_and_sobol_sample():
+    code, doc, err = _json(SPEC, "--vary", "gear.module=2:5:0.25", "--samples", "4096",
+                           "--seed", "7")
+    assert code in (0, 1), err
+    assert doc["results"]["counts"]["evaluated"] == 4096
+    code2, doc2, _ = _json(SPEC, "--vary", "gear.module=2:5:0.25", "--samples", "4096",
+                           "--seed", "7")
+    assert doc2["results"] == doc["results"]          # the same seed, the same sample
+
+
+def test_processes_and_one_process_agree(monkeypatch):
+    monkeypatch.setattr(SW, "CHUNK", 1000)
+    data, sw = SW.load_sweep(load_toml(SPEC), "s")
+    one = SW.run_sweep(data, sw)
+    two = SW.run_sweep(data, sw, workers=2)
+    assert one["counts"] == two["counts"]
+    for k in one["head"]:
+        assert np.array_equal(one["head"][k], two["head"][k])
+
+
+def test_dask_local_cluster_agrees(monkeypatch):
+    distributed = pytest.importorskip("distributed")
+    monkeypatch.setattr(SW, "CHUNK", 2000)
+    data, sw = SW.load_sweep(load_toml(SPEC), "s")
+    one = SW.run_sweep(data, sw)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
+                                  dashboard_address=None) as cluster:
+        dist = SW.run_sweep(data, sw, scheduler=cluster.scheduler_address)
+    assert one["counts"] == dist["counts"]
+    for k in one["front"]:
+        assert np.array_equal(one["front"][k], dist["front"][k])
+
+
+def test_plot(tmp_path):
+    pytest.importorskip("matplotlib")
+    spec = write_spec(tmp_path, SMALL)
+    code, _, err = cli("sweep", spec, "-q", "--plot", tmp_path / "f.svg")
+    assert code == 0, err
+    assert "<svg" in (tmp_path / "f.svg").read_text()
+
+
+def test_no_feasible_variant_fails_with_advice(tmp_path):
+    spec = write_spec(tmp_path, SMALL.replace('"gear.face_width" = {from = 40.0, to = 60.0, '
+                                              'step = 10.0}', '"gear.face_width" = '
+                                              '{values = [5.0]}'))
+    code, doc, _ = _json(spec)
+    assert code == 1
+    c = next(c for c in doc["checks"] if c["code"] == "SWEEP_FEASIBLE")
+    assert not c["passed"] and "CONTACT_FATIGUE" in c["message"]
+
+
+BAD = [
+    ('"gear.module" = {values = []}', "sweep.gear.module = []: an empty list of values"),
+    ('"gear.module" = {from = 5.0, to = 2.0, step = 0.5}', "sweep.gear.module.step = 0.5: has "
+     "the wrong sign"),
+    ('"gear.modul" = {values = [2.0]}', "sweep.gear.modul = "),
+    ('"gear.z1" = {values = [20.5]}', "sweep.gear.z1 = 20.5: must be whole numbers"),
+    ('"gear.module" = {from = 0.1, to = 100.0, step = 0.00001}', "sweep.gear.module.step = "
+     "1e-05: gives"),
+    ('"gear.face_width" = {from = 1.0, to = 5000.0, step = 1.0}\n"gear.module" = {from = 0.1, '
+     'to = 100.0, step = 0.1}\n"gear.z1" = {from = 5, to = 1000, step = 1}',
+     "sweep = 4980000000: the grid has 4.98e+09 candidates, more than"),
+    ('"gear.module" = {values = [2.0]}\nobjectives = ["cost"]', "sweep.objectives = \"cost\""),
+    ('"gear.module" = {values = [2.0]}\nratio = [4.0, 3.0]', "sweep.ratio = "),
+]
+
+
+@pytest.mark.parametrize("text, start", BAD, ids=[b[1][:30] for b in BAD])
+def test_bad_sweep_input_one_line(tmp_path, text, start):
+    spec = write_spec(tmp_path, BASE + "[sweep]\n" + text + "\n")
+    code, out, err = cli("sweep", spec, "--format", "json")
+    assert code == 2 and out == "" and "Traceback" not in err
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, lines
+    assert lines[0].startswith(f"{spec}: {start}"), lines[0]
+
+
+def test_unknown_vary_key_and_run_of_a_sweep_spec(tmp_path):
+    code, _, err = cli("sweep", SPEC, "--vary", "gear.modulus=2:3:0.5")
+    assert code == 2 and "did you mean gear.module" in err
+    code, _, err = cli("run", SPEC)
+    assert code == 2 and "geardesign sweep" in err and len(err.strip().splitlines()) == 1
+
+
+def test_domain_of_varied_values(tmp_path):
+    spec = write_spec(tmp_path, BASE + '[sweep]\n"gear.helix_angle" = {values = [50.0]}\n')
+    code, _, err = cli("sweep", spec)
+    assert code == 2 and "outside the domain" in err
