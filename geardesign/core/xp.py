@@ -25,7 +25,10 @@ def _np():
 
 def scalar(*xs) -> bool:
     """Whether every argument is a Python number (bool included)."""
-    return all(isinstance(x, _SCALARS) for x in xs)
+    for x in xs:
+        if not isinstance(x, _SCALARS):
+            return False
+    return True
 
 
 def sqrt(x):

@@ -60,64 +60,109 @@ def ratio_of(train: Train, fixed: str, driving: str, driven: str) -> float:
 
 def candidates(scheme: str, planets: int, fixed: str, driving: str, driven: str,
                target: float, tol_pct: float, sun_min: int, planet_min: int, ring_max: int,
-               dev_max: int) -> list[Candidate]:
-    """Step 1 and 2 of the procedure: tooth-number candidates, ranked.
+               dev_max: int, keep: int | None = None) -> tuple[list[Candidate], int]:
+    """Step 1 and 2 of the procedure: tooth-number candidates, ranked, and how many there
+    are.
 
-    The ratio is evaluated with plain arithmetic on ρ (:func:`ratio_of` for a
-    :class:`Train` gives the same numbers); for a 2K-H train z_g cancels from it."""
-    out = []
+    The tooth sets are enumerated as numpy arrays, one (δ_b, δ_e) combination at a time over
+    the grid of suns and planets, and only the ``keep`` best are turned into
+    :class:`Candidate` objects (the search never looks further than ``MAX_EVALUATED``):
+    time and memory stay small for the widest ranges.  The ratio is plain arithmetic on ρ
+    (:func:`ratio_of` for a :class:`Train` gives the same numbers); for a 2K-H train z_g
+    cancels from it.  The order is that of the ranking key — ratio error (to 1e-6 %), the
+    larger ring, Σ|δ|, the sun — then the enumeration order (sun, planet or ring, δ_b, δ_e)."""
+    import numpy as np
+
     k = planets
     lo, hi = target * (1.0 - tol_pct / 100.0), target * (1.0 + tol_pct / 100.0)
 
-    def r(member: str, z: dict) -> float:   # ρ_X with the planet crown z["g"]
+    def r(member: str, z: dict):   # ρ_X with the planet crown z["g"]
         if member == "carrier":
             return 0.0
         if member == "sun":
             return -z["g"] / z["a"]
         return z["g"] / z["b" if member == "ring" else "e"]
 
-    def ratio(z: dict) -> float:
+    def ratio(z: dict):
         rf = r(fixed, z)
         den = r(driven, z) - rf
-        return math.inf if den == 0.0 else (r(driving, z) - rf) / den
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(den == 0.0, np.inf, (r(driving, z) - rf) / np.where(den == 0.0, 1.0,
+                                                                                 den))
 
-    if scheme == "2K-H":
-        for z_a in range(sun_min, ring_max):
-            for z_b in range(z_a + 2 * planet_min - dev_max, ring_max + 1):
-                if (z_a + z_b) % k:
-                    continue
-                i = ratio({"a": z_a, "b": z_b, "g": 1.0})
-                if not lo <= abs(i) <= hi:
-                    continue
-                for d_b in range(-dev_max, dev_max + 1):
-                    if (z_b - z_a - d_b) % 2:
-                        continue
-                    z_g = (z_b - z_a - d_b) // 2
-                    if z_g < planet_min or z_b - z_g < 4:
-                        continue
-                    out.append(Candidate(Train("2K-H", z_a, z_g, z_b, k),
-                                         i, (abs(i) - target) / target * 100.0, abs(d_b)))
-    else:
-        for z_a in range(sun_min, ring_max):
-            if z_a + 2 * planet_min - dev_max > ring_max:
-                break
-            for z_g in range(planet_min, ring_max):
-                if z_a + 2 * z_g - dev_max > ring_max:
-                    break
-                for d_b in range(-dev_max, dev_max + 1):
-                    z_b = z_a + 2 * z_g + d_b
-                    if z_b > ring_max or z_b - z_g < 4 or (z_a + z_b) % k:
-                        continue
-                    for d_e in range(d_b + k, dev_max + 1, k):
-                        z_e = z_a + 2 * z_g + d_e
-                        i = ratio({"a": z_a, "b": z_b, "e": z_e, "g": z_g})
-                        if math.isfinite(i) and lo <= abs(i) <= hi:
-                            out.append(Candidate(Train("3K", z_a, z_g, z_b, k, None, z_e), i,
-                                                 (abs(i) - target) / target * 100.0,
-                                                 abs(d_b) + abs(d_e)))
+    kept = None
+    total = 0
+
+    def prune(parts):
+        """Concatenate the arrays found so far and keep the ``keep`` best (with a margin for
+        the rounding of the first key; the exact Python order is applied at the end)."""
+        cat = [np.concatenate([f[j] for f in parts]) for j in range(10)]
+        a_, g_, b_, e_, i_, dev = cat[:6]
+        err = (np.abs(i_) - target) / target * 100.0
+        approx = np.round(np.abs(err), 6)
+        idx = np.lexsort((cat[9], cat[8], cat[7], cat[6], a_, dev, np.maximum(b_, e_), approx))
+        if keep is not None and len(idx) > keep:
+            cut = approx[idx[keep - 1]] + 2e-6
+            idx = idx[approx[idx] <= cut]
+        return [c[idx] for c in cat]
+
+    block = 16   # suns per block: memory stays at a few MB whatever ring_max
+    for a0 in range(sun_min, ring_max, block):
+        found = []
+        za_block = np.arange(a0, min(a0 + block, ring_max), dtype=np.int64)
+        if scheme == "2K-H":
+            za, zb = np.meshgrid(za_block, np.arange(0, ring_max + 1, dtype=np.int64),
+                                 indexing="ij")
+            za, zb = za.ravel(), zb.ravel()
+            sel = (zb >= za + 2 * planet_min - dev_max) & ((za + zb) % k == 0)
+            za, zb = za[sel], zb[sel]
+            i_all = ratio({"a": za.astype(float), "b": zb.astype(float), "g": 1.0})
+            ok = (np.abs(i_all) >= lo) & (np.abs(i_all) <= hi)
+            za, zb, i_all = za[ok], zb[ok], i_all[ok]
+            for n_db, d_b in enumerate(range(-dev_max, dev_max + 1)):
+                zg = (zb - za - d_b) // 2
+                m = ((zb - za - d_b) % 2 == 0) & (zg >= planet_min) & (zb - zg >= 4)
+                n = int(m.sum())
+                found.append((za[m], zg[m], zb[m], np.zeros(n, dtype=np.int64), i_all[m],
+                              np.full(n, abs(d_b)), zb[m], np.full(n, n_db),
+                              np.zeros(n, dtype=np.int64), np.zeros(n, dtype=np.int64)))
+        else:
+            za, zg = np.meshgrid(za_block, np.arange(planet_min, ring_max, dtype=np.int64),
+                                 indexing="ij")
+            za, zg = za.ravel(), zg.ravel()
+            sel = za + 2 * zg - dev_max <= ring_max
+            za, zg = za[sel], zg[sel]
+            for n_db, d_b in enumerate(range(-dev_max, dev_max + 1)):
+                zb = za + 2 * zg + d_b
+                mb = (zb <= ring_max) & (zb - zg >= 4) & ((za + zb) % k == 0)
+                a_, g_, b_ = za[mb], zg[mb], zb[mb]
+                for d_e in range(d_b + k, dev_max + 1, k):
+                    e_ = a_ + 2 * g_ + d_e
+                    i = ratio({"a": a_.astype(float), "b": b_.astype(float),
+                               "e": e_.astype(float), "g": g_.astype(float)})
+                    m = np.isfinite(i) & (np.abs(i) >= lo) & (np.abs(i) <= hi)
+                    n = int(m.sum())
+                    found.append((a_[m], g_[m], b_[m], e_[m], i[m],
+                                  np.full(n, abs(d_b) + abs(d_e)), g_[m], np.full(n, n_db),
+                                  np.full(n, d_e),
+                                  np.zeros(n, dtype=np.int64)))
+        total += sum(len(f[0]) for f in found)
+        if found:
+            kept = prune(found + ([tuple(kept)] if kept is not None else []))
+    if kept is None or not len(kept[0]):
+        return [], total
+    a_, g_, b_, e_, i_, dev = kept[:6]
+    err = (np.abs(i_) - target) / target * 100.0
+    idx = range(len(a_))
+    out = []
+    for j in idx:
+        z_a, z_g, z_b, z_e = int(a_[j]), int(g_[j]), int(b_[j]), int(e_[j])
+        train = Train("2K-H", z_a, z_g, z_b, k) if scheme == "2K-H" else \
+            Train("3K", z_a, z_g, z_b, k, None, z_e)
+        out.append(Candidate(train, float(i_[j]), float(err[j]), int(dev[j])))
     out.sort(key=lambda c: (round(abs(c.error), 6), max(c.train.ring, c.train.ring2 or 0),
                             c.deviation, c.train.sun))
-    return out
+    return (out[:keep] if keep is not None else out), total
 
 
 def shifted(cand: Candidate, lay: PG.Layout, step: int = 0) -> Candidate:
@@ -166,8 +211,8 @@ def search(scheme: str, planets: int, fixed: str, driving: str, driven: str, tar
            ) -> tuple[list[Candidate], int, int]:
     """The procedure of the module notes.  Returns ``(feasible candidates, number of
     tooth-number candidates, number evaluated)``."""
-    cands = candidates(scheme, planets, fixed, driving, driven, target, tol_pct, sun_min,
-                       planet_min, ring_max, dev_max)
+    cands, total = candidates(scheme, planets, fixed, driving, driven, target, tol_pct,
+                              sun_min, planet_min, ring_max, dev_max, keep=MAX_EVALUATED)
     found = []
     evaluated = 0
     for cand in cands:
@@ -185,4 +230,4 @@ def search(scheme: str, planets: int, fixed: str, driving: str, driven: str, tar
                 break
             if evaluated >= MAX_EVALUATED:
                 break
-    return found, len(cands), evaluated
+    return found, total, evaluated

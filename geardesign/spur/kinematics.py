@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from geardesign.spur.geometry import GeometryError, PairGeometry, PairInput, pair_geometry
+from geardesign.spur.geometry import GeometryError, PairGeometry, PairInput, pair_core, pair_geometry
 
 
 def specific_sliding(rho1: float, rho2: float, u: float) -> tuple[float, float]:
@@ -63,9 +63,15 @@ def sliding_at_ends(g: PairGeometry) -> Sliding:
     At a point beyond a tangency point (ρ <= 0) the sliding is undefined: the
     interference check fails first and the value is reported as ±inf -> null.
     """
-    u = g.u
-    rA = (g.g1.rho_p, g.g2.rho_a)
-    rE = (g.g1.rho_a, g.g2.rho_p)
+    return sliding_from_radii(g.g1.rho_p, g.g1.rho_a, g.g2.rho_p, g.g2.rho_a, g.u)
+
+
+def sliding_from_radii(rho_p1: float, rho_a1: float, rho_p2: float, rho_a2: float,
+                       u: float) -> Sliding:
+    """:func:`sliding_at_ends` from the radii of curvature at the ends of the active line
+    of action and u (what the shift balancing needs, without the rest of the geometry)."""
+    rA = (rho_p1, rho_a2)
+    rE = (rho_a1, rho_p2)
 
     def at(r1: float, r2: float) -> tuple[float, float, float]:
         if r1 <= 0 or r2 <= 0:
@@ -137,11 +143,12 @@ def balanced_shift_split(base: PairInput, x_sum: float, steps: int = 120) -> flo
     """
 
     def f(x1: float) -> float | None:
-        p = PairInput(base.m_n, base.z1, base.z2, x1, x_sum - x1, base.beta, base.b_w, base.rack)
         try:
-            s = sliding_at_ends(pair_geometry(p))
+            c = pair_core(base.m_n, base.z1, base.z2, x1, x_sum - x1, base.beta, base.b_w,
+                          base.rack)
         except GeometryError:
             return None
+        s = sliding_from_radii(c["rho_p1"], c["rho_a1"], c["rho_p2"], c["rho_a2"], c["u"])
         val = s.theta1_A - s.theta2_E
         return None if math.isnan(val) else val
 
