@@ -154,14 +154,18 @@ def compute(spec: ValidatedSpec) -> Result:
         raise InputError(Problem("lubrication", "missing; the heat balance [thermal] needs "
                                  "the oil: give [lubrication] oil = \"VG 220\" (a grade)"))
 
-    def chain(etas: dict | None = None):
+    def chain(etas: dict | None = None, prev: list | None = None):
+        """T_in and the stage runs; ``etas`` replaces the efficiencies of the stages that
+        give none, ``prev`` (the runs of the pass before) gives the ratios instead of a
+        first pass."""
         st = stages if not etas else [
             (w, n_, data, e if e is not None else etas.get(i))
             for i, (w, n_, data, e) in enumerate(stages)]
         if load["torque"] is not None:
             # first pass for the ratios and efficiencies, then rate for the machine's torque
-            probe = _run_chain(st, T_m, n_m, duty)
-            factor = math.prod(r.ratio * r.efficiency for r in probe)
+            probe = prev if prev is not None else _run_chain(st, T_m, n_m, duty)
+            factor = math.prod(r.ratio * (etas[i] if etas and i in etas and st[i][3] is not None
+                                          else r.efficiency) for i, r in enumerate(probe))
             T1 = load["torque"] / factor
             return T1, _run_chain(st, T1, n_m, duty)
         return T_m, _run_chain(st, T_m, n_m, duty)

@@ -4,7 +4,7 @@ losses, the oil sump temperature from the heat balance, and the report of both.
 The passes: the chain of stages is computed with the efficiencies of the pass before
 (first: the calculators' or 0.98), the losses are put together from its results
 (:mod:`.heat`), the sump temperature solves the heat balance, and the efficiencies follow
-from the losses at that temperature; until they change by less than 1e-7 (at most
+from the losses at that temperature; until they change by less than 1e-6 (at most
 ``MAX_PASSES`` passes).  The bearings then get the drive's oil at the sump temperature.
 """
 
@@ -22,7 +22,7 @@ from geardesign.drive import thermal as TH
 from geardesign.materials import lubricants as OIL
 
 MAX_PASSES = 5
-EFFICIENCY_TOL = 1e-7
+EFFICIENCY_TOL = 1e-6
 SRC_MESH = "[ISOTR14179-2] (μ_mz Schlenk, H_V Ohlendorf)"
 SRC_CHURN = "[Changenet2007]"
 SRC_BEARING = "[Palmgren1959] M0 + M1"
@@ -96,8 +96,8 @@ def _mesh(run, where: str) -> tuple[HEAT.Mesh | None, list[HEAT.DipGear], tuple 
     P_in = run.T_in * run.n_in * math.pi / 30.0
     F_bt = 2000.0 * run.T_in / v["d_b1"]
     mat = doc["inputs"].get("material") or {}
-    ras = [m.get("Ra") for m in (mat.get("pinion") or {}, mat.get("wheel") or {})
-           if isinstance(m, dict) and m.get("Ra") is not None]
+    ras = [m.get("roughness_Ra") for m in (mat.get("pinion") or {}, mat.get("wheel") or {})
+           if isinstance(m, dict) and m.get("roughness_Ra") is not None]
     Ra = sum(ras) / len(ras) if ras else None
     mesh = HEAT.Mesh(P_in, run.n_in, v["u"], z1, v["beta_b"], v["alpha_tw"], v["eps_alpha"],
                      e1, e2, v["d_w1"], v["d_w2"], b, F_bt, Ra)
@@ -253,7 +253,7 @@ def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m) -> Thermal:
         if not etas:
             break
         etas_before = etas
-        T_in, runs = chain(etas)
+        T_in, runs = chain(etas, runs)
         for i in etas:
             runs[i].efficiency_source = ETA_SOURCE
     losses = HEAT.stage_losses(m, bal.t_oil)
