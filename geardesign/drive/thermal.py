@@ -18,7 +18,7 @@ The sump temperature solves P_V(ϑ) = P_Q(ϑ) by bisection with a bounded number
 so the root is unique.
 
 >>> round(h_radiation(80.0, 20.0, 0.9), 2)
-7.02
+6.95
 """
 
 from __future__ import annotations
