@@ -124,6 +124,13 @@ def compute(spec: ValidatedSpec) -> Result:
 
     d = spec.data
     motor, load = d["motor"], d["load"]
+    if d["thermal"] is not None and d["lubrication"] is None:
+        raise InputError(Problem("lubrication", "missing; the heat balance [thermal] needs "
+                                 "the oil: give [lubrication] oil = \"VG 220\" (a grade)"))
+    if d["lubrication"] is not None:
+        from geardesign.drive import lubrication as LUB
+
+        LUB.prepare(spec)
     res = CALCULATOR.new_result(spec)
     if motor["power"] is None and motor["torque"] is None:
         raise InputError(Problem("motor.power", "missing; give the motor's power (kW) or "
@@ -150,9 +157,6 @@ def compute(spec: ValidatedSpec) -> Result:
     duty = Duty(load["life_hours"], load["regime"], load["application_factor"],
                 motor["peak_ratio"], load["method"])
     lub = d["lubrication"]
-    if d["thermal"] is not None and lub is None:
-        raise InputError(Problem("lubrication", "missing; the heat balance [thermal] needs "
-                                 "the oil: give [lubrication] oil = \"VG 220\" (a grade)"))
 
     def chain(etas: dict | None = None, prev: list | None = None):
         """T_in and the stage runs; ``etas`` replaces the efficiencies of the stages that
@@ -173,8 +177,6 @@ def compute(spec: ValidatedSpec) -> Result:
     T_in, runs = chain()
     thermal = None
     if lub is not None:
-        from geardesign.drive import lubrication as LUB
-
         thermal = LUB.solve(spec, stages, chain, T_in, runs, n_m)
         T_in, runs = thermal.T_in, thermal.runs
 

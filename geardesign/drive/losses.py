@@ -152,7 +152,7 @@ def churning_loss(rho: float, nu: float, n: float, R_p: float, b: float, h: floa
     """Churning loss of one dip-lubricated gear [W], [Changenet2007]:
     P = ½·ρ·ω³·S_m·R_p³·C_m with Fr = ω²·R_p/g and Re = ω·R_p·b/ν.  ρ [kg/m³], ν [mm²/s],
     n [min⁻¹], R_p, b, h, m_n [mm], V0 the oil volume [l], α_n [deg]."""
-    if h <= 0.0 or n <= 0.0:
+    if h <= 0.0 or n < 1e-3:        # below 0.001 min⁻¹ nothing churns
         return 0.0
     w = n * math.pi / 30.0
     Rm, bm, hm = R_p / 1000.0, b / 1000.0, h / 1000.0

@@ -66,9 +66,6 @@ def _oil(spec: ValidatedSpec) -> tuple[HEAT.Oil, dict]:
         raise InputError.at("lubrication.oil", lub["oil"], "not an ISO VG grade of the "
                             "library (`geardesign materials oil`)" + hint)
     VI = lub["viscosity_index"]
-    if VI is None:
-        VI = lub["viscosity_index"] = oil.VI
-        spec.assumed.append("lubrication.viscosity_index")
     try:
         nu100 = OIL.nu100_from_vi(oil.nu40, VI)
     except OIL.OilError as exc:
@@ -193,16 +190,27 @@ def _bearings(cases, bearing_results, n_stages: int) -> list[HEAT.BearingLoad]:
     return out
 
 
+def prepare(spec: ValidatedSpec) -> None:
+    """Defaults that depend on other inputs, filled in before the inputs are echoed: the
+    viscosity index of the grade, and the [thermal] table's defaults when it is left out."""
+    from geardesign.drive.spec import THERMAL
+
+    d = spec.data
+    lub = d["lubrication"]
+    oil = OIL.find(lub["oil"])
+    if oil is not None and lub["viscosity_index"] is None:
+        lub["viscosity_index"] = oil.VI
+        spec.assumed.append("lubrication.viscosity_index")
+    if d["thermal"] is None:
+        d["thermal"] = {f.key: f.default for f in THERMAL.fields}
+        spec.assumed += [f"thermal.{f.key}" for f in THERMAL.fields if f.default is not None]
+
+
 def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m) -> Thermal:
     from geardesign.drive.calculator import run_bearing, shaft_cases
 
     d = spec.data
     lub, th = d["lubrication"], d["thermal"]
-    if th is None:
-        from geardesign.drive.spec import THERMAL
-
-        th = d["thermal"] = {f.key: f.default for f in THERMAL.fields}
-        spec.assumed += [f"thermal.{f.key}" for f in THERMAL.fields if f.default is not None]
     t_air, t_max = th["ambient"], th["max_oil_temperature"]
     if t_max <= t_air:
         raise InputError.at("thermal.max_oil_temperature", t_max, f"must be above the "
