@@ -62,7 +62,7 @@ def test_tooth_loss_factor_positive(z1, u, beta, x1, x2):
     e1, e2 = L.partial_contact_ratios(d1 + 2 * m * (1 + x1), d2 + 2 * m * (1 + x2), db1, db2,
                                       math.degrees(aw), pbt)
     bb = math.degrees(math.atan(math.tan(bt) * math.cos(at)))
-    hv = L.tooth_loss_factor(z2 / z1, z1, bb, e1 + e2, e1, e2)
+    hv = L.tooth_loss_factor(z2 / z1, z1, bb, e1 + e2, e1)
     assert e1 > 0 and e2 > 0 and 0 < hv < 1
 
 

@@ -156,7 +156,7 @@ def stage_losses(m: Model, t: float, scale: float = 1.0) -> list[StageLoss]:
             rr = L.reduced_radius_pitch(g.d_w1, g.d_w2, g.alpha_tw, g.beta_b)
             Ra = oil.Ra if oil.Ra is not None else (g.Ra if g.Ra is not None else 0.8)
             mu = L.mean_friction_coefficient(g.F_bt * scale, g.b, v, rr, eta, Ra, oil.X_L)
-            H = L.tooth_loss_factor(g.u, g.z1, g.beta_b, g.eps_alpha, g.eps_1, g.eps_2)
+            H = L.tooth_loss_factor(g.u, g.z1, g.beta_b, g.eps_alpha, g.eps_1)
             mesh = L.mesh_power_loss(P, mu, H)
         elif i in m.fixed:
             other = (1.0 - m.fixed[i]) * P

@@ -13,7 +13,7 @@ One published method per source of loss:
 Units: lengths mm, speeds min⁻¹, forces N, kinematic viscosity mm²/s, dynamic viscosity
 mPa·s, density kg/m³, power W unless a docstring says otherwise.
 
->>> round(tooth_loss_factor(1.5, 16, 0.0, 1.4625, 0.7341, 0.7284), 4)
+>>> round(tooth_loss_factor(1.5, 16, 0.0, 1.4625, 0.7341), 4)
 0.1986
 """
 
@@ -53,16 +53,18 @@ def partial_contact_ratios(d_a1: float, d_a2: float, d_b1: float, d_b2: float,
     return g1 / p_bt, g2 / p_bt
 
 
-def tooth_loss_factor(u: float, z1: int, beta_b: float, eps_alpha: float, eps_1: float,
-                      eps_2: float) -> float:
+def tooth_loss_factor(u: float, z1: int, beta_b: float, eps_alpha: float,
+                      eps_1: float) -> float:
     """Tooth loss factor H_V of Ohlendorf, [ISOTR14179-2]:
-    H_V = π·(u + 1)/(z1·u·cos β_b)·(1 − ε_α + ε_1² + ε_2²); β_b in degrees.
+    H_V = π·(u + 1)/(z1·u·cos β_b)·(1 − ε_α + ε_1² + ε_2²), ε_2 = ε_α − ε_1; β_b in
+    degrees.  The planetary calculator's implementation (one formula for both).
 
-    >>> round(tooth_loss_factor(24 / 16, 16, 0.0, 1.4625, 0.7341, 0.7284), 4)
+    >>> round(tooth_loss_factor(24 / 16, 16, 0.0, 1.4625, 0.7341), 4)
     0.1986
     """
-    return (math.pi * (u + 1.0) / (z1 * u * math.cos(math.radians(beta_b)))
-            * (1.0 - eps_alpha + eps_1 ** 2 + eps_2 ** 2))
+    from geardesign.planetary.efficiency import loss_factor
+
+    return loss_factor(eps_alpha, eps_1, z1, u, math.radians(beta_b))
 
 
 def sum_velocity_pitch(n1: float, d_w1: float, alpha_tw: float) -> float:

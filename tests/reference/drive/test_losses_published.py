@@ -47,7 +47,7 @@ def _c40_hv():
     c = C40
     atw = _alpha_tw(*c["d_b"], c["a"])
     e1, e2 = L.partial_contact_ratios(*c["d_a"], *c["d_b"], atw, c["p_bt"])
-    return L.tooth_loss_factor(c["z2"] / c["z1"], c["z1"], 0.0, e1 + e2, e1, e2), e1 + e2
+    return L.tooth_loss_factor(c["z2"] / c["z1"], c["z1"], 0.0, e1 + e2, e1), e1 + e2
 
 
 def _c40_mu():
@@ -89,7 +89,7 @@ def test_h501_tooth_loss_factor_helical():
     atw = _alpha_tw(d_b1, d_b2, 91.5)
     e1, e2 = L.partial_contact_ratios(2 * 40.336, 2 * 58.132, d_b1, d_b2, atw, 10.652)
     assert e1 + e2 == pytest.approx(1.46, abs=0.005)
-    hv = L.tooth_loss_factor(z2 / z1, z1, beta_b, e1 + e2, e1, e2)
+    hv = L.tooth_loss_factor(z2 / z1, z1, beta_b, e1 + e2, e1)
     assert hv == pytest.approx(H501_HV, abs=0.0001)
 
 
