@@ -336,7 +336,7 @@ def report(res: Result, t: Thermal, stages) -> None:
     res.tables.append(DataTable("losses", f"Power losses at {b.t_oil:.1f} °C (W)", [
         ("stage", "stage", None), ("name", "name", None), ("P_in", "P_in", "kW"),
         ("mesh", "mesh", "W"), ("churning", "churning", "W"), ("bearings", "bearings", "W"),
-        ("seals", "seals", "W"), ("other", "stage η", "W"), ("total", "total", "W"),
+        ("seals", "seals", "W"), ("other", "by own η", "W"), ("total", "total", "W"),
         ("eta", "η", "-"), ("mu", "μ_mz", "-"), ("H_V", "H_V", "-")], rows))
     if not t.bearings_counted:
         res.checks.append(check(

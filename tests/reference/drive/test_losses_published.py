@@ -97,3 +97,28 @@ def test_seal_loss_iso_tr_14179_2_form():
     # [ISOTR14179-2] P_VD = 7.69e-6·d²·n: 40 mm at 1500 min^-1 -> 18.456 W (the formula
     # evaluated by hand; the constant as quoted by the ISO/TR 14179-2 implementations)
     assert L.seal_power_loss(40.0, 1500.0) == pytest.approx(7.69e-6 * 1600 * 1500)
+
+
+# --- Bearing friction: Palmgren against the SKF catalogue estimate -------------------------
+# [SKFFriction] table 1: M = 0.5·μ·P·d with μ = 0.0015 (deep groove ball), 0.0020 (angular
+# contact, single row), 0.0011 (cylindrical roller with cage), 0.0018 (tapered and spherical
+# roller), for P ≈ 0.1·C under good lubrication.  Not a worked example (none was found): a
+# consistency check of Palmgren's M0 + M1 in oil bath ([Palmgren1959], factors of
+# losses.toml) at P = 0.1·C, ν = 20 mm²/s, n = 1500 min⁻¹ (ν·n = 30 000), catalogue bearings
+# of [SKF6000].  Palmgren's oil-bath M0 includes the drag of the bath, which the catalogue's
+# constant μ leaves out, so the model may lie above the estimate: tolerance −20 %…+50 %.
+SKF_MU = {"6207": 0.0015, "6310": 0.0015, "7208 B": 0.0020, "NU 208": 0.0011,
+          "30208": 0.0018, "22208": 0.0018}
+
+
+@pytest.mark.parametrize("designation", sorted(SKF_MU))
+def test_palmgren_against_skf_estimate(designation):
+    from geardesign.bearing import catalogue as C
+
+    b = C.find(designation)
+    assert b is not None
+    P = 0.1 * b.C_r
+    M0, M1 = L.bearing_friction_moment(b.type, 0.5 * (b.d + b.D), 1500.0, 20.0, P, 0.0, P,
+                                       b.C_0r, b.Y)
+    estimate = 0.5 * SKF_MU[designation] * P * b.d
+    assert 0.8 <= (M0 + M1) / estimate <= 1.5
