@@ -12,7 +12,7 @@ efficiency (or the one the spec gives); its loss (1 − η)·P_in heats the oil 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
 from geardesign.drive import losses as L
 from geardesign.drive import thermal as TH
@@ -60,7 +60,6 @@ class Mesh:
     alpha_tw: float
     eps_alpha: float
     eps_1: float
-    eps_2: float
     d_w1: float
     d_w2: float
     b: float
@@ -211,18 +210,14 @@ def shaft_diameter(T: float) -> float:
     return (1000.0 * T / (0.2 * TAU_SHAFT)) ** (1.0 / 3.0)
 
 
-def housing_box(gears: list[tuple[float, float, float]], b: list[float]) -> tuple[float, float, float, float]:
-    """Box housing around parallel stages in line [mm]: (L, W, H, wall gap a).  ``gears``:
-    (centre distance, tip diameter of the first pinion, tip diameter of the last wheel)
-    per stage in order, the largest tip diameter last in each tuple's place; ``b`` the face
-    widths.  The gap between the gears and the wall a = L_g^(1/3) + 3 mm, the sump below
-    the largest wheel 4·a deep ([Dunaev]); L_g the length over the gears."""
-    a_sum = sum(g[0] for g in gears)
-    L_g = a_sum + 0.5 * gears[0][1] + 0.5 * gears[-1][2]
+def housing_box(stages: list[tuple[float, float, float]],
+                b: list[float]) -> tuple[float, float, float, float]:
+    """Box housing around parallel stages in line [mm]: (L, W, H, a).  ``stages``: the
+    centre distance and the tip diameters of pinion and wheel of each stage, from the
+    input; ``b`` their face widths.  The gap between the gears and the walls is
+    a = L_g^(1/3) + 3 mm, L_g the length over the gears, and the sump below the largest
+    wheel is 4·a deep ([Dunaev]): L = L_g + 2a, W = Σb + (n + 1)·a, H = d_a,max + 5a."""
+    L_g = sum(s[0] for s in stages) + 0.5 * stages[0][1] + 0.5 * stages[-1][2]
     a = L_g ** (1.0 / 3.0) + 3.0
-    d_max = max(max(g[1], g[2]) for g in gears)
+    d_max = max(max(s[1], s[2]) for s in stages)
     return L_g + 2 * a, sum(b) + (len(b) + 1) * a, d_max + 5 * a, a
-
-
-def with_oil(m: Model, oil: Oil) -> Model:
-    return replace(m, oil=oil)

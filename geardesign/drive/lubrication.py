@@ -75,9 +75,10 @@ def _oil(spec: ValidatedSpec) -> tuple[HEAT.Oil, dict]:
     return o, dict(grade=oil.grade, source=oil.cite, nu100=nu100)
 
 
-def _mesh(run, where: str) -> tuple[HEAT.Mesh | None, list[HEAT.DipGear], tuple | None]:
+def _mesh(run, stage: int) -> tuple[HEAT.Mesh | None, list[HEAT.DipGear], tuple | None]:
     """Mesh data of a cylindrical involute stage (spur calculator), its two gears for the
-    churning and (a_w, d_a1, d_a2, b) for the housing; (None, [], None) for others."""
+    churning and (a_w, d_a1, d_a2, b) for the housing; (None, [], None) for others
+    (worm, planetary, Novikov, an internal pair)."""
     if run.result.kind != "spur":
         return None, [], None
     doc = run.result.document()
@@ -88,8 +89,8 @@ def _mesh(run, where: str) -> tuple[HEAT.Mesh | None, list[HEAT.DipGear], tuple 
     if b is None or z2 < 0 or v.get("d_w2", -1.0) <= 0 or gear.get("internal"):
         return None, [], None
     pbt = v["p_bt"]
-    e1, e2 = L.partial_contact_ratios(v["d_a1"], v["d_a2"], v["d_b1"], v["d_b2"],
-                                      v["alpha_tw"], pbt)
+    e1, _ = L.partial_contact_ratios(v["d_a1"], v["d_a2"], v["d_b1"], v["d_b2"],
+                                     v["alpha_tw"], pbt)
     P_in = run.T_in * run.n_in * math.pi / 30.0
     F_bt = 2000.0 * run.T_in / v["d_b1"]
     mat = doc["inputs"].get("material") or {}
@@ -97,27 +98,28 @@ def _mesh(run, where: str) -> tuple[HEAT.Mesh | None, list[HEAT.DipGear], tuple 
            if isinstance(m, dict) and m.get("roughness_Ra") is not None]
     Ra = sum(ras) / len(ras) if ras else None
     mesh = HEAT.Mesh(P_in, run.n_in, v["u"], z1, v["beta_b"], v["alpha_tw"], v["eps_alpha"],
-                     e1, e2, v["d_w1"], v["d_w2"], b, F_bt, Ra)
+                     e1, v["d_w1"], v["d_w2"], b, F_bt, Ra)
     m_n, a_n = gear["module"], gear.get("pressure_angle", 20.0)
-    dip = [HEAT.DipGear(-1, "pinion", v["d_w1"] / 2, v["d_a1"] / 2, b, z1, m_n, a_n, run.n_in),
-           HEAT.DipGear(-1, "wheel", v["d_w2"] / 2, v["d_a2"] / 2, b, z2, m_n, a_n,
+    dip = [HEAT.DipGear(stage, "pinion", v["d_w1"] / 2, v["d_a1"] / 2, b, z1, m_n, a_n,
+                        run.n_in),
+           HEAT.DipGear(stage, "wheel", v["d_w2"] / 2, v["d_a2"] / 2, b, z2, m_n, a_n,
                         run.n_out)]
     return mesh, dip, (v["a_w"], v["d_a1"], v["d_a2"], b)
 
 
-def _build(spec, stages, runs, n_m, oil: HEAT.Oil, cases) -> tuple:
+def _build(spec, stages, runs, oil: HEAT.Oil) -> tuple:
+    """The loss model without bearings and seals, the housing and its dimensions."""
     d = spec.data
     lub, th = d["lubrication"], d["thermal"] or {}
     n = len(runs)
     P_in = [r.T_in * r.n_in * math.pi / 30.0 for r in runs]
     m = HEAT.Model(oil, n, P_in)
     geo = []
-    for i, ((where, _, _, eta), r) in enumerate(zip(stages, runs)):
-        mesh, dip, g = (None, [], None) if eta is not None else _mesh(r, where)
+    for i, ((_, _, _, eta), r) in enumerate(zip(stages, runs)):
+        mesh, dip, g = (None, [], None) if eta is not None else _mesh(r, i)
         if mesh is not None:
             m.meshes[i] = mesh
-            m.dip += [HEAT.DipGear(i, x.member, x.R_p, x.R_a, x.b, x.z, x.m_n, x.alpha_n, x.n)
-                      for x in dip]
+            m.dip += dip
             geo.append(g)
         else:
             m.fixed[i] = r.efficiency
@@ -222,7 +224,7 @@ def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m) -> Thermal:
     seal_source = ""
     passes = 0
     for passes in range(1, MAX_PASSES + 1):
-        m, hs, box = _build(spec, stages, runs, n_m, oil, None)
+        m, hs, box = _build(spec, stages, runs, oil)
         cases, brs = [], []
         if d["shaft"]:
             cases = shaft_cases(d["shaft"], runs, n_m, L_h)
@@ -244,6 +246,7 @@ def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m) -> Thermal:
             d_out = bores.get(last) or HEAT.shaft_diameter(torques[-1])
             seal_source = ("bearing bores" if (1 in bores and last in bores) else
                            "estimated: d = (T/(0.2·[τ]))^(1/3), [τ] = 20 MPa ([Dunaev])")
+        box.update(d_seal_in=d_in, d_seal_out=d_out)
         m.seals = [HEAT.Seal(0, d_in, speeds[0], "input"),
                    HEAT.Seal(len(runs) - 1, d_out, speeds[-1], "output")]
         bal = HEAT.balance(m, hs, t_air, t_max)
@@ -309,6 +312,9 @@ def report(res: Result, t: Thermal, stages) -> None:
     if "immersion" in t.box:
         sec.add("immersion", t.box["immersion"], "mm", "h", "immersion of the largest wheel",
                 "lubrication")
+    for k, name in (("in", "input"), ("out", "output")):
+        sec.add(f"d_seal_{k}", t.box[f"d_seal_{k}"], "mm", f"d_s,{k}", f"shaft diameter at the "
+                f"{name} lip seal", t.seal_source)
     sec.add("V0", m.V0, "l", "V_0", "oil volume", "given" if res.document()["inputs"][
         "lubrication"].get("oil_volume") else "housing floor × oil depth")
     sec.add("h_free", D.h_free, "W/(m^2·K)", "α_free", "free convection coefficient",
