@@ -277,3 +277,12 @@ def test_cli_json_has_loss_table(tmp_path):
     doc = json.loads(out)
     assert [r["stage"] for r in doc["results"]["losses"]] == [1, 2]
     assert doc["units"]["results.thermal.t_oil"] == "°C"
+
+
+def test_losses_above_the_input_power_is_one_line(tmp_path):
+    text = SPEC.read_text(encoding="utf-8").replace("power = 7.5", "power = 0.05").replace(
+        "torque = 1100.0\n", "")
+    path = write_spec(tmp_path, text)
+    code, out, err = cli("run", path)
+    assert code == 2 and len(err.strip().splitlines()) == 1
+    assert "motor.power" in err and "the drive would not turn" in err and "bearings" in err

@@ -253,10 +253,14 @@ def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m) -> Thermal:
         sl = HEAT.stage_losses(m, bal.t_oil)
         for i, s in enumerate(sl):
             if s.total >= s.P_in:
+                parts = ", ".join(f"{k} {v:.0f} W" for k, v in (
+                    ("mesh", s.mesh), ("churning", s.churning), ("bearings", s.bearings),
+                    ("seals", s.seals), ("own η", s.other)) if v > 0)
                 raise InputError(Problem("motor.power", f"the losses of stage {i + 1} "
-                                    f"({s.total:.0f} W) reach its input power ({s.P_in:.0f} W)"
-                                    f": the drive would not turn; raise the power or lower "
-                                    f"the immersion and the oil grade"))
+                                         f"({s.total:.0f} W: {parts}) reach its input power "
+                                         f"({s.P_in:.0f} W): the drive would not turn; raise "
+                                         f"the power, or check the oil grade, the immersion "
+                                         f"and the oil volume"))
         etas = {i: s.eta for i, s in enumerate(sl) if i in m.meshes}
         if etas_before is not None and all(
                 abs(etas[i] - etas_before[i]) <= EFFICIENCY_TOL for i in etas):
