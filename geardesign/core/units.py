@@ -15,7 +15,8 @@ PINT_NAMES = {
     "N*m/rad": "newton * meter / radian", "N/mm": "newton / mm", "MPa": "megapascal",
     "min^-1": "1 / minute", "kW": "kilowatt", "h": "hour", "s": "second", "kg": "kilogram",
     "kg*m^2": "kilogram * meter ** 2", "m/s": "meter / second", "mm^2/s": "mm ** 2 / second",
-    "°C": "degC",
+    "°C": "degC", "m^2": "meter ** 2", "l": "liter", "kg/m^3": "kilogram / meter ** 3",
+    "W": "watt",
 }
 """The fixed units of the spec fields in pint's spelling."""
 

@@ -124,6 +124,13 @@ def compute(spec: ValidatedSpec) -> Result:
 
     d = spec.data
     motor, load = d["motor"], d["load"]
+    if d["thermal"] is not None and d["lubrication"] is None:
+        raise InputError(Problem("lubrication", "missing; the heat balance [thermal] needs "
+                                 "the oil: give [lubrication] oil = \"VG 220\" (a grade)"))
+    if d["lubrication"] is not None:
+        from geardesign.drive import lubrication as LUB
+
+        LUB.prepare(spec)
     res = CALCULATOR.new_result(spec)
     if motor["power"] is None and motor["torque"] is None:
         raise InputError(Problem("motor.power", "missing; give the motor's power (kW) or "
@@ -149,21 +156,36 @@ def compute(spec: ValidatedSpec) -> Result:
 
     duty = Duty(load["life_hours"], load["regime"], load["application_factor"],
                 motor["peak_ratio"], load["method"])
-    if load["torque"] is not None:
-        # first pass for the ratios and efficiencies, then rate for the machine's torque
-        probe = _run_chain(stages, T_m, n_m, duty)
-        factor = math.prod(r.ratio * r.efficiency for r in probe)
-        T_in = load["torque"] / factor
-        runs = _run_chain(stages, T_in, n_m, duty)
-    else:
-        T_in = T_m
-        runs = _run_chain(stages, T_in, n_m, duty)
+    lub = d["lubrication"]
+
+    def chain(etas: dict | None = None, prev: list | None = None):
+        """T_in and the stage runs; ``etas`` replaces the efficiencies of the stages that
+        give none, ``prev`` (the runs of the pass before) gives the ratios instead of a
+        first pass."""
+        st = stages if not etas else [
+            (w, n_, data, e if e is not None else etas.get(i))
+            for i, (w, n_, data, e) in enumerate(stages)]
+        if load["torque"] is not None:
+            # first pass for the ratios and efficiencies, then rate for the machine's torque
+            probe = prev if prev is not None else _run_chain(st, T_m, n_m, duty)
+            factor = math.prod(r.ratio * (etas[i] if etas and i in etas and st[i][3] is not None
+                                          else r.efficiency) for i, r in enumerate(probe))
+            T1 = load["torque"] / factor
+            return T1, _run_chain(st, T1, n_m, duty)
+        return T_m, _run_chain(st, T_m, n_m, duty)
+
+    T_in, runs = chain()
+    thermal = None
+    if lub is not None:
+        thermal = LUB.solve(spec, stages, chain, T_in, runs, n_m)
+        T_in, runs = thermal.T_in, thermal.runs
 
     u = math.prod(r.ratio for r in runs)
     eta = math.prod(r.efficiency for r in runs)
     out = runs[-1]
     sec.add("u", u, "-", "u", "overall ratio", "stages")
-    sec.add("eta", eta, "-", "η", "overall efficiency (gear meshes)", "stages")
+    sec.add("eta", eta, "-", "η", "overall efficiency (gear meshes)" if thermal is None else
+            "overall efficiency (meshes, churning, bearings, seals)", "stages")
     sec.add("T_in", T_in, "N·m", "T_in", "input torque the stages are rated for", "drive")
     sec.add("T_out", out.T_out, "N·m", "T_out", "output torque", "drive")
     sec.add("n_out", out.n_out, "min^-1", "n_out", "output speed", "drive")
@@ -207,8 +229,11 @@ def compute(spec: ValidatedSpec) -> Result:
             f"output speed {out.n_out:.2f} min⁻¹ within ±{load['speed_tolerance']:g} % of "
             f"{load['speed']:g} min⁻¹ ({dev:+.2f} %)", dev, load["speed_tolerance"], "drive"))
 
+    if thermal is not None:
+        LUB.report(res, thermal, stages)
     if d["shaft"]:
-        _shafts(res, d["shaft"], runs, n_m, load["life_hours"])
+        _shafts(res, d["shaft"], runs, n_m, load["life_hours"],
+                thermal.bearing_oil if thermal is not None else None)
     return res
 
 
@@ -221,12 +246,12 @@ def _shaft_rotation(runs: list[StageRun]) -> list[int]:
     return s
 
 
-def _shafts(res: Result, shafts: list, runs: list[StageRun], n_m: float, L_h: float) -> None:
-    from geardesign.bearing.life import system_life
-
+def shaft_cases(shafts: list, runs: list[StageRun], n_m: float, L_h: float) -> list[dict]:
+    """The bearings of the shafts with their loads: one entry per bearing, ``{"shaft",
+    "side", "key", "name", "F_r", "F_a", "n", "data"}`` (``data``: the bearing spec)."""
     rot = _shaft_rotation(runs)
     speeds = [n_m] + [r.n_out for r in runs]
-    rows, lives, balls = [], [], []
+    cases = []
     for k, sh in enumerate(shafts):
         idx = sh["index"]
         key = f"shaft[{k}]"
@@ -262,30 +287,54 @@ def _shafts(res: Result, shafts: list, runs: list[StageRun], n_m: float, L_h: fl
                     "requirements": {"life": L_h}}
             if sh.get("lubrication"):
                 data["lubrication"] = dict(sh["lubrication"])
-            try:
-                br = run_data(data, f"{key}.support_{side}")
-            except InputError as exc:
-                raise InputError([Problem(f"{key}.support_{side}: {p.key}", p.message, p.value)
-                                  for p in exc.problems]) from None
-            v = {}
-            for section in br.document()["results"].values():
-                if isinstance(section, dict):
-                    v.update(section)
-            life = v.get("L_sah", v.get("L_nmh", v.get("L10h")))
-            lives.append(life)
-            balls.append("ball" in str(v.get("type", "ball")))
-            rows.append(dict(shaft=idx, bearing=side.upper(), designation=v.get("designation"),
-                             F_r=F_r, F_a=F_a, n=speeds[idx - 1], life=life,
-                             verdict=br.verdict,
-                             source=v.get("data_source") or "given in the spec"))
-            res.parts.append(("bearing_reports", f"{name}, bearing {side.upper()}", br))
-            failed = [c.code for c in br.failed]
-            res.checks.append(check(
-                f"BEARING_{idx}{side.upper()}", not failed, "error",
-                f"{name}, bearing {side.upper()} fails {', '.join(failed)} (F_r = {F_r:.0f} N, "
-                f"F_a = {F_a:.0f} N): see its report below",
-                f"{name}, bearing {side.upper()}: life {life:.0f} h (F_r = {F_r:.0f} N, "
-                f"F_a = {F_a:.0f} N)", life, L_h, "bearing calculator"))
+            cases.append(dict(shaft=idx, side=side, key=key, name=name, F_r=F_r, F_a=F_a,
+                              n=speeds[idx - 1], data=data))
+    return cases
+
+
+def run_bearing(case: dict) -> Result:
+    """The bearing calculator's result for one entry of :func:`shaft_cases`; problems
+    name the shaft's support."""
+    where = f"{case['key']}.support_{case['side']}"
+    try:
+        return run_data(case["data"], where)
+    except InputError as exc:
+        raise InputError([Problem(f"{where}: {p.key}", p.message, p.value)
+                          for p in exc.problems]) from None
+
+
+def _shafts(res: Result, shafts: list, runs: list[StageRun], n_m: float, L_h: float,
+            bearing_oil=None) -> None:
+    """Bearing lives of the shafts; ``bearing_oil(case)`` (with [lubrication]) puts the
+    drive's oil and its sump temperature into a bearing's [lubrication] table."""
+    from geardesign.bearing.life import system_life
+
+    rows, lives, balls = [], [], []
+    for case in shaft_cases(shafts, runs, n_m, L_h):
+        if bearing_oil is not None:
+            bearing_oil(case)
+        idx, side, name = case["shaft"], case["side"], case["name"]
+        F_r, F_a, speed = case["F_r"], case["F_a"], case["n"]
+        br = run_bearing(case)
+        v = {}
+        for section in br.document()["results"].values():
+            if isinstance(section, dict):
+                v.update(section)
+        life = v.get("L_sah", v.get("L_nmh", v.get("L10h")))
+        lives.append(life)
+        balls.append("ball" in str(v.get("type", "ball")))
+        rows.append(dict(shaft=idx, bearing=side.upper(), designation=v.get("designation"),
+                         F_r=F_r, F_a=F_a, n=speed, life=life,
+                         verdict=br.verdict,
+                         source=v.get("data_source") or "given in the spec"))
+        res.parts.append(("bearing_reports", f"{name}, bearing {side.upper()}", br))
+        failed = [c.code for c in br.failed]
+        res.checks.append(check(
+            f"BEARING_{idx}{side.upper()}", not failed, "error",
+            f"{name}, bearing {side.upper()} fails {', '.join(failed)} (F_r = {F_r:.0f} N, "
+            f"F_a = {F_a:.0f} N): see its report below",
+            f"{name}, bearing {side.upper()}: life {life:.0f} h (F_r = {F_r:.0f} N, "
+            f"F_a = {F_a:.0f} N)", life, L_h, "bearing calculator"))
     res.tables.append(DataTable("bearings", "Bearings", [
         ("shaft", "shaft", None), ("bearing", "bearing", None),
         ("designation", "designation", None), ("F_r", "F_r", "N"), ("F_a", "F_a", "N"),

@@ -88,6 +88,60 @@ SPLIT = Table("split", "ratio split helper: proposed stage ratios for an overall
           hint='"developed": two cylindrical stages, u1 = 1.25·sqrt(u); "equal": u^(1/n)'),
 ), required=False)
 
+LUBRICATION = Table("lubrication", "the oil and the dip lubrication: with it the stages' "
+                    "efficiencies come from their losses and the oil temperature from the "
+                    "heat balance ([thermal])", (
+    Field("oil", "string", "ISO VG grade of the oil (ISO 3448), e.g. \"VG 220\"",
+          example="VG 220", hint="`geardesign materials oil` lists the grades"),
+    Field("viscosity_index", "number", "viscosity index of the oil (ISO 2909)", symbol="VI",
+          default=None, minimum=0, maximum=400, hint="default: the library value of the grade"),
+    Field("base_oil", "string", "base oil, for the lubricant factor X_L of the mesh friction "
+          "(ISO/TR 14179-2)", default="mineral",
+          choices=("mineral", "pao", "pag_insoluble", "pag_soluble", "traction",
+                   "phosphate_ester")),
+    Field("density", "number", "density of the oil at 15 °C", "kg/m^3", "ρ_15", default=880.0,
+          minimum=700.0, maximum=1200.0),
+    Field("roughness_Ra", "number", "mean arithmetic roughness Ra of the tooth flanks (pinion "
+          "and wheel) of every cylindrical stage", "µm", "Ra", default=None, minimum=0.05,
+          maximum=10.0, hint="default: the mean of the stage's material Ra (pinion, wheel)"),
+    Field("immersion", "number", "depth the largest wheel dips into the oil (the oil level "
+          "of all parallel gears)", "mm", "h", default=None, minimum=0.0, maximum=2000.0,
+          hint="default: one tooth depth, 2.25·m_n of the largest wheel"),
+    Field("oil_volume", "number", "oil volume in the sump", "l", "V_0", default=None,
+          gt=0.0, maximum=1e5, hint="default: the housing floor times the oil depth"),
+    Field("seal_diameters", "array", "shaft diameters at the lip seals of the input and the "
+                                     "output shaft", "mm", "d_s", default=None, min_items=2,
+          max_items=2, gt=1.0, maximum=2000.0,
+          hint="default: the bearing bore of shaft 1 and of the last shaft, else "
+               "d = (T/(0.2·[τ]))^(1/3) with [τ] = 20 MPa"),
+), required=False, in_template=False)
+
+THERMAL = Table("thermal", "heat balance of the housing (with [lubrication])", (
+    Field("ambient", "number", "ambient air temperature", "°C", "ϑ_0", default=20.0,
+          minimum=-40.0, maximum=60.0),
+    Field("max_oil_temperature", "number", "permissible oil sump temperature", "°C", "ϑ_max",
+          default=90.0, minimum=30.0, maximum=150.0, hint="90–95 °C for mineral oils"),
+    Field("area", "number", "cooling area of the housing", "m^2", "A", default=None,
+          gt=0.0, maximum=1000.0, hint="default: from length, width and height"),
+    Field("length", "number", "housing length (along the stages; the fan's air flow)", "mm",
+          "L", default=None, gt=10.0, maximum=1e5,
+          hint="default: estimated from the gears (wall gap (L_g)^(1/3) + 3 mm)"),
+    Field("width", "number", "housing width (along the shafts)", "mm", "W", default=None,
+          gt=10.0, maximum=1e5),
+    Field("height", "number", "housing height", "mm", "H", default=None, gt=10.0,
+          maximum=1e5),
+    Field("base_cooled", "boolean", "the base gives off heat too (not on a foundation)",
+          default=False),
+    Field("emissivity", "number", "emissivity of the housing surface (painted: 0.9)",
+          symbol="ε", default=0.9, minimum=0.0, maximum=1.0),
+    Field("fan_velocity", "number", "air velocity of a fan along the housing", "m/s", "v_fan",
+          default=0.0, minimum=0.0, maximum=60.0),
+    Field("fan_share", "number", "share of the area the fan blows on", symbol="s_fan",
+          default=0.5, minimum=0.0, maximum=1.0),
+    Field("cooler", "number", "heat taken by an oil cooler", "kW", "P_cool", default=0.0,
+          minimum=0.0, maximum=1e4),
+), required=False, in_template=False)
+
 SCHEMA = SpecSchema(
     kind="drive",
     description="a whole drive: motor, stages, shafts and bearings",
@@ -110,6 +164,6 @@ SCHEMA = SpecSchema(
                       hint="keys: index, bearing_a, bearing_b, fixed, method, [[shaft.gear]] "
                            "(stage, position, mate_angle, axial_sign), [shaft.support_a], "
                            "[shaft.support_b]; see specs/drive_two_stage_reducer.toml"),
-            SPLIT),
+            SPLIT, LUBRICATION, THERMAL),
     title_example="Two-stage reducer, 7.5 kW, 1455/58 min^-1",
 )

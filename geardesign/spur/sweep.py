@@ -567,7 +567,7 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
     c = summary["counts"]
     sec = res.section("counts", "Candidates")
     sec.add("evaluated", c["evaluated"], "-", "N", "candidates evaluated ("
-            + (f"Sobol sample, seed {sw.seed}" if sw.samples else "full grid") + ")")
+            + (f"Sobol sample, seed = {sw.seed}" if sw.samples else "full grid") + ")")
     sec.add("valid", c["valid"], "-", "N_valid", "candidates that form a gear pair")
     sec.add("passed", c["passed"], "-", "N_pass", "candidates that pass every error check")
     sec.add("feasible", c["feasible"], "-", "N_feas", "passing candidates within the "

@@ -1,0 +1,380 @@
+"""A drive with ``[lubrication]`` (and ``[thermal]``): its stages' efficiencies from their
+losses, the oil sump temperature from the heat balance, and the report of both.
+
+The passes: the chain of stages is computed with the efficiencies of the pass before
+(first: the calculators' or 0.98), the losses are put together from its results
+(:mod:`.heat`), the sump temperature solves the heat balance, and the efficiencies follow
+from the losses at that temperature; until they change by less than 1e-6 (at most
+``MAX_PASSES`` passes).  The bearings then get the drive's oil at the sump temperature.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from geardesign.core.errors import InputError, Problem
+from geardesign.core.result import DataTable, Result, check
+from geardesign.core.spec import ValidatedSpec
+from geardesign.drive import heat as HEAT
+from geardesign.drive import losses as L
+from geardesign.drive import thermal as TH
+from geardesign.materials import lubricants as OIL
+
+MAX_PASSES = 5
+EFFICIENCY_TOL = 1e-6
+SRC_MESH = "[ISOTR14179-2] (μ_mz Schlenk, H_V Ohlendorf)"
+SRC_CHURN = "[Changenet2007]"
+SRC_BEARING = "[Palmgren1959] M0 + M1"
+SRC_SEAL = "[ISOTR14179-2] P_VD"
+SRC_HEAT = "[Incropera2007] eqs. (9.26), (7.30), (1.9)"
+ETA_SOURCE = "losses ([ISOTR14179-2], [Changenet2007], [Palmgren1959])"
+
+
+@dataclass
+class Thermal:
+    T_in: float
+    runs: list
+    model: HEAT.Model
+    housing: TH.Housing
+    box: dict                 # L, W, H [mm], a (wall gap), estimated: bool
+    balance: HEAT.Balance
+    losses: list              # HEAT.StageLoss per stage
+    passes: int
+    t_air: float
+    t_max: float
+    oil_info: dict
+    seal_source: str
+    bearings_counted: bool
+    bearing_oil: object = None
+
+
+def _values(res: Result) -> dict:
+    out = {}
+    for section in res.document()["results"].values():
+        if isinstance(section, dict):
+            out.update(section)
+    return out
+
+
+def _oil(spec: ValidatedSpec) -> tuple[HEAT.Oil, dict]:
+    lub = spec.data["lubrication"]
+    oil = OIL.find(lub["oil"])
+    if oil is None:
+        close = OIL.close_matches(lub["oil"])
+        hint = f"; did you mean {' or '.join(repr(c) for c in close)}?" if close else ""
+        raise InputError.at("lubrication.oil", lub["oil"], "not an ISO VG grade of the "
+                            "library (`geardesign materials oil`)" + hint)
+    VI = lub["viscosity_index"]
+    try:
+        nu100 = OIL.nu100_from_vi(oil.nu40, VI)
+    except OIL.OilError as exc:
+        raise InputError.at("lubrication.viscosity_index", VI, str(exc)) from None
+    o = HEAT.Oil(oil.grade, oil.nu40, nu100, VI, lub["density"],
+                 L.lubricant_factor(lub["base_oil"]), lub["roughness_Ra"])
+    return o, dict(grade=oil.grade, source=oil.cite, nu100=nu100)
+
+
+def _mesh(run, stage: int) -> tuple[HEAT.Mesh | None, list[HEAT.DipGear], tuple | None]:
+    """Mesh data of a cylindrical involute stage (spur calculator), its two gears for the
+    churning and (a_w, d_a1, d_a2, b) for the housing; (None, [], None) for others
+    (worm, planetary, Novikov, an internal pair)."""
+    if run.result.kind != "spur":
+        return None, [], None
+    doc = run.result.document()
+    v = _values(run.result)
+    gear = doc["inputs"]["gear"]
+    b = gear.get("face_width") or v.get("face_width_proposed")
+    z1, z2 = gear["z1"], gear["z2"]
+    if b is None or z2 < 0 or v.get("d_w2", -1.0) <= 0 or gear.get("internal"):
+        return None, [], None
+    pbt = v["p_bt"]
+    e1, _ = L.partial_contact_ratios(v["d_a1"], v["d_a2"], v["d_b1"], v["d_b2"],
+                                     v["alpha_tw"], pbt)
+    P_in = run.T_in * run.n_in * math.pi / 30.0
+    F_bt = 2000.0 * run.T_in / v["d_b1"]
+    mat = doc["inputs"].get("material") or {}
+    ras = [m.get("roughness_Ra") for m in (mat.get("pinion") or {}, mat.get("wheel") or {})
+           if isinstance(m, dict) and m.get("roughness_Ra") is not None]
+    Ra = sum(ras) / len(ras) if ras else None
+    mesh = HEAT.Mesh(P_in, run.n_in, v["u"], z1, v["beta_b"], v["alpha_tw"], v["eps_alpha"],
+                     e1, v["d_w1"], v["d_w2"], b, F_bt, Ra)
+    m_n, a_n = gear["module"], gear.get("pressure_angle", 20.0)
+    dip = [HEAT.DipGear(stage, "pinion", v["d_w1"] / 2, v["d_a1"] / 2, b, z1, m_n, a_n,
+                        run.n_in),
+           HEAT.DipGear(stage, "wheel", v["d_w2"] / 2, v["d_a2"] / 2, b, z2, m_n, a_n,
+                        run.n_out)]
+    return mesh, dip, (v["a_w"], v["d_a1"], v["d_a2"], b)
+
+
+def _build(spec, stages, runs, oil: HEAT.Oil) -> tuple:
+    """The loss model without bearings and seals, the housing and its dimensions."""
+    d = spec.data
+    lub, th = d["lubrication"], d["thermal"] or {}
+    n = len(runs)
+    P_in = [r.T_in * r.n_in * math.pi / 30.0 for r in runs]
+    m = HEAT.Model(oil, n, P_in)
+    geo = []
+    for i, ((_, _, _, eta), r) in enumerate(zip(stages, runs)):
+        mesh, dip, g = (None, [], None) if eta is not None else _mesh(r, i)
+        if mesh is not None:
+            m.meshes[i] = mesh
+            m.dip += dip
+            geo.append(g)
+        else:
+            m.fixed[i] = r.efficiency
+            geo.append(None)
+    # housing: the dimensions given, the missing ones estimated around the gears
+    dims = [th.get("length"), th.get("width"), th.get("height")]
+    box = dict(a=None, estimated=False)
+    if None in dims:
+        if any(g is None for g in geo):
+            if th.get("area") is None or th.get("height") is None:
+                missing = "area" if th.get("area") is None else "height"
+                raise InputError(Problem(f"thermal.{missing}", "missing; the housing is "
+                                         "estimated only around cylindrical stages in line: "
+                                         "give thermal.area and thermal.height (and length "
+                                         "for a fan)"))
+            dims = [dims[0] or dims[2], dims[1], dims[2]]
+        else:
+            est = HEAT.housing_box([(g[0], g[1], g[2]) for g in geo], [g[3] for g in geo])
+            box.update(a=est[3], estimated=True)
+            dims = [x if x is not None else e for x, e in zip(dims, est[:3])]
+    box.update(L=dims[0], W=dims[1], H=dims[2])
+    area = th.get("area")
+    if area is None:
+        area = TH.box_area(box["L"], box["W"], box["H"], th.get("base_cooled", False))
+    box["area_given"] = th.get("area") is not None
+    hs = TH.Housing(area, box["H"], box["L"], th.get("emissivity", 0.9),
+                    th.get("fan_velocity", 0.0), th.get("fan_share", 0.5)
+                    if th.get("fan_velocity", 0.0) > 0 else 0.0,
+                    1000.0 * th.get("cooler", 0.0))
+    # dip lubrication: the oil level by the largest wheel
+    if m.dip:
+        big = max(m.dip, key=lambda x: x.R_a)
+        h = lub["immersion"]
+        if h is None:
+            h = 2.25 * big.m_n
+        if h > big.R_p:
+            raise InputError.at("lubrication.immersion", lub["immersion"],
+                                f"deeper than the largest wheel's pitch radius "
+                                f"{big.R_p:.1f} mm (the churning model holds up to h = R_p)")
+        level = big.R_a - h
+        m.immersion = {(x.stage, x.member): min(max(x.R_a - level, 0.0), x.R_p)
+                       for x in m.dip}
+        box["immersion"] = h
+    V0 = lub["oil_volume"]
+    if V0 is None and m.dip and box["W"] is None:
+        raise InputError(Problem("lubrication.oil_volume", "missing; give the oil volume "
+                                 "(l) or the housing's length, width and height"))
+    if V0 is None and not m.dip:
+        V0 = 0.0
+    elif V0 is None:
+        depth = 4 * (box.get("a") or 10.0) + box.get("immersion", 0.0)
+        V0 = box["L"] * box["W"] * depth * 1e-6
+    m.V0 = V0
+    box["V0"] = V0
+    return m, hs, box
+
+
+def _bearings(cases, bearing_results, n_stages: int) -> list[HEAT.BearingLoad]:
+    out = []
+    for c, br in zip(cases, bearing_results):
+        v = _values(br)
+        kind = v.get("type")
+        if kind not in L.bearing_types() or v.get("d") is None or v.get("D") is None:
+            continue
+        stage = min(c["shaft"], n_stages) - 1
+        C0 = v.get("C_0r") or 0.0
+        out.append(HEAT.BearingLoad(stage, f"{c['name']} {c['side'].upper()}", kind,
+                                    0.5 * (v["d"] + v["D"]), c["n"], c["F_r"], c["F_a"],
+                                    v.get("P0", c["F_r"]), C0, v.get("Y")))
+    return out
+
+
+def prepare(spec: ValidatedSpec) -> None:
+    """Defaults that depend on other inputs, filled in before the inputs are echoed: the
+    viscosity index of the grade, and the [thermal] table's defaults when it is left out."""
+    from geardesign.drive.spec import THERMAL
+
+    d = spec.data
+    lub = d["lubrication"]
+    oil = OIL.find(lub["oil"])
+    if oil is not None and lub["viscosity_index"] is None:
+        lub["viscosity_index"] = oil.VI
+        spec.assumed.append("lubrication.viscosity_index")
+    if d["thermal"] is None:
+        d["thermal"] = {f.key: f.default for f in THERMAL.fields}
+        spec.assumed += [f"thermal.{f.key}" for f in THERMAL.fields if f.default is not None]
+
+
+def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m) -> Thermal:
+    from geardesign.drive.calculator import run_bearing, shaft_cases
+
+    d = spec.data
+    lub, th = d["lubrication"], d["thermal"]
+    t_air, t_max = th["ambient"], th["max_oil_temperature"]
+    if t_max <= t_air:
+        raise InputError.at("thermal.max_oil_temperature", t_max, f"must be above the "
+                            f"ambient temperature {t_air:g} °C")
+    oil, info = _oil(spec)
+    L_h = d["load"]["life_hours"]
+    etas_before = None
+    bal = m = hs = box = None
+    seal_source = ""
+    passes = 0
+    for passes in range(1, MAX_PASSES + 1):
+        m, hs, box = _build(spec, stages, runs, oil)
+        cases, brs = [], []
+        if d["shaft"]:
+            cases = shaft_cases(d["shaft"], runs, n_m, L_h)
+            for c in cases:        # geometry and static load: without the oil temperature
+                c = dict(c, data={k: v for k, v in c["data"].items() if k != "lubrication"})
+                brs.append(run_bearing(c))
+            m.bearings = _bearings(cases, brs, len(runs))
+        bores = {}
+        for c, br in zip(cases, brs):
+            bores.setdefault(c["shaft"], _values(br).get("d"))
+        speeds = [n_m] + [r.n_out for r in runs]
+        torques = [T_in] + [r.T_out for r in runs]
+        last = len(runs) + 1
+        ds = lub["seal_diameters"]
+        if ds is not None:
+            d_in, d_out, seal_source = ds[0], ds[1], "given"
+        else:
+            d_in = bores.get(1) or HEAT.shaft_diameter(torques[0])
+            d_out = bores.get(last) or HEAT.shaft_diameter(torques[-1])
+            seal_source = ("bearing bores" if (1 in bores and last in bores) else
+                           "estimated: d = (T/(0.2·[τ]))^(1/3), [τ] = 20 MPa ([Dunaev])")
+        box.update(d_seal_in=d_in, d_seal_out=d_out)
+        m.seals = [HEAT.Seal(0, d_in, speeds[0], "input"),
+                   HEAT.Seal(len(runs) - 1, d_out, speeds[-1], "output")]
+        bal = HEAT.balance(m, hs, t_air, t_max)
+        sl = HEAT.stage_losses(m, bal.t_oil)
+        for i, s in enumerate(sl):
+            if s.total >= s.P_in:
+                parts = ", ".join(f"{k} {v:.0f} W" for k, v in (
+                    ("mesh", s.mesh), ("churning", s.churning), ("bearings", s.bearings),
+                    ("seals", s.seals), ("own η", s.other)) if v > 0)
+                raise InputError(Problem("motor.power", f"the losses of stage {i + 1} "
+                                         f"({s.total:.0f} W: {parts}) reach its input power "
+                                         f"({s.P_in:.0f} W): the drive would not turn; raise "
+                                         f"the power, or check the oil grade, the immersion "
+                                         f"and the oil volume"))
+        etas = {i: s.eta for i, s in enumerate(sl) if i in m.meshes}
+        if etas_before is not None and all(
+                abs(etas[i] - etas_before[i]) <= EFFICIENCY_TOL for i in etas):
+            break
+        if not etas:
+            break
+        etas_before = etas
+        T_in, runs = chain(etas, runs)
+        for i in etas:
+            runs[i].efficiency_source = ETA_SOURCE
+    losses = HEAT.stage_losses(m, bal.t_oil)
+    info.update(nu40=oil.nu40, VI=oil.VI, X_L=oil.X_L)
+    t_bearing = min(bal.t_oil, 150.0)
+
+    def bearing_oil(case: dict) -> None:
+        lt = case["data"].get("lubrication")
+        if not lt or case["data"].get("method") != "iso281_2007":
+            return
+        if all(lt.get(k) is None for k in ("viscosity", "oil", "nu40", "kappa", "nu1")):
+            lt["oil"] = oil.grade
+            if lt.get("viscosity_index") is None:
+                lt["viscosity_index"] = oil.VI
+        if lt.get("oil") is not None or lt.get("nu40") is not None:
+            if lt.get("temperature") is None:
+                lt["temperature"] = t_bearing
+    return Thermal(T_in, runs, m, hs, box, bal, losses, passes, t_air, t_max, info,
+                   seal_source, bool(m.bearings), bearing_oil)
+
+
+def report(res: Result, t: Thermal, stages) -> None:
+    b, m, hs = t.balance, t.model, t.housing
+    D = b.dissipation
+    sec = res.section("thermal", "Losses and heat balance")
+    sec.add("oil", t.oil_info["grade"], None, "", "oil, ISO VG grade", t.oil_info["source"])
+    sec.add("nu40", m.oil.nu40, "mm^2/s", "ν40", "viscosity at 40 °C", t.oil_info["source"])
+    sec.add("VI", m.oil.VI, "-", "VI", "viscosity index", "ASTM D2270 / ISO 2909")
+    sec.add("X_L", m.oil.X_L, "-", "X_L", "lubricant factor of the mesh friction", SRC_MESH)
+    sec.add("t_oil", b.t_oil, "°C", "ϑ_oil", "oil sump temperature (heat balance)", SRC_HEAT)
+    sec.add("nu_oil", m.oil.nu(b.t_oil), "mm^2/s", "ν", "oil viscosity at the sump temperature",
+            "ASTM D341")
+    sec.add("eta_oil", m.oil.eta(b.t_oil), "mPa·s", "η_oil", "dynamic viscosity at the sump "
+            "temperature", "ASTM D341")
+    sec.add("P_V", b.P_V, "W", "P_V", "total power loss at the sump temperature", "losses")
+    sec.add("P_Q", D.P_Q, "W", "P_Q", "heat given off at the sump temperature", SRC_HEAT)
+    sec.add("A", hs.area, "m^2", "A", "cooling area of the housing" + (
+        "" if t.box.get("area_given") else " (box without its base)" if not
+        res.document()["inputs"].get("thermal", {}).get("base_cooled") else " (box)"),
+        "given" if t.box.get("area_given") else "thermal dimensions")
+    for k, name in (("L", "housing length"), ("W", "housing width"), ("H", "housing height")):
+        sec.add(f"housing_{k}", t.box[k], "mm", k, name + (" (estimated)" if t.box.get(
+            "estimated") else ""), "[Dunaev] wall gap L_g^(1/3) + 3 mm" if t.box.get(
+            "estimated") else "given")
+    if "immersion" in t.box:
+        sec.add("immersion", t.box["immersion"], "mm", "h", "immersion of the largest wheel",
+                "lubrication")
+    for k, name in (("in", "input"), ("out", "output")):
+        sec.add(f"d_seal_{k}", t.box[f"d_seal_{k}"], "mm", f"d_s,{k}", f"shaft diameter at the "
+                f"{name} lip seal", t.seal_source)
+    sec.add("V0", m.V0, "l", "V_0", "oil volume", "given" if res.document()["inputs"][
+        "lubrication"].get("oil_volume") else "housing floor × oil depth")
+    sec.add("h_free", D.h_free, "W/(m^2·K)", "α_free", "free convection coefficient",
+            "[Incropera2007] eq. (9.26)")
+    if hs.fan_share > 0:
+        sec.add("h_fan", D.h_forced, "W/(m^2·K)", "α_fan", "forced convection coefficient "
+                f"(fan, {100 * hs.fan_share:.0f} % of the area)", "[Incropera2007] eq. (7.30)")
+    sec.add("h_rad", D.h_rad, "W/(m^2·K)", "α_rad", "radiation coefficient",
+            "[Incropera2007] eq. (1.9)")
+    sec.add("alpha", D.alpha, "W/(m^2·K)", "α", "total heat transfer coefficient", SRC_HEAT)
+    if hs.cooler > 0:
+        sec.add("P_cooler", hs.cooler, "W", "P_cool", "heat taken by the cooler", "given")
+    sec.add("iterations", b.iterations, "-", "", "bisection steps of the heat balance",
+            "heat balance")
+    sec.add("passes", t.passes, "-", "", "passes of efficiencies and stages", "drive")
+    P1 = m.P_in[0]
+    sec.add("P_thermal", b.scale_limit * P1 / 1000.0, "kW", "P_T",
+            f"thermal power limit: input power at which the sump reaches {t.t_max:g} °C",
+            SRC_HEAT)
+    rows = []
+    for i, ((_, name, _, _), s) in enumerate(zip(stages, t.losses)):
+        rows.append(dict(stage=i + 1, name=name, P_in=s.P_in / 1000.0, mesh=s.mesh,
+                         churning=s.churning, bearings=s.bearings, seals=s.seals,
+                         other=s.other, total=s.total, eta=s.eta, mu=s.mu, H_V=s.H_V))
+    res.tables.append(DataTable("losses", f"Power losses at {b.t_oil:.1f} °C (W)", [
+        ("stage", "stage", None), ("name", "name", None), ("P_in", "P_in", "kW"),
+        ("mesh", "mesh", "W"), ("churning", "churning", "W"), ("bearings", "bearings", "W"),
+        ("seals", "seals", "W"), ("other", "by own η", "W"), ("total", "total", "W"),
+        ("eta", "η", "-"), ("mu", "μ_mz", "-"), ("H_V", "H_V", "-")], rows))
+    if not t.bearings_counted:
+        res.checks.append(check(
+            "BEARING_LOSSES", False, "info",
+            "bearing losses are not in the efficiencies: give the shafts ([[shaft]]) with "
+            "their bearings", "", None, None, "drive"))
+    ok = b.t_oil <= t.t_max and b.bracketed
+    dT = t.t_max - t.t_air
+    need = b.P_V_at_max - b.P_Q_at_max
+    advice = []
+    if need > 0:
+        advice.append(f"an oil cooler of {(need + hs.cooler) / 1000.0:.2f} kW")
+        conv = b.P_Q_at_max - hs.cooler
+        if conv > 0:
+            advice.append(f"a housing area of {hs.area * (b.P_V_at_max - hs.cooler) / conv:.2f}"
+                          f" m² (now {hs.area:.2f} m²)")
+        if hs.fan_share == 0:
+            fan = TH.Housing(hs.area, hs.height, hs.length, hs.emissivity, 10.0, 0.5, hs.cooler)
+            advice.append(f"a fan (10 m/s on half the area gives "
+                          f"{TH.dissipation(fan, t.t_max, t.t_air).P_Q / 1000.0:.2f} kW at "
+                          f"{t.t_max:g} °C)")
+    where = (f"{b.t_oil:.1f} °C" if b.bracketed else f"above {HEAT.T_SEARCH_MAX:g} °C")
+    res.checks.append(check(
+        "THERMAL", ok, "error",
+        f"the oil sump reaches {where}, above the permissible {t.t_max:g} °C: the losses "
+        f"{b.P_V_at_max:.0f} W at {t.t_max:g} °C exceed the {b.P_Q_at_max:.0f} W the housing "
+        f"gives off ({dT:g} K over the ambient); add " + ", or ".join(advice)
+        + f"; the thermal power limit is {b.scale_limit * P1 / 1000.0:.2f} kW",
+        f"the oil sump settles at {b.t_oil:.1f} °C <= {t.t_max:g} °C (losses {b.P_V:.0f} W); "
+        f"thermal power limit {b.scale_limit * P1 / 1000.0:.2f} kW",
+        b.t_oil, t.t_max, SRC_HEAT))
