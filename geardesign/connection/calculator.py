@@ -177,11 +177,11 @@ def _key(res: Result, data: dict) -> None:
 
     advice = _key_advice(l_std, l_req, L_hub, n)
     for code, side, p, pa, _ in cases:
+        where = "on the key" if side == "key" else f"on the {side} side"
         res.checks.append(check(
             code, p <= pa, "error",
-            f"bearing pressure on the {side} side p = {p:.1f} MPa exceeds {pa:.1f} MPa: "
-            f"{advice}",
-            f"bearing pressure on the {side} side p = {p:.1f} MPa <= {pa:.1f} MPa",
+            f"bearing pressure {where} p = {p:.1f} MPa exceeds {pa:.1f} MPa: {advice}",
+            f"bearing pressure {where} p = {p:.1f} MPa <= {pa:.1f} MPa",
             p, pa, S.KEY_DIN if din else S.KEY_GOST))
     res.checks.append(check(
         "KEY_SHEAR", tau <= tau_allow, "error",
@@ -297,7 +297,8 @@ def _spline(res: Result, data: dict) -> None:
     res.checks.append(check(
         "SPLINE_PRESSURE", p <= p_allow, "error",
         f"flank pressure p = {p:.1f} MPa exceeds {p_allow:.1f} MPa: lengthen the hub to at "
-        f"least {_f(l_req, 1)} mm, use a larger spline or hardened teeth",
+        f"least {_f(l_req, 1)} mm, use a larger spline"
+        + (" or hardened teeth" if hard == "soft" else ""),
         f"flank pressure p = {p:.1f} MPa <= {p_allow:.1f} MPa", p, p_allow, method_src))
     res.checks.append(check(
         "SPLINE_LENGTH", l <= 1.5 * d_B, "warning",
@@ -436,7 +437,9 @@ def _fit(res: Result, data: dict) -> None:
         "FIT_SLIP", S_slip >= f["slip_safety"], "error",
         f"the joint slips: safety {S_slip:.2f} < {_f(f['slip_safety'])} at the smallest "
         f"interference; raise the smallest interference to {_f(U_req, 1)} µm or more (a "
-        f"tighter fit), lengthen the joint or use dry joint faces; {window}",
+        f"tighter fit)"
+        + (", use degreased (dry) joint faces" if f["surface"] == "oiled" else "")
+        + f" or lengthen the joint; {window}",
         f"safety against slip {S_slip:.2f} >= {_f(f['slip_safety'])}", S_slip,
         f["slip_safety"], S.SLIP))
     for code, part, S_p in (("FIT_HUB_YIELD", "hub", S_hub), ("FIT_SHAFT_YIELD", "shaft",
