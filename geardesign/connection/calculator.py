@@ -88,10 +88,10 @@ def _key(res: Result, data: dict) -> None:
     L_hub = k["hub_length"]
     if L_hub is not None and l > L_hub:
         fits = [v for v in lengths if v <= L_hub]
-        hint = (f"use a key of at most {_f(fits[-1])} mm (standard length)" if fits
+        hint = (f"use a standard key of at most {_f(fits[-1])} mm or a longer hub" if fits
                 else "use a longer hub")
         raise InputError.at("key.length", l, f"longer than the hub (key.hub_length = "
-                            f"{_f(L_hub)} mm): {hint}, or a longer hub")
+                            f"{_f(L_hub)} mm): {hint}")
     n_eff = float(tables.toml()["key_share"][str(n)])
     res.methods = ["GOST 23360-78, DIN 6885-1", "DIN 6892 method C" if din else
                    "GOST practice (Ivanov, Dunaev)"]
@@ -348,9 +348,9 @@ def _fit(res: Result, data: dict) -> None:
                             f"fit.diameter = {_f(d)} mm (0 for a solid shaft)")
     U_min, U_max, name, u_src = _fit_interference(f)
     if U_max <= 0:
-        what = f'"{name}"' if name else "the interferences"
+        what = f'"{name}" gives' if name else "the interferences give"
         raise InputError.at("fit.fit" if name else "fit.interference_max",
-                            name or U_max, f"{what} give no interference (largest "
+                            name or U_max, f"{what} no interference at {_f(d)} mm (largest "
                             f"{_f(U_max, 1)} µm): a clearance or transition fit transmits "
                             f"nothing by friction; choose an interference fit such as H7/s6")
     res.methods = ["DIN 7190-1 (elastic)", "ISO 286" if name else "interference given"]
@@ -448,7 +448,8 @@ def _fit(res: Result, data: dict) -> None:
             code, S_p >= f["yield_safety"], "error",
             f"the {part} yields at the largest interference: safety {S_p:.2f} < "
             f"{_f(f['yield_safety'])}; keep the largest interference below {_f(U_perm, 1)} µm "
-            f"(a looser fit), use a thicker hub or a stronger material",
+            f"(a looser fit) or use a stronger material (a thicker wall hardly helps: the "
+            f"stress at the bore follows the interference)",
             f"{part} safety against yield {S_p:.2f} >= {_f(f['yield_safety'])}",
             S_p if math.isfinite(S_p) else None, f["yield_safety"], S.VON_MISES))
     if f["joining"] == "shrink":
