@@ -267,3 +267,13 @@ def test_key_bearing_length_inverse():
         assert K.length_for(K.bearing_length(56.0, 12.0, form), 12.0, form) == 56.0
     assert K.standard_length(44.05, tables.key_lengths()) == 45.0
     assert math.isinf(K.standard_length(501.0, tables.key_lengths()))
+
+
+@pytest.mark.parametrize("module", ["key", "spline", "fit", "iso286", "tables"])
+def test_docstring_examples_run(module):
+    import doctest
+    import importlib
+
+    mod = importlib.import_module(f"geardesign.connection.{module}")
+    result = doctest.testmod(mod)
+    assert result.failed == 0 and (module == "tables" or result.attempted > 0)
