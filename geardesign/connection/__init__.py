@@ -3,7 +3,8 @@ splines ([DIN5480], [GOST6033]) and cylindrical interference fits ([DIN7190-1], 
 
 Modules: :mod:`.key`, :mod:`.spline`, :mod:`.fit` (pure formulas), :mod:`.iso286` (limit
 deviations of a fit), :mod:`.tables` (the CSV and TOML data), :mod:`.spec` (the spec schema),
-:mod:`.calculator` (spec -> result).
+:mod:`.inputs` (spec -> typed inputs, every input rule), :mod:`.solve` (inputs -> one record
+per connection type), :mod:`.calculator` (record -> report rows and checks).
 """
 
 from geardesign.connection.calculator import compute
