@@ -101,7 +101,11 @@ BAD = [
     ("two connections", KEY + '[spline]\ndesignation = "W 40x2x18"\nlength = 40.0\n',
      [BOTH + "both"]),
     ("spline designation unreadable", SPL.replace("W 40x2x18", "W 40-2-18"),
-     ['s.toml: spline.designation = "W 40-2-18": must read d_B x m x z, e.g. "W 40x2x18"']),
+     ['s.toml: spline.designation = "W 40-2-18": must read d_B x m x z, e.g. "W 40x2x18" (or '
+      'd_B x m, e.g. "40x2", for a size of the series table)']),
+    ("short designation not in the series", SPL.replace("W 40x2x18", "42x2"),
+     ['s.toml: spline.designation = "42x2": the series table has no spline 42 x 2; give the '
+      "number of teeth (d_B x m x z)"]),
     ("spline profile shift outside DIN 5480", SPL.replace("W 40x2x18", "W 40x2x16"),
      ['s.toml: spline.designation = "W 40x2x16": z = 16 on d_B = 40 mm with m = 2 mm gives '
       "the profile shift x = 1.450, outside -0.05...0.45 of DIN 5480: use z = 18 or 19"]),
@@ -277,3 +281,17 @@ def test_docstring_examples_run(module):
     mod = importlib.import_module(f"geardesign.connection.{module}")
     result = doctest.testmod(mod)
     assert result.failed == 0 and (module == "tables" or result.attempted > 0)
+
+
+@pytest.mark.parametrize("how", ['designation = "40x2"', 'designation = "N 40 x 2 x 18"',
+                                 "reference_diameter = 40.0\nmodule = 2.0",
+                                 "reference_diameter = 40.0\nmodule = 2.0\nteeth = 18"])
+def test_spline_size_from_the_series_table(how):
+    text = SPL.replace('designation = "W 40x2x18"', how)
+    geo = _doc(text)["results"]["geometry"]
+    assert (geo["z"], geo["x"]) == (18, pytest.approx(0.45, abs=1e-12))
+
+
+def test_spline_gost_heights():
+    geo = _doc(SPL + 'standard = "GOST 6033-80"\n')["results"]["geometry"]
+    assert (geo["h_w"], geo["d_m"]) == (pytest.approx(1.6), 36.0)

@@ -122,7 +122,7 @@ def key(data: dict) -> KeyInput:
 # --------------------------------------------------------------------------- spline
 
 _DESIGNATION = re.compile(
-    r"^\s*(?:[WN]\s*)?(\d+(?:\.\d+)?)\s*[x×]\s*(\d+(?:\.\d+)?)\s*[x×]\s*(\d+)\s*$")
+    r"^\s*(?:[WN]\s*)?(\d+(?:\.\d+)?)\s*[x×]\s*(\d+(?:\.\d+)?)\s*(?:[x×]\s*(\d+))?\s*$")
 
 
 @dataclass(frozen=True)
@@ -150,12 +150,20 @@ def _spline_size(s: dict) -> tuple[float, float, int, str]:
         m = _DESIGNATION.match(s["designation"])
         if not m:
             raise InputError.at("spline.designation", s["designation"],
-                                'must read d_B x m x z, e.g. "W 40x2x18"')
-        d_B, mod, z = float(m.group(1)), float(m.group(2)), int(m.group(3))
+                                'must read d_B x m x z, e.g. "W 40x2x18" (or d_B x m, e.g. '
+                                '"40x2", for a size of the series table)')
+        d_B, mod = float(m.group(1)), float(m.group(2))
+        row = tables.spline_size(d_B, mod)
+        if m.group(3) is None:
+            if row is None:
+                raise InputError.at("spline.designation", s["designation"],
+                                    f"the series table has no spline {fmt(d_B)} x {fmt(mod)}; "
+                                    f"give the number of teeth (d_B x m x z)")
+            return d_B, mod, row.z, f"{S.SPLINE_GEOM}; splines.csv row {row.row}"
+        z = int(m.group(3))
         if not (0 < d_B <= 1000 and 0 < mod <= 20 and 6 <= z <= 200):
             raise InputError.at("spline.designation", s["designation"],
                                 "d_B must lie in 0...1000 mm, m in 0...20 mm and z in 6...200")
-        row = tables.spline_size(d_B, mod)
         src = S.SPLINE_GEOM + (f"; splines.csv row {row.row}" if row and row.z == z else "")
         return d_B, mod, z, src
     for n in ("reference_diameter", "module"):

@@ -52,8 +52,9 @@ SPLINE = Table("spline", "involute spline, 30° (DIN 5480 / GOST 6033-80)", (
     Field("standard", "string", "spline standard and method (DIN 5480 with DIN 5466 "
           "heights, or GOST 6033-80 with h_w = 0.8·m, d_m = m·z)", default="DIN 5480",
           choices=("DIN 5480", "GOST 6033-80")),
-    Field("designation", "string", "designation d_B x m x z, e.g. \"W 40x2x18\" (instead of "
-          "the three numbers)", default=None, example="W 40x2x18"),
+    Field("designation", "string", "designation d_B x m x z, e.g. \"W 40x2x18\", or d_B x m "
+          "for a size of the series table (instead of the numbers)", default=None,
+          example="W 40x2x18"),
     Field("reference_diameter", "number", "reference (nominal) diameter d_B", "mm", "d_B",
           default=None, gt=0, maximum=1000.0),
     Field("module", "number", "module", "mm", "m", default=None, gt=0, maximum=20.0),
