@@ -1,0 +1,21 @@
+"""Shaft-hub connections: parallel keys ([GOST23360], [DIN6885-1], [DIN6892]), involute
+splines ([DIN5480], [GOST6033]) and cylindrical interference fits ([DIN7190-1], [ISO286]).
+
+Modules: :mod:`.key`, :mod:`.spline`, :mod:`.fit` (pure formulas), :mod:`.iso286` (limit
+deviations of a fit), :mod:`.tables` (the CSV and TOML data), :mod:`.spec` (the spec schema),
+:mod:`.inputs` (spec -> typed inputs, every input rule), :mod:`.solve` (inputs -> one record
+per connection type), :mod:`.calculator` (record -> report rows and checks).
+"""
+
+from geardesign.connection.calculator import compute
+from geardesign.connection.spec import SCHEMA
+from geardesign.core.registry import Calculator
+
+CALCULATOR = Calculator(
+    kind="connection",
+    summary="shaft-hub connection: parallel key, involute spline or interference fit",
+    methods=("GOST 23360-78 / DIN 6885-1, DIN 6892", "DIN 5480 / GOST 6033-80",
+             "DIN 7190-1, ISO 286"),
+    schema=SCHEMA,
+    compute=compute,
+)

@@ -1,0 +1,293 @@
+"""The spec of a connection read into typed inputs (N·mm, mm, µm, MPa); every rule across
+keys that the schema cannot state raises a one-line :class:`InputError` here."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from geardesign.connection import iso286
+from geardesign.connection import sources as S
+from geardesign.connection import spline as SP
+from geardesign.connection import tables
+from geardesign.core.errors import InputError, Problem
+
+
+def fmt(x: float, digits: int = 3) -> str:
+    """A number for a message: at most ``digits`` decimals, no trailing zeros."""
+    text = f"{x:.{digits}f}"
+    if "." in text:
+        text = text.rstrip("0").rstrip(".")
+    return "0" if text == "-0" else text
+
+
+@dataclass(frozen=True)
+class Load:
+    T: float          # nominal torque [N·mm]
+    K_A: float
+    F_ax: float       # [N]
+
+    @property
+    def T_d(self) -> float:
+        """Design torque K_A·T [N·mm]."""
+        return self.K_A * self.T
+
+
+def load(data: dict) -> Load:
+    ld = data["load"]
+    return Load(ld["torque"] * 1e3, ld["application_factor"], ld["axial_force"])
+
+
+# --------------------------------------------------------------------------- key
+
+
+@dataclass(frozen=True)
+class KeyInput:
+    d: float
+    l: float
+    form: str
+    count: int
+    din: bool
+    b: float
+    h: float
+    t1: float
+    t2: float | None
+    source: str              # of the section: table row or the spec
+    hub_length: float | None
+    hub_material: str
+    allowable_pressure: float | None
+    allowable_shear: float | None
+    shaft_strength: float | None
+    hub_strength: float | None
+    key_strength: float | None
+    f_H: float
+
+
+def key(data: dict) -> KeyInput:
+    k = data["key"]
+    d, l, form = k["shaft_diameter"], k["length"], k["form"]
+    names = ("width", "height", "shaft_depth")
+    given = [n for n in names if k[n] is not None]
+    if given and len(given) < 3:
+        missing = [n for n in names if k[n] is None]
+        raise InputError(Problem(
+            "key." + missing[0], "missing; a key not from the table needs key.width, "
+            "key.height and key.shaft_depth together"))
+    if given:
+        b, h, t1, t2 = k["width"], k["height"], k["shaft_depth"], None
+        if t1 >= h:
+            raise InputError.at("key.shaft_depth", t1, f"must be less than the key height "
+                                f"key.height = {fmt(h)} mm (the key must stand out into the "
+                                f"hub)")
+        source = "spec (key not from the table)"
+    else:
+        size = tables.key_for_diameter(d)
+        if size is None:
+            first, last = tables.key_sizes()[0], tables.key_sizes()[-1]
+            raise InputError.at("key.shaft_diameter", d, f"outside the key table of GOST "
+                                f"23360-78 / DIN 6885-1 (over {fmt(first.d_over)} up to "
+                                f"{fmt(last.d_to)} mm); give key.width, key.height and "
+                                f"key.shaft_depth for another key")
+        b, h, t1, t2 = size.b, size.h, size.t1, size.t2
+        source = f"{S.KEY_TABLE} (keys.csv row {size.row})"
+    from geardesign.connection.key import bearing_length
+
+    l_p = bearing_length(l, b, form)
+    if l_p <= 0:
+        raise InputError.at("key.length", l, f"must be longer than the key width b = {fmt(b)} "
+                            f"mm (form {form}: bearing length l_p = {fmt(l_p)} mm)")
+    L_hub = k["hub_length"]
+    if L_hub is not None and l > L_hub:
+        fits = [v for v in tables.key_lengths() if v <= L_hub]
+        hint = (f"use a standard key of at most {fmt(fits[-1])} mm or a longer hub" if fits
+                else "use a longer hub")
+        raise InputError.at("key.length", l, f"longer than the hub (key.hub_length = "
+                            f"{fmt(L_hub)} mm): {hint}")
+    din = k["standard"] == "DIN 6885-1"
+    if din and (k["allowable_pressure"] is None or k["allowable_shear"] is None):
+        need = {"shaft_strength": "the shaft yield strength R_e",
+                "hub_strength": "the hub strength (R_e of steel, R_m of cast iron)",
+                "key_strength": "the key yield strength R_e"}
+        for name, what in need.items():
+            if k[name] is None:
+                raise InputError(Problem("key." + name, f"missing; DIN 6892 method C needs "
+                                         f"{what} (MPa), or give key.allowable_pressure and "
+                                         f"key.allowable_shear"))
+    return KeyInput(d, l, form, k["count"], din, b, h, t1, t2, source, L_hub,
+                    k["hub_material"], k["allowable_pressure"], k["allowable_shear"],
+                    k["shaft_strength"], k["hub_strength"], k["key_strength"],
+                    k["hardness_factor"])
+
+
+# --------------------------------------------------------------------------- spline
+
+_DESIGNATION = re.compile(
+    r"^\s*(?:[WN]\s*)?(\d+(?:\.\d+)?)\s*[x×]\s*(\d+(?:\.\d+)?)\s*(?:[x×]\s*(\d+))?\s*$")
+
+
+@dataclass(frozen=True)
+class SplineInput:
+    d_B: float
+    m: float
+    z: int
+    source: str
+    gost: bool
+    l: float
+    psi: float
+    use: str
+    hardness: str
+    conditions: str
+    allowable_pressure: float | None
+
+
+def _spline_size(s: dict) -> tuple[float, float, int, str]:
+    numbers = [n for n in ("reference_diameter", "module", "teeth") if s[n] is not None]
+    if s["designation"] is not None:
+        if numbers:
+            raise InputError(Problem("spline." + numbers[0], "give either spline.designation "
+                                     "or the numbers (reference_diameter, module, teeth), not "
+                                     "both", s[numbers[0]]))
+        m = _DESIGNATION.match(s["designation"])
+        if not m:
+            raise InputError.at("spline.designation", s["designation"],
+                                'must read d_B x m x z, e.g. "W 40x2x18" (or d_B x m, e.g. '
+                                '"40x2", for a size of the series table)')
+        d_B, mod = float(m.group(1)), float(m.group(2))
+        row = tables.spline_size(d_B, mod)
+        if m.group(3) is None:
+            if row is None:
+                raise InputError.at("spline.designation", s["designation"],
+                                    f"the series table has no spline {fmt(d_B)} x {fmt(mod)}; "
+                                    f"give the number of teeth (d_B x m x z)")
+            return d_B, mod, row.z, f"{S.SPLINE_GEOM}; splines.csv row {row.row}"
+        z = int(m.group(3))
+        if not (0 < d_B <= 1000 and 0 < mod <= 20 and 6 <= z <= 200):
+            raise InputError.at("spline.designation", s["designation"],
+                                "d_B must lie in 0...1000 mm, m in 0...20 mm and z in 6...200")
+        src = S.SPLINE_GEOM + (f"; splines.csv row {row.row}" if row and row.z == z else "")
+        return d_B, mod, z, src
+    for n in ("reference_diameter", "module"):
+        if s[n] is None:
+            raise InputError(Problem("spline." + n, 'missing; give spline.designation (e.g. '
+                                     '"W 40x2x18") or spline.reference_diameter and '
+                                     'spline.module'))
+    d_B, mod = s["reference_diameter"], s["module"]
+    if s["teeth"] is not None:
+        return d_B, mod, s["teeth"], S.SPLINE_GEOM
+    row = tables.spline_size(d_B, mod)
+    if row is None:
+        raise InputError.at("spline.module", mod, f"the series table has no spline "
+                            f"{fmt(d_B)} x {fmt(mod)}; give spline.teeth")
+    return d_B, mod, row.z, f"{S.SPLINE_GEOM}; splines.csv row {row.row}"
+
+
+def spline(data: dict) -> SplineInput:
+    s = data["spline"]
+    d_B, m, z, src = _spline_size(s)
+    lo, hi = SP.X_RANGE
+    x = (d_B - m * z - 1.1 * m) / (2.0 * m)
+    if not lo - 1e-9 <= x <= hi + 1e-9:
+        ok = [zz for zz in range(6, 201)
+              if lo - 1e-9 <= (d_B - m * zz - 1.1 * m) / (2 * m) <= hi + 1e-9]
+        hint = ((f"use z = {ok[0]}" + (f" or {ok[-1]}" if ok[-1] != ok[0] else "")) if ok
+                else "change the module")
+        by_name = s["designation"] is not None
+        raise InputError.at("spline.designation" if by_name else "spline.teeth",
+                            s["designation"] if by_name else z,
+                            f"z = {z} on d_B = {fmt(d_B)} mm with m = {fmt(m)} mm gives the "
+                            f"profile shift x = {x:.3f}, outside {lo}...{hi} of DIN 5480: "
+                            f"{hint}")
+    if (s["allowable_pressure"] is None
+            and s["hardness"] not in tables.toml()["spline_pressure"][s["use"]]):
+        raise InputError.at("spline.hardness", s["hardness"], "a hub sliding under load needs "
+                            'hardened teeth (spline.hardness = "hardened") or give '
+                            "spline.allowable_pressure")
+    return SplineInput(d_B, m, z, src, s["standard"] == "GOST 6033-80", s["length"],
+                       s["load_factor"], s["use"], s["hardness"], s["conditions"],
+                       s["allowable_pressure"])
+
+
+# --------------------------------------------------------------------------- fit
+
+
+@dataclass(frozen=True)
+class FitInput:
+    d: float
+    D_a: float
+    D_i: float
+    l: float
+    U_min: float              # [µm]
+    U_max: float
+    fit_name: str             # "" when the interferences are given
+    source: str               # of the interferences
+    rz_shaft: float
+    rz_hub: float
+    joining: str
+    surface: str
+    mu: float
+    mu_source: str
+    S_R: float
+    S_P: float
+    E_I: float
+    nu_I: float
+    R_eI: float
+    E_A: float
+    nu_A: float
+    R_eA: float
+    alpha_A: float
+    room: float
+    clearance: float          # joining clearance [mm]
+
+
+def _interference(f: dict) -> tuple[float, float, str, str]:
+    given = [n for n in ("interference_min", "interference_max") if f[n] is not None]
+    if f["fit"] is not None:
+        if given:
+            raise InputError(Problem("fit." + given[0], "give either fit.fit or the "
+                                     "interferences, not both", f[given[0]]))
+        try:
+            ft = iso286.fit(f["fit"], f["diameter"])
+        except iso286.FitError as exc:
+            raise InputError.at("fit.fit", f["fit"], str(exc)) from None
+        return ft.U_min, ft.U_max, ft.name, f"{S.ISO286}, iso286.csv row {ft.row}"
+    if len(given) < 2:
+        missing = [n for n in ("interference_min", "interference_max") if f[n] is None]
+        raise InputError(Problem("fit." + missing[0], 'missing; give fit.fit (e.g. "H7/s6") '
+                                 "or fit.interference_min and fit.interference_max (µm)"))
+    if f["interference_min"] > f["interference_max"]:
+        raise InputError.at("fit.interference_min", f["interference_min"],
+                            f"must not exceed fit.interference_max = "
+                            f"{fmt(f['interference_max'])} µm")
+    return f["interference_min"], f["interference_max"], "", "spec"
+
+
+def fit(data: dict) -> FitInput:
+    from geardesign.connection.fit import CLEARANCE_SHARE
+
+    f = data["fit"]
+    d, D_a, D_i = f["diameter"], f["hub_outer_diameter"], f["shaft_bore"]
+    if D_a <= d:
+        raise InputError.at("fit.hub_outer_diameter", D_a, f"must be larger than the joint "
+                            f"diameter fit.diameter = {fmt(d)} mm (the hub needs a wall)")
+    if D_i >= d:
+        raise InputError.at("fit.shaft_bore", D_i, f"must be smaller than the joint diameter "
+                            f"fit.diameter = {fmt(d)} mm (0 for a solid shaft)")
+    U_min, U_max, name, src = _interference(f)
+    if U_max <= 0:
+        what = f'"{name}" gives' if name else "the interferences give"
+        raise InputError.at("fit.fit" if name else "fit.interference_max", name or U_max,
+                            f"{what} no interference at {fmt(d)} mm (largest {fmt(U_max, 1)} "
+                            f"µm): a clearance or transition fit transmits nothing by "
+                            f"friction; choose an interference fit such as H7/s6")
+    if f["friction"] is not None:
+        mu, mu_src = f["friction"], "spec"
+    else:
+        mu = tables.toml()["friction"][f["hub_material"]][f["joining"]][f["surface"]]
+        mu_src = S.FRICTION
+    clearance = (f["joining_clearance"] if f["joining_clearance"] is not None
+                 else CLEARANCE_SHARE * d)
+    return FitInput(d, D_a, D_i, f["length"], U_min, U_max, name, src, f["rz_shaft"],
+                    f["rz_hub"], f["joining"], f["surface"], mu, mu_src, f["slip_safety"],
+                    f["yield_safety"], f["shaft_modulus"], f["shaft_poisson"],
+                    f["shaft_yield"], f["hub_modulus"], f["hub_poisson"], f["hub_yield"],
+                    f["hub_expansion"], f["room_temperature"], clearance)
