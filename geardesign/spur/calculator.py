@@ -581,11 +581,11 @@ def compute(spec: ValidatedSpec) -> Result:
     if spec.data["design"] is not None:
         from geardesign.spur.design import design_pair
 
-        geom, how, gear, notes = design_pair(spec)
+        geom, how, gear, notes, variants = design_pair(spec)
     else:
         gear = spec.data["gear"]
         geom, how = solve_geometry(spec)
-        notes = None
+        notes = variants = None
     strength = _strength_inputs(spec, gear)
     if strength is None:
         _drop_unused_defaults(spec, STRENGTH_ONLY)
@@ -608,6 +608,15 @@ def compute(spec: ValidatedSpec) -> Result:
         sec = res.section("design", "Design proposal")
         for row in notes:
             sec.add(*row)
+        from geardesign.core.result import DataTable
+
+        res.tables.append(DataTable("design_variants", "Design variants rated (passing first, "
+                                    "by centre distance, then reserve)", [
+            ("rank", "rank", "-"), ("a_w", "a_w", "mm"), ("m_n", "m_n", "mm"),
+            ("z1", "z1", "-"), ("z2", "z2", "-"), ("beta", "β", "deg"), ("b_w", "b_w", "mm"),
+            ("x1", "x1", "-"), ("x2", "x2", "-"), ("S_H", "S_H", "-"), ("S_F1", "S_F1", "-"),
+            ("S_F2", "S_F2", "-"), ("margin", "reserve", "-"), ("mass", "mass", "kg"),
+            ("passes", "passes", None)], variants))
     add_geometry_rows(res, geom, how)
     if spec.data.get("accuracy") is not None or spec.data.get("drawing") is not None:
         from geardesign.spur.drawing import add_drawing

@@ -93,6 +93,8 @@ def design_pair(spec: ValidatedSpec):
 
     tried = 0
     best = None
+    proposal = None
+    variants = []
     for a_w in series[:A_W_STEPS]:
         m_lo, m_hi = MODULE_MIN_RATIO * a_w, MODULE_MAX_RATIO * a_w
         modules = [m for m in sorted(T.MODULES_1) if m_lo - 1e-9 <= m <= m_hi + 1e-9]
@@ -111,17 +113,53 @@ def design_pair(spec: ValidatedSpec):
             rating = rate(g, mats, duty, setting)
             checks = strength_checks(rating.v, mats, helical, setting.grade,
                                      duty.T_peak is not None)
-            ok = ok and not [c for c in checks if not c.passed and c.severity == "error"]
+            failed = [c.code for c in checks if not c.passed and c.severity == "error"]
+            ok = ok and not failed
             best = (g, how, a_w, m)
-            if ok:
-                return _result(g, how, des, a_est, a_w, sigma_HP, K_Hb, u_req, tried, True)
+            variants.append(_variant(g, a_w, rating.v, mats, ok, how))
+            if ok and proposal is None:
+                proposal = (g, how, a_w, m)
+    if proposal is not None:
+        g, how, a_w, m = proposal
+        out = _result(g, how, des, a_est, a_w, sigma_HP, K_Hb, u_req, tried, True)
+        return (*out, _ranked(variants))
     if best is None:
         raise InputError.at("design.ratio", u_req,
                             "no pair of standard module and whole tooth numbers fits this ratio "
                             "within the tolerance; widen design.ratio_tolerance or lower "
                             "design.z1_min")
     g, how, a_w, m = best
-    return _result(g, how, des, a_est, a_w, sigma_HP, K_Hb, u_req, tried, False)
+    return (*_result(g, how, des, a_est, a_w, sigma_HP, K_Hb, u_req, tried, False),
+            _ranked(variants))
+
+
+def _variant(g: PairGeometry, a_w: float, v: dict, mats, ok: bool, how: str) -> dict:
+    """One rated candidate of the design search, for the table of variants: its data, the
+    safety factors of the rating (GOST: S_H per gear and the pair's σ_HP/σ_H; ISO: S_H, S_F
+    per gear) and the smallest reserve."""
+    p = g.inp
+    if "sigma_HP" in v:                      # GOST 21354-87
+        reserve = [v["sigma_HP"] / v["sigma_H"], v["S_F1"] / mats[0].S_F,
+                   v["S_F2"] / mats[1].S_F]
+        S_H = min(v["S_H1"], v["S_H2"])
+    else:                                    # ISO 6336
+        reserve = [v["S_H1"] / v["S_Hmin"], v["S_H2"] / v["S_Hmin"],
+                   v["S_F1"] / v["S_Fmin"], v["S_F2"] / v["S_Fmin"]]
+        S_H = min(v["S_H1"], v["S_H2"])
+    return {"a_w": a_w, "m_n": p.m_n, "z1": p.z1, "z2": p.z2, "beta": math.degrees(p.beta),
+            "b_w": p.b_w, "x1": p.x1, "x2": p.x2, "S_H": S_H, "S_F1": v["S_F1"],
+            "S_F2": v["S_F2"], "margin": min(reserve), "passes": "yes" if ok else "no",
+            "mass": math.pi / 4.0 * (g.g1.d ** 2 + g.g2.d ** 2) * p.b_w * 7.85e-6}
+
+
+def _ranked(variants: list) -> list:
+    """Every rated candidate, ranked: passing ones first, then by centre distance, then by
+    the larger reserve, then by the lighter pair."""
+    order = sorted(variants, key=lambda r: (r["passes"] != "yes", r["a_w"], -r["margin"],
+                                            r["mass"]))
+    for i, r in enumerate(order, 1):
+        r["rank"] = i
+    return order
 
 
 def _candidate(a_w: float, m: float, u: float, des: dict, beta0: float, helical: bool,
