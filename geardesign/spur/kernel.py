@@ -25,9 +25,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from geardesign.spur.geometry import BasicRack, pair_core
-from geardesign.spur.loads import cycles, equivalent_cycles
 from geardesign.spur.strength import gost21354 as G
 from geardesign.spur.strength import tables as T
+from geardesign.spur.strength.rating import life_cycles
 
 INPUTS = ("m_n", "z1", "z2", "x1", "x2", "beta", "b_w")
 """The candidate arrays :func:`evaluate` takes (beta in rad)."""
@@ -91,17 +91,7 @@ def _evaluate(c: dict, f: Fixed) -> dict:
     # ------------------------------------------------------------------ forces, life
     F_tH = 2000.0 * duty.T1 / d1
     v = math.pi * d1 * duty.n1 / 60000.0
-    life = duty.life
-    n = (duty.n1, duty.n1 / u)
-    N_HE, N_FE = [], []
-    for i, mat in enumerate(mats):
-        if life.blocks:
-            N_HE.append(equivalent_cycles(n[i], life.c[i], life.L_h, life.blocks, 3.0))
-            N_FE.append(equivalent_cycles(n[i], life.c[i], life.L_h, life.blocks, mat.q_F))
-        else:
-            N_K = cycles(n[i], life.c[i], life.L_h)
-            N_HE.append(T.MU_H[life.regime] * N_K)
-            N_FE.append(T.MU_F[mat.q_F][life.regime] * N_K)
+    _, N_HE, N_FE = life_cycles(duty, mats, u)
 
     # ------------------------------------------------------------------ load factors
     K_A = duty.K_A

@@ -159,6 +159,24 @@ def put_forces(r: Rating, g: PairGeometry, duty: Duty):
     return f, F_tH, v
 
 
+def life_cycles(duty: Duty, mats, u):
+    """Load cycles N_K and the equivalent contact and bending cycles N_HE, N_FE of pinion and
+    wheel (lists of two; ``u`` a number or an array of candidates): by the GOST regime's
+    equivalence factors μ_H, μ_F or by the spectrum's sum ([GOST21354]; :mod:`..loads`)."""
+    life = duty.life
+    n = (duty.n1, duty.n1 / u)
+    N_K = [cycles(n[i], life.c[i], life.L_h) for i in range(2)]
+    N_HE, N_FE = [], []
+    for i, mat in enumerate(mats):
+        if life.blocks:
+            N_HE.append(equivalent_cycles(n[i], life.c[i], life.L_h, life.blocks, 3.0))
+            N_FE.append(equivalent_cycles(n[i], life.c[i], life.L_h, life.blocks, mat.q_F))
+        else:
+            N_HE.append(T.MU_H[life.regime] * N_K[i])
+            N_FE.append(T.MU_F[mat.q_F][life.regime] * N_K[i])
+    return N_K, N_HE, N_FE
+
+
 def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
          s: Setting) -> Rating:
     """Rate the pair: contact and bending fatigue, peak loads (GOST 21354-87)."""
@@ -175,16 +193,7 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
 
     # ------------------------------------------------------------------ life
     life = duty.life
-    n = (duty.n1, duty.n1 / u)
-    N_K = [cycles(n[i], life.c[i], life.L_h) for i in range(2)]
-    N_HE, N_FE = [], []
-    for i, mat in enumerate(mats):
-        if life.blocks:
-            N_HE.append(equivalent_cycles(n[i], life.c[i], life.L_h, life.blocks, 3.0))
-            N_FE.append(equivalent_cycles(n[i], life.c[i], life.L_h, life.blocks, mat.q_F))
-        else:
-            N_HE.append(T.MU_H[life.regime] * N_K[i])
-            N_FE.append(T.MU_F[mat.q_F][life.regime] * N_K[i])
+    N_K, N_HE, N_FE = life_cycles(duty, mats, u)
     how = "spectrum" if life.blocks else f"regime {life.regime}"
     if not life.blocks:
         r.put("life", "mu_H", T.MU_H[life.regime], "-", "μ_H",
