@@ -86,7 +86,10 @@ def test_dataset_holds_every_candidate_and_the_front_is_right(tmp_path):
 
 
 def test_parquet_dataset(tmp_path):
-    pq = pytest.importorskip("pyarrow.parquet")
+    try:
+        import pyarrow.parquet as pq
+    except ImportError:       # not installed, or built for another numpy
+        pytest.skip("pyarrow is not usable here")
     spec = write_spec(tmp_path, SMALL)
     code, _, err = _json(spec, "--data", tmp_path / "c.parquet")
     assert code == 0, err
