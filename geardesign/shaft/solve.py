@@ -108,6 +108,7 @@ class SectionResult:
     fillet_K_sigma: float | None = None   # shoulder with a fillet at this section
     fillet_t: float | None = None
     fillet_r: float | None = None
+    keyway_cutter: str = ""
 
 
 @dataclass(frozen=True)
@@ -147,6 +148,16 @@ class ShaftResult:
     critical: SectionResult | None
     critical_static: SectionResult | None
     notes: list = field(default_factory=list)
+
+
+def _clean(*planes: beam.PlaneSolution) -> None:
+    """Set round-off (below 1e-9 of the largest moment) to zero, so that a section without
+    bending reports no bending rather than a stress of 1e-11 MPa."""
+    big = max([float(np.max(np.abs(a))) for p in planes for a in (p.M_left, p.M_right)]
+              + [0.0])
+    for p in planes:
+        for a in (p.M_left, p.M_right, p.V_right):
+            a[np.abs(a) < 1e-9 * max(big, 1e-300)] = 0.0
 
 
 def node_positions(steps: list[Step], loads: list[Load], supports: list[Support],
@@ -218,6 +229,7 @@ def analyse(steps: list[Step], loads: list[Load], supports: list[Support],
     N_int = -np.cumsum(Fx_all)       # just right of each node
     T_int = np.cumsum(Tn)
 
+    _clean(py, pz)
     M_y, M_z = py.M_right / 1e3, pz.M_right / 1e3
     M_y[-1], M_z[-1] = py.M_left[-1] / 1e3, pz.M_left[-1] / 1e3
     M_res = np.hypot(M_y, M_z)
@@ -286,8 +298,7 @@ def _section(xs: float, label: str, M: float, T: float, N: float, bounds: list[f
             Ks, Kt, out = ST.fillet_factors(t, left.fillet, small.diameter, sb)
             outside = outside or out
             fillet = (Ks, t, left.fillet)
-            candidates.append((f"fillet r = {left.fillet:g} mm, t/r = {t / left.fillet:.2f}",
-                               Ks / Kd_s, Kt / Kd_t))
+            candidates.append(("fillet", Ks / Kd_s, Kt / Kd_t))
         if left.groove_K_sigma is not None:
             candidates.append(("groove", left.groove_K_sigma / Kd_s,
                                (left.groove_K_tau or left.groove_K_sigma) / Kd_t))
@@ -299,8 +310,7 @@ def _section(xs: float, label: str, M: float, T: float, N: float, bounds: list[f
     if boundary is None or not candidates:
         if st.keyway:
             Ks, Kt = ST.keyway_factors(sb, st.keyway_cutter)
-            cutter = "end mill" if st.keyway_cutter == "end_mill" else "disc cutter"
-            candidates.append((f"keyway ({cutter})", Ks / Kd_s, Kt / Kd_t))
+            candidates.append(("keyway", Ks / Kd_s, Kt / Kd_t))
         if st.press_fit:
             rs, rt = ST.press_fit_ratios(st.diameter, sb)
             candidates.append(("press fit", rs, rt))
@@ -328,7 +338,7 @@ def _section(xs: float, label: str, M: float, T: float, N: float, bounds: list[f
     return SectionResult(
         xs, label, d, bore, M / 1e3, T / 1e3, N, sigma_b, sigma_n, tau_a, tau_m, sv,
         S_static, name_s, ratio_s, ratio_t, K_Fs, fat.K_sigma_D, fat.K_tau_D, fat.S_sigma,
-        fat.S_tau, fat.S, outside, *fillet)
+        fat.S_tau, fat.S, outside, *fillet, st.keyway_cutter if st.keyway else "")
 
 
 def diameter_for(section: SectionResult, S_required: float) -> float:

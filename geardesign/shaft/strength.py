@@ -66,20 +66,22 @@ def von_mises(sigma: float, tau: float) -> float:
 def fillet_factors(t: float, r: float, d: float, sigma_B: float) -> tuple[float, float, bool]:
     """K_σ, K_τ of a shoulder fillet by t/r and r/d ([Dunaev], table "stepped transition
     with a fillet", ``tables.toml`` [fillet]); bilinear in t/r, r/d, linear in σ_B.  The
-    third value is True when t/r or r/d lies outside the table (nearest row used)."""
+    third value is True when the nearest row used may understate the factor: t/r above the
+    largest row or r/d below the smallest (t/r below 2 and r/d above the rows take the
+    nearest row, which overstates it)."""
     tab = tables()["fillet"]
     sb = tab["sigma_B"]
     tr, rd = t / r, r / d
     rows = tab["rows"]
     trs = sorted({row["t_r"] for row in rows})
-    outside = not (trs[0] <= tr <= trs[-1])
+    outside = tr > trs[-1]
 
     def at_tr(tr_row: float) -> tuple[float, float, bool]:
         sub = [row for row in rows if row["t_r"] == tr_row]
         rds = [row["r_d"] for row in sub]
         ks = [_interp(sigma_B, sb, row["K_sigma"]) for row in sub]
         kt = [_interp(sigma_B, sb, row["K_tau"]) for row in sub]
-        return _interp(rd, rds, ks), _interp(rd, rds, kt), not (rds[0] <= rd <= rds[-1])
+        return _interp(rd, rds, ks), _interp(rd, rds, kt), rd < rds[0]
 
     trc = min(max(tr, trs[0]), trs[-1])
     for i in range(len(trs) - 1):
