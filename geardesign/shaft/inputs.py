@@ -134,7 +134,8 @@ def supports(spec: ValidatedSpec, length: float) -> list[Support]:
                                 f"of the step lengths)")
         out.append(Support(s["position"], s["stiffness"], s["type"], s["axial"],
                            s["name"] or ""))
-    if len({round(s.position, 9) for s in out}) < 2:
+    xs = sorted(s.position for s in out)
+    if xs[-1] - xs[0] <= 1e-4 * length:
         raise InputError(Problem(
             "support", "a free shaft needs at least two supports at different positions to "
                        "carry its loads; add a [[support]]"))

@@ -168,8 +168,13 @@ def node_positions(steps: list[Step], loads: list[Load], supports: list[Support]
     for s in steps:
         bounds.append(bounds[-1] + s.length)
     L = bounds[-1]
-    key = sorted({round(v, 9) for v in bounds + [ld.position for ld in loads]
-                  + [sp.position for sp in supports]})
+    # points closer than 1e-4·L are one node (a load a hair beside a shoulder sits on it;
+    # an element 10⁴ times shorter than its neighbours would spoil the conditioning)
+    key: list[float] = []
+    for v in sorted([*bounds, *(ld.position for ld in loads), *(sp.position for sp in supports)]):
+        if not key or v - key[-1] > 1e-4 * L:
+            key.append(v)
+    key[-1] = L
     h = L / refine
     xs: list[float] = []
     for a, b in zip(key[:-1], key[1:]):

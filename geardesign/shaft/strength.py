@@ -166,12 +166,8 @@ def fatigue_safety(sigma_a: float, sigma_m: float, tau_a: float, tau_m: float,
     den_t = K_tD * tau_a + psi_tau * tau_m
     S_s = sigma_m1 / den_s if den_s > 0 else math.inf
     S_t = tau_m1 / den_t if den_t > 0 else math.inf
-    if math.isinf(S_s) and math.isinf(S_t):
-        S = math.inf
-    elif math.isinf(S_s):
-        S = S_t
-    elif math.isinf(S_t):
-        S = S_s
-    else:
-        S = S_s * S_t / math.sqrt(S_s * S_s + S_t * S_t)
+    # S = S_σ·S_τ/√(S_σ² + S_τ²) written as 1/|(1/S_σ, 1/S_τ)|: no overflow for a section
+    # that is barely loaded in one of the two
+    inv = math.hypot(1.0 / S_s, 1.0 / S_t)
+    S = 1.0 / inv if inv > 0 else math.inf
     return Fatigue(K_sD, K_tD, S_s, S_t, S)
