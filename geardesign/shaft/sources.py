@@ -3,7 +3,7 @@
 FE = "[Przemieniecki] ch. 5 (Euler–Bernoulli beam element)"
 EIGEN = "[Przemieniecki] ch. 11 (consistent mass, K·φ = ω²·M·φ)"
 STATICS = "statics of the beam"
-VON_MISES = "[Shigley] eq. (7-15)"
+VON_MISES = "[Shigley] ch. 7 (von Mises σ′max)"
 FATIGUE = "[GOST25504]; [Dunaev] ch. 10"
 TABLES = "[Dunaev] ch. 10 tables (tables.toml)"
 SURFACE = "[GOST25504] (K_F from R_z)"

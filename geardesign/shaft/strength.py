@@ -56,7 +56,7 @@ def section_moduli(d: float, bore: float = 0.0) -> tuple[float, float, float]:
 
 
 def von_mises(sigma: float, tau: float) -> float:
-    """Equivalent stress σ_v = √(σ² + 3τ²) [MPa] (distortion energy; [Shigley] eq. (7-15))."""
+    """Equivalent stress σ_v = √(σ² + 3τ²) [MPa] (distortion energy; [Shigley] ch. 7)."""
     return math.sqrt(sigma * sigma + 3.0 * tau * tau)
 
 
