@@ -121,8 +121,6 @@ def first_bending_frequency(x: np.ndarray, EI: np.ndarray, mass: np.ndarray,
     It is solved as the largest μ = 1/λ of M·φ = μ·K·φ, which stays well conditioned when
     the point masses outweigh the shaft by orders of magnitude.
     """
-    from scipy.linalg import eigh
-
     n = len(x)
     K, M = assemble(x, EI, mass)
     M[0::2, 0::2] += np.diag(point_masses)
@@ -133,8 +131,10 @@ def first_bending_frequency(x: np.ndarray, EI: np.ndarray, mass: np.ndarray,
         else:
             K[2 * node, 2 * node] += k
     free = np.setdiff1d(np.arange(2 * n), fixed)
-    # largest μ of M·φ = μ·K·φ (K positive definite, M may be nearly singular) = 1/λ_min
-    m = len(free)
-    mu = eigh(M[np.ix_(free, free)], K[np.ix_(free, free)], eigvals_only=True,
-              subset_by_index=[m - 1, m - 1])[0]
+    # largest μ of M·φ = μ·K·φ (K positive definite, M may be nearly singular) = 1/λ_min:
+    # with K = L·Lᵀ it is the largest eigenvalue of the symmetric L⁻¹·M·L⁻ᵀ (numpy only)
+    Kf, Mf = K[np.ix_(free, free)], M[np.ix_(free, free)]
+    L = np.linalg.cholesky(Kf)
+    C = np.linalg.solve(L, np.linalg.solve(L, Mf).T)
+    mu = float(np.linalg.eigvalsh(0.5 * (C + C.T))[-1])
     return float(np.sqrt(1000.0 / mu)) if mu > 0 else float("inf")

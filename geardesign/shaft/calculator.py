@@ -138,6 +138,12 @@ def _section_tables(r: ShaftResult) -> list[DataTable]:
     return [t, f]
 
 
+def _val(v: float) -> float | None:
+    """A check value: None where the quantity is unbounded (an unloaded shaft has an
+    infinite safety), so that the check passes without an infinite number."""
+    return v if math.isfinite(v) else None
+
+
 def _fmt(v: float) -> str:
     return "∞" if math.isinf(v) else f"{v:.2f}"
 
@@ -164,7 +170,7 @@ def _checks(r: ShaftResult, lim: dict, speed: float, loads, supports, origin, st
             f"fatigue safety S = {_fmt(c.S)} < [S] = {S_req:g} at {c.label} (x = {c.x:g} mm, "
             f"{c.concentrator}): {advice}",
             f"fatigue safety S = {_fmt(c.S)} >= [S] = {S_req:g} (lowest at {c.label}, "
-            f"x = {c.x:g} mm)", c.S, S_req, S.FATIGUE))
+            f"x = {c.x:g} mm)", _val(c.S), S_req, S.FATIGUE))
         cs = r.critical_static
         S_req = lim["S_static_min"]
         d_req = math.ceil(cs.d * (S_req / cs.S_static) ** (1 / 3) * 10.0) / 10.0 \
@@ -175,7 +181,7 @@ def _checks(r: ShaftResult, lim: dict, speed: float, loads, supports, origin, st
             f"{cs.label} (x = {cs.x:g} mm): increase the diameter there from {cs.d:g} to at "
             f"least {d_req:g} mm or use a steel of higher yield strength",
             f"static safety at the peak load S_T = {_fmt(cs.S_static)} >= [S_T] = {S_req:g} "
-            f"(lowest at {cs.label})", cs.S_static, S_req, S.VON_MISES))
+            f"(lowest at {cs.label})", _val(cs.S_static), S_req, S.VON_MISES))
     margin = lim["critical_speed_margin"]
     ratio = r.n_cr / speed
     out.append(check(
@@ -184,7 +190,7 @@ def _checks(r: ShaftResult, lim: dict, speed: float, loads, supports, origin, st
         f"the speed {speed:g} min^-1 (at least {margin:g} required): stiffen the shaft "
         f"(larger diameters, shorter span, bearings closer to heavy parts)",
         f"first bending critical speed n_cr = {r.n_cr:.0f} min^-1 = {ratio:.1f}·n",
-        ratio, margin, S.PRACTICE))
+        _val(ratio), margin, S.PRACTICE))
     tilt = ST.tables()["tilt"]
     for sp, p in zip(supports, r.supports):
         if sp.type not in tilt:

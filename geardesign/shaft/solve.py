@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from geardesign.core.errors import InputError, Problem
 from geardesign.shaft import beam
 from geardesign.shaft import strength as ST
 
@@ -223,8 +224,15 @@ def analyse(steps: list[Step], loads: list[Load], supports: list[Support],
         Fxn[i] += ld.Fx
         mpt[i] += ld.mass
     sup = [(_index(x, s.position), s.stiffness) for s in supports]
-    py = beam.solve_plane(x, EI, Fy, Cy, sup)
-    pz = beam.solve_plane(x, EI, Fz, Cz, sup)
+    try:
+        py = beam.solve_plane(x, EI, Fy, Cy, sup)
+        pz = beam.solve_plane(x, EI, Fz, Cz, sup)
+        omega = beam.first_bending_frequency(x, EI, el_mass, mpt, sup)
+    except np.linalg.LinAlgError:
+        raise InputError(Problem(
+            "support", "the supports are too soft for this shaft (its stiffness matrix "
+                       "is singular): give stiffer supports or leave out stiffness (rigid)")
+        ) from None
 
     # axial reaction at the support that takes it; internal torque and axial force
     axial_idx = next((k for k, s in enumerate(supports) if s.axial), 0)
@@ -241,7 +249,6 @@ def analyse(steps: list[Step], loads: list[Load], supports: list[Support],
     slope = np.hypot(py.theta, pz.theta)
     w = np.hypot(py.w, pz.w)
 
-    omega = beam.first_bending_frequency(x, EI, el_mass, mpt, sup)
     n_cr = omega * 30.0 / math.pi
 
     sup_res = []
