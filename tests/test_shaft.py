@@ -363,3 +363,26 @@ def test_document_units_and_tables():
     x = doc["results"]["diagrams"]["x"]
     assert x[0] == 0.0 and x[-1] == pytest.approx(180.0)
     assert ARCMIN > 0
+
+
+def test_unloaded_shaft_passes_with_unbounded_safeties():
+    """Only a mass on the shaft: no stress anywhere; the safeties are unbounded (null in
+    JSON), the checks pass, the critical speed is computed."""
+    from geardesign.core.spec import parse_toml
+
+    data = parse_toml(BASE)
+    data["load"] = [{"position": 80.0, "mass": 5.0}]
+    doc = run_data(data).document()
+    assert doc["verdict"] == "pass"
+    fat = next(c for c in doc["checks"] if c["code"] == "FATIGUE")
+    assert fat["passed"] and fat["value"] is None
+    assert doc["results"]["shaft"]["n_cr"] > 0
+
+
+def test_soft_supports_against_a_stiff_shaft_are_refused_or_computed(tmp_path):
+    """A spring support of 1e-6 N/mm under a stiff shaft either computes (the shaft floats
+    on its springs) or is refused with one line; never another error."""
+    text = BASE.replace("position = 20.0", "position = 20.0\nstiffness = 1e-6").replace(
+        "position = 140.0", "position = 140.0\nstiffness = 1e-6")
+    code, out, err = cli("run", write_spec(tmp_path, text), "--format", "json")
+    assert code in (0, 1, 2) and "Traceback" not in err

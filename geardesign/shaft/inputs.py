@@ -135,7 +135,7 @@ def supports(spec: ValidatedSpec, length: float) -> list[Support]:
         out.append(Support(s["position"], s["stiffness"], s["type"], s["axial"],
                            s["name"] or ""))
     xs = sorted(s.position for s in out)
-    if xs[-1] - xs[0] <= 1e-4 * length:
+    if xs[-1] - xs[0] <= 1e-3 * length:
         raise InputError(Problem(
             "support", "a free shaft needs at least two supports at different positions to "
                        "carry its loads; add a [[support]]"))

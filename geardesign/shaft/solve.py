@@ -169,11 +169,11 @@ def node_positions(steps: list[Step], loads: list[Load], supports: list[Support]
     for s in steps:
         bounds.append(bounds[-1] + s.length)
     L = bounds[-1]
-    # points closer than 1e-4·L are one node (a load a hair beside a shoulder sits on it;
+    # points closer than 1e-3·L are one node (a load a hair beside a shoulder sits on it;
     # an element 10⁴ times shorter than its neighbours would spoil the conditioning)
     key: list[float] = []
     for v in sorted([*bounds, *(ld.position for ld in loads), *(sp.position for sp in supports)]):
-        if not key or v - key[-1] > 1e-4 * L:
+        if not key or v - key[-1] > 1e-3 * L:
             key.append(v)
     key[-1] = L
     h = L / refine
