@@ -15,7 +15,7 @@ from geardesign.shaft.spec import SCHEMA
 
 CALCULATOR = Calculator(
     kind="shaft",
-    summary="Shaft: beam model, deflections and bearing slopes, critical speed, static and "
+    summary="stepped shaft: beam model, deflections and bearing slopes, critical speed, static and "
             "fatigue safety per section",
     methods=("Euler–Bernoulli finite elements", "GOST 25.504-82 (Dunaev & Lelikov)"),
     schema=SCHEMA,

@@ -314,6 +314,11 @@ def _section(xs: float, label: str, M: float, T: float, N: float, bounds: list[f
         if left.groove_K_sigma is not None:
             candidates.append(("groove", left.groove_K_sigma / Kd_s,
                                (left.groove_K_tau or left.groove_K_sigma) / Kd_t))
+        if small.press_fit:
+            # a hub or bearing ring on the smaller step abuts the shoulder: the edge of the
+            # fit is at this section ([Dunaev]: fillet and fit, the larger K/K_d counts)
+            rs, rt = ST.press_fit_ratios(small.diameter, sb)
+            candidates.append(("press fit", rs, rt))
         rz = st.Rz
     else:
         st = steps[_step_at(bounds, xs)]
