@@ -288,6 +288,10 @@ def test_base_spec_passes():
      "40Kh, 40KhN, 20Kh, 12KhN3A, 18KhGT; or leave out grade and give sigma_B and sigma_T"),
     (("length = 40.0\ndiameter = 45.0", "length = 40.0\ndiameter = 45.0\nbore = 45.0"),
      "s.toml: step[0].bore = 45.0: must be smaller than the diameter 45 mm"),
+    (("length = 60.0\ndiameter = 45.0", "length = 60.0\ndiameter = 45.0\ngroove_K_sigma = 2.0"),
+     "s.toml: step[2].groove_K_sigma = 2.0: a groove sits at the right end of its step, and "
+     "the last step ends with the shaft: give it on the step to the left of the groove's "
+     "shoulder"),
 ])
 def test_input_errors(tmp_path, change, line):
     old, new = change

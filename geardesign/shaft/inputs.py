@@ -98,6 +98,11 @@ def steps(spec: ValidatedSpec) -> list[Step]:
         if s["groove_K_tau"] is not None and s["groove_K_sigma"] is None:
             raise InputError.at(f"step[{i}].groove_K_tau", s["groove_K_tau"],
                                 "needs groove_K_sigma (the groove's factor in bending)")
+        if s["groove_K_sigma"] is not None and i == len(spec.data["step"]) - 1:
+            raise InputError.at(f"step[{i}].groove_K_sigma", s["groove_K_sigma"],
+                                "a groove sits at the right end of its step, and the last step "
+                                "ends with the shaft: give it on the step to the left of the "
+                                "groove's shoulder")
         out.append(Step(s["length"], s["diameter"], s["bore"], s["fillet"], s["keyway"],
                         s["keyway_cutter"], s["press_fit"], s["groove_K_sigma"],
                         s["groove_K_tau"], s["Rz"]))
