@@ -390,3 +390,73 @@ def test_soft_supports_against_a_stiff_shaft_are_refused_or_computed(tmp_path):
         "position = 140.0", "position = 140.0\nstiffness = 1e-6")
     code, out, err = cli("run", write_spec(tmp_path, text), "--format", "json")
     assert code in (0, 1, 2) and "Traceback" not in err
+
+
+def _doc(text):
+    from geardesign.core.spec import parse_toml
+
+    return run_data(parse_toml(text)).document()
+
+
+def _check(doc, code):
+    return [c for c in doc["checks"] if c["code"] == code]
+
+
+def test_hardness_below_the_grade_is_refused(tmp_path):
+    assert run_bad(tmp_path, BASE.replace("hardness_HB = 270.0", "hardness_HB = 150.0")) == [
+        "s.toml: material.hardness_HB = 150.0: below the lowest hardness listed for steel "
+        "45 (200 HB); give sigma_B and sigma_T instead"]
+
+
+def test_grade_rows_by_hardness_and_cyrillic_name():
+    doc = _doc(BASE.replace('grade = "45"', 'grade = "40Х"').replace(
+        "hardness_HB = 270.0", "hardness_HB = 250.0"))
+    m = doc["results"]["material"]
+    assert (m["sigma_B"], m["sigma_T"], m["sigma_m1"], m["tau_m1"]) == (800.0, 650.0, 360.0,
+                                                                         210.0)
+    assert m["alloy"] is True
+
+
+def test_estimates_without_endurance_limits():
+    doc = _doc(BASE.replace('grade = "45"\nhardness_HB = 270.0',
+                            "sigma_B = 700.0\nsigma_T = 400.0"))
+    m = doc["results"]["material"]
+    assert m["sigma_m1"] == pytest.approx(0.43 * 700)
+    assert m["tau_m1"] == pytest.approx(0.58 * 0.43 * 700)
+    assert m["psi_sigma"] == pytest.approx(0.16) and m["psi_tau"] == pytest.approx(0.08)
+
+
+def test_strength_beyond_the_tables_warns():
+    doc = _doc(BASE.replace('grade = "45"\nhardness_HB = 270.0',
+                            "sigma_B = 1500.0\nsigma_T = 1200.0"))
+    w = _check(doc, "FACTOR_TABLE_RANGE")
+    assert w and not w[0]["passed"] and "σ_B = 1500 MPa" in w[0]["message"]
+    assert not _check(_doc(BASE), "FACTOR_TABLE_RANGE")
+
+
+def test_bearing_tilt_between_the_limits_warns():
+    """A deep groove ball bearing: 2′ warns, 10′ fails; find a load that gives a slope in
+    between and check the severity."""
+    text = BASE.replace("position = 20.0", 'position = 20.0\ntype = "deep_groove_ball"')
+    doc = _doc(text.replace("Fy = 3000.0", "Fy = 60000.0"))
+    tilt = _check(doc, "BEARING_TILT")[0]
+    assert 2.0 < tilt["value"] <= 10.0
+    assert not tilt["passed"] and tilt["severity"] == "warning"
+
+
+def test_heavy_fast_rotor_fails_the_critical_speed(tmp_path):
+    text = BASE.replace("speed = 200.0", "speed = 20000.0").replace(
+        "Fy = 3000.0", "Fy = 3000.0\nmass = 500.0")
+    doc = run_failing(tmp_path, text)
+    c = _check(doc, "CRITICAL_SPEED")[0]
+    assert not c["passed"] and "stiffen the shaft" in c["message"]
+    assert doc["results"]["shaft"]["n_cr"] == pytest.approx(c["value"] * 20000.0)
+
+
+def test_gear_deflection_limit():
+    text = BASE.replace("Fy = 3000.0", "Fy = 3000.0\nmodule = 0.3")
+    c = _check(_doc(text), "GEAR_DEFLECTION")[0]
+    assert c["limit"] == pytest.approx(0.003)
+    assert c["passed"] == (c["value"] <= 0.003)
+    c = _check(_doc(text.replace("Fy = 3000.0", "Fy = 30000.0")), "GEAR_DEFLECTION")[0]
+    assert not c["passed"] and c["severity"] == "warning"

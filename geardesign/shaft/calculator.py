@@ -39,9 +39,9 @@ def compute(spec: ValidatedSpec) -> Result:
     m.add("tau_m1", mat.tau_m1, "MPa", "τ_-1", "endurance limit, torsion",
           {"grade": S.MATERIAL, "given": "input"}.get(origin.get("tau_m1"), S.ESTIMATE))
     m.add("psi_sigma", mat.psi_sigma, "-", "ψ_σ", "mean-stress sensitivity, bending",
-          "[GOST25504]")
+          "input" if spec.data["material"]["psi_sigma"] is not None else "[GOST25504]")
     m.add("psi_tau", mat.psi_tau, "-", "ψ_τ", "mean-stress sensitivity, torsion",
-          S.MATERIAL if origin.get("psi_tau") == "grade" else "[GOST25504]")
+          {"grade": S.MATERIAL, "given": "input"}.get(origin.get("psi_tau"), "[GOST25504]"))
     m.add("alloy", mat.alloy, None, "", "alloy steel (size factor in bending)", S.TABLES)
 
     g = res.section("shaft", "Shaft and beam model")
@@ -89,7 +89,7 @@ def compute(spec: ValidatedSpec) -> Result:
         st.add("S_static", cs.S_static, "-", "S_T", "lowest static safety factor (peak load)",
                S.VON_MISES)
         st.add("S_static_min", lim["S_static_min"], "-", "[S_T]", "required", S.STATIC_LIMIT)
-    res.checks.extend(_checks(r, lim, opt.speed, loads, supports, origin, steps))
+    res.checks.extend(_checks(r, lim, opt.speed, loads, supports, origin, steps, mat.sigma_B))
     return res
 
 
@@ -148,7 +148,8 @@ def _fmt(v: float) -> str:
     return "∞" if math.isinf(v) else f"{v:.2f}"
 
 
-def _checks(r: ShaftResult, lim: dict, speed: float, loads, supports, origin, steps) -> list:
+def _checks(r: ShaftResult, lim: dict, speed: float, loads, supports, origin, steps,
+            mat_sigma_B: float) -> list:
     out = []
     c = r.critical
     if c is not None:
@@ -222,6 +223,21 @@ def _checks(r: ShaftResult, lim: dict, speed: float, loads, supports, origin, st
             f"t/r or r/d of the fillet at {where} lies outside the table (t/r above 5 or r/d "
             f"below 0.01): the nearest row is used and may understate K_σ; enlarge the fillet",
             "", None, None, S.TABLES))
+    big = [s for s in r.sections if s.d > ST.TABLE_D_MAX]
+    high = ST.tables()["fillet"]["sigma_B"][-1]
+    if big or mat_sigma_B > high:
+        why = []
+        if mat_sigma_B > high:
+            why.append(f"σ_B = {mat_sigma_B:g} MPa is above the tables' {high:g} MPa "
+                       f"(K_σ, K_τ grow with σ_B)")
+        if big:
+            why.append(f"d = {max(s.d for s in big):g} mm is above the tables' "
+                       f"{ST.TABLE_D_MAX:g} mm (K_d falls, K_σ/K_d of a fit grows with d)")
+        out.append(check(
+            "FACTOR_TABLE_RANGE", False, "warning",
+            "; ".join(why) + ": the last column is used and may understate the concentration; "
+            "check the factors against a handbook for this size and strength", "",
+            None, None, S.TABLES))
     if origin.get("blank"):
         d_max = max(s.diameter for s in steps)
         blank = origin["blank"]

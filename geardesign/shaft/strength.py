@@ -31,6 +31,10 @@ def tables() -> dict:
     return tomllib.loads(Path(__file__).with_name("tables.toml").read_text(encoding="utf-8"))
 
 
+TABLE_D_MAX = 100.0
+"""Largest diameter of the size-factor and press-fit tables [mm]."""
+
+
 def _interp(x: float, xs: list[float], ys: list[float]) -> float:
     """Linear interpolation, the end values outside the range."""
     if x <= xs[0]:
