@@ -11,7 +11,7 @@ planes (e.g. F_a·d/2 of a helical gear), positive when they turn the slope dw/d
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -148,7 +148,6 @@ class ShaftResult:
     n_cr: float
     critical: SectionResult | None
     critical_static: SectionResult | None
-    notes: list = field(default_factory=list)
 
 
 def _clean(*planes: beam.PlaneSolution) -> None:
@@ -265,7 +264,6 @@ def analyse(steps: list[Step], loads: list[Load], supports: list[Support],
 
     # ---------------------------------------------------------------- sections
     sections = []
-    notes: list[str] = []
     points: dict[float, list[str]] = {}
     for i in range(1, len(steps)):
         points.setdefault(round(bounds[i], 9), []).append(f"step {i}|{i + 1}")
@@ -280,18 +278,18 @@ def analyse(steps: list[Step], loads: list[Load], supports: list[Support],
         N = N_int[i] if abs(N_int[i]) >= abs(N_int[i - 1] if i > 0 else 0.0) else N_int[i - 1]
         sections.append(_section(xs, " / ".join(points[xs]), float(M), float(T), float(N),
                                  bounds, steps,
-                                 material, options, notes))
+                                 material, options))
     critical = min(sections, key=lambda s: s.S) if sections else None
     critical_static = min(sections, key=lambda s: s.S_static) if sections else None
     return ShaftResult(
         bounds[-1], float(el_mass.sum()), x.tolist(), M_y.tolist(), M_z.tolist(),
         M_res.tolist(), py.V_right.tolist(), pz.V_right.tolist(), T_int.tolist(),
         N_int.tolist(), py.w.tolist(), pz.w.tolist(), w.tolist(), slope.tolist(),
-        sup_res, load_res, sections, omega, n_cr, critical, critical_static, notes)
+        sup_res, load_res, sections, omega, n_cr, critical, critical_static)
 
 
 def _section(xs: float, label: str, M: float, T: float, N: float, bounds: list[float],
-             steps: list[Step], mat: Material, opt: Options, notes: list) -> SectionResult:
+             steps: list[Step], mat: Material, opt: Options) -> SectionResult:
     """Stresses and safeties at x = xs.  M, T in N·mm, N in N."""
     sb = mat.sigma_B
     tol = 1e-9 * max(1.0, bounds[-1])
