@@ -6,6 +6,11 @@
    and 0.000304 rad at the gear (four and three significant digits: tolerance half a unit
    of the last printed digit).
 
+   Problem 4-27 of the same manual: a uniform shaft d = 1.375 in on bearings 16 in apart
+   (E = 30 Mpsi) with 100 lbf in the x–y plane 4 in from the left bearing and 300 lbf in
+   the x–z plane 10 in from it; at mid-span the printed deflections are 1.115·10⁻³ in (y),
+   4.445·10⁻³ in (z) and |δ| = 4.583·10⁻³ in (tolerance half a unit of the fourth digit).
+
 2. [Ugural] example 9.6: a stepped shaft on two bearings, the middle half of twice the
    second moment of area of the end quarters (2I, I), a flywheel of weight W at mid-span.
    The moment-area solution prints the static deflection δ_C = 3WL³/(256EI) and the
@@ -47,6 +52,17 @@ def test_shigley_sm_7_8_slopes():
     assert_ref(r.supports[0].slope, 0.0002823, 0.5e-7, "[ShigleySM] 7-8 left bearing")
     assert_ref(r.supports[1].slope, 0.0004342, 0.5e-7, "[ShigleySM] 7-8 right bearing")
     assert_ref(r.loads[0].slope, 0.000304, 0.5e-6, "[ShigleySM] 7-8 gear")
+
+
+def test_shigley_sm_4_27_two_planes():
+    d, l = 1.375 * IN, 16.0 * IN
+    loads = [Load(4.0 * IN, Fy=-100.0 * LBF), Load(10.0 * IN, Fz=-300.0 * LBF),
+             Load(8.0 * IN, name="mid-span")]
+    r = analyse([Step(l, d)], loads, [Support(0.0), Support(l)], _material(30e6 * PSI))
+    mid = r.loads[2]
+    assert_ref(-mid.w_y / IN, 1.115e-3, 0.5e-6, "[ShigleySM] 4-27 y")
+    assert_ref(-mid.w_z / IN, 4.445e-3, 0.5e-6, "[ShigleySM] 4-27 z")
+    assert_ref(mid.w / IN, 4.583e-3, 0.5e-6, "[ShigleySM] 4-27 |δ|")
 
 
 def test_ugural_9_6_stepped_shaft():
