@@ -460,3 +460,27 @@ def test_gear_deflection_limit():
     assert c["passed"] == (c["value"] <= 0.003)
     c = _check(_doc(text.replace("Fy = 3000.0", "Fy = 30000.0")), "GEAR_DEFLECTION")[0]
     assert not c["passed"] and c["severity"] == "warning"
+
+
+def test_reactions_agree_with_the_drive_statics():
+    """The drive's two-bearing statics (geardesign.drive.shafts) and the beam model give the
+    same bearing reactions for gears with radial, tangential and axial forces (the axial
+    force at the pitch radius acts as a couple).  Axes: drive (x, y, z = shaft axis) ->
+    shaft (y, z, x); a moment about the drive's y is the shaft's moment_y, about its x
+    minus the shaft's moment_z."""
+    from geardesign.drive.shafts import GearLoad, gear_force, reactions
+
+    gears = [GearLoad(4480.0, 1680.0, 1120.0, 125.0, 80.0, math.radians(30.0), False, 1),
+             GearLoad(9000.0, 3300.0, 2000.0, 40.0, 190.0, math.radians(200.0), True, -1)]
+    zA, zB, L = 20.0, 150.0, 230.0
+    ref = reactions(zA, zB, gears, rotation=1)
+    loads = []
+    for g in gears:
+        (fx, fy, fz), (px, py, pz) = gear_force(g, 1)
+        loads.append(Load(pz, Fy=fx, Fz=fy, Fx=fz, moment_y=-px * fz / 1e3,
+                          moment_z=-py * fz / 1e3))
+    r = analyse([Step(L, 50.0)], loads, [Support(zA), Support(zB)], MAT)
+    A, B = r.supports
+    assert (A.R_y, A.R_z) == pytest.approx(ref.R_A, rel=1e-9, abs=1e-6)
+    assert (B.R_y, B.R_z) == pytest.approx(ref.R_B, rel=1e-9, abs=1e-6)
+    assert abs(A.R_x) == pytest.approx(ref.axial, rel=1e-12)
