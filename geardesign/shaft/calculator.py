@@ -1,0 +1,253 @@
+"""``kind = "shaft"``: from a validated spec to a :class:`~geardesign.core.result.Result`.
+
+:mod:`.inputs` turns the spec into plain data, :func:`.solve.analyse` computes, and this
+module writes the rows, the tables and the checks (with advice).
+"""
+
+from __future__ import annotations
+
+import math
+
+from geardesign.core.result import DataTable, Result, check
+from geardesign.core.spec import ValidatedSpec
+from geardesign.shaft import inputs as IN
+from geardesign.shaft import sources as S
+from geardesign.shaft import strength as ST
+from geardesign.shaft.solve import ARCMIN, ShaftResult, analyse, diameter_for
+
+
+def compute(spec: ValidatedSpec) -> Result:
+    from geardesign.shaft import CALCULATOR
+
+    mat, origin = IN.material(spec.data["material"])
+    steps = IN.steps(spec)
+    length = sum(s.length for s in steps)
+    loads = IN.loads(spec, length)
+    supports = IN.supports(spec, length)
+    opt = IN.options(spec)
+    r = analyse(steps, loads, supports, mat, opt)
+    res = CALCULATOR.new_result(spec)
+    lim = spec.data["shaft"]
+
+    m = res.section("material", "Material")
+    m.add("sigma_B", mat.sigma_B, "MPa", "σ_B", "ultimate tensile strength",
+          S.MATERIAL if origin.get("sigma_B") == "grade" else "input")
+    m.add("sigma_T", mat.sigma_T, "MPa", "σ_T", "yield strength",
+          S.MATERIAL if origin.get("sigma_T") == "grade" else "input")
+    m.add("sigma_m1", mat.sigma_m1, "MPa", "σ_-1", "endurance limit, rotating bending",
+          {"grade": S.MATERIAL, "given": "input"}.get(origin.get("sigma_m1"), S.ESTIMATE))
+    m.add("tau_m1", mat.tau_m1, "MPa", "τ_-1", "endurance limit, torsion",
+          {"grade": S.MATERIAL, "given": "input"}.get(origin.get("tau_m1"), S.ESTIMATE))
+    m.add("psi_sigma", mat.psi_sigma, "-", "ψ_σ", "mean-stress sensitivity, bending",
+          "input" if spec.data["material"]["psi_sigma"] is not None else "[GOST25504]")
+    m.add("psi_tau", mat.psi_tau, "-", "ψ_τ", "mean-stress sensitivity, torsion",
+          {"grade": S.MATERIAL, "given": "input"}.get(origin.get("psi_tau"), "[GOST25504]"))
+    m.add("alloy", mat.alloy, None, "", "alloy steel (size factor in bending)", S.TABLES)
+
+    g = res.section("shaft", "Shaft and beam model")
+    g.add("length", r.length, "mm", "L", "length of the shaft", "input")
+    g.add("mass", r.mass, "kg", "m", "mass of the shaft", "ρ·ΣA·l")
+    g.add("nodes", len(r.x), None, "n", "finite-element nodes", S.FE)
+    g.add("omega_cr", r.omega_cr, "rad/s", "ω_cr",
+          "first bending natural frequency (eigenvalue, shaft and part masses)", S.EIGEN)
+    g.add("n_cr", r.n_cr, "min^-1", "n_cr", "first bending critical speed", S.EIGEN)
+    g.add("n_cr_ratio", r.n_cr / opt.speed, "-", "n_cr/n", "critical speed over the speed",
+          S.EIGEN)
+    w_max = max(r.w)
+    g.add("w_max", w_max, "mm", "w_max", "largest deflection", S.FE)
+    g.add("x_w_max", r.x[r.w.index(w_max)], "mm", "x(w_max)", "where it occurs", S.FE)
+
+    res.tables.append(_support_table(r))
+    res.tables.append(_load_table(r))
+    res.tables.extend(_section_tables(r))
+
+    dg = res.section("diagrams", "Diagrams along the shaft (arrays over x)")
+    dg.add("x", r.x, "mm", "x", "position of the nodes", S.FE)
+    dg.add("M_y", r.M_y, "N·m", "M_y", "bending moment, x–y plane (just right of x)", S.FE)
+    dg.add("M_z", r.M_z, "N·m", "M_z", "bending moment, x–z plane", S.FE)
+    dg.add("M", r.M, "N·m", "M", "resultant bending moment", S.FE)
+    dg.add("V_y", r.V_y, "N", "V_y", "shear force, x–y plane", S.FE)
+    dg.add("V_z", r.V_z, "N", "V_z", "shear force, x–z plane", S.FE)
+    dg.add("T", r.T, "N·m", "T", "torque", S.STATICS)
+    dg.add("N", r.N, "N", "N", "axial force (tension +)", S.STATICS)
+    dg.add("w_y", r.w_y, "mm", "w_y", "deflection in y", S.FE)
+    dg.add("w_z", r.w_z, "mm", "w_z", "deflection in z", S.FE)
+    dg.add("w", r.w, "mm", "w", "resultant deflection", S.FE)
+    dg.add("slope", r.slope, "rad", "θ", "resultant slope", S.FE)
+
+    c = r.critical
+    st = res.section("strength", "Strength: critical sections")
+    if c is not None:
+        st.add("critical_section", c.label, None, "", "section of the lowest fatigue safety",
+               S.FATIGUE)
+        st.add("x_critical", c.x, "mm", "x", "its position", S.FATIGUE)
+        st.add("S", c.S, "-", "S", "lowest fatigue safety factor", S.FATIGUE)
+        st.add("S_min", lim["S_min"], "-", "[S]", "required", S.FATIGUE_LIMIT)
+        cs = r.critical_static
+        st.add("critical_section_static", cs.label, None, "",
+               "section of the lowest static safety", S.VON_MISES)
+        st.add("S_static", cs.S_static, "-", "S_T", "lowest static safety factor (peak load)",
+               S.VON_MISES)
+        st.add("S_static_min", lim["S_static_min"], "-", "[S_T]", "required", S.STATIC_LIMIT)
+    res.checks.extend(_checks(r, lim, opt.speed, loads, supports, origin, steps, mat.sigma_B))
+    return res
+
+
+def _support_table(r: ShaftResult) -> DataTable:
+    t = DataTable("supports", "Supports: reactions (force on the shaft) and slopes", [
+        ("name", "support", None), ("x", "x", "mm"), ("R_y", "R_y", "N"), ("R_z", "R_z", "N"),
+        ("R", "R", "N"), ("R_x", "R_x", "N"), ("w", "w", "mm"),
+        ("slope", "θ", "arcmin")])
+    for p in r.supports:
+        t.rows.append({"name": p.name, "x": p.x, "R_y": p.R_y, "R_z": p.R_z,
+                       "R": math.hypot(p.R_y, p.R_z), "R_x": p.R_x, "w": p.w,
+                       "slope": p.slope / ARCMIN})
+    return t
+
+
+def _load_table(r: ShaftResult) -> DataTable:
+    t = DataTable("loads", "Loads: deflection and slope", [
+        ("name", "load", None), ("x", "x", "mm"), ("w_y", "w_y", "mm"), ("w_z", "w_z", "mm"),
+        ("w", "w", "mm"), ("slope", "θ", "arcmin")])
+    for p in r.loads:
+        t.rows.append({"name": p.name, "x": p.x, "w_y": p.w_y, "w_z": p.w_z, "w": p.w,
+                       "slope": p.slope / ARCMIN})
+    return t
+
+
+def _section_tables(r: ShaftResult) -> list[DataTable]:
+    t = DataTable("sections", "Sections: loads and stresses (static at the peak load)", [
+        ("label", "section", None), ("x", "x", "mm"), ("d", "d", "mm"), ("M", "M", "N·m"),
+        ("T", "T", "N·m"), ("N", "N", "N"), ("sigma_a", "σ_a", "MPa"),
+        ("sigma_m", "σ_m", "MPa"), ("tau_a", "τ_a", "MPa"), ("tau_m", "τ_m", "MPa"),
+        ("sigma_v_peak", "σ_v,peak", "MPa"), ("S_static", "S_T", "-")])
+    f = DataTable("fatigue", "Sections: fatigue (" + S.FATIGUE + ")", [
+        ("label", "section", None), ("concentrator", "concentrator", None),
+        ("K_sigma_Kd", "K_σ/K_dσ", "-"), ("K_tau_Kd", "K_τ/K_dτ", "-"), ("K_F", "K_Fσ", "-"),
+        ("K_sigma_D", "K_σD", "-"), ("K_tau_D", "K_τD", "-"), ("S_sigma", "S_σ", "-"),
+        ("S_tau", "S_τ", "-"), ("S", "S", "-")])
+    for s in r.sections:
+        t.rows.append({"label": s.label, "x": s.x, "d": s.d, "M": s.M, "T": s.T, "N": s.N,
+                       "sigma_a": s.sigma_a, "sigma_m": s.sigma_m, "tau_a": s.tau_a,
+                       "tau_m": s.tau_m, "sigma_v_peak": s.sigma_v_peak,
+                       "S_static": s.S_static})
+        f.rows.append({"label": s.label, "concentrator": s.concentrator,
+                       "K_sigma_Kd": s.ratio_sigma, "K_tau_Kd": s.ratio_tau,
+                       "K_F": s.K_F_sigma, "K_sigma_D": s.K_sigma_D, "K_tau_D": s.K_tau_D,
+                       "S_sigma": s.S_sigma, "S_tau": s.S_tau, "S": s.S})
+    return [t, f]
+
+
+def _val(v: float) -> float | None:
+    """A check value: None where the quantity is unbounded (an unloaded shaft has an
+    infinite safety), so that the check passes without an infinite number."""
+    return v if math.isfinite(v) else None
+
+
+def _fmt(v: float) -> str:
+    return "∞" if math.isinf(v) else f"{v:.2f}"
+
+
+def _checks(r: ShaftResult, lim: dict, speed: float, loads, supports, origin, steps,
+            mat_sigma_B: float) -> list:
+    out = []
+    c = r.critical
+    if c is not None:
+        S_req = lim["S_min"]
+        d_req = math.ceil(diameter_for(c, S_req) * 10.0) / 10.0
+        advice = (f"increase the diameter at {c.label} (x = {c.x:g} mm) from {c.d:g} to at "
+                  f"least {d_req:g} mm")
+        if c.fillet_r is not None and c.concentrator == "fillet":
+            r_big = min(c.fillet_t / 2.0, 0.05 * c.d) if c.fillet_t else c.fillet_r
+            if r_big > c.fillet_r:
+                advice += (f", or enlarge the fillet radius from {c.fillet_r:g} to about "
+                           f"{r_big:.1f} mm (t/r = 2)")
+        elif c.concentrator == "keyway" and c.keyway_cutter == "end_mill":
+            advice += ", or cut the keyway with a disc cutter"
+        elif c.concentrator == "press fit":
+            advice += ", or relieve the hub edge (groove, thinner hub end)"
+        out.append(check(
+            "FATIGUE", c.S >= S_req, "error",
+            f"fatigue safety S = {_fmt(c.S)} < [S] = {S_req:g} at {c.label} (x = {c.x:g} mm, "
+            f"{c.concentrator}): {advice}",
+            f"fatigue safety S = {_fmt(c.S)} >= [S] = {S_req:g} (lowest at {c.label}, "
+            f"x = {c.x:g} mm)", _val(c.S), S_req, S.FATIGUE))
+        cs = r.critical_static
+        S_req = lim["S_static_min"]
+        d_req = math.ceil(cs.d * (S_req / cs.S_static) ** (1 / 3) * 10.0) / 10.0 \
+            if math.isfinite(cs.S_static) else cs.d
+        out.append(check(
+            "STATIC_STRENGTH", cs.S_static >= S_req, "error",
+            f"static safety at the peak load S_T = {_fmt(cs.S_static)} < [S_T] = {S_req:g} at "
+            f"{cs.label} (x = {cs.x:g} mm): increase the diameter there from {cs.d:g} to at "
+            f"least {d_req:g} mm or use a steel of higher yield strength",
+            f"static safety at the peak load S_T = {_fmt(cs.S_static)} >= [S_T] = {S_req:g} "
+            f"(lowest at {cs.label})", _val(cs.S_static), S_req, S.VON_MISES))
+    margin = lim["critical_speed_margin"]
+    ratio = r.n_cr / speed
+    out.append(check(
+        "CRITICAL_SPEED", ratio >= margin, "error",
+        f"first bending critical speed n_cr = {r.n_cr:.0f} min^-1 is only {ratio:.2f} times "
+        f"the speed {speed:g} min^-1 (at least {margin:g} required): stiffen the shaft "
+        f"(larger diameters, shorter span, bearings closer to heavy parts)",
+        f"first bending critical speed n_cr = {r.n_cr:.0f} min^-1 = {ratio:.1f}·n",
+        _val(ratio), margin, S.PRACTICE))
+    tilt = ST.tables()["tilt"]
+    for sp, p in zip(supports, r.supports):
+        if sp.type not in tilt:
+            continue
+        lo, hi, name = tilt[sp.type]["min"], tilt[sp.type]["max"], tilt[sp.type]["name"]
+        a = p.slope / ARCMIN
+        sev = "warning" if a <= hi else "error"
+        out.append(check(
+            "BEARING_TILT", a <= lo, sev,
+            f"slope at bearing {p.name} (x = {p.x:g} mm) {a:.2f}′ exceeds "
+            f"{'the permissible ' + format(hi, 'g') if a > hi else 'the lower limit ' + format(lo, 'g')}′ "
+            f"of a {name} ({lo:g}…{hi:g}′): stiffen the shaft between the bearings or use a "
+            f"bearing that tolerates tilt",
+            f"slope at bearing {p.name} {a:.2f}′ <= {lo:g}′ ({name})", a, lo, S.TILT))
+    for ld, p in zip(loads, r.loads):
+        if ld.module is None:
+            continue
+        limit = 0.01 * ld.module
+        out.append(check(
+            "GEAR_DEFLECTION", p.w <= limit, "warning",
+            f"deflection at {p.name} (x = {p.x:g} mm) {p.w * 1000:.1f} µm exceeds 0.01·m = "
+            f"{limit * 1000:.1f} µm: stiffen the shaft or bring the bearings closer",
+            f"deflection at {p.name} {p.w * 1000:.1f} µm <= 0.01·m = {limit * 1000:.1f} µm",
+            p.w, limit, S.GEAR_SEAT))
+    if any(s.outside_table for s in r.sections):
+        where = ", ".join(s.label for s in r.sections if s.outside_table)
+        out.append(check(
+            "FILLET_TABLE_RANGE", False, "warning",
+            f"t/r or r/d of the fillet at {where} lies outside the table (t/r above 5 or r/d "
+            f"below 0.01): the nearest row is used and may understate K_σ; enlarge the fillet",
+            "", None, None, S.TABLES))
+    big = [s for s in r.sections if s.d > ST.TABLE_D_MAX]
+    high = ST.tables()["fillet"]["sigma_B"][-1]
+    if big or mat_sigma_B > high:
+        why = []
+        if mat_sigma_B > high:
+            why.append(f"σ_B = {mat_sigma_B:g} MPa is above the tables' {high:g} MPa "
+                       f"(K_σ, K_τ grow with σ_B)")
+        if big:
+            why.append(f"d = {max(s.d for s in big):g} mm is above the tables' "
+                       f"{ST.TABLE_D_MAX:g} mm (K_d falls, K_σ/K_d of a fit grows with d)")
+        out.append(check(
+            "FACTOR_TABLE_RANGE", False, "warning",
+            "; ".join(why) + ": the last column is used and may understate the concentration; "
+            "check the factors against a handbook for this size and strength", "",
+            None, None, S.TABLES))
+    if origin.get("blank"):
+        d_max = max(s.diameter for s in steps)
+        blank = origin["blank"]
+        out.append(check(
+            "BLANK_SIZE", d_max <= blank, "warning",
+            f"the largest diameter {d_max:g} mm exceeds the blank size {blank:g} mm for which "
+            f"the properties of steel {origin['grade']} at {origin['HB']:g} HB hold: give "
+            f"the blank's own sigma_B and sigma_T",
+            f"blank properties of steel {origin['grade']} hold up to {blank:g} mm",
+            d_max, blank, S.MATERIAL) if blank > 0 else check(
+            "BLANK_SIZE", True, "info", "", f"properties of steel {origin['grade']} hold for "
+            f"any blank size", None, None, S.MATERIAL))
+    return out

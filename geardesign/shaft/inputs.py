@@ -1,0 +1,157 @@
+"""From a validated spec to the plain data of :mod:`.solve`; every rule across keys raises
+:class:`~geardesign.core.errors.InputError` (one line: key, value, what is allowed)."""
+
+from __future__ import annotations
+
+import difflib
+
+from geardesign.core.errors import InputError, Problem
+from geardesign.core.spec import ValidatedSpec
+from geardesign.materials.gear_steel import normalize_grade
+from geardesign.shaft import strength as ST
+from geardesign.shaft.solve import Load, Material, Options, Step, Support
+
+
+def _grade_key(name: str) -> str:
+    steels = ST.tables()["steel"]
+    key = normalize_grade(name)
+    if key in steels:
+        return key
+    latin = name.strip().replace(" ", "").replace("X", "Kh").replace("x", "Kh")
+    return latin if latin in steels else key
+
+
+def material(m: dict) -> tuple[Material, dict]:
+    """The shaft material and a record of where each value came from."""
+    steels = ST.tables()["steel"]
+    row, alloy_default, origin = {}, False, {}
+    if m["grade"] is not None:
+        key = _grade_key(m["grade"])
+        if key not in steels:
+            close = difflib.get_close_matches(key, list(steels), 3, 0.5)
+            hint = f" (did you mean {', '.join(repr(c) for c in close)}?)" if close else ""
+            raise InputError.at("material.grade", m["grade"],
+                                f"unknown shaft steel{hint}; known: {', '.join(steels)}; or "
+                                f"leave out grade and give sigma_B and sigma_T")
+        rows = steels[key]["rows"]
+        hb = m["hardness_HB"]
+        if hb is None:
+            row = rows[0]
+        else:
+            fit = [r for r in rows if r["HB"] <= hb]
+            if not fit:
+                raise InputError.at("material.hardness_HB", hb,
+                                    f"below the lowest hardness listed for steel {key} "
+                                    f"({rows[0]['HB']:g} HB); give sigma_B and sigma_T instead")
+            row = fit[-1]
+        alloy_default = steels[key]["alloy"]
+        origin = {"grade": key, "HB": row["HB"], "blank": row["blank"]}
+    elif m["sigma_B"] is None or m["sigma_T"] is None:
+        missing = "sigma_B" if m["sigma_B"] is None else "sigma_T"
+        raise InputError(Problem(f"material.{missing}",
+                                 "missing; required without a grade: the ultimate and the "
+                                 "yield strength of the shaft steel (or give material.grade)"))
+
+    def pick(name: str):
+        if m.get(name) is not None:
+            origin[name] = "given"
+            return m[name]
+        if name in row:
+            origin[name] = "grade"
+            return row[name]
+        return None
+
+    sigma_B, sigma_T = pick("sigma_B"), pick("sigma_T")
+    if sigma_T >= sigma_B:
+        raise InputError.at("material.sigma_T", sigma_T,
+                            f"must be below the ultimate strength sigma_B = {sigma_B:g} MPa")
+    s_est, _ = ST.endurance_estimates(sigma_B)
+    sigma_m1 = pick("sigma_m1")
+    if sigma_m1 is None:
+        sigma_m1, origin["sigma_m1"] = s_est, "0.43·σ_B"
+    tau_m1 = pick("tau_m1")
+    if tau_m1 is None:
+        tau_m1, origin["tau_m1"] = 0.58 * sigma_m1, "0.58·σ_-1"
+    psi_s, psi_t = ST.mean_stress_sensitivity(sigma_B)
+    if m["psi_sigma"] is not None:
+        psi_s = m["psi_sigma"]
+    psi_tau = pick("psi_tau")
+    if psi_tau is None:
+        psi_tau = psi_t if m["psi_sigma"] is None else 0.5 * psi_s
+    alloy = m["alloy"] if m["alloy"] is not None else alloy_default
+    return (Material(sigma_B, sigma_T, sigma_m1, tau_m1, psi_s, psi_tau, m["E"],
+                     m["density"], alloy), origin)
+
+
+def steps(spec: ValidatedSpec) -> list[Step]:
+    out, x = [], 0.0
+    for i, s in enumerate(spec.data["step"]):
+        if s["start"] is not None and abs(s["start"] - x) > 1e-6 * max(1.0, x):
+            what = "overlaps" if s["start"] < x else "leaves a gap after"
+            prev = f"step[{i - 1}], which ends at {x:g} mm" if i else "the left end at 0 mm"
+            raise InputError.at(f"step[{i}].start", s["start"],
+                                f"{what} {prev}; steps follow each other without gaps: give "
+                                f"start = {x:g} or leave it out")
+        if s["bore"] >= s["diameter"]:
+            raise InputError.at(f"step[{i}].bore", s["bore"],
+                                f"must be smaller than the diameter {s['diameter']:g} mm")
+        if s["groove_K_tau"] is not None and s["groove_K_sigma"] is None:
+            raise InputError.at(f"step[{i}].groove_K_tau", s["groove_K_tau"],
+                                "needs groove_K_sigma (the groove's factor in bending)")
+        if s["groove_K_sigma"] is not None and i == len(spec.data["step"]) - 1:
+            raise InputError.at(f"step[{i}].groove_K_sigma", s["groove_K_sigma"],
+                                "a groove sits at the right end of its step, and the last step "
+                                "ends with the shaft: give it on the step to the left of the "
+                                "groove's shoulder")
+        out.append(Step(s["length"], s["diameter"], s["bore"], s["fillet"], s["keyway"],
+                        s["keyway_cutter"], s["press_fit"], s["groove_K_sigma"],
+                        s["groove_K_tau"], s["Rz"]))
+        x += s["length"]
+    return out
+
+
+def loads(spec: ValidatedSpec, length: float) -> list[Load]:
+    out = []
+    for i, ld in enumerate(spec.data["load"]):
+        if ld["position"] > length * (1 + 1e-12):
+            raise InputError.at(f"load[{i}].position", ld["position"],
+                                f"outside the shaft: must be within 0…{length:g} mm (the sum "
+                                f"of the step lengths)")
+        out.append(Load(ld["position"], ld["Fy"], ld["Fz"], ld["Fx"], ld["torque"],
+                        ld["moment_y"], ld["moment_z"], ld["mass"], ld["name"] or "",
+                        ld["module"]))
+    torques = [abs(ld.torque) for ld in out]
+    total = sum(ld.torque for ld in out)
+    if torques and abs(total) > 1e-3 * max(torques) + 1e-9:
+        raise InputError(Problem(
+            "load", f"the torques do not balance: their sum is {total:g} N·m; a shaft in "
+                    f"steady rotation takes out what is put in: give the output torque(s) "
+                    f"with the opposite sign so that the sum is 0"))
+    return out
+
+
+def supports(spec: ValidatedSpec, length: float) -> list[Support]:
+    out = []
+    for i, s in enumerate(spec.data["support"]):
+        if s["position"] > length * (1 + 1e-12):
+            raise InputError.at(f"support[{i}].position", s["position"],
+                                f"outside the shaft: must be within 0…{length:g} mm (the sum "
+                                f"of the step lengths)")
+        out.append(Support(s["position"], s["stiffness"], s["type"], s["axial"],
+                           s["name"] or ""))
+    xs = sorted(s.position for s in out)
+    if xs[-1] - xs[0] <= 1e-3 * length:
+        raise InputError(Problem(
+            "support", "a free shaft needs at least two supports at different positions to "
+                       "carry its loads; add a [[support]]"))
+    axial = [i for i, s in enumerate(out) if s.axial]
+    if len(axial) > 1:
+        raise InputError.at(f"support[{axial[1]}].axial", True,
+                            f"only one bearing takes the axial force (support[{axial[0]}] "
+                            f"already does)")
+    return out
+
+
+def options(spec: ValidatedSpec) -> Options:
+    s = spec.data["shaft"]
+    return Options(s["speed"], s["peak_factor"], s["torsion_cycle"], s["Rz"], s["K_V"])

@@ -1,0 +1,364 @@
+"""The shaft analysis on plain data: steps, loads, supports, material -> :class:`ShaftResult`.
+
+This is the API other calculators call (e.g. a drive placing its gears on a shaft): no spec,
+no report rows.  Lengths mm, forces N, torques and couples N·m, stresses MPa, speeds min⁻¹.
+
+Axes: x along the shaft from its left end; y and z the two bending planes.  A load's Fy, Fz
+bend the shaft in the x–y and x–z planes; ``moment_y``/``moment_z`` are couples in those
+planes (e.g. F_a·d/2 of a helical gear), positive when they turn the slope dw/dx up.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from geardesign.core.errors import InputError, Problem
+from geardesign.shaft import beam
+from geardesign.shaft import strength as ST
+
+ARCMIN = math.pi / (180.0 * 60.0)
+
+
+@dataclass(frozen=True)
+class Step:
+    length: float
+    diameter: float
+    bore: float = 0.0
+    fillet: float = 1.0              # fillet radius at the right end, mm
+    keyway: bool = False
+    keyway_cutter: str = "end_mill"
+    press_fit: bool = False
+    groove_K_sigma: float | None = None   # groove at the right end: effective factors
+    groove_K_tau: float | None = None
+    Rz: float | None = None          # roughness, µm (None: the shaft's)
+
+
+@dataclass(frozen=True)
+class Load:
+    position: float
+    Fy: float = 0.0
+    Fz: float = 0.0
+    Fx: float = 0.0
+    torque: float = 0.0              # N·m, input positive, output negative
+    moment_y: float = 0.0            # N·m
+    moment_z: float = 0.0            # N·m
+    mass: float = 0.0                # kg (critical speed)
+    name: str = ""
+    module: float | None = None      # mm: gear seat deflection limit 0.01·m
+
+
+@dataclass(frozen=True)
+class Support:
+    position: float
+    stiffness: float | None = None   # radial, N/mm; None = rigid
+    type: str = "other"
+    axial: bool = False
+    name: str = ""
+
+
+@dataclass(frozen=True)
+class Material:
+    sigma_B: float
+    sigma_T: float
+    sigma_m1: float
+    tau_m1: float
+    psi_sigma: float
+    psi_tau: float
+    E: float = 2.06e5
+    density: float = 7850.0          # kg/m³
+    alloy: bool = False
+
+
+@dataclass(frozen=True)
+class Options:
+    speed: float = 0.0               # min⁻¹
+    peak_factor: float = 2.0         # peak / nominal load (static check)
+    torsion_cycle: str = "pulsating"
+    Rz: float = 6.3                  # µm
+    K_V: float = 1.0                 # surface hardening factor
+
+
+@dataclass(frozen=True)
+class SectionResult:
+    x: float
+    label: str
+    d: float
+    bore: float
+    M: float          # resultant bending moment, N·m
+    T: float          # torque, N·m
+    N: float          # axial force, N (tension positive)
+    sigma_a: float
+    sigma_m: float
+    tau_a: float
+    tau_m: float
+    sigma_v_peak: float
+    S_static: float
+    concentrator: str
+    ratio_sigma: float      # K_σ/K_dσ used
+    ratio_tau: float
+    K_F_sigma: float
+    K_sigma_D: float
+    K_tau_D: float
+    S_sigma: float
+    S_tau: float
+    S: float
+    outside_table: bool = False
+    fillet_K_sigma: float | None = None   # shoulder with a fillet at this section
+    fillet_t: float | None = None
+    fillet_r: float | None = None
+    keyway_cutter: str = ""
+
+
+@dataclass(frozen=True)
+class PointResult:
+    x: float
+    name: str
+    w_y: float
+    w_z: float
+    w: float          # mm
+    slope: float      # rad, resultant
+    R_y: float = 0.0  # support reaction on the shaft, N
+    R_z: float = 0.0
+    R_x: float = 0.0
+
+
+@dataclass(frozen=True)
+class ShaftResult:
+    length: float
+    mass: float
+    x: list
+    M_y: list
+    M_z: list
+    M: list
+    V_y: list
+    V_z: list
+    T: list
+    N: list
+    w_y: list
+    w_z: list
+    w: list
+    slope: list
+    supports: list
+    loads: list
+    sections: list
+    omega_cr: float
+    n_cr: float
+    critical: SectionResult | None
+    critical_static: SectionResult | None
+
+
+def _clean(*planes: beam.PlaneSolution) -> None:
+    """Set round-off (below 1e-9 of the largest moment) to zero, so that a section without
+    bending reports no bending rather than a stress of 1e-11 MPa."""
+    big = max([float(np.max(np.abs(a))) for p in planes for a in (p.M_left, p.M_right)]
+              + [0.0])
+    for p in planes:
+        for a in (p.M_left, p.M_right, p.V_right):
+            a[np.abs(a) < 1e-9 * max(big, 1e-300)] = 0.0
+
+
+def node_positions(steps: list[Step], loads: list[Load], supports: list[Support],
+                   refine: int = 80) -> tuple[np.ndarray, list[float]]:
+    """Nodes: every step boundary, load and support, and enough points between them that
+    no element is longer than L/refine (for the mass matrix and smooth diagrams)."""
+    bounds = [0.0]
+    for s in steps:
+        bounds.append(bounds[-1] + s.length)
+    L = bounds[-1]
+    # points closer than 1e-3·L are one node (a load a hair beside a shoulder sits on it;
+    # an element 10⁴ times shorter than its neighbours would spoil the conditioning)
+    key: list[float] = []
+    for v in sorted([*bounds, *(ld.position for ld in loads), *(sp.position for sp in supports)]):
+        if not key or v - key[-1] > 1e-3 * L:
+            key.append(v)
+    key[-1] = L
+    h = L / refine
+    xs: list[float] = []
+    for a, b in zip(key[:-1], key[1:]):
+        k = max(1, math.ceil((b - a) / h - 1e-9))
+        xs.extend(a + (b - a) * i / k for i in range(k))
+    xs.append(key[-1])
+    return np.array(xs), bounds
+
+
+def _index(x: np.ndarray, v: float) -> int:
+    return int(np.argmin(np.abs(x - v)))
+
+
+def _step_at(bounds: list[float], xm: float) -> int:
+    for i in range(len(bounds) - 1):
+        if xm <= bounds[i + 1]:
+            return i
+    return len(bounds) - 2
+
+
+def analyse(steps: list[Step], loads: list[Load], supports: list[Support],
+            material: Material, options: Options = Options()) -> ShaftResult:
+    """Beam model, diagrams, critical speed, static and fatigue safety of every section."""
+    x, bounds = node_positions(steps, loads, supports)
+    n = len(x)
+    mids = 0.5 * (x[:-1] + x[1:])
+    el_step = [_step_at(bounds, m) for m in mids]
+    d = np.array([steps[i].diameter for i in el_step])
+    d0 = np.array([steps[i].bore for i in el_step])
+    I = math.pi / 64.0 * (d ** 4 - d0 ** 4)
+    A = math.pi / 4.0 * (d ** 2 - d0 ** 2)
+    EI = material.E * I
+    rho = material.density * 1e-9               # kg/mm³
+    el_mass = rho * A * np.diff(x)
+
+    Fy, Fz = np.zeros(n), np.zeros(n)
+    Cy, Cz = np.zeros(n), np.zeros(n)
+    Tn, Fxn, mpt = np.zeros(n), np.zeros(n), np.zeros(n)
+    for ld in loads:
+        i = _index(x, ld.position)
+        Fy[i] += ld.Fy
+        Fz[i] += ld.Fz
+        Cy[i] += ld.moment_y * 1e3
+        Cz[i] += ld.moment_z * 1e3
+        Tn[i] += ld.torque
+        Fxn[i] += ld.Fx
+        mpt[i] += ld.mass
+    sup = [(_index(x, s.position), s.stiffness) for s in supports]
+    try:
+        py = beam.solve_plane(x, EI, Fy, Cy, sup)
+        pz = beam.solve_plane(x, EI, Fz, Cz, sup)
+        omega = beam.first_bending_frequency(x, EI, el_mass, mpt, sup)
+    except np.linalg.LinAlgError:
+        raise InputError(Problem(
+            "support", "the supports are too soft for this shaft (its stiffness matrix "
+                       "is singular): give stiffer supports or leave out stiffness (rigid)")
+        ) from None
+
+    # axial reaction at the support that takes it; internal torque and axial force
+    axial_idx = next((k for k, s in enumerate(supports) if s.axial), 0)
+    Rx = -float(Fxn.sum())
+    Fx_all = Fxn.copy()
+    Fx_all[sup[axial_idx][0]] += Rx
+    N_int = -np.cumsum(Fx_all)       # just right of each node
+    T_int = np.cumsum(Tn)
+
+    _clean(py, pz)
+    M_y, M_z = py.M_right / 1e3, pz.M_right / 1e3
+    M_y[-1], M_z[-1] = py.M_left[-1] / 1e3, pz.M_left[-1] / 1e3
+    M_res = np.hypot(M_y, M_z)
+    slope = np.hypot(py.theta, pz.theta)
+    w = np.hypot(py.w, pz.w)
+
+    n_cr = omega * 30.0 / math.pi
+
+    sup_res = []
+    for k, s in enumerate(supports):
+        i = sup[k][0]
+        sup_res.append(PointResult(s.position, s.name or f"support {k + 1}", py.w[i], pz.w[i],
+                                   w[i], slope[i], py.reactions[k], pz.reactions[k],
+                                   Rx if k == axial_idx else 0.0))
+    load_res = []
+    for k, ld in enumerate(loads):
+        i = _index(x, ld.position)
+        load_res.append(PointResult(ld.position, ld.name or f"load {k + 1}", py.w[i], pz.w[i],
+                                    w[i], slope[i]))
+
+    # ---------------------------------------------------------------- sections
+    sections = []
+    points: dict[float, list[str]] = {}
+    for i in range(1, len(steps)):
+        points.setdefault(round(bounds[i], 9), []).append(f"step {i}|{i + 1}")
+    for k, ld in enumerate(loads):
+        points.setdefault(round(ld.position, 9), []).append(ld.name or f"load {k + 1}")
+    for k, s in enumerate(supports):
+        points.setdefault(round(s.position, 9), []).append(s.name or f"support {k + 1}")
+    for xs in sorted(points):
+        i = _index(x, xs)
+        M = max(math.hypot(py.M_left[i], pz.M_left[i]), math.hypot(py.M_right[i], pz.M_right[i]))
+        T = max(abs(T_int[i]), abs(T_int[i - 1]) if i > 0 else 0.0) * 1e3
+        N = N_int[i] if abs(N_int[i]) >= abs(N_int[i - 1] if i > 0 else 0.0) else N_int[i - 1]
+        sections.append(_section(xs, " / ".join(points[xs]), float(M), float(T), float(N),
+                                 bounds, steps,
+                                 material, options))
+    critical = min(sections, key=lambda s: s.S) if sections else None
+    critical_static = min(sections, key=lambda s: s.S_static) if sections else None
+    return ShaftResult(
+        bounds[-1], float(el_mass.sum()), x.tolist(), M_y.tolist(), M_z.tolist(),
+        M_res.tolist(), py.V_right.tolist(), pz.V_right.tolist(), T_int.tolist(),
+        N_int.tolist(), py.w.tolist(), pz.w.tolist(), w.tolist(), slope.tolist(),
+        sup_res, load_res, sections, omega, n_cr, critical, critical_static)
+
+
+def _section(xs: float, label: str, M: float, T: float, N: float, bounds: list[float],
+             steps: list[Step], mat: Material, opt: Options) -> SectionResult:
+    """Stresses and safeties at x = xs.  M, T in N·mm, N in N."""
+    sb = mat.sigma_B
+    tol = 1e-9 * max(1.0, bounds[-1])
+    boundary = next((i for i in range(1, len(steps)) if abs(bounds[i] - xs) <= tol), None)
+    candidates = []          # (name, K_σ/K_dσ, K_τ/K_dτ)
+    fillet = (None, None, None)
+    outside = False
+    if boundary is not None:
+        left, right = steps[boundary - 1], steps[boundary]
+        small = left if left.diameter <= right.diameter else right
+        st = small
+        D = max(left.diameter, right.diameter)
+        t = (D - small.diameter) / 2.0
+        Kd_s, Kd_t = ST.size_factors(small.diameter, mat.alloy)
+        if t > 0:
+            Ks, Kt, out = ST.fillet_factors(t, left.fillet, small.diameter, sb)
+            outside = outside or out
+            fillet = (Ks, t, left.fillet)
+            candidates.append(("fillet", Ks / Kd_s, Kt / Kd_t))
+        if left.groove_K_sigma is not None:
+            candidates.append(("groove", left.groove_K_sigma / Kd_s,
+                               (left.groove_K_tau or left.groove_K_sigma) / Kd_t))
+        if small.press_fit:
+            # a hub or bearing ring on the smaller step abuts the shoulder: the edge of the
+            # fit is at this section ([Dunaev]: fillet and fit, the larger K/K_d counts)
+            rs, rt = ST.press_fit_ratios(small.diameter, sb)
+            candidates.append(("press fit", rs, rt))
+        rz = st.Rz
+    else:
+        st = steps[_step_at(bounds, xs)]
+        Kd_s, Kd_t = ST.size_factors(st.diameter, mat.alloy)
+        rz = st.Rz
+    if boundary is None or not candidates:
+        if st.keyway:
+            Ks, Kt = ST.keyway_factors(sb, st.keyway_cutter)
+            candidates.append(("keyway", Ks / Kd_s, Kt / Kd_t))
+        if st.press_fit:
+            rs, rt = ST.press_fit_ratios(st.diameter, sb)
+            candidates.append(("press fit", rs, rt))
+    if not candidates:
+        candidates.append(("smooth", 1.0 / Kd_s, 1.0 / Kd_t))
+    # several concentrators: the most severe counts ([Dunaev])
+    name_s, ratio_s, _ = max(candidates, key=lambda c: c[1])
+    ratio_t = max(c[2] for c in candidates)
+    d, bore = st.diameter, st.bore
+    A, W, Wp = ST.section_moduli(d, bore)
+    sigma_b = M / W
+    sigma_n = abs(N) / A
+    tau = T / Wp
+    if opt.torsion_cycle == "pulsating":
+        tau_a = tau_m = tau / 2.0
+    elif opt.torsion_cycle == "reversed":
+        tau_a, tau_m = tau, 0.0
+    else:
+        tau_a, tau_m = 0.0, tau
+    K_Fs, K_Ft = ST.surface_factors(rz if rz is not None else opt.Rz, sb)
+    fat = ST.fatigue_safety(sigma_b, sigma_n, tau_a, tau_m, ratio_s, ratio_t, K_Fs, K_Ft,
+                            opt.K_V, mat.sigma_m1, mat.tau_m1, mat.psi_sigma, mat.psi_tau)
+    sv = opt.peak_factor * ST.von_mises(sigma_b + sigma_n, tau)
+    S_static = mat.sigma_T / sv if sv > 0 else math.inf
+    return SectionResult(
+        xs, label, d, bore, M / 1e3, T / 1e3, N, sigma_b, sigma_n, tau_a, tau_m, sv,
+        S_static, name_s, ratio_s, ratio_t, K_Fs, fat.K_sigma_D, fat.K_tau_D, fat.S_sigma,
+        fat.S_tau, fat.S, outside, *fillet, st.keyway_cutter if st.keyway else "")
+
+
+def diameter_for(section: SectionResult, S_required: float) -> float:
+    """Diameter at which the section reaches ``S_required`` with the same factors: the
+    nominal stresses scale with 1/d³ (the size and concentration factors are kept)."""
+    if not math.isfinite(section.S) or section.S <= 0:
+        return section.d
+    return section.d * (S_required / section.S) ** (1.0 / 3.0)
