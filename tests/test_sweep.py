@@ -184,3 +184,10 @@ def test_domain_of_varied_values(tmp_path):
     spec = write_spec(tmp_path, BASE + '[sweep]\n"gear.helix_angle" = {values = [50.0]}\n')
     code, _, err = cli("sweep", spec)
     assert code == 2 and "outside the domain" in err
+
+
+def test_iso_method_is_refused_with_a_way_forward(tmp_path):
+    spec = write_spec(tmp_path, SMALL.replace("[sweep]", '[options]\nmethod = "ISO 6336:2019"\n\n[sweep]'))
+    code, out, err = cli("sweep", spec, "--format", "json")
+    assert code == 2 and out == "" and len(err.strip().splitlines()) == 1
+    assert "options.method" in err and "--emit-spec" in err

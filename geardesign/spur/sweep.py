@@ -543,6 +543,15 @@ def load_sweep(data: dict, source: str, vary=(), samples=None, seed=None):
                                  "\"design\"", "design"))
     if spec.data["gear"].get("internal"):
         raise InputError(Problem("gear.internal", "a sweep rates external pairs", True))
+    from geardesign.spur.strength.iso6336.spec import chosen
+
+    methods = chosen(spec.data["options"])
+    if methods != ["GOST 21354-87"]:
+        raise InputError(Problem("options.method" if len(methods) == 1 else "options.methods",
+                                 "a sweep rates by GOST 21354-87 (the vectorised kernel has no "
+                                 "ISO 6336 yet): remove the ISO method, then rate the ranked "
+                                 "variants by ISO 6336 with --emit-spec and geardesign run",
+                                 methods[0] if len(methods) == 1 else methods))
     return data, sw
 
 
