@@ -62,7 +62,8 @@ def main() -> int:
     for spec in sorted((ROOT / "specs").glob("*.toml")):
         if args.only not in spec.name:
             continue
-        med, best = wall([sys.executable, "-m", "geardesign", "run", str(spec), "--format",
+        command = "sweep" if "\n[sweep]" in spec.read_text(encoding="utf-8") else "run"
+        med, best = wall([sys.executable, "-m", "geardesign", command, str(spec), "--format",
                           args.format], args.runs)
         worst = max(worst, med)
         print(f"{spec.name:45s} {med:9.3f} {best:8.3f}")
