@@ -10,6 +10,10 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from geardesign.core.errors import InputError
 
 from geardesign.core.spec import load_toml
 from geardesign.spur import sweep as SW
@@ -191,3 +195,32 @@ def test_iso_method_is_refused_with_a_way_forward(tmp_path):
     code, out, err = cli("sweep", spec, "--format", "json")
     assert code == 2 and out == "" and len(err.strip().splitlines()) == 1
     assert "options.method" in err and "--emit-spec" in err
+
+
+_VALUES = {"gear.module": st.floats(0.05, 100.0), "gear.z1": st.integers(5, 1000),
+           "gear.z2": st.integers(5, 10000), "gear.x1": st.floats(-2.0, 5.0),
+           "gear.x2": st.floats(-2.0, 5.0), "gear.helix_angle": st.floats(0.0, 45.0),
+           "gear.face_width": st.floats(0.1, 5000.0),
+           "gear.center_distance": st.floats(1.0, 100000.0)}
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.dictionaries(st.sampled_from(sorted(_VALUES)), st.integers(1, 4), min_size=1,
+                       max_size=4), st.data())
+def test_any_sweep_in_the_domains_finishes_cleanly(dims, data):
+    """Whatever values inside the keys' domains a sweep varies, it finishes: an input error
+    for combinations the spec refuses, else counts that add up and finite ranked rows."""
+    table = {k: {"values": [data.draw(_VALUES[k]) for _ in range(n)]} for k, n in dims.items()}
+    raw = load_toml(SPEC)
+    raw["sweep"] = table
+    try:
+        base, sw = SW.load_sweep(raw, "s")
+    except InputError:
+        return
+    out = SW.run_sweep(base, sw)
+    c = out["counts"]
+    assert 0 <= c["feasible"] <= c["passed"] <= c["valid"] <= c["evaluated"] == sw.size
+    res = SW.sweep_result(base, sw, out).document()
+    for row in res["results"]["ranked"] + res["results"]["pareto"]:
+        assert all(v is None or isinstance(v, str) or math.isfinite(v) for v in row.values())
+        assert row["margin"] >= 1.0 - 1e-9
