@@ -16,6 +16,7 @@ from geardesign.core.registry import run_data
 from geardesign.spur.strength.iso6336 import part21 as P21
 from geardesign.spur.strength.iso6336 import tables as T
 from geardesign.spur.strength.iso6336.spec import SCUFFING
+from tests.conftest import SPECS
 from tests.helpers_cli import cli, run_bad, write_spec
 from tests.test_iso6336_inputs import DATA, GOOD
 
@@ -165,3 +166,38 @@ def test_helical_load_factor_range():
     assert P21.helical_load_factor(2.0) == 1.0
     assert P21.helical_load_factor(3.5) == pytest.approx(1.3)
     assert P21.helical_load_factor(4.2) == 1.3
+
+
+# ----------------------------------------------------------------------------- planetary
+
+PLANETARY = SPECS / "planetary_nrel_stage1_iso.toml"
+
+
+def test_planetary_meshes_are_rated_for_scuffing():
+    """Each mesh of the NREL stage 1 (three planets) gets its scuffing rating; gear 1 of both
+    meshes is the planet (17 teeth, fewer than the sun's 19), in mesh with the sun and the
+    ring: X_mp = (1 + 2)/2."""
+    from geardesign.core.registry import run
+
+    doc = run(PLANETARY).document()
+    for mesh in ("sun_planet", "planet_ring"):
+        r = doc["results"][f"strength_{mesh}"]
+        assert r["gear1"] == "planet" and r["X_mp"] == 1.5
+        assert r["theta_oil"] < r["theta_M"] < r["theta_int"] < r["theta_intS"]
+        assert r["S_intS"] == pytest.approx(r["theta_intS"] / r["theta_int"], rel=1e-12)
+    codes = {c["code"]: c["passed"] for c in doc["checks"]}
+    assert codes["SUN_PLANET_ISO_SCUFFING"] and codes["PLANET_RING_ISO_SCUFFING"]
+
+
+def test_planetary_scuffing_needs_the_iso_method(tmp_path):
+    text = PLANETARY.read_text(encoding="utf-8").replace('method = "ISO 6336:2019"',
+                                                         'method = "GOST 21354-87"')
+    lines = run_bad(tmp_path, text)
+    assert len(lines) == 1 and lines[0].startswith("s.toml: strength.scuffing: scuffing is rated")
+
+
+def test_planetary_scuffing_key_domain(tmp_path):
+    text = PLANETARY.read_text(encoding="utf-8").replace("fzg_load_stage = 14",
+                                                         "fzg_load_stage = 15")
+    lines = run_bad(tmp_path, text)
+    assert len(lines) == 1 and lines[0].startswith("s.toml: strength.scuffing.fzg_load_stage = 15")

@@ -814,6 +814,10 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
 
     st, op = d["strength"], d["operation"]
     rate = method(st["method"]).rate
+    if st.get("scuffing") is not None and st["method"] != "ISO 6336:2019":
+        raise InputError(Problem("strength.scuffing", "scuffing is rated by ISO/TS 6336-21 "
+                                 "with the ISO 6336 rating: set strength.method = "
+                                 "\"ISO 6336:2019\" (or remove [strength.scuffing])"))
     res.methods.append(st["method"])
     # a crown meshing a sun and a ring is loaded on both flanks (alternating bending)
     both = {"planet": train.scheme != "2K-H-stepped", "planet2": False}
@@ -846,7 +850,10 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
         setting = Setting(st["accuracy_grade"], st["tip_relief"], st["bearing_scheme"], ra,
                           overrides)
         pair = (mats[md.members[0]], mats[md.members[1]])
-        rating = rate_mesh(rate, md, pair, st["application_factor"], st["life_hours"],
+        mesh_rate = rate
+        if st["method"] == "ISO 6336:2019":
+            mesh_rate = _iso_rate(rate, st, train, meshes, md.members[0])
+        rating = rate_mesh(mesh_rate, md, pair, st["application_factor"], st["life_hours"],
                            st["regime"], (), peak_ratio, setting)
         mn = C.MESH_NAMES.get(mesh.name)
         sec = res.section(f"strength_{mesh.name}", f"Strength of the {mn} mesh "
@@ -870,6 +877,34 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
         for c in found:
             out.append(_rename(c, mesh.name, md.members))
     return out
+
+
+def _iso_rate(rate, st: dict, train: K.Train, meshes: list, pinion: str):
+    """The ISO 6336 rating of a mesh with the strength table's oil and, with
+    ``[strength.scuffing]``, the scuffing rating; the multiple mesh factor X_mp counts the
+    meshes of the mesh's gear 1: a central gear meshes with every planet, a planet crown
+    with each central gear it engages ([ISO6336-21], X_mp)."""
+    from geardesign.spur.strength.iso6336.rating import IsoSetting, ScuffingSetting
+
+    sc = st.get("scuffing")
+    scuffing = None
+    if sc is not None:
+        central = pinion in ("sun", "ring", "ring2")
+        n_p = train.planets if central else sum(
+            1 for m in meshes if pinion in (m.spec.pinion, m.spec.wheel))
+        scuffing = ScuffingSetting(
+            fzg_load_stage=sc["fzg_load_stage"], oil_temperature=sc["oil_temperature"],
+            nu100=sc["oil_viscosity_100"], density15=sc["oil_density"],
+            lubricant=sc["lubricant"], lubrication=sc["lubrication"], meshes=n_p,
+            structure=sc["structure"], B_M=sc["thermal_contact_coefficient"],
+            S_Smin=sc["S_Smin"])
+
+    def iso_rate(g, mats, duty, setting):
+        nu40 = st["lubricant_viscosity"] if st["lubricant_viscosity"] is not None else 220.0
+        iso = IsoSetting(grade=setting.grade, nu40=nu40, scuffing=scuffing)
+        return rate(g, mats, duty, setting, iso)
+
+    return iso_rate
 
 
 def _material_table(d: dict, member: str) -> dict:

@@ -141,6 +141,19 @@ LIMITS = Table("limits", "design limits", (
           symbol="|ϑ|max", default=4.0, gt=0.0, maximum=100.0),
 ), required=False, implicit=True)
 
+def _scuffing_table() -> Table:
+    """``[strength.scuffing]``: the oil of the scuffing rating of every mesh (ISO/TS 6336-21,
+    with ``method = "ISO 6336:2019"``); the table of the spur calculator's ``[iso.scuffing]``
+    without the mesh count, which the train gives (X_mp)."""
+    from geardesign.spur.strength.iso6336.spec import SCUFFING
+
+    return replace(SCUFFING, fields=tuple(f for f in SCUFFING.fields
+                                          if getattr(f, "key", None) not in ("meshes",
+                                                                             "driving")),
+                   description="scuffing of every mesh by the integral temperature method "
+                               "(ISO/TS 6336-21; needs method = \"ISO 6336:2019\")")
+
+
 STRENGTH = Table("strength", "strength to GOST 21354-87 (with [material] and a torque)", (
     Field("life_hours", "number", "required life", "h", "L_h", gt=0, maximum=1e7,
           example=20000.0),
@@ -163,6 +176,10 @@ STRENGTH = Table("strength", "strength to GOST 21354-87 (with [material] and a t
     Field("ring_form_factor", "number", "tooth form factor Y_FS of the rings, given instead of "
           "the rack-limit approximation", symbol="Y_FS", default=None, gt=1.0, maximum=10.0),
     Field("method", "string", "strength method", default="GOST 21354-87", choices=tuple(METHODS)),
+    Field("lubricant_viscosity", "number", "kinematic viscosity of the oil at 40 °C (ISO VG; "
+          "ISO 6336 Z_L, Z_v and scuffing)", "mm^2/s", "ν40", default=None, minimum=2,
+          maximum=3200, hint="220 (ISO VG 220) when not given"),
+    _scuffing_table(),
 ), required=False)
 
 

@@ -506,7 +506,7 @@ def _scuffing(R: _Rows, g, mats, setting, iso: IsoSetting, types, F_t: float, v:
     internal = bool(getattr(g, "internal", False))
     b, u, a = p.b_w, g.u, g.a_w
     a_wt, a_t = g.alpha_tw, g.alpha_t
-    R.put(Sc, "method", "integral temperature method (ISO/TS 6336-21:2017 = ISO/TR "
+    R.put(Sc, "scuffing_method", "integral temperature method (ISO/TS 6336-21:2017 = ISO/TR "
           "13989-2:2000)", None, "", "method", S21)
     # oil
     R.put(Sc, "fzg_load_stage", float(sc.fzg_load_stage), "-", "FZG", "FZG A/8.3/90 failure "
