@@ -190,10 +190,15 @@ def test_planetary_meshes_are_rated_for_scuffing():
 
 
 def test_planetary_scuffing_needs_the_iso_method(tmp_path):
+    """Under GOST 21354-87 the scuffing table is not rated, and a warning says so."""
     text = PLANETARY.read_text(encoding="utf-8").replace('method = "ISO 6336:2019"',
                                                          'method = "GOST 21354-87"')
-    lines = run_bad(tmp_path, text)
-    assert len(lines) == 1 and lines[0].startswith("s.toml: strength.scuffing: scuffing is rated")
+    code, out, err = cli("run", write_spec(tmp_path, text), "--format", "json")
+    assert "Traceback" not in err
+    doc = json.loads(out)
+    c = next(c for c in doc["checks"] if c["code"] == "SCUFFING_NOT_RATED")
+    assert not c["passed"] and c["severity"] == "warning" and "strength.method" in c["message"]
+    assert not any("ISO_SCUFFING" in c["code"] for c in doc["checks"])
 
 
 def test_planetary_scuffing_key_domain(tmp_path):

@@ -814,10 +814,14 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
 
     st, op = d["strength"], d["operation"]
     rate = method(st["method"]).rate
+    out = []
     if st.get("scuffing") is not None and st["method"] != "ISO 6336:2019":
-        raise InputError(Problem("strength.scuffing", "scuffing is rated by ISO/TS 6336-21 "
-                                 "with the ISO 6336 rating: set strength.method = "
-                                 "\"ISO 6336:2019\" (or remove [strength.scuffing])"))
+        from geardesign.core.result import check
+
+        out.append(check("SCUFFING_NOT_RATED", False, "warning",
+                         "[strength.scuffing] is not rated: scuffing is rated by ISO/TS 6336-21 "
+                         "with the ISO 6336 rating; set strength.method = \"ISO 6336:2019\"",
+                         "", None, None, "[ISO6336-21]"))
     res.methods.append(st["method"])
     # a crown meshing a sun and a ring is loaded on both flanks (alternating bending)
     both = {"planet": train.scheme != "2K-H-stepped", "planet2": False}
@@ -841,7 +845,6 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
                  f"data used, {key}", "library" if m.grade else "spec")
         msec.add(f"HB_{key}", m.HB, "HB", f"HB_{key}", "surface hardness in HB (converted)",
                  "GOST 21354-87 (ZPCIL fit)")
-    out = []
     for mesh, md in zip(meshes, duties):
         overrides = {}
         if mesh.spec.internal and st["ring_form_factor"] is not None:
