@@ -265,7 +265,10 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
     N = R.put(F, "N", duty.n1 / n_E1, "-", "N", "resonance ratio n1/n_E1", S1)
     N_S = R.put(F, "N_S", P1.lower_resonance_limit(line_load), "-", "N_S",
                 "lower limit of the main resonance range", S1)
-    K_v_calc, rng = P1.dynamic_factor(N, N_S, c_p, f_pb - y_a, f_fa - y_f, C_a, line_load,
+    # running-in removes at most the deviation itself (160/σ_Hlim·f_pb exceeds f_pb for
+    # σ_Hlim < 160 MPa): the effective deviations are not negative
+    K_v_calc, rng = P1.dynamic_factor(N, N_S, c_p, max(f_pb - y_a, 0.0), max(f_fa - y_f, 0.0),
+                                      C_a, line_load,
                                       g.eps_gamma)
     R.put(F, "K_v_range", rng, None, "range", "resonance range of K_v", S1)
     K_v = R.factor(F, "K_v", K_v_calc, "-", "K_v", "dynamic factor (method B)", S1)
@@ -304,7 +307,7 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
     Z_eps = R.factor("iso6336_contact", "Z_eps", lambda: P2.z_eps(g.eps_alpha, g.eps_beta, helical),
                      "-", "Z_ε", "contact ratio factor", S2)
     F_tH_b = F_t * K_A * K_g * K_v * K_Hb / b
-    f_eff = max(f_pb, f_fa) - y_a
+    f_eff = max(max(f_pb, f_fa) - y_a, 0.0)
     K_alpha = P1.transverse_load_factor(g.eps_gamma, c_ga, f_eff, F_tH_b)
     KHa_max = R.put(F, "K_Halpha_max", P1.transverse_limit_contact(g.eps_gamma, g.eps_alpha, Z_eps),
                     "-", "K_Hα,max", "upper limit of K_Hα: ε_γ/(ε_α Z_ε²)", S1)

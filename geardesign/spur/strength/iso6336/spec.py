@@ -23,9 +23,9 @@ def _gear(who: str) -> Table:
         Field("quality", "string", "material quality grade of ISO 6336-5", default="MQ",
               choices=T.QUALITIES),
         Field("sigma_Hlim", "number", "endurance limit for contact (instead of the ISO 6336-5 "
-              "line)", "MPa", "σ_Hlim", default=None, gt=0, maximum=5000),
+              "line)", "MPa", "σ_Hlim", default=None, minimum=150, maximum=5000),
         Field("sigma_Flim", "number", "endurance limit for bending (instead of the ISO 6336-5 "
-              "line; σ_FE = 2σ_Flim)", "MPa", "σ_Flim", default=None, gt=0, maximum=3000),
+              "line; σ_FE = 2σ_Flim)", "MPa", "σ_Flim", default=None, minimum=30, maximum=3000),
         Field("Rz_flank", "number", "mean peak-to-valley roughness of the flank", "µm", "R_zH",
               default=None, gt=0, maximum=100, hint="6·roughness_Ra of [material] when not given"),
         Field("Rz_root", "number", "mean peak-to-valley roughness of the root fillet", "µm",
