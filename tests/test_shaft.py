@@ -170,8 +170,10 @@ def test_equilibrium_free_ends_and_positive_safeties(case):
     big = max(1.0, max(abs(m) for m in r.M))
     force = max([1.0] + [abs(ld.Fy) + abs(ld.Fz) for ld in loads])
     # ΣF = 0 in both planes and axially
-    assert abs(sum(s.R_y for s in r.supports) + sum(ld.Fy for ld in loads)) < 1e-6 * force
-    assert abs(sum(s.R_z for s in r.supports) + sum(ld.Fz for ld in loads)) < 1e-6 * force
+    # 1e-5 of the load: a random shaft may put a sub-millimetre element beside a long thick
+    # step (stiffness ratio ~1e10), and the reactions from the residual keep ~6 digits
+    assert abs(sum(s.R_y for s in r.supports) + sum(ld.Fy for ld in loads)) < 1e-5 * force
+    assert abs(sum(s.R_z for s in r.supports) + sum(ld.Fz for ld in loads)) < 1e-5 * force
     assert abs(sum(s.R_x for s in r.supports) + sum(ld.Fx for ld in loads)) < 1e-6
     # moments vanish at the free ends (no couple is applied there)
     assert abs(r.M[0]) < 1e-6 * big and abs(r.M[-1]) < 1e-6 * big

@@ -846,6 +846,19 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
         msec.add(f"HB_{key}", m.HB, "HB", f"HB_{key}", "surface hardness in HB (converted)",
                  "GOST 21354-87 (ZPCIL fit)")
     for mesh, md in zip(meshes, duties):
+        if st["method"] == "ISO 6336:2019":
+            from geardesign.spur.calculator import ratable
+
+            if not ratable(mesh.geom):
+                from geardesign.core.result import check
+
+                out.append(check(
+                    f"{mesh.name.upper()}_STRENGTH_NOT_RATED", False, "error",
+                    f"{C.MESH_NAMES.get(mesh.name)}: the strength was not rated: this mesh "
+                    f"cannot run as computed (ε_α < 1, a tip beyond the mate's tangency point "
+                    f"or a pointed tooth; see the failed geometry checks); correct the "
+                    f"geometry first", "", None, None, "[ISO6336-2]"))
+                continue
         overrides = {}
         if mesh.spec.internal and st["ring_form_factor"] is not None:
             overrides["Y_FS2"] = st["ring_form_factor"]

@@ -567,8 +567,8 @@ def _add_gost_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inp
                                       b_bending, geom.a_w, k_contact))
 
 
-def _ratable(g) -> bool:
-    """Whether an internal pair has the geometry a strength rating needs: a continuous
+def ratable(g) -> bool:
+    """Whether a pair (an internal pair in particular) has the geometry a strength rating needs: a continuous
     transverse mesh (ε_α >= 1, which the contact-ratio factors of both methods presume),
     both active limits before the tangency points and teeth that are not pointed."""
     return (g.eps_alpha >= 1.0 and g.g1.rho_p > 0.0 and g.g2.rho_p > 0.0
@@ -659,13 +659,18 @@ def compute(spec: ValidatedSpec) -> Result:
             "UNITS_ANGLE", False, "warning",
             f"helix_angle = {beta:.6g}° is below 1°: check the units (degrees; {beta:.6g} rad "
             f"would be {math.degrees(beta):.2f}°)", "", beta, 1.0, "plausibility"))
-    if strength is not None and internal and not _ratable(geom):
+    from geardesign.spur.strength.iso6336.spec import ISO_NAME
+
+    opts = spec.data.get("options") or {}
+    iso = ISO_NAME in (opts.get("methods") or [opts.get("method")])
+    if strength is not None and (internal or iso) and not ratable(geom):
         res.checks.append(check(
             "STRENGTH_NOT_RATED", False, "error",
-            "the strength was not rated: this internal pair cannot mesh as computed (ε_α "
+            f"the strength was not rated: this {'internal ' if internal else ''}pair cannot "
+            f"mesh as computed (ε_α "
             "< 1, a tip beyond the mate's tangency point, or a pointed tooth; see the failed "
             "geometry checks); correct the geometry first", "",
-            None, None, S.G19274))
+            None, None, S.G19274 if internal else "[ISO6336-2]"))
     elif strength is not None:
         add_strength(res, geom, spec, strength)
     return res
