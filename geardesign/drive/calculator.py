@@ -275,7 +275,7 @@ def _analyse_shafts(shafts: list, stages: list, runs: list[StageRun], bearings: 
                  for j, (g, which, ld) in enumerate(shaft_loads(sh, k, runs))]
         brs = {side: by_side[(idx, side, f"shaft[{k}]")] for side in ("a", "b")}
         shaft_runs.append(SA.shaft_run(k, sh, gears, brs, speeds[idx - 1], rot[idx - 1],
-                                       len(runs) + 1, peak, modules))
+                                       len(runs) + 1, peak, modules, duty.K_A))
     mis = SA.misalignment({sr.idx: sr for sr in shaft_runs}, runs)
     kh_rows = SA.rate_with_misalignment(mis, stages, runs, duty, run_spur)
     return shaft_runs, kh_rows, mis

@@ -111,7 +111,8 @@ def _coupling(sh: dict, span) -> float:
 
 
 def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed: float,
-              rotation: int, n_shafts: int, peak: float, stage_modules: dict) -> ShaftRun:
+              rotation: int, n_shafts: int, peak: float, stage_modules: dict,
+              K_A: float = 1.0) -> ShaftRun:
     """Analyse shaft ``sh`` (the k-th [[shaft]]) with its gears; ``bearings`` maps "a"/"b"
     to the bearing calculator's result."""
     key = f"shaft[{k}]"
@@ -137,6 +138,9 @@ def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed:
     loads = []
     for g in gears:
         (fx, fy, fz), (px, py, _) = gear_force(g.load, rotation)
+        # round-off (cos 90° = 6e-17) is no load: the spec refuses magnitudes below 1e-6
+        fx, fy, fz = (v if abs(v) >= 1e-6 else 0.0 for v in (fx, fy, fz))
+        px, py = (v if abs(v) >= 1e-6 else 0.0 for v in (px, py))
         mass = sh["gear"][g.index].get("mass")
         if mass is None:
             # a solid disc of the pitch diameter and the face width
@@ -182,7 +186,7 @@ def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed:
     result = SC.report(spec, m, r)
     run = ShaftRun(idx, key, sh["name"] or f"shaft {idx}", start, speed, rotation, gears, r,
                    result)
-    run.connections = [_connection(run, sh, j, c, m["material"], steps, span)
+    run.connections = [_connection(run, sh, j, c, m["material"], steps, span, K_A)
                        for j, c in enumerate(sh["key"] or [])]
     return run
 
@@ -191,7 +195,8 @@ CONNECTION_TABLE = {"key": "key", "spline": "spline", "fit": "fit"}
 OWN_KEYS = ("type", "position", "hub_length", "name", "application_factor")
 
 
-def _connection(run: ShaftRun, sh: dict, j: int, c: dict, material, steps, span) -> dict:
+def _connection(run: ShaftRun, sh: dict, j: int, c: dict, material, steps, span,
+                K_A: float) -> dict:
     key = f"{run.key}.key[{j}]"
     z = c["position"]
     _inside(span, z, f"{key}.position", "the hub")
@@ -224,7 +229,7 @@ def _connection(run: ShaftRun, sh: dict, j: int, c: dict, material, steps, span)
         table.setdefault("shaft_yield", material.sigma_T)
     data = {"kind": "connection",
             "title": c["name"] or f"{run.name}, {typ} at z = {_fmt(z)} mm",
-            "load": {"torque": T, "application_factor": c["application_factor"] or 1.0},
+            "load": {"torque": T, "application_factor": c["application_factor"] or K_A},
             typ: table}
     try:
         calc, spec = load_data(data, key)
@@ -234,7 +239,7 @@ def _connection(run: ShaftRun, sh: dict, j: int, c: dict, material, steps, span)
                                   if p.key.startswith(typ + ".") else f"{key}: {p.key}",
                                   p.message, p.value) for p in exc.problems]) from None
     return dict(j=j, name=c["name"] or f"{typ} at z = {_fmt(z)} mm", type=typ, z=z, d=d, T=T,
-                K_A=c["application_factor"] or 1.0, result=res)
+                K_A=c["application_factor"] or K_A, result=res)
 
 
 def _utilisation(res: Result) -> tuple[float | None, str]:
@@ -287,10 +292,28 @@ def _iso_factors(res: Result) -> dict | None:
     return res.document()["results"].get("iso6336_factors")
 
 
+def _iso_K_Hbeta(data: dict, sr, duty, where: str, f_sh: float) -> float:
+    """K_Hβ of ISO 6336-1 method C of a stage rated to GOST, with ``f_sh`` (informative):
+    the ISO rating record of the stage spec, no report."""
+    from geardesign.drive.stages import spur_data
+    from geardesign.spur.strength.iso6336.report import iso_rating
+
+    d = spur_data(data, sr.T_in, sr.n_in, duty, where)
+    iso = d.get("iso")
+    if not isinstance(iso, dict):
+        iso = d["iso"] = {}
+    iso["f_sh"] = f_sh
+    opts = d.setdefault("options", {})
+    opts.pop("methods", None)
+    opts["method"] = ISO_METHOD
+    _, spec = load_data(d, where)
+    return iso_rating(spec).v["K_Hbeta"]
+
+
 def rate_with_misalignment(mis: dict, stages: list, stage_runs: list, duty, run_spur) -> list:
-    """Rerun the spur stages with ``iso.f_sh`` from the shafts: an ISO 6336 stage is rated
-    with it (its result replaced), a GOST stage gets an informative ISO 6336 K_Hβ next to
-    its chart value.  Rows of the K_Hβ table."""
+    """Rate the spur stages with ``iso.f_sh`` from the shafts: an ISO 6336 stage is rerun
+    with it (its result replaced), a GOST stage gets the K_Hβ of ISO 6336-1 method C next
+    to its chart value (informative).  Rows of the K_Hβ table."""
     rows = []
     for i, m in mis.items():
         sr = stage_runs[i - 1]
@@ -299,43 +322,37 @@ def rate_with_misalignment(mis: dict, stages: list, stage_runs: list, duty, run_
         iso_before = before.get("iso6336_factors")
         gost = before.get("factors")
         f_sh = min(m["f_sh"], F_SH_MAX)
-        d = copy.deepcopy(data)
-        iso = d.get("iso")
-        if not isinstance(iso, dict):
-            iso = d["iso"] = {}
-        iso["f_sh"] = f_sh
-        if iso_before is None:
-            opts = d.get("options")
-            if not isinstance(opts, dict):
-                opts = d["options"] = {}
-            opts.pop("methods", None)
-            opts["method"] = ISO_METHOD
-        note = ""
-        try:
+        capped = f" (capped at {F_SH_MAX:g} µm)" if m["f_sh"] > F_SH_MAX else ""
+        K_new, note = None, ""
+        if iso_before is not None:
+            d = copy.deepcopy(data)
+            iso = d.get("iso")
+            if not isinstance(iso, dict):
+                iso = d["iso"] = {}
+            iso["f_sh"] = f_sh
             new = run_spur(d, sr.T_in, sr.n_in, duty, sr.efficiency, where)
             K_new = _iso_factors(new.result)["K_Hbeta"]
-        except InputError as exc:
-            new, K_new = None, None
-            note = f"ISO 6336 not applicable: {exc.problems[0].message}"
-        if m["f_sh"] > F_SH_MAX:
-            note = (note + "; " if note else "") + f"f_sh capped at {F_SH_MAX:g} µm"
-        if iso_before is not None and new is not None:
             new.result.checks.append(check(
                 "F_SH_FROM_SHAFTS", False, "info",
                 f"the drive sets iso.f_sh = {f_sh:.3g} µm from the slopes of the analysed "
-                f"shafts (instead of the formula of ISO 6336-1 7.6.3: "
+                f"shafts{capped} (the formula of ISO 6336-1 7.6.3 gives "
                 f"{iso_before['f_sh']:.3g} µm)", "", f_sh, None, "drive"))
             sr.result, sr.margin, sr.margin_of = new.result, new.margin, new.margin_of
             rows.append(dict(stage=i, method="ISO 6336:2019", b=m["b"],
                              f_sh_formula=iso_before["f_sh"], f_sh=m["f_sh"],
                              K_Hbeta_before=iso_before["K_Hbeta"], K_Hbeta_shafts=K_new,
-                             note=note or "stage rated with f_sh from the shafts"))
+                             note="stage rated with f_sh from the shafts" + capped))
         if gost is not None:
+            if K_new is None:
+                try:
+                    K_new = _iso_K_Hbeta(data, sr, duty, where, f_sh)
+                except InputError as exc:
+                    note = f"ISO 6336 not applicable: {exc.problems[0].message}"
             rows.append(dict(stage=i, method="GOST 21354-87", b=m["b"], f_sh_formula=None,
                              f_sh=m["f_sh"], K_Hbeta_before=gost["K_Hbeta"],
-                             K_Hbeta_shafts=K_new if iso_before is None else K_new,
+                             K_Hbeta_shafts=K_new,
                              note=note or "informative: ISO 6336-1 method C with f_sh; the "
-                                          "GOST rating keeps its chart value"))
+                                          "GOST rating keeps its chart value" + capped))
     return rows
 
 
