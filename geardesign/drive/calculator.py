@@ -17,7 +17,6 @@ from geardesign.core.errors import InputError, Problem
 from geardesign.core.registry import run_data
 from geardesign.core.result import DataTable, Result, check
 from geardesign.core.spec import ValidatedSpec, load_toml
-from geardesign.drive import shaft_analysis as SA
 from geardesign.drive import split as SPLIT
 from geardesign.drive.shafts import reactions
 from geardesign.drive.stages import ADAPTERS, Duty, StageRun
@@ -245,6 +244,8 @@ def compute(spec: ValidatedSpec) -> Result:
     if d["shaft"]:
         _bearing_report(res, bearings, load["life_hours"])
     if layout is not None:
+        from geardesign.drive import shaft_analysis as SA
+
         SA.report(res, *layout)
     return res
 
@@ -253,6 +254,7 @@ def _analyse_shafts(shafts: list, stages: list, runs: list[StageRun], bearings: 
                     n_m: float, duty: Duty, motor: dict):
     """The shafts with steps by the shaft calculator, their connections, and the spur
     stages rated with the misalignment from the shafts (:mod:`.shaft_analysis`)."""
+    from geardesign.drive import shaft_analysis as SA
     from geardesign.drive.stages import run_spur
 
     rot = _shaft_rotation(runs)
