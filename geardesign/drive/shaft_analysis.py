@@ -147,7 +147,8 @@ def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed:
             b = stage_modules.get(g.stage, (None, 0.0))[1]
             mass = RHO_STEEL * math.pi / 4.0 * (2.0 * g.load.r) ** 2 * b * 1e-9
         loads.append(Load(g.load.z - start, Fy=fx, Fz=fy, Fx=fz, torque=g.torque,
-                          moment_y=-px * fz / 1e3, moment_z=-py * fz / 1e3, mass=mass,
+                          moment_y=-px * fz / 1e3 + 0.0, moment_z=-py * fz / 1e3 + 0.0,
+                          mass=mass,
                           name=f"gear of stage {g.stage}",
                           module=stage_modules.get(g.stage, (None, 0.0))[0]))
     T_rest = -sum(g.torque for g in gears)
