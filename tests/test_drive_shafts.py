@@ -291,3 +291,18 @@ def test_three_shaft_drive_cold_run_is_quick(tmp_path):
         assert proc.returncode in (0, 1), proc.stderr
     assert len(json.loads(proc.stdout)["results"]["shafts"]) == 3
     assert best < 0.3, best
+
+
+def test_an_analysed_shaft_needs_all_its_gears():
+    d = _fast()
+    d["shaft"][1]["gear"].pop(1)
+    d["shaft"][1]["key"].pop(1)
+    assert _problem(d) == ("shaft[1].gear: shaft 2 is analysed (it has steps), so the "
+                           "torque's path needs all its gears: add a [[shaft.gear]] for the "
+                           "input member of stage 2")
+
+
+def test_a_key_on_a_shaft_without_steps():
+    d = _fast()
+    d["shaft"][1].pop("step")
+    assert _problem(d).startswith("shaft[1].step: missing; the connections")

@@ -195,12 +195,13 @@ def compute(spec: ValidatedSpec) -> Result:
                              thermal.bearing_oil if thermal is not None else None) \
         if d["shaft"] else None
     layout = None
+    for k, sh in enumerate(d["shaft"] or []):
+        if sh["key"] and not sh["step"]:
+            raise InputError(Problem(f"shaft[{k}].step", "missing; the connections "
+                                     "[[shaft.key]] need the shaft's steps [[shaft.step]] "
+                                     "(diameters, torque)"))
     if any(sh["step"] for sh in d["shaft"] or []):
         layout = _analyse_shafts(d["shaft"], stages, runs, bearings, n_m, duty, motor)
-    elif any(sh["key"] for sh in d["shaft"] or []):
-        k = next(i for i, sh in enumerate(d["shaft"]) if sh["key"])
-        raise InputError(Problem(f"shaft[{k}].step", "missing; the connections [[shaft.key]] "
-                                 "need the shaft's steps [[shaft.step]] (diameters, torque)"))
     res.tables.append(DataTable("stages", "Stages", [
         ("stage", "stage", None), ("name", "name", None), ("kind", "type", None),
         ("ratio", "u", "-"), ("efficiency", "η", "-"), ("T_in", "T_in", "N·m"),
@@ -271,6 +272,15 @@ def _analyse_shafts(shafts: list, stages: list, runs: list[StageRun], bearings: 
         if not sh["step"]:
             continue
         idx = sh["index"]
+        members = {(g["stage"], 0 if g["stage"] == idx else 1) for g in sh["gear"]}
+        need = {(idx - 1, 1)} if idx > len(runs) else (
+            {(idx, 0)} if idx == 1 else {(idx - 1, 1), (idx, 0)})
+        if not need <= members:
+            names = " and ".join(f"the {'input' if w == 0 else 'output'} member of stage {s_}"
+                                 for s_, w in sorted(need - members))
+            raise InputError(Problem(f"shaft[{k}].gear", f"shaft {idx} is analysed (it has "
+                                     f"steps), so the torque's path needs all its gears: add "
+                                     f"a [[shaft.gear]] for {names}"))
         gears = [SA.GearOnShaft(j, g["stage"], which, ld,
                                 -runs[g["stage"] - 1].T_in if which == 0
                                 else runs[g["stage"] - 1].T_out)

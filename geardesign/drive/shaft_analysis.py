@@ -13,7 +13,8 @@ Mesh misalignment of a spur stage ([ISO6336-1] 7.6: f_sh is the equivalent misal
 the plane of action caused by the deformation of the shafts): the slopes of the pinion and
 the wheel shaft at their gears, θ = (dw_x/dz, dw_y/dz), give the relative slope
 Δθ = θ_pinion − θ_wheel; its component along the line of action in the transverse plane
-(the direction n of the mesh force, normal to the lines of contact) times the face width is
+(the direction n of the transverse mesh force, along which the flanks approach each other,
+as F_β is measured) times the face width is
 
 .. math:: f_{sh} = |Δθ · n| \\, b \\quad [µm].
 
