@@ -362,6 +362,10 @@ def rate_with_misalignment(mis: dict, stages: list, stage_runs: list, duty, run_
 
 
 def report(res: Result, shaft_runs: list, kh_rows: list, mis: dict) -> None:
+    """Summary tables, nested reports and checks of the analysed shafts and connections."""
+    res.methods.append("shaft calculator")
+    if any(sr.connections for sr in shaft_runs):
+        res.methods.append("connection calculator")
     rows, gear_rows, conn_rows = [], [], []
     for sr in shaft_runs:
         r = sr.r
