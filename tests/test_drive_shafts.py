@@ -306,3 +306,23 @@ def test_a_key_on_a_shaft_without_steps():
     d = _fast()
     d["shaft"][1].pop("step")
     assert _problem(d).startswith("shaft[1].step: missing; the connections")
+
+
+def test_unknown_connection_key_names_both_tables():
+    d = _fast()
+    d["shaft"][2]["key"][0]["bogus"] = 1
+    text = _problem(d)
+    assert text.startswith("shaft[2].key[0].bogus = 1: unknown key in [fit]; allowed: diameter")
+    assert text.endswith("; or the drive's type, position, hub_length, name, application_factor")
+
+
+def test_a_failing_shaft_fails_the_drive_with_its_advice():
+    d = _fast()
+    d["shaft"][1]["step"][4]["diameter"] = 30.0      # the stage 2 pinion's seat
+    doc = run_data(d).document()
+    c = next(c for c in doc["checks"] if c["code"] == "SHAFT_2")
+    assert not c["passed"] and c["severity"] == "error" and doc["verdict"] == "fail"
+    assert c["message"].startswith("intermediate shaft fails (positions x from the shaft's "
+                                   "left end: z = x − 12 mm): FATIGUE: fatigue safety S = ")
+    assert "increase the diameter at gear of stage 2 (x = 152 mm) from 30 to at least" in \
+        c["message"]

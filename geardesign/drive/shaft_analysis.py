@@ -237,9 +237,12 @@ def _connection(run: ShaftRun, sh: dict, j: int, c: dict, material, steps, span,
         calc, spec = load_data(data, key)
         res = calc.compute(spec)
     except InputError as exc:
+        own = ", ".join(OWN_KEYS)
         raise InputError([Problem(f"{key}.{p.key.split('.', 1)[1]}"
                                   if p.key.startswith(typ + ".") else f"{key}: {p.key}",
-                                  p.message, p.value) for p in exc.problems]) from None
+                                  p.message + (f"; or the drive's {own}"
+                                               if p.message.startswith("unknown key") else ""),
+                                  p.value) for p in exc.problems]) from None
     return dict(j=j, name=c["name"] or f"{typ} at z = {_fmt(z)} mm", type=typ, z=z, d=d, T=T,
                 K_A=c["application_factor"] or K_A, result=res)
 
@@ -421,7 +424,9 @@ def report(res: Result, shaft_runs: list, kh_rows: list, mis: dict) -> None:
         c = sr.r.critical
         res.checks.append(check(
             f"SHAFT_{sr.idx}", not failed, "error",
-            f"{sr.name} fails: " + "; ".join(f"{x.code}: {x.message}" for x in failed),
+            f"{sr.name} fails (positions x from the shaft's left end: z = x "
+            f"{'+' if sr.start >= 0 else '−'} {abs(sr.start):g} mm): "
+            + "; ".join(f"{x.code}: {x.message}" for x in failed),
             f"{sr.name}: fatigue S = {c.S:.2f} at {c.label}, n_cr/n = "
             f"{sr.r.n_cr / sr.speed:.1f}" + (f" (warnings: {', '.join(warn)})" if warn else ""),
             c.S if c and math.isfinite(c.S) else None,
