@@ -193,7 +193,6 @@ def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed:
     return run
 
 
-CONNECTION_TABLE = {"key": "key", "spline": "spline", "fit": "fit"}
 OWN_KEYS = ("type", "position", "hub_length", "name", "application_factor")
 
 
@@ -204,12 +203,12 @@ def _connection(run: ShaftRun, sh: dict, j: int, c: dict, material, steps, span,
     _inside(span, z, f"{key}.position", "the hub")
     extra = {k: v for k, v in c.items() if k not in OWN_KEYS}
     L_hub = c["hub_length"]
-    for name in ("length",):
-        if name in extra and isinstance(extra[name], (int, float)) and extra[name] > L_hub:
-            what = {"key": "key", "spline": "engaged spline", "fit": "fit"}[c["type"]]
-            raise InputError.at(f"{key}.{name}", extra[name],
-                                f"the {what} is longer than its hub (hub_length = "
-                                f"{_fmt(L_hub)} mm): give length <= {_fmt(L_hub)}")
+    length = extra.get("length")
+    if isinstance(length, (int, float)) and not isinstance(length, bool) and length > L_hub:
+        what = {"key": "key", "spline": "engaged spline", "fit": "fit"}[c["type"]]
+        raise InputError.at(f"{key}.length", length,
+                            f"the {what} is longer than its hub (hub_length = "
+                            f"{_fmt(L_hub)} mm): give length <= {_fmt(L_hub)}")
     r = run.r
     x = z - run.start
     i = min(range(len(r.x)), key=lambda n: abs(r.x[n] - x))
