@@ -326,3 +326,16 @@ def test_a_failing_shaft_fails_the_drive_with_its_advice():
                                    "left end: z = x − 12 mm): FATIGUE: fatigue safety S = ")
     assert "increase the diameter at gear of stage 2 (x = 152 mm) from 30 to at least" in \
         c["message"]
+
+
+def test_informative_K_Hbeta_is_the_spur_calculators_iso_rating(golden):
+    """The GOST stage's informative K_Hβ is what the spur calculator's own ISO 6336 rating
+    gives for the stage (as the drive loads it) with iso.f_sh set: one formula."""
+    row = next(r for r in golden["results"]["face_load"] if r["method"] == "GOST 21354-87")
+    spec = copy.deepcopy(golden["results"]["stage_reports"][row["stage"] - 1]["inputs"])
+    spec["options"] = {"method": "ISO 6336:2019"}
+    spec.setdefault("iso", {})["f_sh"] = row["f_sh"]
+    doc = run_data(spec).document()
+    assert doc["results"]["iso6336_factors"]["K_Hbeta"] == pytest.approx(
+        row["K_Hbeta_shafts"], rel=1e-12)
+    assert doc["results"]["iso6336_factors"]["f_sh"] == pytest.approx(row["f_sh"])
