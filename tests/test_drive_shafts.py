@@ -339,3 +339,28 @@ def test_informative_K_Hbeta_is_the_spur_calculators_iso_rating(golden):
     assert doc["results"]["iso6336_factors"]["K_Hbeta"] == pytest.approx(
         row["K_Hbeta_shafts"], rel=1e-12)
     assert doc["results"]["iso6336_factors"]["f_sh"] == pytest.approx(row["f_sh"])
+
+
+@pytest.mark.parametrize("where, value, line", [
+    (("bearing_b",), 170.0, "shaft[0].bearing_b = 170.0: bearing B lies outside the shaft "
+                            "steps: must be within -80…160 mm (start + the step lengths)"),
+    (("coupling",), -90.0, "shaft[0].coupling = -90.0: the coupling lies outside the shaft "
+                           "steps: must be within -80…160 mm (start + the step lengths)"),
+    (("key", 0, "position"), 161.0, "shaft[0].key[0].position = 161.0: the hub lies outside "
+                                    "the shaft steps: must be within -80…160 mm (start + the "
+                                    "step lengths)"),
+])
+def test_positions_outside_the_steps(where, value, line):
+    d = _fast()
+    t = d["shaft"][0]
+    for k in where[:-1]:
+        t = t[k]
+    t[where[-1]] = value
+    assert _problem(d) == line
+
+
+def test_fit_longer_than_its_hub():
+    d = _fast()
+    d["shaft"][2]["key"][0]["length"] = 90.0
+    assert _problem(d) == ("shaft[2].key[0].length = 90.0: the fit is longer than its hub "
+                           "(hub_length = 80 mm): give length <= 80")
