@@ -3,6 +3,11 @@
 from __future__ import annotations
 
 import math
+import os
+
+# as the command line does (geardesign/cli.py): the beam problems are small, and OpenBLAS's
+# threads make them slow on a busy machine; read when numpy is first imported
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 from pathlib import Path
 
 import pytest

@@ -191,6 +191,17 @@ def compute(spec: ValidatedSpec) -> Result:
     sec.add("n_out", out.n_out, "min^-1", "n_out", "output speed", "drive")
     sec.add("P_out", out.T_out * out.n_out * math.pi / 30000.0, "kW", "P_out", "output power",
             "drive")
+    bearings = _bearing_runs(d["shaft"], runs, n_m, load["life_hours"],
+                             thermal.bearing_oil if thermal is not None else None) \
+        if d["shaft"] else None
+    layout = None
+    for k, sh in enumerate(d["shaft"] or []):
+        if sh["key"] and not sh["step"]:
+            raise InputError(Problem(f"shaft[{k}].step", "missing; the connections "
+                                     "[[shaft.key]] need the shaft's steps [[shaft.step]] "
+                                     "(diameters, torque)"))
+    if any(sh["step"] for sh in d["shaft"] or []):
+        layout = _analyse_shafts(d["shaft"], stages, runs, bearings, n_m, duty, motor)
     res.tables.append(DataTable("stages", "Stages", [
         ("stage", "stage", None), ("name", "name", None), ("kind", "type", None),
         ("ratio", "u", "-"), ("efficiency", "η", "-"), ("T_in", "T_in", "N·m"),
@@ -232,9 +243,54 @@ def compute(spec: ValidatedSpec) -> Result:
     if thermal is not None:
         LUB.report(res, thermal, stages)
     if d["shaft"]:
-        _shafts(res, d["shaft"], runs, n_m, load["life_hours"],
-                thermal.bearing_oil if thermal is not None else None)
+        _bearing_report(res, bearings, load["life_hours"])
+    if layout is not None:
+        from geardesign.drive import shaft_analysis as SA
+
+        SA.report(res, *layout)
     return res
+
+
+def _analyse_shafts(shafts: list, stages: list, runs: list[StageRun], bearings: list,
+                    n_m: float, duty: Duty, motor: dict):
+    """The shafts with steps by the shaft calculator, their connections, and the spur
+    stages rated with the misalignment from the shafts (:mod:`.shaft_analysis`)."""
+    from geardesign.drive import shaft_analysis as SA
+    from geardesign.drive.stages import run_spur
+
+    rot = _shaft_rotation(runs)
+    speeds = [n_m] + [r.n_out for r in runs]
+    peak = motor["peak_ratio"] or 2.0
+    modules = {}
+    for i, r in enumerate(runs, 1):
+        g = r.result.inputs.get("gear") if isinstance(r.result.inputs, dict) else None
+        if r.result.kind in ("spur", "novikov") and isinstance(g, dict):
+            modules[i] = (g.get("module"), g.get("face_width") or 0.0)
+    by_side = {(c["shaft"], c["side"], c["key"]): br for c, br in bearings}
+    shaft_runs = []
+    for k, sh in enumerate(shafts):
+        if not sh["step"]:
+            continue
+        idx = sh["index"]
+        members = {(g["stage"], 0 if g["stage"] == idx else 1) for g in sh["gear"]}
+        need = {(idx - 1, 1)} if idx > len(runs) else (
+            {(idx, 0)} if idx == 1 else {(idx - 1, 1), (idx, 0)})
+        if not need <= members:
+            names = " and ".join(f"the {'input' if w == 0 else 'output'} member of stage {s_}"
+                                 for s_, w in sorted(need - members))
+            raise InputError(Problem(f"shaft[{k}].gear", f"shaft {idx} is analysed (it has "
+                                     f"steps), so the torque's path needs all its gears: add "
+                                     f"a [[shaft.gear]] for {names}"))
+        gears = [SA.GearOnShaft(j, g["stage"], which, ld,
+                                -runs[g["stage"] - 1].T_in if which == 0
+                                else runs[g["stage"] - 1].T_out)
+                 for j, (g, which, ld) in enumerate(shaft_loads(sh, k, runs))]
+        brs = {side: by_side[(idx, side, f"shaft[{k}]")] for side in ("a", "b")}
+        shaft_runs.append(SA.shaft_run(k, sh, gears, brs, speeds[idx - 1], rot[idx - 1],
+                                       len(runs) + 1, peak, modules, duty.K_A))
+    mis = SA.misalignment({sr.idx: sr for sr in shaft_runs}, runs)
+    kh_rows = SA.rate_with_misalignment(mis, stages, runs, duty, run_spur)
+    return shaft_runs, kh_rows, mis
 
 
 def _shaft_rotation(runs: list[StageRun]) -> list[int]:
@@ -244,6 +300,30 @@ def _shaft_rotation(runs: list[StageRun]) -> list[int]:
     for r in runs:
         s.append(-s[-1] if r.reverses else s[-1])
     return s
+
+
+def shaft_loads(sh: dict, k: int, runs: list[StageRun]) -> list[tuple[dict, int, "GearLoad"]]:
+    """The gears of the k-th [[shaft]]: ``(gear table, member, GearLoad)``, member 0 the
+    input member of the stage, 1 its output member."""
+    idx, key = sh["index"], f"shaft[{k}]"
+    out = []
+    for j, g in enumerate(sh["gear"]):
+        st = g["stage"]
+        if st == idx:
+            which = 0            # input member of stage idx
+        elif st == idx - 1:
+            which = 1            # output member of stage idx-1
+        else:
+            raise InputError.at(f"{key}.gear[{j}].stage", st,
+                                f"shaft {idx} carries stage {idx - 1} (output) and stage "
+                                f"{idx} (input) only")
+        if st > len(runs):
+            raise InputError.at(f"{key}.gear[{j}].stage", st,
+                                f"the drive has {len(runs)} stages")
+        out.append((g, which, runs[st - 1].gear_load(which, g["position"],
+                                                     math.radians(g["mate_angle"]),
+                                                     g["axial_sign"])))
+    return out
 
 
 def shaft_cases(shafts: list, runs: list[StageRun], n_m: float, L_h: float) -> list[dict]:
@@ -261,22 +341,7 @@ def shaft_cases(shafts: list, runs: list[StageRun], n_m: float, L_h: float) -> l
         if sh["bearing_b"] == sh["bearing_a"]:
             raise InputError.at(f"{key}.bearing_b", sh["bearing_b"],
                                 "the two bearings must be at different positions")
-        loads = []
-        for j, g in enumerate(sh["gear"]):
-            st = g["stage"]
-            if st == idx:
-                which = 0            # input member of stage idx
-            elif st == idx - 1:
-                which = 1            # output member of stage idx-1
-            else:
-                raise InputError.at(f"{key}.gear[{j}].stage", st,
-                                    f"shaft {idx} carries stage {idx - 1} (output) and stage "
-                                    f"{idx} (input) only")
-            if st > len(runs):
-                raise InputError.at(f"{key}.gear[{j}].stage", st,
-                                    f"the drive has {len(runs)} stages")
-            loads.append(runs[st - 1].gear_load(which, g["position"], math.radians(g["mate_angle"]),
-                                                g["axial_sign"]))
+        loads = [ld for _, _, ld in shaft_loads(sh, k, runs)]
         R = reactions(sh["bearing_a"], sh["bearing_b"], loads, rot[idx - 1])
         name = sh["name"] or f"shaft {idx}"
         for side in ("a", "b"):
@@ -303,19 +368,27 @@ def run_bearing(case: dict) -> Result:
                           for p in exc.problems]) from None
 
 
-def _shafts(res: Result, shafts: list, runs: list[StageRun], n_m: float, L_h: float,
-            bearing_oil=None) -> None:
-    """Bearing lives of the shafts; ``bearing_oil(case)`` (with [lubrication]) puts the
-    drive's oil and its sump temperature into a bearing's [lubrication] table."""
-    from geardesign.bearing.life import system_life
-
-    rows, lives, balls = [], [], []
+def _bearing_runs(shafts: list, runs: list[StageRun], n_m: float, L_h: float,
+                  bearing_oil=None) -> list[tuple[dict, Result]]:
+    """The bearings of the shafts by the bearing calculator: ``(case, result)``;
+    ``bearing_oil(case)`` (with [lubrication]) puts the drive's oil and its sump temperature
+    into a bearing's [lubrication] table."""
+    out = []
     for case in shaft_cases(shafts, runs, n_m, L_h):
         if bearing_oil is not None:
             bearing_oil(case)
+        out.append((case, run_bearing(case)))
+    return out
+
+
+def _bearing_report(res: Result, bearings: list, L_h: float) -> None:
+    """Bearing lives of the shafts and their system life."""
+    from geardesign.bearing.life import system_life
+
+    rows, lives, balls = [], [], []
+    for case, br in bearings:
         idx, side, name = case["shaft"], case["side"], case["name"]
         F_r, F_a, speed = case["F_r"], case["F_a"], case["n"]
-        br = run_bearing(case)
         v = {}
         for section in br.document()["results"].values():
             if isinstance(section, dict):

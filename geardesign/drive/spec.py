@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from geardesign.core.spec import Field, SpecSchema, Table, TableList
+from geardesign.shaft import spec as SHAFT_SPEC
 from geardesign.spur.strength import METHODS
 from geardesign.spur.strength.tables import REGIMES
 
@@ -57,7 +60,27 @@ GEAR_ON_SHAFT = Table("gear", "a gear on the shaft", (
           "deg", "θ", default=0.0, minimum=-360.0, maximum=360.0),
     Field("axial_sign", "integer", "direction of the gear's axial force: +1 towards bearing B, "
           "-1 towards A", default=1, choices=(-1, 1)),
+    Field("mass", "number", "mass of the gear (critical speed of an analysed shaft)", "kg",
+          "m", default=None, minimum=0.0, maximum=1e5,
+          hint="default: a solid steel disc of the pitch diameter and the face width"),
 ))
+
+KEY_ON_SHAFT = Table("key", "a shaft-hub connection (key, spline or interference fit): the "
+                     "connection calculator's [key], [spline] or [fit] keys follow", (
+    Field("type", "string", "connection type", choices=("key", "spline", "fit"),
+          example="key"),
+    Field("position", "number", "position of the hub's middle along the shaft", "mm", "z",
+          minimum=-1e5, maximum=1e5, example=60.0),
+    Field("hub_length", "number", "length of the hub (the key, spline or fit must not be "
+          "longer)", "mm", "L_hub", gt=0, maximum=1000.0, example=60.0),
+    Field("name", "string", "name of the connection", default=None),
+    Field("application_factor", "number", "application factor of the connection (default: "
+          "load.application_factor)", symbol="K_A", default=None, minimum=1.0, maximum=5.0),
+), open=True)
+
+_SHAFT_LIMITS = tuple(
+    replace(f, default=None, hint="default: motor.peak_ratio, else 2") if f.key == "peak_factor"
+    else f for f in SHAFT_SPEC.SHAFT.fields if f.key != "speed")
 
 SHAFT = Table("shaft", "a shaft on two bearings", (
     Field("index", "integer", "shaft number: shaft i carries the output of stage i−1 and the "
@@ -76,6 +99,22 @@ SHAFT = Table("shaft", "a shaft on two bearings", (
     Table("support_b", "bearing B, as support_a", (), open=True),
     Table("lubrication", "lubrication of both bearings (ISO 281:2007 method), as in the "
           "bearing calculator", (), required=False, open=True),
+    Field("start", "number", "position of the shaft's left end (the first step) in the "
+          "coordinates of bearing_a, bearing_b and the gears", "mm", "z_0", default=None,
+          minimum=-1e5, maximum=1e5, hint="default 0"),
+    Field("coupling", "number", "position of the coupling where the motor's torque enters "
+          "(shaft 1) or the output torque leaves (the last shaft)", "mm", "z_c", default=None,
+          minimum=-1e5, maximum=1e5,
+          hint="default: the shaft end with the longer overhang beyond its bearing"),
+    TableList("step", "the shaft's cylindrical steps from the left end, as in the shaft "
+              "calculator: with them the shaft is analysed (strength, deflections, critical "
+              "speed)", SHAFT_SPEC.STEP, required=False, max_items=100),
+    Table("material", "the shaft steel, as in the shaft calculator (default: steel 45 at "
+          "the lowest hardness of the table)", SHAFT_SPEC.MATERIAL.fields, required=False),
+    Table("strength", "limits and surface of the shaft analysis, as [shaft] of the shaft "
+          "calculator (the speed is the drive's)", _SHAFT_LIMITS, required=False),
+    TableList("key", "shaft-hub connections (needs the steps)", KEY_ON_SHAFT, required=False,
+              max_items=6),
 ))
 
 SPLIT = Table("split", "ratio split helper: proposed stage ratios for an overall ratio", (
@@ -163,7 +202,10 @@ SCHEMA = SpecSchema(
                       required=False, max_items=21, in_template=False,
                       hint="keys: index, bearing_a, bearing_b, fixed, method, [[shaft.gear]] "
                            "(stage, position, mate_angle, axial_sign), [shaft.support_a], "
-                           "[shaft.support_b]; see specs/drive_two_stage_reducer.toml"),
+                           "[shaft.support_b]; see specs/drive_two_stage_reducer.toml; with "
+                           "[[shaft.step]], [shaft.material] and [[shaft.key]] the shafts and "
+                           "their connections are analysed, see "
+                           "specs/drive_reducer_shafts_keys_thermal.toml"),
             SPLIT, LUBRICATION, THERMAL),
     title_example="Two-stage reducer, 7.5 kW, 1455/58 min^-1",
 )

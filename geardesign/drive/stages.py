@@ -174,8 +174,8 @@ def _put(table: dict, key: str, value) -> None:
         table[key] = value
 
 
-def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
-             where: str) -> StageRun:
+def spur_data(data: dict, T_in: float, n_in: float, duty: Duty, where: str) -> dict:
+    """A copy of the spur stage spec with the drive's load in it, validated."""
     d = copy.deepcopy(data)
     load = _table(d, "load", where)
     load["torque1"], load["speed1"] = T_in, n_in
@@ -194,6 +194,12 @@ def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
     if d.get("material") is None:
         raise InputError(Problem(f"{where}: material", "missing table [material.pinion] and "
                                  "[material.wheel]: a drive rates every stage for strength"))
+    return d
+
+
+def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
+             where: str) -> StageRun:
+    d = spur_data(data, T_in, n_in, duty, where)
     res = _run(d, where, data)
     v = _values(res.document())
     u = v["u"]

@@ -8,15 +8,29 @@ Floquet), :mod:`.resonance` (resonance frequencies and speeds), :mod:`.rim` (thi
 factors), :mod:`.checks`, :mod:`.spec`, :mod:`.calculator`.
 """
 
-from geardesign.core.registry import Calculator
-from geardesign.epicycle_rim.calculator import compute
-from geardesign.epicycle_rim.spec import SCHEMA
+from __future__ import annotations
 
-CALCULATOR = Calculator(
-    kind="epicycle_rim",
-    summary="ring-gear rim: probabilistic fatigue of the thin rim, parametric resonance",
-    methods=("GOST 25.504-82 (Serensen-Kogaev)", "Gutyria et al. 2017",
-             "Yaglinskyi et al. 2017", "Mathieu/Floquet"),
-    schema=SCHEMA,
-    compute=compute,
-)
+from functools import lru_cache
+
+
+@lru_cache(maxsize=1)
+def _calculator():
+    # built on first use: the shaft calculator borrows .endurance without the rest
+    from geardesign.core.registry import Calculator
+    from geardesign.epicycle_rim.calculator import compute
+    from geardesign.epicycle_rim.spec import SCHEMA
+
+    return Calculator(
+        kind="epicycle_rim",
+        summary="ring-gear rim: probabilistic fatigue of the thin rim, parametric resonance",
+        methods=("GOST 25.504-82 (Serensen-Kogaev)", "Gutyria et al. 2017",
+                 "Yaglinskyi et al. 2017", "Mathieu/Floquet"),
+        schema=SCHEMA,
+        compute=compute,
+    )
+
+
+def __getattr__(name: str):
+    if name == "CALCULATOR":
+        return _calculator()
+    raise AttributeError(name)

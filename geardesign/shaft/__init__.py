@@ -9,15 +9,30 @@ plain data, input rules), :mod:`.spec` (the spec schema), :mod:`.calculator` (re
 and checks).
 """
 
-from geardesign.core.registry import Calculator
-from geardesign.shaft.calculator import compute
-from geardesign.shaft.spec import SCHEMA
+from __future__ import annotations
 
-CALCULATOR = Calculator(
-    kind="shaft",
-    summary="stepped shaft: beam model, deflections and bearing slopes, critical speed, static and "
-            "fatigue safety per section",
-    methods=("Euler–Bernoulli finite elements", "GOST 25.504-82 (Dunaev & Lelikov)"),
-    schema=SCHEMA,
-    compute=compute,
-)
+from functools import lru_cache
+
+
+@lru_cache(maxsize=1)
+def _calculator():
+    # built on first use: a drive that reads the shaft spec (geardesign.shaft.spec) without
+    # analysing a shaft does not import numpy
+    from geardesign.core.registry import Calculator
+    from geardesign.shaft.calculator import compute
+    from geardesign.shaft.spec import SCHEMA
+
+    return Calculator(
+        kind="shaft",
+        summary="stepped shaft: beam model, deflections and bearing slopes, critical speed, "
+                "static and fatigue safety per section",
+        methods=("Euler–Bernoulli finite elements", "GOST 25.504-82 (Dunaev & Lelikov)"),
+        schema=SCHEMA,
+        compute=compute,
+    )
+
+
+def __getattr__(name: str):
+    if name == "CALCULATOR":
+        return _calculator()
+    raise AttributeError(name)

@@ -16,16 +16,27 @@ from geardesign.shaft import strength as ST
 from geardesign.shaft.solve import ARCMIN, ShaftResult, analyse, diameter_for
 
 
-def compute(spec: ValidatedSpec) -> Result:
-    from geardesign.shaft import CALCULATOR
-
+def model(spec: ValidatedSpec) -> dict:
+    """The plain data of :func:`.solve.analyse` read from the spec (every input rule)."""
     mat, origin = IN.material(spec.data["material"])
     steps = IN.steps(spec)
     length = sum(s.length for s in steps)
-    loads = IN.loads(spec, length)
-    supports = IN.supports(spec, length)
-    opt = IN.options(spec)
-    r = analyse(steps, loads, supports, mat, opt)
+    return dict(steps=steps, loads=IN.loads(spec, length), supports=IN.supports(spec, length),
+                material=mat, options=IN.options(spec), origin=origin)
+
+
+def compute(spec: ValidatedSpec) -> Result:
+    m = model(spec)
+    r = analyse(m["steps"], m["loads"], m["supports"], m["material"], m["options"])
+    return report(spec, m, r)
+
+
+def report(spec: ValidatedSpec, m: dict, r: ShaftResult) -> Result:
+    """Rows, tables and checks of an analysed shaft (``m`` from :func:`model`)."""
+    from geardesign.shaft import CALCULATOR
+
+    mat, origin, steps = m["material"], m["origin"], m["steps"]
+    loads, supports, opt = m["loads"], m["supports"], m["options"]
     res = CALCULATOR.new_result(spec)
     lim = spec.data["shaft"]
 

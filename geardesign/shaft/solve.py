@@ -123,6 +123,8 @@ class PointResult:
     R_y: float = 0.0  # support reaction on the shaft, N
     R_z: float = 0.0
     R_x: float = 0.0
+    slope_y: float = 0.0   # rad, dw_y/dx (x–y plane)
+    slope_z: float = 0.0   # rad, dw_z/dx (x–z plane)
 
 
 @dataclass(frozen=True)
@@ -255,12 +257,14 @@ def analyse(steps: list[Step], loads: list[Load], supports: list[Support],
         i = sup[k][0]
         sup_res.append(PointResult(s.position, s.name or f"support {k + 1}", py.w[i], pz.w[i],
                                    w[i], slope[i], py.reactions[k], pz.reactions[k],
-                                   Rx if k == axial_idx else 0.0))
+                                   Rx if k == axial_idx else 0.0, float(py.theta[i]),
+                                   float(pz.theta[i])))
     load_res = []
     for k, ld in enumerate(loads):
         i = _index(x, ld.position)
         load_res.append(PointResult(ld.position, ld.name or f"load {k + 1}", py.w[i], pz.w[i],
-                                    w[i], slope[i]))
+                                    w[i], slope[i], slope_y=float(py.theta[i]),
+                                    slope_z=float(pz.theta[i])))
 
     # ---------------------------------------------------------------- sections
     sections = []

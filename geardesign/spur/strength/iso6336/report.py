@@ -22,6 +22,18 @@ def add_iso_strength(res, geom, spec, inputs) -> None:
                                        _advice(rating.v, geom, mats, duty, setting, iso)))
 
 
+def iso_rating(spec) -> "IR.Rating":
+    """The ISO 6336 rating record of a spur spec, without report rows or advice: for a
+    caller that needs a factor of it (e.g. a drive's K_Hβ with the misalignment its shafts
+    give).  The spec must rate strength (torque and materials)."""
+    from geardesign.spur.calculator import _strength_inputs, solve_geometry
+
+    geom, _ = solve_geometry(spec)
+    mats, duty, setting = _strength_inputs(spec, spec.data["gear"])
+    gear_checks(spec.data["iso"], geom)
+    return IR.rate(geom, mats, duty, setting, iso_setting(spec))
+
+
 def _advice(v: dict, geom, mats, duty, setting, iso) -> dict | None:
     """Face width and scale of the pair that pass pitting and bending, found by re-rating
     (the load factors change with the size); ``None`` when the rating passes."""

@@ -1,0 +1,366 @@
+"""The drive with analysed shafts: steps, keys and fits on the shafts of a drive
+(geardesign.drive.shaft_analysis), the mesh misalignment from the shafts' slopes and the
+K_Hβ it gives, the input rules, and the time of a cold run."""
+
+from __future__ import annotations
+
+import copy
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import pytest
+
+from geardesign.core.errors import InputError
+from geardesign.core.registry import run_data
+from geardesign.core.spec import load_toml
+from geardesign.shaft.solve import Load, Material, Step, Support, analyse
+from tests.conftest import SPECS
+
+GOLDEN = SPECS / "drive_reducer_shafts_keys_thermal.toml"
+
+
+def _data() -> dict:
+    return load_toml(GOLDEN)
+
+
+def _fast() -> dict:
+    """The golden's drive without the heat balance, both stages rated to GOST: three
+    analysed shafts, four keys and a fit."""
+    d = _data()
+    d.pop("lubrication")
+    d.pop("thermal")
+    d["stage"][0].pop("options")
+    sh = d["shaft"][2]
+    sh.pop("method")
+    sh.pop("lubrication")
+    return d
+
+
+@pytest.fixture(scope="module")
+def golden():
+    return run_data(_data()).document()
+
+
+def test_the_shaft_loads_equal_the_standalone_shaft_calculator(golden):
+    """Intermediate shaft: the loads built here from the stage reports' mesh forces
+    (geardesign.drive.shafts docstring: radial towards the axis, tangential against the
+    rotation on the driving gear, with it on the driven one; the axial force's couple
+    F_a·r) give the standalone shaft calculator the same reactions, deflections and
+    safeties as the drive's nested shaft report."""
+    d = _data()
+    sh = d["shaft"][1]
+    res = golden["results"]
+    f1 = res["stage_reports"][0]["results"]
+    f2 = res["stage_reports"][1]["results"]
+    start = sh["start"]
+    rot = -1                                   # shaft 2: one external mesh from the motor
+    loads = []
+    for gear, F, r, driving, T in (
+            (sh["gear"][0], f1["forces"], f1["geometry"]["d_w2"] / 2, False,
+             res["stages"][0]["T_out"]),
+            (sh["gear"][1], f2["forces"], f2["geometry"]["d_w1"] / 2, True,
+             -res["stages"][1]["T_in"])):
+        th = math.radians(gear["mate_angle"])
+        e, t = (math.cos(th), math.sin(th)), (-math.sin(th), math.cos(th))
+        s = -rot if driving else rot
+        fx = -F["F_r"] * e[0] + s * F["F_t"] * t[0]
+        fy = -F["F_r"] * e[1] + s * F["F_t"] * t[1]
+        fz = gear.get("axial_sign", 1) * F["F_a"]
+        loads.append(Load(gear["position"] - start, Fy=fx, Fz=fy, Fx=fz, torque=T,
+                          moment_y=-r * e[0] * fz / 1e3, moment_z=-r * e[1] * fz / 1e3))
+    x = 0.0
+    steps = []
+    for st in sh["step"]:
+        steps.append(Step(st["length"], st["diameter"]))
+        x += st["length"]
+    supports = [Support(0.0 - start, axial=True), Support(sh["bearing_b"] - start)]
+    r = analyse(steps, loads, supports, Material(600, 350, 250, 150, 0.1, 0.05))
+    nested = res["shaft_reports"][1]["results"]
+    for mine, theirs in zip(r.supports, nested["supports"]):
+        assert mine.R_y == pytest.approx(theirs["R_y"], rel=1e-9, abs=1e-6)
+        assert mine.R_z == pytest.approx(theirs["R_z"], rel=1e-9, abs=1e-6)
+        assert abs(mine.R_x) == pytest.approx(abs(theirs["R_x"]), rel=1e-9, abs=1e-9)
+        assert mine.slope / (math.pi / 180 / 60) == pytest.approx(theirs["slope"], rel=1e-9)
+    for mine, theirs in zip(r.loads, nested["loads"]):
+        assert mine.w == pytest.approx(theirs["w"], rel=1e-9)
+    # ... and the bearing loads of the drive's own statics are the same reactions
+    rows = [b for b in res["bearings"] if b["shaft"] == 2]
+    for row, theirs in zip(rows, nested["supports"]):
+        assert row["F_r"] == pytest.approx(theirs["R"], rel=1e-9)
+    # the torque between the gears is the torque through the shaft
+    assert max(abs(v) for v in nested["diagrams"]["T"]) == pytest.approx(
+        res["stages"][1]["T_in"], rel=1e-12)
+
+
+def test_summary_tables_and_nested_reports(golden):
+    res = golden["results"]
+    assert [r["shaft"] for r in res["shafts"]] == [1, 2, 3]
+    assert len(res["shaft_reports"]) == 3 and len(res["connection_reports"]) == 5
+    assert [r["type"] for r in res["connections"]] == ["key", "key", "key", "fit", "key"]
+    # the coupling key of the input shaft carries the motor side torque, the output's the
+    # machine's torque, with the drive's application factor
+    c = res["connections"]
+    assert c[0]["T"] == pytest.approx(res["stages"][0]["T_in"])
+    assert c[4]["T"] == pytest.approx(1100.0) and c[4]["K_A"] == 1.25
+    rep = res["connection_reports"][4]
+    assert rep["inputs"]["load"]["torque"] == pytest.approx(1100.0)
+    assert rep["inputs"]["key"]["shaft_diameter"] == 55.0
+    codes = {ch["code"] for ch in golden["checks"]}
+    assert {"SHAFT_1", "SHAFT_2", "SHAFT_3", "CONNECTION_3_1", "CONNECTION_3_2"} <= codes
+    for row in res["shafts"]:
+        assert row["S"] > 0 and row["n_cr"] > 0 and row["slope_A"] >= 0
+    assert "thermal" in res and res["face_load"]
+
+
+def test_face_load_factor_from_the_shafts_is_at_least_one(golden):
+    rows = golden["results"]["face_load"]
+    assert [r["method"] for r in rows] == ["ISO 6336:2019", "GOST 21354-87"]
+    for r in rows:
+        assert r["f_sh"] > 0 and r["K_Hbeta_shafts"] >= 1.0 and r["K_Hbeta_before"] >= 1.0
+    # the ISO stage is rated with it: its report carries f_sh and that K_Hβ
+    iso = golden["results"]["stage_reports"][0]["results"]["iso6336_factors"]
+    assert iso["f_sh"] == pytest.approx(rows[0]["f_sh"])
+    assert iso["K_Hbeta"] == pytest.approx(rows[0]["K_Hbeta_shafts"])
+    # the GOST stage keeps its chart value
+    gost = golden["results"]["stage_reports"][1]["results"]["factors"]
+    assert gost["K_Hbeta"] == pytest.approx(rows[1]["K_Hbeta_before"])
+
+
+def _thinner(d: dict, factor: float) -> dict:
+    """The intermediate shaft's steps between the bearing seats scaled by ``factor``."""
+    d = copy.deepcopy(d)
+    for st in d["shaft"][1]["step"][1:-1]:
+        st["diameter"] *= factor
+    return d
+
+
+def test_face_load_factor_grows_when_a_shaft_is_made_thinner():
+    base = run_data(_fast()).document()["results"]["face_load"]
+    thin = run_data(_thinner(_fast(), 0.8)).document()["results"]["face_load"]
+    for a, b in zip(base, thin):
+        assert b["f_sh"] > a["f_sh"]
+        assert b["K_Hbeta_shafts"] > a["K_Hbeta_shafts"] >= 1.0
+        assert b["K_Hbeta_before"] == pytest.approx(a["K_Hbeta_before"])   # the chart
+
+
+def test_misalignment_is_the_relative_slope_along_the_line_of_action():
+    """f_sh = |(θ_pinion − θ_wheel)·n|·b with n the direction of the mesh force."""
+    doc = run_data(_fast()).document()
+    res = doc["results"]
+    arcmin = math.pi / 180 / 60
+    g = {(r["shaft"], r["stage"]): r for r in res["shaft_gears"]}
+    f = res["stage_reports"][1]["results"]
+    p, w = g[(2, 2)], g[(3, 2)]
+    # shaft 2 turns backwards (rotation −1); its pinion drives: the force on it is
+    # −F_r·e + F_t·t with e = (1, 0) (mate_angle 0), t = (0, 1)
+    n = (-f["forces"]["F_r"], f["forces"]["F_t"])
+    norm = math.hypot(*n)
+    d = ((p["slope_x"] - w["slope_x"]) * n[0] + (p["slope_y"] - w["slope_y"]) * n[1]) / norm
+    row = next(r for r in res["face_load"] if r["stage"] == 2)
+    assert row["f_sh"] == pytest.approx(abs(d) * arcmin * 80.0 * 1e3, rel=1e-9)
+
+
+def test_without_the_new_tables_nothing_changes():
+    d = _fast()
+    for sh in d["shaft"]:
+        for k in ("step", "material", "key", "start", "coupling"):
+            sh.pop(k, None)
+    doc = run_data(d).document()
+    for k in ("shafts", "shaft_gears", "connections", "face_load", "shaft_reports"):
+        assert k not in doc["results"]
+
+
+# ------------------------------------------------------------------ input rules
+
+
+def _problem(d: dict) -> str:
+    with pytest.raises(InputError) as exc:
+        run_data(d)
+    assert len(exc.value.problems) == 1
+    p = exc.value.problems[0]
+    return (
+        f"{p.key} = {p.value}: {p.message}" if isinstance(p.value, (int, float, str))
+        else f"{p.key}: {p.message}")
+
+
+def test_step_diameter_at_a_bearing_must_be_its_bore():
+    d = _fast()
+    d["shaft"][0]["step"][2]["diameter"] = 36.0
+    assert _problem(d) == ("shaft[0].step[2].diameter = 36.0: bearing A (SKF 6207 (GOST 207)) "
+                           "at z = 0 mm sits on this step and its bore is d = 35 mm: the "
+                           "bearing seat's diameter must equal the bore")
+
+
+def test_a_bearing_at_a_shoulder_may_sit_on_either_step():
+    d = _fast()
+    sh = d["shaft"][0]
+    # bearing A moved to the shoulder between the seal (32) and its seat (35)
+    sh["bearing_a"] = -10.0
+    run_data(d)
+
+
+def test_key_longer_than_its_hub():
+    d = _fast()
+    d["shaft"][1]["key"][0]["length"] = 65.0
+    assert _problem(d) == ("shaft[1].key[0].length = 65.0: the key is longer than its hub "
+                           "(hub_length = 60 mm): give length <= 60")
+
+
+def test_gear_outside_the_steps():
+    d = _fast()
+    d["shaft"][0]["gear"][0]["position"] = 120.0
+    d["shaft"][0]["step"][-1]["length"] = 5.0        # the shaft now ends at 145 mm
+    d["shaft"][0]["bearing_b"] = 140.0
+    d["shaft"][0]["gear"][0]["position"] = 150.0
+    assert _problem(d) == ("shaft[0].gear[0].position = 150.0: the gear lies outside the "
+                           "shaft steps: must be within -80…145 mm (start + the step lengths)")
+
+
+def test_keys_need_steps_and_torque():
+    d = _fast()
+    sh = d["shaft"][1]
+    for k in ("step", "material"):
+        sh.pop(k)
+    for other in (d["shaft"][0], d["shaft"][2]):
+        other.pop("step")
+        other.pop("key")
+    assert _problem(d).startswith("shaft[1].step: missing; the connections")
+    d = _fast()
+    d["shaft"][1]["key"][0]["position"] = 0.0        # at the bearing: no torque there
+    assert _problem(d).startswith("shaft[1].key[0].position = 0.0: no torque passes")
+
+
+def test_bad_step_names_the_shaft():
+    d = _fast()
+    d["shaft"][2]["step"][0]["bore"] = 70.0
+    assert _problem(d).startswith("shaft[2].step[0].bore = 70.0: must be smaller")
+
+
+def test_bad_input_exits_2_with_one_line(tmp_path):
+    text = GOLDEN.read_text(encoding="utf-8").replace(
+        "hub_length = 60.0\nlength = 50.0", "hub_length = 60.0\nlength = 61.0")
+    path = tmp_path / "bad.toml"
+    path.write_text(text, encoding="utf-8")
+    proc = subprocess.run([sys.executable, "-m", "geardesign", "run", str(path)],
+                          capture_output=True, text=True)
+    assert proc.returncode == 2
+    assert proc.stderr.strip() == (f"{path}: shaft[1].key[0].length = 61.0: the key is longer "
+                                   "than its hub (hub_length = 60 mm): give length <= 60")
+
+
+# ------------------------------------------------------------------ time
+
+
+def _fast_text() -> str:
+    """The text of :func:`_fast`'s spec."""
+    s = GOLDEN.read_text(encoding="utf-8")
+    s = s[:s.index("[lubrication]")] + s[s.index("[[stage]]"):]
+    for cut in ('[stage.options]\nmethod = "ISO 6336:2019"\n', 'method = "iso281_2007"\n',
+                '[shaft.lubrication]\ncontamination = "normal"\n'):
+        assert cut in s
+        s = s.replace(cut, "")
+    return s
+
+
+def test_fast_text_is_the_fast_spec(tmp_path):
+    path = tmp_path / "fast.toml"
+    path.write_text(_fast_text(), encoding="utf-8")
+    assert load_toml(path) == _fast()
+
+
+def test_three_shaft_drive_cold_run_is_quick(tmp_path):
+    """A cold process with the bytecode cached (as after installation): three analysed
+    shafts, five connections, two GOST stages with the informative ISO K_Hβ.  The best of
+    three runs; docs/drive.md gives the figure of the development machine."""
+    path = tmp_path / "three_shafts.toml"
+    path.write_text(_fast_text(), encoding="utf-8")
+    env = dict(os.environ, PYTHONPYCACHEPREFIX=tempfile.mkdtemp())
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
+    cmd = [sys.executable, "-m", "geardesign", "run", str(path), "--format", "json"]
+    subprocess.run(cmd, capture_output=True, env=env)        # warm the bytecode cache
+    best = math.inf
+    for _ in range(3):
+        t0 = time.perf_counter()
+        proc = subprocess.run(cmd, capture_output=True, text=True, env=env)
+        best = min(best, time.perf_counter() - t0)
+        assert proc.returncode in (0, 1), proc.stderr
+    assert len(json.loads(proc.stdout)["results"]["shafts"]) == 3
+    assert best < 0.3, best
+
+
+def test_an_analysed_shaft_needs_all_its_gears():
+    d = _fast()
+    d["shaft"][1]["gear"].pop(1)
+    d["shaft"][1]["key"].pop(1)
+    assert _problem(d) == ("shaft[1].gear: shaft 2 is analysed (it has steps), so the "
+                           "torque's path needs all its gears: add a [[shaft.gear]] for the "
+                           "input member of stage 2")
+
+
+def test_a_key_on_a_shaft_without_steps():
+    d = _fast()
+    d["shaft"][1].pop("step")
+    assert _problem(d).startswith("shaft[1].step: missing; the connections")
+
+
+def test_unknown_connection_key_names_both_tables():
+    d = _fast()
+    d["shaft"][2]["key"][0]["bogus"] = 1
+    text = _problem(d)
+    assert text.startswith("shaft[2].key[0].bogus = 1: unknown key in [fit]; allowed: diameter")
+    assert text.endswith("; or the drive's type, position, hub_length, name, application_factor")
+
+
+def test_a_failing_shaft_fails_the_drive_with_its_advice():
+    d = _fast()
+    d["shaft"][1]["step"][4]["diameter"] = 30.0      # the stage 2 pinion's seat
+    doc = run_data(d).document()
+    c = next(c for c in doc["checks"] if c["code"] == "SHAFT_2")
+    assert not c["passed"] and c["severity"] == "error" and doc["verdict"] == "fail"
+    assert c["message"].startswith("intermediate shaft fails (positions x from the shaft's "
+                                   "left end: z = x − 12 mm): FATIGUE: fatigue safety S = ")
+    assert "increase the diameter at gear of stage 2 (x = 152 mm) from 30 to at least" in \
+        c["message"]
+
+
+def test_informative_K_Hbeta_is_the_spur_calculators_iso_rating(golden):
+    """The GOST stage's informative K_Hβ is what the spur calculator's own ISO 6336 rating
+    gives for the stage (as the drive loads it) with iso.f_sh set: one formula."""
+    row = next(r for r in golden["results"]["face_load"] if r["method"] == "GOST 21354-87")
+    spec = copy.deepcopy(golden["results"]["stage_reports"][row["stage"] - 1]["inputs"])
+    spec["options"] = {"method": "ISO 6336:2019"}
+    spec.setdefault("iso", {})["f_sh"] = row["f_sh"]
+    doc = run_data(spec).document()
+    assert doc["results"]["iso6336_factors"]["K_Hbeta"] == pytest.approx(
+        row["K_Hbeta_shafts"], rel=1e-12)
+    assert doc["results"]["iso6336_factors"]["f_sh"] == pytest.approx(row["f_sh"])
+
+
+@pytest.mark.parametrize("where, value, line", [
+    (("bearing_b",), 170.0, "shaft[0].bearing_b = 170.0: bearing B lies outside the shaft "
+                            "steps: must be within -80…160 mm (start + the step lengths)"),
+    (("coupling",), -90.0, "shaft[0].coupling = -90.0: the coupling lies outside the shaft "
+                           "steps: must be within -80…160 mm (start + the step lengths)"),
+    (("key", 0, "position"), 161.0, "shaft[0].key[0].position = 161.0: the hub lies outside "
+                                    "the shaft steps: must be within -80…160 mm (start + the "
+                                    "step lengths)"),
+])
+def test_positions_outside_the_steps(where, value, line):
+    d = _fast()
+    t = d["shaft"][0]
+    for k in where[:-1]:
+        t = t[k]
+    t[where[-1]] = value
+    assert _problem(d) == line
+
+
+def test_fit_longer_than_its_hub():
+    d = _fast()
+    d["shaft"][2]["key"][0]["length"] = 90.0
+    assert _problem(d) == ("shaft[2].key[0].length = 90.0: the fit is longer than its hub "
+                           "(hub_length = 80 mm): give length <= 80")
