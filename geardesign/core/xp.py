@@ -63,6 +63,18 @@ def log10(x):
     return math.log10(x) if isinstance(x, _SCALARS) else _np().log10(x)
 
 
+def log(x):
+    return math.log(x) if isinstance(x, _SCALARS) else _np().log(x)
+
+
+def exp(x):
+    return math.exp(x) if isinstance(x, _SCALARS) else _np().exp(x)
+
+
+def degrees(x):
+    return math.degrees(x) if isinstance(x, _SCALARS) else _np().degrees(x)
+
+
 def hypot(x, y):
     return math.hypot(x, y) if scalar(x, y) else _np().hypot(x, y)
 
@@ -73,6 +85,35 @@ def minimum(a, b):
 
 def maximum(a, b):
     return max(a, b) if scalar(a, b) else _np().maximum(a, b)
+
+
+def clip(x, lo, hi):
+    """``min(max(x, lo), hi)``."""
+    return minimum(maximum(x, lo), hi)
+
+
+def rnd(x, ndigits: int = 0):
+    """Python's ``round(x, ndigits)`` (correctly rounded, halves to even) as a float, for a
+    number or elementwise for an array.  An array is rounded by numpy and the elements within
+    a hair of a half (where scaling by 10^ndigits may tip the decision) again by Python."""
+    if isinstance(x, _SCALARS):
+        return float(round(x, ndigits))
+    np = _np()
+    x = np.asarray(x, dtype=float)
+    out = np.round(x, ndigits)
+    scaled = np.abs(x) * 10.0 ** ndigits
+    near = np.flatnonzero(np.abs(scaled - np.floor(scaled) - 0.5) < 1e-6)
+    if near.size:
+        flat = out.reshape(-1)
+        src = x.reshape(-1)
+        for i in near:
+            flat[i] = round(float(src[i]), ndigits)
+    return out
+
+
+def all_(x) -> bool:
+    """Whether ``x`` holds (a number) or holds everywhere (an array)."""
+    return bool(x) if isinstance(x, (bool, int, float)) else bool(_np().all(x))
 
 
 def where(cond, a, b):

@@ -4,11 +4,16 @@ Each tolerance of flank tolerance class A is the class-5 value times √2^(A −
 from the actual reference diameter d, normal module m_n and face width b [mm] and rounded
 as the standard rounds (≥ 10 µm to 1 µm, 5…10 µm to 0.5 µm, below 5 µm to 0.1 µm).
 Results in µm.  ISO 1328-1:2013 clause 5.3 (Table 1 formulas).
+
+Written with :mod:`geardesign.core.xp`: d, m_n, b, α_t may be numbers or numpy arrays (the
+sweep kernel); the class A is one integer.
 """
 
 from __future__ import annotations
 
 import math
+
+from geardesign.core import xp
 
 
 def _step(A: int) -> float:
@@ -17,11 +22,8 @@ def _step(A: int) -> float:
 
 def rounded(value: float) -> float:
     """The ISO 1328-1:2013 rounding of a tolerance [µm] (clause 5.2)."""
-    if value >= 10.0:
-        return float(round(value))
-    if value >= 5.0:
-        return round(value * 2.0) / 2.0
-    return round(value, 1)
+    return xp.where(value >= 10.0, xp.rnd(value),
+                    xp.where(value >= 5.0, xp.rnd(value * 2.0) / 2.0, xp.rnd(value, 1)))
 
 
 def single_pitch(d: float, m_n: float, A: int) -> float:
@@ -35,20 +37,20 @@ def single_pitch(d: float, m_n: float, A: int) -> float:
 
 def profile_form(d: float, m_n: float, A: int) -> float:
     """Profile form tolerance f_fαT = (2.5√m_n + 0.17√d + 0.5)·√2^(A−5) [µm]."""
-    return rounded((2.5 * math.sqrt(m_n) + 0.17 * math.sqrt(d) + 0.5) * _step(A))
+    return rounded((2.5 * xp.sqrt(m_n) + 0.17 * xp.sqrt(d) + 0.5) * _step(A))
 
 
 def helix_total(d: float, b: float, A: int) -> float:
     """Total helix tolerance F_βT = (0.1√d + 0.63√b + 4.2)·√2^(A−5) [µm]."""
-    return rounded((0.1 * math.sqrt(d) + 0.63 * math.sqrt(b) + 4.2) * _step(A))
+    return rounded((0.1 * xp.sqrt(d) + 0.63 * xp.sqrt(b) + 4.2) * _step(A))
 
 
 def helix_slope(d: float, b: float, A: int) -> float:
     """Helix slope tolerance f_HβT = (0.07√d + 0.45√b + 3)·√2^(A−5) [µm]."""
-    return rounded((0.07 * math.sqrt(d) + 0.45 * math.sqrt(b) + 3.0) * _step(A))
+    return rounded((0.07 * xp.sqrt(d) + 0.45 * xp.sqrt(b) + 3.0) * _step(A))
 
 
 def base_pitch(d: float, m_n: float, alpha_t: float, A: int) -> float:
     """Transverse base pitch deviation f_pb [µm] used by ISO 6336-1:2019 for K_v and K_Hα:
     the single pitch tolerance projected on the line of action, f_pT·cos α_t (α_t [rad])."""
-    return single_pitch(d, m_n, A) * math.cos(alpha_t)
+    return single_pitch(d, m_n, A) * xp.cos(alpha_t)

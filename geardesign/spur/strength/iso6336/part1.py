@@ -4,12 +4,18 @@ factors K_Hα and K_Fα.
 
 Pure functions.  Forces N, lengths mm, deviations µm, stiffness N/(mm·µm), speeds min⁻¹,
 mass per face width kg/mm, angles rad.  Each function names its clause of [ISO6336-1].
+
+The functions the rating of a pair calls are written with :mod:`geardesign.core.xp`: they
+take Python numbers (the calculator) or numpy arrays of candidates (the sweep kernel) with
+the same formula; a branch is an ``xp.where`` whose unused side is kept inside its domain.
+Material types are strings, the same for every candidate.
 """
 
 from __future__ import annotations
 
 import math
 
+from geardesign.core import xp
 from geardesign.spur.strength.iso6336 import tables as T
 
 # ----------------------------------------------------------------------------- stiffness
@@ -58,8 +64,8 @@ def blank_factor(web_ratio: float | None, rim_ratio: float | None) -> float:
     if web_ratio is None:
         return 1.0
     bs = min(max(web_ratio, 0.2), 1.2)
-    sr = max(rim_ratio if rim_ratio is not None else 1.0, 1.0)
-    return 1.0 + math.log(bs) / (5.0 * math.exp(sr / 5.0))
+    sr = xp.maximum(rim_ratio if rim_ratio is not None else 1.0, 1.0)
+    return 1.0 + math.log(bs) / (5.0 * xp.exp(sr / 5.0))
 
 
 C_M = 0.8
@@ -70,10 +76,8 @@ def single_stiffness(c_th: float, C_R: float, C_B: float, beta: float, line_load
                      E_ratio: float = 1.0) -> float:
     """Single stiffness c' = c'_th C_M C_R C_B cos β (E/E_st) [N/(mm·µm)], reduced by
     (K_A F_t/b / 100)^0.25 below 100 N/mm.  [ISO6336-1] 9.3.1 eq. (84)."""
-    c = c_th * C_M * C_R * C_B * math.cos(beta) * E_ratio
-    if line_load < 100.0:
-        c *= (line_load / 100.0) ** 0.25
-    return c
+    c = c_th * C_M * C_R * C_B * xp.cos(beta) * E_ratio
+    return xp.where(line_load < 100.0, c * xp.minimum(line_load / 100.0, 1.0) ** 0.25, c)
 
 
 def mesh_stiffness_alpha(c_prime: float, eps_alpha: float) -> float:
@@ -97,12 +101,13 @@ def running_in_alpha(f_pb: float, material: str, sigma_Hlim: float, v: float) ->
     0.075f_pb ≤ 3 µm.  A pair of two materials takes the mean (:func:`pair_mean`).
     [ISO6336-1] 8.3.5 eqs. (75)–(77)."""
     if material in T.SURFACE_HARDENED:
-        return min(0.075 * f_pb, 3.0)
+        return xp.minimum(0.075 * f_pb, 3.0)
     if material in T.CAST_IRON_GREY:
         y = 0.275 * f_pb
-        return y if v <= 5.0 else min(y, 22.0 if v <= 10.0 else 11.0)
+        return xp.where(v <= 5.0, y, xp.minimum(y, xp.where(v <= 10.0, 22.0, 11.0)))
     y = 160.0 / sigma_Hlim * f_pb
-    return y if v <= 5.0 else min(y, (12800.0 if v <= 10.0 else 6400.0) / sigma_Hlim)
+    return xp.where(v <= 5.0, y,
+                    xp.minimum(y, xp.where(v <= 10.0, 12800.0, 6400.0) / sigma_Hlim))
 
 
 def running_in_beta(F_beta_x: float, material: str, sigma_Hlim: float, v: float) -> float:
@@ -112,12 +117,13 @@ def running_in_beta(F_beta_x: float, material: str, sigma_Hlim: float, v: float)
     and 12800/σ_Hlim above; GG, GGG (ferr.): 0.55F_βx (≤ 45 µm, ≤ 22 µm); surface-hardened:
     0.15F_βx ≤ 6 µm.  [ISO6336-1] 7.6.4 eqs. (61)–(63)."""
     if material in T.SURFACE_HARDENED:
-        return min(0.15 * F_beta_x, 6.0)
+        return xp.minimum(0.15 * F_beta_x, 6.0)
     if material in T.CAST_IRON_GREY:
         y = 0.55 * F_beta_x
-        return y if v <= 5.0 else min(y, 45.0 if v <= 10.0 else 22.0)
+        return xp.where(v <= 5.0, y, xp.minimum(y, xp.where(v <= 10.0, 45.0, 22.0)))
     y = 320.0 / sigma_Hlim * F_beta_x
-    return y if v <= 5.0 else min(y, (25600.0 if v <= 10.0 else 12800.0) / sigma_Hlim)
+    return xp.where(v <= 5.0, y,
+                    xp.minimum(y, xp.where(v <= 10.0, 25600.0, 12800.0) / sigma_Hlim))
 
 
 def pair_mean(y1: float, y2: float) -> float:
@@ -155,32 +161,27 @@ def reduced_mass(m1: float, m2: float | None) -> float:
 def resonance_speed(z1: int, c_gamma_alpha: float, m_red: float) -> float:
     """Resonance speed of the pinion n_E1 = 30000/(πz1)·√(c_γα/m_red) [min⁻¹].
     [ISO6336-1] 6.5.2 eq. (6)."""
-    return 30000.0 / (math.pi * z1) * math.sqrt(c_gamma_alpha / m_red)
+    return 30000.0 / (math.pi * z1) * xp.sqrt(c_gamma_alpha / m_red)
 
 
 def lower_resonance_limit(line_load: float) -> float:
     """N_S = 0.5 + 0.35√(K_A F_t/(100 b)) below 100 N/mm, else 0.85.  [ISO6336-1] 6.5.3
     eqs. (11), (12)."""
-    if line_load < 100.0:
-        return 0.5 + 0.35 * math.sqrt(line_load / 100.0)
-    return 0.85
+    return xp.where(line_load < 100.0, 0.5 + 0.35 * xp.sqrt(xp.minimum(line_load / 100.0, 1.0)),
+                    0.85)
 
 
 def dynamic_constants(eps_gamma: float) -> tuple[float, ...]:
     """C_v1 … C_v7 of K_v method B by the total contact ratio.  [ISO6336-1] 6.5.9 Table 8."""
-    if eps_gamma <= 2.0:
-        cv2, cv3, cv4, cv6 = 0.34, 0.23, 0.90, 0.47
-    else:
-        cv2 = 0.57 / (eps_gamma - 0.3)
-        cv3 = 0.096 / (eps_gamma - 1.56)
-        cv4 = (0.57 - 0.05 * eps_gamma) / (eps_gamma - 1.44)
-        cv6 = 0.12 / (eps_gamma - 1.74)
-    if eps_gamma <= 1.5:
-        cv7 = 0.75
-    elif eps_gamma <= 2.5:
-        cv7 = 0.125 * math.sin(math.pi * (eps_gamma - 2.0)) + 0.875
-    else:
-        cv7 = 1.0
+    low = eps_gamma <= 2.0
+    e = xp.where(low, 3.0, eps_gamma)          # the formulas' domain ε_γ > 2 for both sides
+    cv2 = xp.where(low, 0.34, 0.57 / (e - 0.3))
+    cv3 = xp.where(low, 0.23, 0.096 / (e - 1.56))
+    cv4 = xp.where(low, 0.90, (0.57 - 0.05 * e) / (e - 1.44))
+    cv6 = xp.where(low, 0.47, 0.12 / (e - 1.74))
+    cv7 = xp.where(eps_gamma <= 1.5, 0.75,
+                   xp.where(eps_gamma <= 2.5, 0.125 * xp.sin(math.pi * (eps_gamma - 2.0)) + 0.875,
+                            1.0))
     return T.CV1, cv2, cv3, cv4, T.CV5, cv6, cv7
 
 
@@ -199,18 +200,19 @@ def dynamic_factor(N: float, N_S: float, c_prime: float, f_pb_eff: float, f_f_ef
     [ISO6336-1] 6.5.4–6.5.7 eqs. (13)–(22).
     """
     cv1, cv2, cv3, cv4, cv5, cv6, cv7 = dynamic_constants(eps_gamma)
-    B_p = c_prime * max(f_pb_eff, 0.0) / line_load
-    B_f = c_prime * max(f_f_eff, 0.0) / line_load
+    B_p = c_prime * xp.maximum(f_pb_eff, 0.0) / line_load
+    B_f = c_prime * xp.maximum(f_f_eff, 0.0) / line_load
     B_k = abs(1.0 - c_prime * C_a / line_load)
     main = cv1 * B_p + cv2 * B_f + cv4 * B_k + 1.0
     super_ = cv5 * B_p + cv6 * B_f + cv7
-    if N <= N_S:
-        return N * (cv1 * B_p + cv2 * B_f + cv3 * B_k) + 1.0, "subcritical"
-    if N <= 1.15:
-        return main, "main resonance"
-    if N < 1.5:
-        return super_ + (main - super_) * (1.5 - N) / 0.35, "intermediate"
-    return super_, "supercritical"
+    sub, mid = N <= N_S, N <= 1.15
+    inter = N < 1.5
+    K = xp.where(sub, N * (cv1 * B_p + cv2 * B_f + cv3 * B_k) + 1.0,
+                 xp.where(mid, main,
+                          xp.where(inter, super_ + (main - super_) * (1.5 - N) / 0.35, super_)))
+    rng = xp.where(sub, "subcritical", xp.where(mid, "main resonance",
+                                                xp.where(inter, "intermediate", "supercritical")))
+    return K, rng
 
 
 # ----------------------------------------------------------------------------- face load
@@ -242,7 +244,7 @@ def initial_misalignment(f_sh: float, f_ma: float, modification: str, F_m_b: flo
     F_βx,min = max(0.005F_m/b, 0.5f_Hβ).  B1, B2 by the helix modification
     (``tables.HELIX_MODIFICATION``).  [ISO6336-1] 7.6.2 eqs. (53), (54), Table 9."""
     B1, B2 = T.HELIX_MODIFICATION[modification]
-    return max(1.33 * B1 * f_sh + B2 * f_ma, 0.005 * F_m_b, 0.5 * f_Hbeta)
+    return xp.maximum(xp.maximum(1.33 * B1 * f_sh + B2 * f_ma, 0.005 * F_m_b), 0.5 * f_Hbeta)
 
 
 def face_load_factor(F_beta_y: float, c_gamma_beta: float, F_m_b: float) -> float:
@@ -257,13 +259,13 @@ def face_load_factor(F_beta_y: float, c_gamma_beta: float, F_m_b: float) -> floa
     1.3
     """
     k = F_beta_y * c_gamma_beta / (2.0 * F_m_b)
-    return 1.0 + k if k <= 1.0 else math.sqrt(4.0 * k)
+    return xp.where(k <= 1.0, 1.0 + k, xp.sqrt(xp.maximum(4.0 * k, 0.0)))
 
 
 def n_f(b_h: float) -> float:
     """Exponent N_F = (b/h)²/(1 + b/h + (b/h)²), b/h the smaller of both gears' face width
     over tooth depth, not below 3.  [ISO6336-1] 7.7 eq. (64)."""
-    r = max(b_h, 3.0)
+    r = xp.maximum(b_h, 3.0)
     return r * r / (1.0 + r + r * r)
 
 
@@ -289,10 +291,9 @@ def transverse_load_factor(eps_gamma: float, c_gamma_alpha: float, f_pb_eff: flo
     form deviation f_fα where it is larger), F_tH/b = F_t K_A K_v K_Hβ/b [N/mm].
     [ISO6336-1] 8.3.2 eqs. (71), (72).
     """
-    t = c_gamma_alpha * max(f_pb_eff, 0.0) / F_tH_b
-    if eps_gamma <= 2.0:
-        return 0.5 * eps_gamma * (0.9 + 0.4 * t)
-    return 0.9 + 0.4 * math.sqrt(2.0 * (eps_gamma - 1.0) / eps_gamma) * t
+    t = c_gamma_alpha * xp.maximum(f_pb_eff, 0.0) / F_tH_b
+    return xp.where(eps_gamma <= 2.0, 0.5 * eps_gamma * (0.9 + 0.4 * t),
+                    0.9 + 0.4 * xp.sqrt(xp.maximum(2.0 * (eps_gamma - 1.0) / eps_gamma, 0.0)) * t)
 
 
 def transverse_limit_contact(eps_gamma: float, eps_alpha: float, Z_eps: float) -> float:
@@ -311,4 +312,4 @@ def transverse_limit_bending(eps_gamma: float, eps_alpha: float) -> float:
 def limited(k: float, k_max: float) -> tuple[float, bool]:
     """A transverse load factor within 1 ≤ K ≤ K_max; and whether the cap was active.
     [ISO6336-1] 8.3.4."""
-    return max(1.0, min(k, k_max)), k > k_max
+    return xp.maximum(1.0, xp.minimum(k, k_max)), k > k_max

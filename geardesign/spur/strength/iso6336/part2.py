@@ -5,12 +5,17 @@ factors Z_L, Z_v, Z_R, Z_W, Z_X of the permissible contact stress.
 Pure functions; stresses MPa, lengths mm, roughness µm, viscosity mm²/s, speed m/s, angles
 rad.  Where GOST 21354-87 uses the same formula (Z_E, Z_H, Z_ε) the function keeps its ISO
 clause and calls the one implementation in :mod:`geardesign.spur.strength.gost21354`.
+
+Written with :mod:`geardesign.core.xp` where the rating of a pair needs it: numbers (the
+calculator) or numpy arrays of candidates (the sweep kernel) through one formula; material
+types, σ_Hlim and the lubricant are the same for every candidate.
 """
 
 from __future__ import annotations
 
 import math
 
+from geardesign.core import xp
 from geardesign.spur.strength import gost21354
 from geardesign.spur.strength.iso6336 import tables as T
 
@@ -36,7 +41,7 @@ def z_eps(eps_alpha: float, eps_beta: float, helical: bool) -> float:
     ε_β/ε_α) for ε_β < 1, √(1/ε_α) for ε_β ≥ 1.  ``helical`` comes from the helix angle
     of the input (β > 0), not from a computed ε_β.  [ISO6336-2] (Z_ε); the formula of
     :func:`.gost21354.z_eps`."""
-    return gost21354.z_eps(eps_alpha, eps_beta if helical else 0.0)
+    return gost21354.z_eps(eps_alpha, xp.where(helical, eps_beta, 0.0))
 
 
 def z_beta(beta: float) -> float:
@@ -45,14 +50,14 @@ def z_beta(beta: float) -> float:
     >>> round(z_beta(math.radians(15.8)), 5)
     1.01944
     """
-    return 1.0 / math.sqrt(math.cos(beta))
+    return 1.0 / xp.sqrt(xp.cos(beta))
 
 
 def _m(tan_a_wt: float, da1: float, db1: float, z1: float, da2: float, db2: float, z2: float,
        eps_alpha: float) -> float:
-    s1 = math.sqrt((da1 / db1) ** 2 - 1.0) - 2.0 * math.pi / z1
-    s2 = math.sqrt((da2 / db2) ** 2 - 1.0) - (eps_alpha - 1.0) * 2.0 * math.pi / z2
-    return tan_a_wt / math.sqrt(s1 * s2)
+    s1 = xp.sqrt((da1 / db1) ** 2 - 1.0) - 2.0 * math.pi / z1
+    s2 = xp.sqrt((da2 / db2) ** 2 - 1.0) - (eps_alpha - 1.0) * 2.0 * math.pi / z2
+    return tan_a_wt / xp.sqrt(s1 * s2)
 
 
 def single_pair_factors(alpha_wt: float, d_a: tuple[float, float], d_b: tuple[float, float],
@@ -69,7 +74,7 @@ def single_pair_factors(alpha_wt: float, d_a: tuple[float, float], d_b: tuple[fl
     and its M1 from the internal gear's tip circle taken with negative z and diameters.
     [ISO6336-2] (Z_B, Z_D).
     """
-    t = math.tan(alpha_wt)
+    t = xp.tan(alpha_wt)
     if internal:
         M1 = _m(t, d_a[0], d_b[0], z[0], -d_a[1], -d_b[1], -z[1], eps_alpha)
         M2 = 1.0
@@ -78,11 +83,9 @@ def single_pair_factors(alpha_wt: float, d_a: tuple[float, float], d_b: tuple[fl
         M2 = _m(t, d_a[1], d_b[1], z[1], d_a[0], d_b[0], z[0], eps_alpha)
 
     def f(M: float) -> float:
-        if not helical:
-            return max(1.0, M)
-        if eps_beta >= 1.0:
-            return 1.0
-        return max(1.0, M - eps_beta * (M - 1.0))
+        return xp.where(helical, xp.where(eps_beta >= 1.0, 1.0,
+                                          xp.maximum(1.0, M - eps_beta * (M - 1.0))),
+                        xp.maximum(1.0, M))
 
     return f(M1), (1.0 if internal else f(M2)), M1, M2
 
@@ -97,13 +100,13 @@ def nominal_contact_stress(Z_H: float, Z_E: float, Z_eps: float, Z_beta: float, 
     u, the standard's negative u).  [ISO6336-2] (σ_H0).
     """
     s = -1.0 if internal else 1.0
-    return Z_H * Z_E * Z_eps * Z_beta * math.sqrt(F_t / (d1 * b) * (u + s) / u)
+    return Z_H * Z_E * Z_eps * Z_beta * xp.sqrt(F_t / (d1 * b) * (u + s) / u)
 
 
 def contact_stress(Z_BD: float, sigma_H0: float, K_A: float, K_gamma: float, K_v: float,
                    K_Hbeta: float, K_Halpha: float) -> float:
     """Contact stress σ_H = Z_B(Z_D)·σ_H0·√(K_A K_γ K_v K_Hβ K_Hα) [MPa].  [ISO6336-2] (σ_H)."""
-    return Z_BD * sigma_H0 * math.sqrt(K_A * K_gamma * K_v * K_Hbeta * K_Halpha)
+    return Z_BD * sigma_H0 * xp.sqrt(K_A * K_gamma * K_v * K_Hbeta * K_Halpha)
 
 
 # ----------------------------------------------------------------------------- life
@@ -115,15 +118,12 @@ def life_curve(points: tuple[tuple[float, float], ...], N_L: float, long_life: f
     beyond; constant below the first (static) point.  [ISO6336-2] (Z_NT);
     [ISO6336-3] (Y_NT)."""
     pts = points + ((T.N_LONG_LIFE, long_life),)
-    if N_L <= pts[0][0]:
-        return pts[0][1]
-    if N_L >= pts[-1][0]:
-        return pts[-1][1]
-    for (n0, y0), (n1, y1) in zip(pts, pts[1:]):
-        if N_L <= n1:
-            k = math.log(N_L / n0) / math.log(n1 / n0)
-            return y0 * (y1 / y0) ** k
-    return pts[-1][1]  # pragma: no cover
+    out = pts[-1][1]                       # N_L >= the last point
+    for (n0, y0), (n1, y1) in reversed(list(zip(pts, pts[1:]))):
+        N = xp.clip(N_L, n0, n1)           # each segment's formula inside its own range
+        k = xp.log(N / n0) / math.log(n1 / n0)
+        out = xp.where(N_L <= n1, y0 * (y1 / y0) ** k, out)
+    return xp.where(N_L <= pts[0][0], pts[0][1], xp.where(N_L >= pts[-1][0], pts[-1][1], out))
 
 
 def z_nt(material: str, N_L: float, limited_pitting: bool = False,
@@ -161,12 +161,11 @@ def interpolated(value_ref: float, N_L: float, N_static: float, N_ref: float,
     its reference value at and beyond the reference point, interpolated on log–log scales
     between.  [ISO6336-2] (influence factors in the limited life range); [ISO6336-3]
     likewise."""
-    if N_L >= N_ref:
-        return value_ref
-    if N_L <= N_static:
-        return value_static
-    k = math.log(N_L / N_static) / math.log(N_ref / N_static)
-    return value_static * (value_ref / value_static) ** k
+    N = xp.clip(N_L, N_static, N_ref)
+    k = xp.log(N / N_static) / math.log(N_ref / N_static)
+    return xp.where(N_L >= N_ref, value_ref,
+                    xp.where(N_L <= N_static, value_static,
+                             value_static * (value_ref / value_static) ** k))
 
 
 # ----------------------------------------------------------------------------- influence
@@ -198,14 +197,14 @@ def z_v(sigma_Hlim: float, v: float) -> float:
     0.9691
     """
     c = c_zl(sigma_Hlim) + 0.02
-    return c + 2.0 * (1.0 - c) / math.sqrt(0.8 + 32.0 / v)
+    return c + 2.0 * (1.0 - c) / xp.sqrt(0.8 + 32.0 / v)
 
 
 def rho_red(d_b1: float, d_b2: float, alpha_wt: float, internal: bool = False) -> float:
     """Relative radius of curvature at the pitch point ρ_red = ρ1ρ2/(ρ2 ± ρ1) [mm],
     ρ = 0.5d_b tan α_wt (transverse section).  [ISO6336-2] (Z_R)."""
-    r1 = 0.5 * d_b1 * math.tan(alpha_wt)
-    r2 = 0.5 * d_b2 * math.tan(alpha_wt)
+    r1 = 0.5 * d_b1 * xp.tan(alpha_wt)
+    r2 = 0.5 * d_b2 * xp.tan(alpha_wt)
     return r1 * r2 / (r2 - r1 if internal else r1 + r2)
 
 
@@ -241,7 +240,7 @@ def z_w(HB_soft: float, Rz_hard: float | None = None, Rz_soft: float | None = No
     if Rz_hard is None:
         return base
     RzH = Rz_hard * (rho / 10.0) ** 0.33 * (Rz_hard / Rz_soft) ** 0.66 / (v * nu40 / 1500.0) ** 0.33
-    RzH = min(max(RzH, 3.0), 16.0)
+    RzH = xp.clip(RzH, 3.0, 16.0)
     return base * (3.0 / RzH) ** 0.15
 
 

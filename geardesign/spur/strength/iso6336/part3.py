@@ -5,6 +5,10 @@ and working root stresses and the factors of the permissible root stress.
 
 Pure functions; lengths mm, stresses MPa, roughness µm, angles rad (every angle stays in
 radians inside the iteration: mixing degrees and radians moves Y_F by percents).
+
+Written with :mod:`geardesign.core.xp` where the rating of a pair needs it: numbers (the
+calculator) or numpy arrays of candidates (the sweep kernel) through one formula; material
+types, the accuracy grade and the rim data are the same for every candidate.
 """
 
 from __future__ import annotations
@@ -12,6 +16,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from geardesign.core import xp
 from geardesign.involute import inv
 from geardesign.spur.strength.iso6336 import tables as T
 
@@ -66,38 +71,40 @@ def tooth_form(z: int, x: float, m_n: float, alpha_n: float, beta: float, beta_b
 
     [ISO6336-3] method B, tooth form factor Y_F and stress correction factor Y_S.
     """
-    cb = math.cos(beta_b)
-    z_n = z / (cb * cb * math.cos(beta))
-    E = (math.pi / 4.0 * m_n - h_fP * math.tan(alpha_n) + s_pr / math.cos(alpha_n)
-         - (1.0 - math.sin(alpha_n)) * rho_fP / math.cos(alpha_n))
+    cb = xp.cos(beta_b)
+    z_n = z / (cb * cb * xp.cos(beta))
+    E = (math.pi / 4.0 * m_n - h_fP * xp.tan(alpha_n) + s_pr / xp.cos(alpha_n)
+         - (1.0 - xp.sin(alpha_n)) * rho_fP / xp.cos(alpha_n))
     G = rho_fP / m_n - h_fP / m_n + x
     H = 2.0 / z_n * (math.pi / 2.0 - E / m_n) - math.pi / 3.0
-    th = math.pi / 6.0
+    # fixed point; an array element stops at its own step below 1e-13, as a number does
+    th, done = math.pi / 6.0, False
     for _ in range(100):
-        new = 2.0 * G / z_n * math.tan(th) - H
-        if abs(new - th) < 1e-13:
-            th = new
+        new = 2.0 * G / z_n * xp.tan(th) - H
+        converged = abs(new - th) < 1e-13
+        th = xp.where(done, th, new)
+        done = done | converged
+        if xp.all_(done):
             break
-        th = new
-    s_Fn = m_n * (z_n * math.sin(math.pi / 3.0 - th)
-                  + math.sqrt(3.0) * (G / math.cos(th) - rho_fP / m_n))
-    rho_F = m_n * (rho_fP / m_n + 2.0 * G * G / (math.cos(th) * (z_n * math.cos(th) ** 2
+    s_Fn = m_n * (z_n * xp.sin(math.pi / 3.0 - th)
+                  + xp.sqrt(3.0) * (G / xp.cos(th) - rho_fP / m_n))
+    rho_F = m_n * (rho_fP / m_n + 2.0 * G * G / (xp.cos(th) * (z_n * xp.cos(th) ** 2
                                                                    - 2.0 * G)))
     # outer point of single tooth contact on the virtual spur gear
     d_n = m_n * z_n
-    d_bn = d_n * math.cos(alpha_n)
+    d_bn = d_n * xp.cos(alpha_n)
     d_an = d_n + d_a - d
     eps_an = eps_alpha / (cb * cb)
-    root = math.sqrt(d_an * d_an / 4.0 - d_bn * d_bn / 4.0) - (
-        math.pi * d * math.cos(beta) * math.cos(alpha_n) / z * (eps_an - 1.0))
-    d_en = 2.0 * math.sqrt(root * root + d_bn * d_bn / 4.0)
-    alpha_en = math.acos(d_bn / d_en)
-    gamma_e = (0.5 * math.pi + 2.0 * x * math.tan(alpha_n)) / z_n + inv(alpha_n) - inv(alpha_en)
+    root = xp.sqrt(d_an * d_an / 4.0 - d_bn * d_bn / 4.0) - (
+        math.pi * d * xp.cos(beta) * xp.cos(alpha_n) / z * (eps_an - 1.0))
+    d_en = 2.0 * xp.sqrt(root * root + d_bn * d_bn / 4.0)
+    alpha_en = xp.acos(d_bn / d_en)
+    gamma_e = (0.5 * math.pi + 2.0 * x * xp.tan(alpha_n)) / z_n + inv(alpha_n) - inv(alpha_en)
     alpha_Fen = alpha_en - gamma_e
-    h_Fe = 0.5 * m_n * ((math.cos(gamma_e) - math.sin(gamma_e) * math.tan(alpha_Fen))
-                        * d_en / m_n - z_n * math.cos(math.pi / 3.0 - th)
-                        - G / math.cos(th) + rho_fP / m_n)
-    Y_F = 6.0 * (h_Fe / m_n) * math.cos(alpha_Fen) / ((s_Fn / m_n) ** 2 * math.cos(alpha_n))
+    h_Fe = 0.5 * m_n * ((xp.cos(gamma_e) - xp.sin(gamma_e) * xp.tan(alpha_Fen))
+                        * d_en / m_n - z_n * xp.cos(math.pi / 3.0 - th)
+                        - G / xp.cos(th) + rho_fP / m_n)
+    Y_F = 6.0 * (h_Fe / m_n) * xp.cos(alpha_Fen) / ((s_Fn / m_n) ** 2 * xp.cos(alpha_n))
     L = s_Fn / h_Fe
     q_s = s_Fn / (2.0 * rho_F)
     Y_S = (1.2 + 0.13 * L) * q_s ** (1.0 / (1.21 + 2.3 / L))
@@ -108,8 +115,8 @@ def y_beta(eps_beta: float, beta: float) -> float:
     """Helix angle factor Y_β = (1 − ε_β β/120°)/cos³β with ε_β ≤ 1 and β ≤ 30° in the
     bracket (β in degrees there); 1 for spur gears.  [ISO6336-3] (Y_β; the 1/cos³β term
     corrects the virtual spur gear)."""
-    b = min(math.degrees(beta), 30.0)
-    return (1.0 - min(eps_beta, 1.0) * b / 120.0) / math.cos(beta) ** 3
+    b = xp.minimum(xp.degrees(beta), 30.0)
+    return (1.0 - xp.minimum(eps_beta, 1.0) * b / 120.0) / xp.cos(beta) ** 3
 
 
 def y_beta_2006(eps_beta: float, beta: float) -> float:
@@ -127,9 +134,9 @@ def y_b(s_R: float | None, h_t: float, m_n: float, internal: bool = False) -> fl
         return 1.0
     if internal:
         r = s_R / m_n
-        return 1.0 if r >= 3.5 else 1.15 * math.log(8.324 * m_n / s_R)
+        return xp.where(r >= 3.5, 1.0, 1.15 * xp.log(8.324 * m_n / s_R))
     r = s_R / h_t
-    return 1.0 if r >= 1.2 else 1.6 * math.log(2.242 * h_t / s_R)
+    return xp.where(r >= 1.2, 1.0, 1.6 * xp.log(2.242 * h_t / s_R))
 
 
 def y_b_domain(s_R: float, h_t: float, m_n: float, internal: bool = False) -> float:
@@ -141,9 +148,10 @@ def y_b_domain(s_R: float, h_t: float, m_n: float, internal: bool = False) -> fl
 def y_dt(eps_alpha_n: float, grade: int) -> float:
     """Deep tooth factor Y_DT: 1 unless ISO accuracy grade ≤ 4 and ε_αn > 2 (0.7 above
     2.05, 2.366 − 0.666ε_αn between 2 and 2.05).  [ISO6336-3] (Y_DT)."""
-    if grade > 4 or eps_alpha_n <= 2.0:
+    if grade > 4:
         return 1.0
-    return 0.7 if eps_alpha_n > 2.05 else 2.366 - 0.666 * eps_alpha_n
+    return xp.where(eps_alpha_n <= 2.0, 1.0,
+                    xp.where(eps_alpha_n > 2.05, 0.7, 2.366 - 0.666 * eps_alpha_n))
 
 
 def nominal_root_stress(F_t: float, b: float, m_n: float, Y_F: float, Y_S: float,
@@ -197,7 +205,7 @@ def y_delta_rel(q_s: float, rho_p: float) -> float:
     Y_δrelT = (1 + √(ρ'χ*))/(1 + √(ρ'χ*_T)), χ* = (1 + 2q_s)/5, χ*_T = 1.2 (q_sT = 2.5).
     [ISO6336-3] (Y_δrelT, method B)."""
     chi = (1.0 + 2.0 * q_s) / 5.0
-    return (1.0 + math.sqrt(rho_p * chi)) / (1.0 + math.sqrt(rho_p * 1.2))
+    return (1.0 + xp.sqrt(rho_p * chi)) / (1.0 + math.sqrt(rho_p * 1.2))
 
 
 def y_delta_rel_static(material: str, Y_S: float, sigma_02: float | None) -> float:
@@ -240,13 +248,13 @@ def y_x(material: str, m_n: float) -> float:
     >>> y_x("Eh", 14.0)
     0.91
     """
-    if m_n <= 5.0:
-        return 1.0
     if material in T.CAST_IRON_GREY:
-        return max(1.075 - 0.015 * m_n, 0.7)
-    if material in T.SURFACE_HARDENED:
-        return max(round(1.05 - 0.01 * m_n, 12), 0.8)
-    return max(1.03 - 0.006 * m_n, 0.85)
+        large = xp.maximum(1.075 - 0.015 * m_n, 0.7)
+    elif material in T.SURFACE_HARDENED:
+        large = xp.maximum(xp.rnd(1.05 - 0.01 * m_n, 12), 0.8)
+    else:
+        large = xp.maximum(1.03 - 0.006 * m_n, 0.85)
+    return xp.where(m_n <= 5.0, 1.0, large)
 
 
 def y_m(reverse_ratio: float) -> float:
