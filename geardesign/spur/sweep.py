@@ -62,7 +62,8 @@ OBJECTIVES = {
     "mass": ("mass", 1, "kg", "mass of the two gears as steel discs (7850 kg/m³)"),
     "face_width": ("b_w", 1, "mm", "face width"),
     "margin": ("margin", -1, "-", "smallest reserve of the rating: σ_HP/σ_H, S_F1/S_Fmin1, "
-               "S_F2/S_Fmin2"),
+               "S_F2/S_Fmin2 (GOST 21354-87); S_H1/S_Hmin, S_H2/S_Hmin, S_F1/S_Fmin, "
+               "S_F2/S_Fmin (ISO 6336:2019)"),
     "contact_safety": ("S_Hmin", -1, "-", "smaller contact safety factor S_H"),
 }
 
@@ -543,16 +544,33 @@ def load_sweep(data: dict, source: str, vary=(), samples=None, seed=None):
                                  "\"design\"", "design"))
     if spec.data["gear"].get("internal"):
         raise InputError(Problem("gear.internal", "a sweep rates external pairs", True))
-    from geardesign.spur.strength.iso6336.spec import chosen
+    from geardesign.spur.strength.iso6336.spec import ISO_NAME, chosen
 
     methods = chosen(spec.data["options"])
-    if methods != ["GOST 21354-87"]:
-        raise InputError(Problem("options.method" if len(methods) == 1 else "options.methods",
-                                 "a sweep rates by GOST 21354-87 (the vectorised kernel has no "
-                                 "ISO 6336 yet): remove the ISO method, then rate the ranked "
-                                 "variants by ISO 6336 with --emit-spec and geardesign run",
-                                 methods[0] if len(methods) == 1 else methods))
+    if len(methods) > 1:
+        raise InputError(Problem("options.methods", "a sweep rates by one method: give "
+                                 "options.method = \"GOST 21354-87\" or \"ISO 6336:2019\", "
+                                 "then rate the ranked variants by the other with --emit-spec "
+                                 "and geardesign run", methods))
+    if methods == [ISO_NAME]:
+        if (spec.data.get("load") or {}).get("spectrum"):
+            raise InputError(Problem("load.spectrum", "a sweep rates ISO 6336 at the nominal "
+                                     "torque only: remove the load spectrum (or sweep by GOST "
+                                     "21354-87), then rate the ranked variants with the spectrum "
+                                     "with --emit-spec and geardesign run", "[[load.spectrum]]"))
+        if (spec.data.get("iso") or {}).get("scuffing") is not None:
+            raise InputError(Problem("iso.scuffing", "a sweep does not rate scuffing: remove "
+                                     "[iso.scuffing], then rate the ranked variants for "
+                                     "scuffing with --emit-spec and geardesign run",
+                                     "[iso.scuffing]"))
     return data, sw
+
+
+def rating_method(data: dict) -> str:
+    """The strength method of a sweep's base spec data (one, as :func:`load_sweep` checks)."""
+    opts = data.get("options") or {}
+    names = opts.get("methods") or [opts.get("method") or "GOST 21354-87"]
+    return names[0]
 
 
 def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
@@ -571,8 +589,8 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
               "base": {k: v for k, v in data.items() if k not in ("kind", "title")}}
     rows = [Row(f"sweep.{d.key}", f"{len(d.values)} values, {d.low:g} … {d.high:g}", None,
                 d.key, "varied key") for d in sw.dims]
-    res = Result("sweep", data.get("title"), ["GOST 16532-70", "GOST 21354-87"], inputs, rows,
-                 source=source)
+    res = Result("sweep", data.get("title"), ["GOST 16532-70", rating_method(data)], inputs,
+                 rows, source=source)
     c = summary["counts"]
     sec = res.section("counts", "Candidates")
     sec.add("evaluated", c["evaluated"], "-", "N", "candidates evaluated ("
