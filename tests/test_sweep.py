@@ -190,11 +190,34 @@ def test_domain_of_varied_values(tmp_path):
     assert code == 2 and "outside the domain" in err
 
 
-def test_iso_method_is_refused_with_a_way_forward(tmp_path):
-    spec = write_spec(tmp_path, SMALL.replace("[sweep]", '[options]\nmethod = "ISO 6336:2019"\n\n[sweep]'))
-    code, out, err = cli("sweep", spec, "--format", "json")
-    assert code == 2 and out == "" and len(err.strip().splitlines()) == 1
-    assert "options.method" in err and "--emit-spec" in err
+def test_iso_sweep_matches_the_calculator_and_refuses_what_it_cannot_rate(tmp_path):
+    """An ISO 6336 base spec sweeps (the golden sweep_spur_iso: its lightest variant, emitted
+    and run, gives the row's safety factors); both methods at once, an ISO load spectrum and
+    ISO scuffing are refused with one line."""
+    iso = SPECS / "sweep_spur_iso.toml"
+    code, doc, err = _json(iso)
+    assert code == 0, err
+    assert doc["methods"] == ["GOST 16532-70", "ISO 6336:2019"]
+    row = doc["results"]["ranked"][0]
+    code, out, err = cli("sweep", iso, "--emit-spec", "1")
+    assert code == 0, err
+    code, text, err = cli("run", write_spec(tmp_path, out, "v1.toml"), "--format", "json")
+    assert code == 0, err
+    r = json.loads(text)["results"]
+    assert r["iso6336_contact"]["S_H1"] == pytest.approx(row["S_H1"], rel=1e-9)
+    assert r["iso6336_bending"]["S_F1"] == pytest.approx(row["S_F1"], rel=1e-9)
+    assert r["iso6336_bending"]["S_F2"] == pytest.approx(row["S_F2"], rel=1e-9)
+    text = iso.read_text(encoding="utf-8")
+    for bad, key in (
+            (text.replace('method = "ISO 6336:2019"',
+                          'methods = ["GOST 21354-87", "ISO 6336:2019"]'), "options.methods"),
+            (text.replace("[options]", "[[load.spectrum]]\ntorque_ratio = 1.0\ntime_share = 1.0"
+                          "\n\n[options]"), "load.spectrum"),
+            (text.replace("[sweep]", "[iso.scuffing]\nfzg_load_stage = 12\n"
+                          "oil_temperature = 70.0\n\n[sweep]"), "iso.scuffing")):
+        code, out, err = cli("sweep", write_spec(tmp_path, bad), "--format", "json")
+        assert code == 2 and out == "" and len(err.strip().splitlines()) == 1, err
+        assert key in err and "--emit-spec" in err
 
 
 _VALUES = {"gear.module": st.floats(0.05, 100.0), "gear.z1": st.integers(5, 1000),
