@@ -267,3 +267,16 @@ def test_iso_kernel_checks_equal_the_calculator():
         passed += errors
         seen += 1
     assert seen > 200 and 20 < passed < seen - 20
+
+
+def test_xp_round_is_pythons_round_on_arrays():
+    """xp.rnd (the ISO 1328-1 rounding of the tolerances, Y_X) rounds an array element by
+    element as Python's round does, halves included."""
+    from geardesign.core import xp
+
+    rng = np.random.default_rng(16)
+    x = np.concatenate([rng.uniform(0.0, 20.0, 20_000), np.arange(0, 200) * 0.05,
+                        np.arange(0, 40) * 0.5 + 0.25])
+    for nd in (0, 1, 12):
+        got = xp.rnd(x, nd)
+        assert all(got[i] == round(float(x[i]), nd) for i in range(len(x))), nd
