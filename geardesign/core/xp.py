@@ -76,19 +76,27 @@ def degrees(x):
 
 
 def hypot(x, y):
-    return math.hypot(x, y) if scalar(x, y) else _np().hypot(x, y)
+    if isinstance(x, _SCALARS) and isinstance(y, _SCALARS):
+        return math.hypot(x, y)
+    return _np().hypot(x, y)
 
 
 def minimum(a, b):
-    return min(a, b) if scalar(a, b) else _np().minimum(a, b)
+    if isinstance(a, _SCALARS) and isinstance(b, _SCALARS):
+        return min(a, b)
+    return _np().minimum(a, b)
 
 
 def maximum(a, b):
-    return max(a, b) if scalar(a, b) else _np().maximum(a, b)
+    if isinstance(a, _SCALARS) and isinstance(b, _SCALARS):
+        return max(a, b)
+    return _np().maximum(a, b)
 
 
 def clip(x, lo, hi):
     """``min(max(x, lo), hi)``."""
+    if isinstance(x, _SCALARS) and isinstance(lo, _SCALARS) and isinstance(hi, _SCALARS):
+        return min(max(x, lo), hi)
     return minimum(maximum(x, lo), hi)
 
 
@@ -119,7 +127,8 @@ def all_(x) -> bool:
 def where(cond, a, b):
     """``a`` where ``cond`` holds, else ``b``: a Python conditional for a scalar condition,
     ``numpy.where`` for an array."""
-    if isinstance(cond, (bool, int)) or type(cond).__name__ in ("bool_", "bool"):
+    if cond is True or cond is False or isinstance(cond, int) or \
+            type(cond).__name__ in ("bool_", "bool"):
         return a if cond else b
     return _np().where(cond, a, b)
 
