@@ -248,3 +248,45 @@ def test_any_sweep_in_the_domains_finishes_cleanly(dims, data):
     for row in res["results"]["ranked"] + res["results"]["pareto"]:
         assert all(v is None or isinstance(v, str) or math.isfinite(v) for v in row.values())
         assert row["margin"] >= 1.0 - 1e-9
+
+
+MATERIALS = BASE + """[sweep]
+"gear.module" = {values = [2.0, 2.5, 3.0]}
+"gear.face_width" = {from = 30.0, to = 60.0, step = 10.0}
+"material.pinion" = {values = [{grade = "40Kh", treatment = "improved", hardness_HB = 280.0}, {grade = "20KhN3A", treatment = "carburized", hardness_HRC = 59.0}]}
+"material.wheel" = {values = [{grade = "45", treatment = "improved", hardness_HB = 250.0}, {grade = "18KhGT", treatment = "carburized", hardness_HRC = 58.0}]}
+top = 48
+"""
+
+
+def test_materials_as_varied_keys(tmp_path):
+    """Material tables are varied like numbers: every combination is rated with its own
+    materials, the ranked rows name them, and an emitted variant reproduces its row."""
+    spec = write_spec(tmp_path, MATERIALS)
+    code, doc, err = _json(spec)
+    assert code == 0, err
+    assert doc["results"]["counts"]["evaluated"] == 3 * 4 * 2 * 2
+    ranked = doc["results"]["ranked"]
+    assert {r["material1"] for r in ranked} >= {"20KhN3A carburized 59 HRC"}
+    hard = [r for r in ranked if r["material1"].startswith("20KhN3A") and r["material2"].startswith("18KhGT")]
+    soft = [r for r in ranked if r["material1"].startswith("40Kh ") and r["material2"].startswith("45 ")]
+    # the case-hardened pair carries more than the improved one on the same gears
+    for h in hard:
+        twin = [s for s in soft if (s["m_n"], s["b_w"]) == (h["m_n"], h["b_w"])]
+        for s_ in twin:
+            assert h["margin"] > s_["margin"]
+    code, out, err = cli("sweep", spec, "--emit-spec", "1")
+    assert code == 0, err
+    path = write_spec(tmp_path, out, "v1.toml")
+    code, text, err = cli("run", path, "--format", "json")
+    r = json.loads(text)["results"]
+    assert r["contact"]["S_H1"] == pytest.approx(ranked[0]["S_H1"], rel=1e-9)
+    assert r["bending"]["S_F2"] == pytest.approx(ranked[0]["S_F2"], rel=1e-9)
+
+
+def test_bad_material_in_a_sweep_is_one_line(tmp_path):
+    text = MATERIALS.replace('hardness_HRC = 59.0}', 'hardness_HRC = 590.0}')
+    code, out, err = cli("sweep", write_spec(tmp_path, text), "--format", "json")
+    lines = err.strip().splitlines()
+    assert code == 2 and out == "" and len(lines) == 1
+    assert "sweep.material.pinion.values[1]: material.pinion.hardness_HRC" in lines[0]

@@ -55,6 +55,11 @@ VARIABLE = {
 }
 """The keys a sweep may vary, with their type and the domain of the spur spec."""
 
+MATERIAL_KEYS = ("material.pinion", "material.wheel")
+"""Keys varied over a list of material tables (``{values = [{grade = "40Kh", treatment =
+"improved", hardness_HB = 280.0}, ...]}``), each a ``[material.pinion]`` table of the spur
+spec."""
+
 OBJECTIVES = {
     # name: (result column, +1 minimise / −1 maximise, unit, description)
     "center_distance": ("a_w", 1, "mm", "working centre distance"),
@@ -72,6 +77,9 @@ COLUMNS = ("m_n", "z1", "z2", "x1", "x2", "helix_angle", "b_w", "u", "a_w", "eps
            "volume", "mass")
 """Result columns of a ranked variant (and of the candidate dataset)."""
 
+MATERIAL_COLUMNS = {"material.pinion": "material1", "material.wheel": "material2"}
+"""Columns of the varied materials: the index into the key's list of material tables."""
+
 STEEL_DENSITY = 7.85e-3   # kg/cm³
 
 
@@ -82,6 +90,7 @@ class Dim:
     low: float
     high: float
     integer: bool
+    choices: tuple = ()     # a material key: the material tables, ``values`` their indices
 
 
 @dataclass
@@ -156,6 +165,19 @@ def _range(key: str, spec, where: str) -> Dim:
     return Dim(key, arr, float(arr[0]), float(arr[-1]), integer)
 
 
+def _materials(key: str, spec, where: str) -> Dim:
+    """A material key: ``{values = [table, ...]}`` of material tables (checked against the
+    spur spec when the sweep is loaded)."""
+    vals = spec.get("values") if isinstance(spec, dict) and set(spec) == {"values"} else None
+    if not isinstance(vals, list) or not vals or not all(isinstance(v, dict) for v in vals):
+        raise InputError.at(where, spec, "must be {values = [{grade = ..., treatment = ..., "
+                            "hardness_HB = ...}, ...]}: a list of material tables")
+    if len(vals) > 100:
+        raise InputError.at(where, len(vals), "at most 100 materials per key")
+    idx = np.arange(len(vals), dtype=float)
+    return Dim(key, idx, 0.0, float(len(vals) - 1), True, tuple(dict(v) for v in vals))
+
+
 def parse_vary(text: str) -> tuple[str, object]:
     """``--vary KEY=FROM:TO:STEP`` or ``KEY=V1,V2,...`` into ``(key, range table)``."""
     if "=" not in text:
@@ -181,7 +203,7 @@ def parse_vary(text: str) -> tuple[str, object]:
 def _did_you_mean(key: str) -> str:
     import difflib
 
-    near = difflib.get_close_matches(key, list(VARIABLE), n=1)
+    near = difflib.get_close_matches(key, list(VARIABLE) + list(MATERIAL_KEYS), n=1)
     return f" (did you mean {near[0]}?)" if near else ""
 
 
@@ -201,9 +223,13 @@ def parse_sweep(table: dict | None, vary: list[str], samples: int | None, seed: 
                                  "{values = [...]} or --vary KEY=FROM:TO:STEP"))
     dims = []
     for key, r in ranges.items():
+        if key in MATERIAL_KEYS:
+            dims.append(_materials(key, r, f"sweep.{key}"))
+            continue
         if key not in VARIABLE:
             raise InputError(Problem(f"sweep.{key}", f"cannot be varied{_did_you_mean(key)}; "
-                                     f"a sweep varies {', '.join(VARIABLE)}", r))
+                                     f"a sweep varies {', '.join([*VARIABLE, *MATERIAL_KEYS])}",
+                                     r))
         dims.append(_range(key, r, f"sweep.{key}"))
     sw = Sweep(dims)
     if "gear.center_distance" in ranges and "gear.x1" in ranges and "gear.x2" in ranges:
@@ -349,22 +375,62 @@ def _chunk_inputs(sw: Sweep, varied: dict, base: dict, alpha_n: float) -> dict:
     return dict(m_n=m_n, z1=z1, z2=z2, x1=x1, x2=x2, beta=beta, b_w=b_w)
 
 
+def _with_materials(spec_data: dict, chosen: dict) -> dict:
+    """The spec data with the material tables ``chosen`` ({"material.pinion": table, ...})."""
+    if not chosen:
+        return spec_data
+    data = dict(spec_data)
+    mat = dict(data.get("material") or {})
+    for key, table in chosen.items():
+        mat[key.split(".", 1)[1]] = dict(table)
+    data["material"] = mat
+    return data
+
+
+def _evaluate_by_material(spec_data: dict, sw: Sweep, varied: dict, base: dict) -> tuple:
+    """The kernel over the candidates, one call per combination of varied materials (the
+    materials are fixed data of the kernel).  Returns the inputs and the result arrays."""
+    from geardesign.core.registry import load_data
+    from geardesign.spur.kernel import evaluate, fixed_from_spec
+
+    mdims = [d for d in sw.dims if d.choices]
+    n = len(next(iter(varied.values())))
+    codes = [varied[d.key].astype(np.int64) for d in mdims]
+    combos = sorted(set(zip(*codes))) if mdims else [()]
+    c = out = None
+    for combo in combos:
+        chosen = {d.key: d.choices[k] for d, k in zip(mdims, combo)}
+        _, spec = load_data(_with_materials(spec_data, chosen), "sweep")
+        fixed = fixed_from_spec(spec)
+        if c is None:
+            c = _chunk_inputs(sw, varied, base, fixed.rack.alpha_n)
+            bad = ~np.isfinite(c["x1"]) | ~np.isfinite(c["x2"])
+            c["x1"] = np.where(bad, 0.0, c["x1"])
+            c["x2"] = np.where(bad, 0.0, c["x2"])
+            c["bad"] = bad
+        sel = np.ones(n, dtype=bool)
+        for code, k in zip(codes, combo):
+            sel &= code == k
+        part = evaluate({k: v[sel] for k, v in c.items() if k != "bad"}, fixed)
+        if out is None:
+            out = {k: np.empty(n, dtype=np.asarray(v).dtype) for k, v in part.items()}
+        for k, v in part.items():
+            if k in out:
+                out[k][sel] = v
+    return c, out
+
+
 def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int) -> dict:
     """Evaluate candidates ``start`` … ``stop − 1`` and return the chunk's summary: counts,
     the ranked head and the Pareto front (as column arrays).  A pure function of its
     arguments: a worker process or a Dask worker runs it as the local loop does."""
     from geardesign.core.registry import load_data
-    from geardesign.spur.kernel import evaluate, fixed_from_spec
 
     _, spec = load_data(spec_data, "sweep")
-    fixed = fixed_from_spec(spec)
     base = _base_values(spec)
     varied = candidates(sw, start, stop)
-    c = _chunk_inputs(sw, varied, base, fixed.rack.alpha_n)
-    bad = ~np.isfinite(c["x1"]) | ~np.isfinite(c["x2"])
-    c["x1"] = np.where(bad, 0.0, c["x1"])
-    c["x2"] = np.where(bad, 0.0, c["x2"])
-    r = evaluate(c, fixed)
+    c, r = _evaluate_by_material(spec_data, sw, varied, base)
+    bad = c["bad"]
     r["valid"] &= ~bad
     r["passed"] &= ~bad
     r["helix_angle"] = np.degrees(c["beta"])
@@ -372,6 +438,8 @@ def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int) -> dict:
     r["volume"] = math.pi / 4.0 * (r["d1"] ** 2 + r["d2"] ** 2) * r["b_w"] / 1000.0
     r["mass"] = r["volume"] * STEEL_DENSITY
     r["S_Hmin"] = np.minimum(r["S_H1"], r["S_H2"])
+    for d, col in ((d, MATERIAL_COLUMNS[d.key]) for d in sw.dims if d.choices):
+        r[col] = varied[d.key].astype(float)
     feasible = r["passed"] & (r["margin"] >= sw.min_margin * (1 - 1e-12))
     if sw.ratio is not None:
         feasible &= (r["u"] >= sw.ratio[0] - 1e-12) & (r["u"] <= sw.ratio[1] + 1e-12)
@@ -382,7 +450,8 @@ def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int) -> dict:
     counts = {"evaluated": stop - start, "valid": int(r["valid"].sum()),
               "passed": int(r["passed"].sum()), "feasible": int(feasible.sum())}
     fails = {k[3:]: int((r["valid"] & ~r[k]).sum()) for k in r if k.startswith("ok_")}
-    sel = {k: r[k][feasible] for k in COLUMNS + ("S_Hmin",)}
+    sel = {k: r[k][feasible] for k in COLUMNS + ("S_Hmin",) + tuple(
+        MATERIAL_COLUMNS[d.key] for d in sw.dims if d.choices)}
     sel["index"] = index[feasible]
     head = _rank(sel, sw)
     front = _front(sel, sw)
@@ -396,8 +465,9 @@ def sw_rows(sw: Sweep) -> bool:
 
 def _dataset(r: dict, feasible, index) -> dict:
     cols = {"index": index}
-    for k in COLUMNS:
-        cols[k] = r[k]
+    for k in COLUMNS + tuple(MATERIAL_COLUMNS.values()):
+        if k in r:
+            cols[k] = r[k]
     for k in r:
         if k.startswith("ok_"):
             cols[k] = r[k]
@@ -509,7 +579,12 @@ def variant_spec(spec_data: dict, sw: Sweep, index: int) -> dict:
     rule = _shift_rule(varied, _base_values(spec))
     data = {k: (dict(v) if isinstance(v, dict) else v) for k, v in spec_data.items()}
     gear = dict(data["gear"])
+    chosen = {}
     for key, arr in varied.items():
+        if key in MATERIAL_KEYS:
+            dim = next(d for d in sw.dims if d.key == key)
+            chosen[key] = dim.choices[int(arr[0])]
+            continue
         name = key.split(".", 1)[1]
         v = float(arr[0])
         gear[name] = int(v) if VARIABLE[key][0] else v
@@ -522,7 +597,7 @@ def variant_spec(spec_data: dict, sw: Sweep, index: int) -> dict:
         else:
             gear["shift_split"] = "equal"
     data["gear"] = gear
-    return data
+    return _with_materials(data, chosen)
 
 
 def load_sweep(data: dict, source: str, vary=(), samples=None, seed=None):
@@ -539,6 +614,14 @@ def load_sweep(data: dict, source: str, vary=(), samples=None, seed=None):
                                  data.get("kind")))
     sw = parse_sweep(table, list(vary), samples, seed)
     _, spec = load_data(data, source)          # the base design must itself be valid
+    for d in sw.dims:
+        for i, choice in enumerate(d.choices):
+            try:
+                load_data(_with_materials(data, {d.key: choice}), source)
+            except InputError as exc:
+                p = exc.problems[0]
+                raise InputError(Problem(f"sweep.{d.key}.values[{i}]: {p.key}", p.message,
+                                         p.value)) from None
     if spec.data.get("mode") == "design":
         raise InputError(Problem("mode", "a sweep varies a given pair; remove mode = "
                                  "\"design\"", "design"))
@@ -587,7 +670,8 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
               if sw.center_distance_range else None,
               "min_margin": sw.min_margin, "top": sw.top,
               "base": {k: v for k, v in data.items() if k not in ("kind", "title")}}
-    rows = [Row(f"sweep.{d.key}", f"{len(d.values)} values, {d.low:g} … {d.high:g}", None,
+    rows = [Row(f"sweep.{d.key}", "; ".join(_material_label(t) for t in d.choices)
+                if d.choices else f"{len(d.values)} values, {d.low:g} … {d.high:g}", None,
                 d.key, "varied key") for d in sw.dims]
     res = Result("sweep", data.get("title"), ["GOST 16532-70", rating_method(data)], inputs,
                  rows, source=source)
@@ -608,6 +692,9 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
             ("helix_angle", "β", "deg"), ("b_w", "b_w", "mm"), ("u", "u", "-"),
             ("a_w", "a_w", "mm"), ("S_H1", "S_H1", "-"), ("S_F1", "S_F1", "-"),
             ("S_F2", "S_F2", "-"), ("margin", "margin", "-"), ("mass", "mass", "kg")]
+    mdims = [d for d in sw.dims if d.choices]
+    for i, d in enumerate(mdims):
+        cols.insert(2 + i, (MATERIAL_COLUMNS[d.key], d.key.split(".")[1], None))
     for key, title, block in (("ranked", f"Ranked variants (by {', '.join(sw.objectives)})",
                                summary["head"]),
                               ("pareto", "Pareto front of " + " and ".join(sw.objectives[:2]),
@@ -618,6 +705,9 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
                 r = {k: float(block[k][i]) for k in block if k in dict((c[0], 1) for c in cols)}
                 r["rank"] = i + 1
                 r["index"] = int(block["index"][i])
+                for d in mdims:
+                    r[MATERIAL_COLUMNS[d.key]] = _material_label(
+                        d.choices[int(block[MATERIAL_COLUMNS[d.key]][i])])
                 r["z1"], r["z2"] = int(r["z1"]), int(r["z2"])
                 t.rows.append(r)
         res.tables.append(t)
@@ -633,6 +723,15 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
         f"{c['feasible']} of {c['evaluated']} candidates are feasible", c["feasible"], 1,
         "sweep"))
     return res
+
+
+def _material_label(t: dict) -> str:
+    """A material table in a few words: grade, treatment and hardness."""
+    parts = [str(t.get("grade", "")), str(t.get("treatment", ""))]
+    for k, unit in (("hardness_HB", "HB"), ("hardness_HRC", "HRC"), ("hardness_HV", "HV")):
+        if k in t:
+            parts.append(f"{t[k]:g} {unit}")
+    return " ".join(p for p in parts if p)
 
 
 def run_file(path, vary=(), samples=None, seed=None, workers=1, scheduler=None,
