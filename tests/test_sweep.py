@@ -290,3 +290,16 @@ def test_bad_material_in_a_sweep_is_one_line(tmp_path):
     lines = err.strip().splitlines()
     assert code == 2 and out == "" and len(lines) == 1
     assert "sweep.material.pinion.values[1]: material.pinion.hardness_HRC" in lines[0]
+
+
+def test_reported_variants_are_rated_by_the_whole_calculator(tmp_path):
+    """The kernel makes no peak-torque check; each reported variant is rated again in full,
+    and one that fails there is marked and warned about."""
+    code, doc, _ = _json(SPEC)
+    assert all(r["full_check"] == "pass" for r in doc["results"]["ranked"])
+    text = SMALL.replace("life_hours = 10000.0", "life_hours = 10000.0\npeak_torque1 = 2000.0")
+    code, doc, err = _json(write_spec(tmp_path, text))
+    ranked = doc["results"]["ranked"]
+    assert ranked and all(r["full_check"].startswith("fail: STATIC") for r in ranked)
+    c = next(c for c in doc["checks"] if c["code"] == "SWEEP_FULL_CHECK")
+    assert c["severity"] == "warning" and not c["passed"]

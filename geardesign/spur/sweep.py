@@ -78,6 +78,10 @@ COLUMNS = ("m_n", "z1", "z2", "x1", "x2", "helix_angle", "b_w", "u", "a_w", "eps
 """Result columns of a ranked variant (and of the candidate dataset)."""
 
 MATERIAL_COLUMNS = {"material.pinion": "material1", "material.wheel": "material2"}
+
+FULL_CHECKS = 50
+"""Reported variants (of each table) rated again by the whole calculator (column "full
+check"): the peak-torque checks and the warnings the kernel does not make."""
 """Columns of the varied materials: the index into the key's list of material tables."""
 
 STEEL_DENSITY = 7.85e-3   # kg/cm³
@@ -692,9 +696,11 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
             ("helix_angle", "β", "deg"), ("b_w", "b_w", "mm"), ("u", "u", "-"),
             ("a_w", "a_w", "mm"), ("S_H1", "S_H1", "-"), ("S_F1", "S_F1", "-"),
             ("S_F2", "S_F2", "-"), ("margin", "margin", "-"), ("mass", "mass", "kg")]
+    cols.append(("full_check", "full check", None))
     mdims = [d for d in sw.dims if d.choices]
     for i, d in enumerate(mdims):
         cols.insert(2 + i, (MATERIAL_COLUMNS[d.key], d.key.split(".")[1], None))
+    verified: dict = {}
     for key, title, block in (("ranked", f"Ranked variants (by {', '.join(sw.objectives)})",
                                summary["head"]),
                               ("pareto", "Pareto front of " + " and ".join(sw.objectives[:2]),
@@ -709,8 +715,20 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
                     r[MATERIAL_COLUMNS[d.key]] = _material_label(
                         d.choices[int(block[MATERIAL_COLUMNS[d.key]][i])])
                 r["z1"], r["z2"] = int(r["z1"]), int(r["z2"])
+                if r["index"] not in verified and i < FULL_CHECKS:
+                    verified[r["index"]] = full_check(data, sw, r["index"])
+                r["full_check"] = verified.get(r["index"], "not run")
                 t.rows.append(r)
         res.tables.append(t)
+    failing = sorted(i for i, v in verified.items() if v != "pass")
+    if failing:
+        res.checks.append(check(
+            "SWEEP_FULL_CHECK", False, "warning",
+            f"{len(failing)} reported variant(s) fail checks the kernel does not make (column "
+            f"full check; e.g. the peak-torque checks): candidates "
+            f"{', '.join(map(str, failing[:10]))}; take a variant that passes, or rate one with "
+            f"--emit-spec and geardesign run for its full report", "", len(failing), 0,
+            "sweep"))
     top = sorted(((n, k) for k, n in summary["fails"].items() if n), reverse=True)[:3]
     why = ", ".join(f"{k} ({n})" for n, k in top)
     res.checks.append(check(
@@ -723,6 +741,20 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
         f"{c['feasible']} of {c['evaluated']} candidates are feasible", c["feasible"], 1,
         "sweep"))
     return res
+
+
+def full_check(data: dict, sw: Sweep, index: int) -> str:
+    """The verdict of the whole calculator on candidate ``index`` (its emitted spec): "pass",
+    or "fail: " and the failing error checks (those the kernel makes pass already)."""
+    from geardesign.core.errors import InputError as _IE
+    from geardesign.core.registry import run_data
+
+    try:
+        res = run_data(variant_spec(data, sw, index))
+    except _IE as exc:
+        return "input: " + exc.problems[0].key
+    failed = [c.code for c in res.failed]
+    return "pass" if not failed else "fail: " + ", ".join(failed[:4])
 
 
 def _material_label(t: dict) -> str:
