@@ -303,3 +303,31 @@ def test_reported_variants_are_rated_by_the_whole_calculator(tmp_path):
     assert ranked and all(r["full_check"].startswith("fail: STATIC") for r in ranked)
     c = next(c for c in doc["checks"] if c["code"] == "SWEEP_FULL_CHECK")
     assert c["severity"] == "warning" and not c["passed"]
+
+
+def test_efficiency_and_sliding_objectives(tmp_path):
+    """Objectives "efficiency" (1 − μ·H_V) and "sliding" (the larger root sliding): the
+    ranked rows are ordered by them, and their values are the calculator's for the emitted
+    variant (H_V of the planetary efficiency module, ϑ of the spur kinematics)."""
+    from geardesign.planetary.efficiency import mesh_loss_factor
+    from geardesign.spur.calculator import solve_geometry
+
+    text = SMALL.replace('objectives = ["mass", "margin"]',
+                         'objectives = ["efficiency", "sliding"]\nfriction = 0.06')
+    spec = write_spec(tmp_path, text)
+    code, doc, err = _json(spec)
+    assert code == 0, err
+    ranked = doc["results"]["ranked"]
+    etas = [r["eta"] for r in ranked]
+    assert etas == sorted(etas, reverse=True) and all(0.9 < e < 1.0 for e in etas)
+    code, out, err = cli("sweep", spec, "--emit-spec", "1")
+    path = write_spec(tmp_path, out, "v.toml")
+    from geardesign.core.registry import load
+
+    _, vspec = load(path)
+    g, _ = solve_geometry(vspec)
+    assert ranked[0]["eta"] == pytest.approx(1.0 - 0.06 * mesh_loss_factor(g), rel=1e-12)
+    code, text2, err = cli("run", path, "--format", "json")
+    k = json.loads(text2)["results"]["kinematics"]
+    assert ranked[0]["sliding"] == pytest.approx(max(abs(k["theta1_A"]), abs(k["theta2_E"])),
+                                                 rel=1e-12)

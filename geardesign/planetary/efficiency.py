@@ -28,6 +28,7 @@ import itertools
 import math
 from dataclasses import dataclass
 
+from geardesign.core import xp
 from geardesign.planetary.kinematics import Speeds, Train
 
 
@@ -44,7 +45,7 @@ def loss_factor(eps_alpha: float, eps_1: float, z1: int, u: float, beta_b: float
     stage 1 (``tests/reference/planetary``).
     """
     eps_2 = eps_alpha - eps_1
-    return math.pi * (u + 1.0) / (z1 * u * math.cos(beta_b)) * (
+    return math.pi * (u + 1.0) / (z1 * u * xp.cos(beta_b)) * (
         1.0 - eps_alpha + eps_1 * eps_1 + eps_2 * eps_2)
 
 

@@ -70,11 +70,15 @@ OBJECTIVES = {
                "S_F2/S_Fmin2 (GOST 21354-87); S_H1/S_Hmin, S_H2/S_Hmin, S_F1/S_Fmin, "
                "S_F2/S_Fmin (ISO 6336:2019)"),
     "contact_safety": ("S_Hmin", -1, "-", "smaller contact safety factor S_H"),
+    "efficiency": ("eta", -1, "-", "mesh efficiency 1 − μ·H_V (Ohlendorf's tooth loss factor "
+                   "H_V, μ = sweep.friction)"),
+    "sliding": ("sliding", 1, "-", "larger specific sliding at the roots max(|ϑ1(A)|, "
+                "|ϑ2(E)|)"),
 }
 
 COLUMNS = ("m_n", "z1", "z2", "x1", "x2", "helix_angle", "b_w", "u", "a_w", "eps_alpha",
            "eps_beta", "sigma_H", "sigma_HP", "S_H1", "S_H2", "S_F1", "S_F2", "margin",
-           "volume", "mass")
+           "volume", "mass", "H_V", "eta", "sliding")
 """Result columns of a ranked variant (and of the candidate dataset)."""
 
 MATERIAL_COLUMNS = {"material.pinion": "material1", "material.wheel": "material2"}
@@ -106,6 +110,7 @@ class Sweep:
     ratio: tuple | None = None
     center_distance_range: tuple | None = None
     min_margin: float = 1.0
+    friction: float = 0.05
     top: int = 20
     base: dict = field(default_factory=dict)
 
@@ -217,7 +222,8 @@ def parse_sweep(table: dict | None, vary: list[str], samples: int | None, seed: 
     :class:`InputError` with one problem per bad key."""
     table = dict(table or {})
     opts = {k: table.pop(k) for k in ("ratio", "center_distance_range", "min_margin",
-                                      "objectives", "top", "samples", "seed") if k in table}
+                                      "objectives", "top", "samples", "seed", "friction")
+            if k in table}
     ranges = dict(table)
     for text in vary:
         k, r = parse_vary(text)
@@ -269,6 +275,12 @@ def parse_sweep(table: dict | None, vary: list[str], samples: int | None, seed: 
         if isinstance(v, bool) or not isinstance(v, (int, float)) or not 0.1 <= v <= 10.0:
             raise InputError(Problem("sweep.min_margin", "must be a number from 0.1 to 10", v))
         sw.min_margin = float(v)
+    if "friction" in opts:
+        v = opts["friction"]
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not 0.005 <= v <= 0.3:
+            raise InputError(Problem("sweep.friction", "must be a number from 0.005 to 0.3 "
+                                     "(the mean coefficient of friction of the mesh)", v))
+        sw.friction = float(v)
     if "objectives" in opts:
         v = opts["objectives"]
         if not (isinstance(v, list) and 1 <= len(v) <= 4 and all(isinstance(x, str) for x in v)):
@@ -442,6 +454,17 @@ def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int) -> dict:
     r["volume"] = math.pi / 4.0 * (r["d1"] ** 2 + r["d2"] ** 2) * r["b_w"] / 1000.0
     r["mass"] = r["volume"] * STEEL_DENSITY
     r["S_Hmin"] = np.minimum(r["S_H1"], r["S_H2"])
+    from geardesign.planetary.efficiency import loss_factor
+    from geardesign.spur.kinematics import specific_sliding
+
+    eps_1 = (r["rho_a1"] - 0.5 * r["d_w1"] * np.sin(r["alpha_tw"])) / r["p_bt"]
+    r["H_V"] = loss_factor(r["eps_alpha"], eps_1, r["z1"], r["u"], r["beta_b"])
+    r["eta"] = 1.0 - sw.friction * r["H_V"]
+    with np.errstate(all="ignore"):
+        th1A = specific_sliding(r["rho_p1"], r["rho_a2"], r["u"])[0]
+        th2E = specific_sliding(r["rho_a1"], r["rho_p2"], r["u"])[1]
+    r["sliding"] = np.where((r["rho_p1"] > 0) & (r["rho_p2"] > 0),
+                            np.maximum(np.abs(th1A), np.abs(th2E)), np.inf)
     for d, col in ((d, MATERIAL_COLUMNS[d.key]) for d in sw.dims if d.choices):
         r[col] = varied[d.key].astype(float)
     feasible = r["passed"] & (r["margin"] >= sw.min_margin * (1 - 1e-12))
@@ -672,7 +695,7 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
               "ratio": list(sw.ratio) if sw.ratio else None,
               "center_distance_range": list(sw.center_distance_range)
               if sw.center_distance_range else None,
-              "min_margin": sw.min_margin, "top": sw.top,
+              "min_margin": sw.min_margin, "friction": sw.friction, "top": sw.top,
               "base": {k: v for k, v in data.items() if k not in ("kind", "title")}}
     rows = [Row(f"sweep.{d.key}", "; ".join(_material_label(t) for t in d.choices)
                 if d.choices else f"{len(d.values)} values, {d.low:g} … {d.high:g}", None,
@@ -696,6 +719,10 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
             ("helix_angle", "β", "deg"), ("b_w", "b_w", "mm"), ("u", "u", "-"),
             ("a_w", "a_w", "mm"), ("S_H1", "S_H1", "-"), ("S_F1", "S_F1", "-"),
             ("S_F2", "S_F2", "-"), ("margin", "margin", "-"), ("mass", "mass", "kg")]
+    for name in sw.objectives:
+        col, _, unit, _ = OBJECTIVES[name]
+        if col not in [c[0] for c in cols]:
+            cols.append((col, col, unit))
     cols.append(("full_check", "full check", None))
     mdims = [d for d in sw.dims if d.choices]
     for i, d in enumerate(mdims):
