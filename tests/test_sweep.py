@@ -331,3 +331,20 @@ def test_efficiency_and_sliding_objectives(tmp_path):
     k = json.loads(text2)["results"]["kinematics"]
     assert ranked[0]["sliding"] == pytest.approx(max(abs(k["theta1_A"]), abs(k["theta2_E"])),
                                                  rel=1e-12)
+
+
+def test_accuracy_grade_and_bearing_scheme_vary(tmp_path):
+    """Setting keys of the rating vary by groups: a coarser grade gives a larger dynamic
+    factor, so the same gears carry less; each reported row reproduces in geardesign run."""
+    text = SMALL.replace('top = 50', 'top = 50\n"gear.accuracy_grade" = {values = [6, 9]}\n'
+                         '"gear.bearing_scheme" = {values = [3, 6]}')
+    spec = write_spec(tmp_path, text)
+    code, doc, err = _json(spec)
+    assert code == 0, err
+    rows = doc["results"]["ranked"]
+    assert {r["accuracy_grade"] for r in rows} <= {6, 9} and {r["bearing_scheme"] for r in rows} <= {3, 6}
+    by = {(r["m_n"], r["z1"], r["b_w"], r["bearing_scheme"], r["accuracy_grade"]): r for r in rows}
+    for (m, z1, b, sch, gr), r in by.items():
+        if gr == 6 and (m, z1, b, sch, 9) in by:
+            assert r["margin"] > by[(m, z1, b, sch, 9)]["margin"]
+    assert all(r["full_check"] == "pass" for r in rows[:5])

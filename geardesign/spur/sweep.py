@@ -52,8 +52,14 @@ VARIABLE = {
     "gear.helix_angle": (False, 0.0, 45.0, "deg"),
     "gear.face_width": (False, 0.1, 5000.0, "mm"),
     "gear.center_distance": (False, 1.0, 100000.0, "mm"),
+    "gear.accuracy_grade": (True, 6, 11, "-"),
+    "gear.bearing_scheme": (True, 1, 7, "-"),
 }
 """The keys a sweep may vary, with their type and the domain of the spur spec."""
+
+FIXED_KEYS = ("gear.accuracy_grade", "gear.bearing_scheme")
+"""Varied keys that are fixed data of the kernel (the rating setting): the candidates are
+rated in groups, one kernel call per combination, as for the materials."""
 
 MATERIAL_KEYS = ("material.pinion", "material.wheel")
 """Keys varied over a list of material tables (``{values = [{grade = "40Kh", treatment =
@@ -392,14 +398,20 @@ def _chunk_inputs(sw: Sweep, varied: dict, base: dict, alpha_n: float) -> dict:
 
 
 def _with_materials(spec_data: dict, chosen: dict) -> dict:
-    """The spec data with the material tables ``chosen`` ({"material.pinion": table, ...})."""
+    """The spec data with the material tables ``chosen`` ({"material.pinion": table, ...})
+    and the fixed gear data ({"gear.accuracy_grade": 7, ...})."""
     if not chosen:
         return spec_data
     data = dict(spec_data)
     mat = dict(data.get("material") or {})
-    for key, table in chosen.items():
-        mat[key.split(".", 1)[1]] = dict(table)
-    data["material"] = mat
+    gear = dict(data.get("gear") or {})
+    for key, value in chosen.items():
+        table, name = key.split(".", 1)
+        if table == "material":
+            mat[name] = dict(value)
+        else:
+            gear[name] = value
+    data["material"], data["gear"] = mat, gear
     return data
 
 
@@ -409,13 +421,13 @@ def _evaluate_by_material(spec_data: dict, sw: Sweep, varied: dict, base: dict) 
     from geardesign.core.registry import load_data
     from geardesign.spur.kernel import evaluate, fixed_from_spec
 
-    mdims = [d for d in sw.dims if d.choices]
+    mdims = [d for d in sw.dims if d.choices or d.key in FIXED_KEYS]
     n = len(next(iter(varied.values())))
     codes = [varied[d.key].astype(np.int64) for d in mdims]
     combos = sorted(set(zip(*codes))) if mdims else [()]
     c = out = None
     for combo in combos:
-        chosen = {d.key: d.choices[k] for d, k in zip(mdims, combo)}
+        chosen = {d.key: (d.choices[k] if d.choices else int(k)) for d, k in zip(mdims, combo)}
         _, spec = load_data(_with_materials(spec_data, chosen), "sweep")
         fixed = fixed_from_spec(spec)
         if c is None:
@@ -467,6 +479,9 @@ def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int) -> dict:
                             np.maximum(np.abs(th1A), np.abs(th2E)), np.inf)
     for d, col in ((d, MATERIAL_COLUMNS[d.key]) for d in sw.dims if d.choices):
         r[col] = varied[d.key].astype(float)
+    for d in sw.dims:
+        if d.key in FIXED_KEYS:
+            r[d.key.split(".", 1)[1]] = varied[d.key].astype(float)
     feasible = r["passed"] & (r["margin"] >= sw.min_margin * (1 - 1e-12))
     if sw.ratio is not None:
         feasible &= (r["u"] >= sw.ratio[0] - 1e-12) & (r["u"] <= sw.ratio[1] + 1e-12)
@@ -478,7 +493,8 @@ def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int) -> dict:
               "passed": int(r["passed"].sum()), "feasible": int(feasible.sum())}
     fails = {k[3:]: int((r["valid"] & ~r[k]).sum()) for k in r if k.startswith("ok_")}
     sel = {k: r[k][feasible] for k in COLUMNS + ("S_Hmin",) + tuple(
-        MATERIAL_COLUMNS[d.key] for d in sw.dims if d.choices)}
+        MATERIAL_COLUMNS[d.key] for d in sw.dims if d.choices) + tuple(
+        d.key.split(".", 1)[1] for d in sw.dims if d.key in FIXED_KEYS)}
     sel["index"] = index[feasible]
     head = _rank(sel, sw)
     front = _front(sel, sw)
@@ -727,6 +743,10 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
     mdims = [d for d in sw.dims if d.choices]
     for i, d in enumerate(mdims):
         cols.insert(2 + i, (MATERIAL_COLUMNS[d.key], d.key.split(".")[1], None))
+    for d in sw.dims:
+        if d.key in FIXED_KEYS:
+            name = d.key.split(".", 1)[1]
+            cols.insert(2, (name, name.replace("_", " "), "-"))
     verified: dict = {}
     for key, title, block in (("ranked", f"Ranked variants (by {', '.join(sw.objectives)})",
                                summary["head"]),
@@ -742,6 +762,10 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
                     r[MATERIAL_COLUMNS[d.key]] = _material_label(
                         d.choices[int(block[MATERIAL_COLUMNS[d.key]][i])])
                 r["z1"], r["z2"] = int(r["z1"]), int(r["z2"])
+                for d in sw.dims:
+                    if d.key in FIXED_KEYS:
+                        name = d.key.split(".", 1)[1]
+                        r[name] = int(r[name])
                 if r["index"] not in verified and i < FULL_CHECKS:
                     verified[r["index"]] = full_check(data, sw, r["index"])
                 r["full_check"] = verified.get(r["index"], "not run")
