@@ -145,6 +145,11 @@ def solve_increasing(f, lo: float, hi: float, tol: float = 1e-7,
         width *= 3
     else:
         return Root(hi, 60, False)
+    return _bisect(f, lo, hi, tol, max_iterations)
+
+
+def _bisect(f, lo: float, hi: float, tol: float, max_iterations: int) -> Root:
+    """Bisection of a bracket [lo, hi] with f(lo) < 0 <= f(hi)."""
     it = 0
     while hi - lo > tol * max(1.0, abs(hi)) and it < max_iterations:
         it += 1
@@ -164,15 +169,7 @@ def solve_bounded(f, lo: float, hi: float, tol: float = 1e-7,
         return Root(lo, 1, True)
     if f(hi) < 0.0:
         return Root(hi, 2, False)
-    it = 0
-    while hi - lo > tol * max(1.0, abs(hi)) and it < max_iterations:
-        it += 1
-        mid = 0.5 * (lo + hi)
-        if f(mid) >= 0.0:
-            hi = mid
-        else:
-            lo = mid
-    return Root(0.5 * (lo + hi), it, True)
+    return _bisect(f, lo, hi, tol, max_iterations)
 
 
 def box_area(length: float, width: float, height: float, base: bool = False) -> float:
