@@ -206,3 +206,19 @@ def test_planetary_scuffing_key_domain(tmp_path):
                                                          "fzg_load_stage = 15")
     lines = run_bad(tmp_path, text)
     assert len(lines) == 1 and lines[0].startswith("s.toml: strength.scuffing.fzg_load_stage = 15")
+
+
+def test_oil_temperature_advice_leads_to_a_pass():
+    """The oil temperature the advice names passes (a cooler oil is also more viscous, so
+    the friction falls: the advice is on the safe side); no temperature below 40 °C is
+    proposed."""
+    import re
+
+    r, checks = _scuffing(_data(fzg_load_stage=9, oil_temperature=110.0))
+    msg = checks["ISO_SCUFFING"]["message"]
+    t = float(re.search(r"to (\d+) °C \(cooling\)", msg).group(1))
+    assert t >= 40.0
+    r2, checks2 = _scuffing(_data(fzg_load_stage=9, oil_temperature=t))
+    assert checks2["ISO_SCUFFING"]["passed"]
+    r3, checks3 = _scuffing(_data(fzg_load_stage=4, oil_temperature=110.0))
+    assert "(cooling)" not in checks3["ISO_SCUFFING"]["message"]

@@ -754,6 +754,11 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
     return out
 
 
+OIL_TEMPERATURE_REACHABLE = 40.0
+"""Lowest oil temperature [°C] the scuffing advice proposes (what an oil cooler reaches in
+practice); below it the advice names only the oil and the geometry."""
+
+
 def scuffing_checks(v: dict) -> list[Check]:
     """S_intS ≥ S_Smin ([ISO6336-21]) with advice: the FZG load stage of an oil that passes,
     or how far to lower the oil temperature (Θ_int moves with Θ_oil nearly one to one)."""
@@ -772,8 +777,9 @@ def scuffing_checks(v: dict) -> list[Check]:
             advice.append(f"use an oil of FZG load stage {stage} or higher (Θ_intS >= "
                           f"{target:.0f} °C)")
         drop = th_int - th_S / need
-        if drop < v["theta_oil"]:
-            advice.append(f"lower the oil temperature by at least {drop:.0f} K (cooling)")
+        if v["theta_oil"] - drop >= OIL_TEMPERATURE_REACHABLE:
+            advice.append(f"lower the oil temperature by at least {drop:.0f} K, to "
+                          f"{v['theta_oil'] - drop:.0f} °C (cooling)")
         advice.append("reduce the sliding at the tips (smaller module with more teeth, tip "
                       "relief, balanced profile shifts) or the flank roughness")
     out = [check("ISO_SCUFFING", ok, "error",
