@@ -216,7 +216,7 @@ def test_oil_temperature_advice_leads_to_a_pass():
 
     r, checks = _scuffing(_data(fzg_load_stage=9, oil_temperature=110.0))
     msg = checks["ISO_SCUFFING"]["message"]
-    t = float(re.search(r"to (\d+) °C \(cooling\)", msg).group(1))
+    t = float(re.search(r"to ([\d.]+) °C \(cooling\)", msg).group(1))
     assert t >= 40.0
     r2, checks2 = _scuffing(_data(fzg_load_stage=9, oil_temperature=t))
     assert checks2["ISO_SCUFFING"]["passed"]

@@ -776,10 +776,10 @@ def scuffing_checks(v: dict) -> list[Check]:
         if stage is not None:
             advice.append(f"use an oil of FZG load stage {stage} or higher (Θ_intS >= "
                           f"{target:.0f} °C)")
-        drop = th_int - th_S / need
+        drop = math.ceil(th_int - th_S / need)   # whole kelvins, on the safe side
         if v["theta_oil"] - drop >= OIL_TEMPERATURE_REACHABLE:
-            advice.append(f"lower the oil temperature by at least {drop:.0f} K, to "
-                          f"{v['theta_oil'] - drop:.0f} °C (cooling)")
+            advice.append(f"lower the oil temperature by at least {drop:d} K, to "
+                          f"{v['theta_oil'] - drop:g} °C (cooling)")
         advice.append("reduce the sliding at the tips (smaller module with more teeth, tip "
                       "relief, balanced profile shifts) or the flank roughness")
     out = [check("ISO_SCUFFING", ok, "error",
