@@ -384,14 +384,16 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
         bar = Progress(transient=True)
         task = bar.add_task("sweep", total=sw.size)
         bar.start()
+    complete = False
     try:
         summary = SW.run_sweep(base, sw, workers, scheduler,
                                (lambda n: bar.advance(task, n)) if bar else None, sink)
+        complete = True
     finally:
         if bar is not None:
             bar.stop()
         if writer is not None:
-            writer.close()
+            writer.close(complete)
     res = SW.sweep_result(base, sw, summary, str(spec))
     if emit_spec is not None:
         ranked = summary["head"]

@@ -348,3 +348,21 @@ def test_accuracy_grade_and_bearing_scheme_vary(tmp_path):
         if gr == 6 and (m, z1, b, sch, 9) in by:
             assert r["margin"] > by[(m, z1, b, sch, 9)]["margin"]
     assert all(r["full_check"] == "pass" for r in rows[:5])
+
+
+def test_interrupted_sweep_leaves_no_dataset(tmp_path, monkeypatch):
+    """A sweep that stops half-way (here: an error after the first chunk) leaves neither the
+    dataset nor its temporary file."""
+    real = SW.run_sweep
+
+    def broken(data, sw, workers=1, scheduler=None, progress=None, rows_sink=None):
+        def sink(rows):
+            rows_sink(rows)
+            raise KeyboardInterrupt
+        return real(data, sw, workers, scheduler, progress, sink)
+
+    monkeypatch.setattr(SW, "run_sweep", broken)
+    spec = write_spec(tmp_path, SMALL)
+    code, out, err = cli("sweep", spec, "--data", tmp_path / "c.csv")
+    assert code == 130 and "Traceback" not in err
+    assert not list(tmp_path.glob("*c.csv*"))

@@ -350,12 +350,18 @@ def candidates(sw: Sweep, start: int, stop: int) -> dict:
         for d, i in zip(sw.dims, idx):
             out[d.key] = d.values[i]
         return out
+    import warnings
+
     from scipy.stats import qmc
 
     eng = qmc.Sobol(d=len(sw.dims), scramble=True, seed=sw.seed)
-    if start:
-        eng.fast_forward(start)
-    pts = eng.random(n)
+    with warnings.catch_warnings():
+        # the sequence is drawn chunk by chunk: a chunk need not be a power of 2 (the
+        # balance of the whole sample is what counts)
+        warnings.filterwarnings("ignore", message=".*balance properties of Sobol")
+        if start:
+            eng.fast_forward(start)
+        pts = eng.random(n)
     for j, d in enumerate(sw.dims):
         k = np.minimum((pts[:, j] * len(d.values)).astype(np.int64), len(d.values) - 1)
         out[d.key] = d.values[k] if len(d.values) <= 64 or d.integer \
@@ -397,7 +403,7 @@ def _chunk_inputs(sw: Sweep, varied: dict, base: dict, alpha_n: float) -> dict:
     return dict(m_n=m_n, z1=z1, z2=z2, x1=x1, x2=x2, beta=beta, b_w=b_w)
 
 
-def _with_materials(spec_data: dict, chosen: dict) -> dict:
+def _with_fixed(spec_data: dict, chosen: dict) -> dict:
     """The spec data with the material tables ``chosen`` ({"material.pinion": table, ...})
     and the fixed gear data ({"gear.accuracy_grade": 7, ...})."""
     if not chosen:
@@ -415,20 +421,21 @@ def _with_materials(spec_data: dict, chosen: dict) -> dict:
     return data
 
 
-def _evaluate_by_material(spec_data: dict, sw: Sweep, varied: dict, base: dict) -> tuple:
-    """The kernel over the candidates, one call per combination of varied materials (the
-    materials are fixed data of the kernel).  Returns the inputs and the result arrays."""
+def _evaluate_in_groups(spec_data: dict, sw: Sweep, varied: dict, base: dict) -> tuple:
+    """The kernel over the candidates, one call per combination of the varied keys that are
+    fixed data of the kernel (materials, accuracy grade, bearing scheme).  Returns the
+    inputs and the result arrays."""
     from geardesign.core.registry import load_data
     from geardesign.spur.kernel import evaluate, fixed_from_spec
 
-    mdims = [d for d in sw.dims if d.choices or d.key in FIXED_KEYS]
+    gdims = [d for d in sw.dims if d.choices or d.key in FIXED_KEYS]
     n = len(next(iter(varied.values())))
-    codes = [varied[d.key].astype(np.int64) for d in mdims]
-    combos = sorted(set(zip(*codes))) if mdims else [()]
+    codes = [varied[d.key].astype(np.int64) for d in gdims]
+    combos = sorted(set(zip(*codes))) if gdims else [()]
     c = out = None
     for combo in combos:
-        chosen = {d.key: (d.choices[k] if d.choices else int(k)) for d, k in zip(mdims, combo)}
-        _, spec = load_data(_with_materials(spec_data, chosen), "sweep")
+        chosen = {d.key: (d.choices[k] if d.choices else int(k)) for d, k in zip(gdims, combo)}
+        _, spec = load_data(_with_fixed(spec_data, chosen), "sweep")
         fixed = fixed_from_spec(spec)
         if c is None:
             c = _chunk_inputs(sw, varied, base, fixed.rack.alpha_n)
@@ -448,16 +455,18 @@ def _evaluate_by_material(spec_data: dict, sw: Sweep, varied: dict, base: dict) 
     return c, out
 
 
-def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int) -> dict:
+def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int, rows: bool = False
+                   ) -> dict:
     """Evaluate candidates ``start`` … ``stop − 1`` and return the chunk's summary: counts,
     the ranked head and the Pareto front (as column arrays).  A pure function of its
-    arguments: a worker process or a Dask worker runs it as the local loop does."""
+    arguments: a worker process or a Dask worker runs it as the local loop does.  With
+    ``rows`` it also returns every candidate's columns (the dataset of ``--data``)."""
     from geardesign.core.registry import load_data
 
     _, spec = load_data(spec_data, "sweep")
     base = _base_values(spec)
     varied = candidates(sw, start, stop)
-    c, r = _evaluate_by_material(spec_data, sw, varied, base)
+    c, r = _evaluate_in_groups(spec_data, sw, varied, base)
     bad = c["bad"]
     r["valid"] &= ~bad
     r["passed"] &= ~bad
@@ -499,11 +508,7 @@ def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int) -> dict:
     head = _rank(sel, sw)
     front = _front(sel, sw)
     return {"counts": counts, "fails": fails, "head": head, "front": front,
-            "rows": _dataset(r, feasible, index) if sw_rows(sw) else None}
-
-
-def sw_rows(sw: Sweep) -> bool:
-    return bool(getattr(sw, "_rows", False))
+            "rows": _dataset(r, feasible, index) if rows else None}
 
 
 def _dataset(r: dict, feasible, index) -> dict:
@@ -567,7 +572,7 @@ def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | Non
     merged summary: counts, failing checks, the ranked head and the Pareto front."""
     total = sw.size
     bounds = [(s, min(s + CHUNK, total)) for s in range(0, total, CHUNK)]
-    sw._rows = rows_sink is not None
+    rows = rows_sink is not None
     counts = {"evaluated": 0, "valid": 0, "passed": 0, "feasible": 0}
     fails: dict = {}
     head = front = None
@@ -589,7 +594,7 @@ def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | Non
         from dask.distributed import Client, as_completed
 
         with Client(scheduler) as client:
-            futures = [client.submit(evaluate_chunk, spec_data, sw, a, b, pure=False)
+            futures = [client.submit(evaluate_chunk, spec_data, sw, a, b, rows, pure=False)
                        for a, b in bounds]
             done = {}
             for fut in as_completed(futures):
@@ -601,11 +606,12 @@ def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | Non
 
         with ProcessPoolExecutor(max_workers=workers) as pool:
             for res in pool.map(evaluate_chunk, itertools.repeat(spec_data), itertools.repeat(sw),
-                                [a for a, _ in bounds], [b for _, b in bounds]):
+                                [a for a, _ in bounds], [b for _, b in bounds],
+                                itertools.repeat(rows)):
                 take(res)
     else:
         for a, b in bounds:
-            take(evaluate_chunk(spec_data, sw, a, b))
+            take(evaluate_chunk(spec_data, sw, a, b, rows))
     return {"counts": counts, "fails": fails, "head": head, "front": front}
 
 
@@ -640,7 +646,7 @@ def variant_spec(spec_data: dict, sw: Sweep, index: int) -> dict:
         else:
             gear["shift_split"] = "equal"
     data["gear"] = gear
-    return _with_materials(data, chosen)
+    return _with_fixed(data, chosen)
 
 
 def load_sweep(data: dict, source: str, vary=(), samples=None, seed=None):
@@ -660,7 +666,7 @@ def load_sweep(data: dict, source: str, vary=(), samples=None, seed=None):
     for d in sw.dims:
         for i, choice in enumerate(d.choices):
             try:
-                load_data(_with_materials(data, {d.key: choice}), source)
+                load_data(_with_fixed(data, {d.key: choice}), source)
             except InputError as exc:
                 p = exc.problems[0]
                 raise InputError(Problem(f"sweep.{d.key}.values[{i}]: {p.key}", p.message,

@@ -45,14 +45,19 @@ class DatasetWriter:
         for i in range(n):
             w.writerow([_cell(cols[k][i]) for k in keys])
 
-    def close(self) -> None:
+    def close(self, complete: bool = True) -> None:
+        """Close the file; put it in place when ``complete``, else remove it (a sweep that
+        stopped half-way leaves no half dataset)."""
         if self.kind == ".parquet":
             if self.writer is not None:
                 self.writer.close()
         elif self.fh is not None:
             self.fh.close()
         if self.tmp.exists():
-            self.tmp.replace(self.path)
+            if complete:
+                self.tmp.replace(self.path)
+            else:
+                self.tmp.unlink()
 
 
 def _cell(v):
