@@ -34,12 +34,12 @@ from geardesign.core.registry import load_data
 from geardesign.core.result import DataTable, Result, check
 from geardesign.drive.shafts import GearLoad, gear_force
 from geardesign.shaft import calculator as SC
+from geardesign.spur.geometry import disc_mass
 from geardesign.shaft.solve import ARCMIN, Load, ShaftResult, Support, analyse
 from geardesign.shaft.spec import BEARING_TYPES
 
 ISO_METHOD = "ISO 6336:2019"
 F_SH_MAX = 1000.0     # µm, the largest iso.f_sh of the spur spec
-RHO_STEEL = 7850.0    # kg/m³, the shaft calculator's default density
 TOL = 1e-6
 
 
@@ -146,7 +146,7 @@ def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed:
         if mass is None:
             # a solid disc of the pitch diameter and the face width
             b = stage_modules.get(g.stage, (None, 0.0))[1]
-            mass = RHO_STEEL * math.pi / 4.0 * (2.0 * g.load.r) ** 2 * b * 1e-9
+            mass = disc_mass(2.0 * g.load.r, b)
         loads.append(Load(g.load.z - start, Fy=fx, Fz=fy, Fx=fz, torque=g.torque,
                           moment_y=-px * fz / 1e3 + 0.0, moment_z=-py * fz / 1e3 + 0.0,
                           mass=mass,

@@ -18,6 +18,7 @@ import numpy as np
 from geardesign.core.errors import InputError, Problem
 from geardesign.shaft import beam
 from geardesign.shaft import strength as ST
+from geardesign.spur.geometry import STEEL_DENSITY
 
 ARCMIN = math.pi / (180.0 * 60.0)
 
@@ -68,7 +69,7 @@ class Material:
     psi_sigma: float
     psi_tau: float
     E: float = 2.06e5
-    density: float = 7850.0          # kg/m³
+    density: float = STEEL_DENSITY   # kg/m³
     alloy: bool = False
 
 

@@ -22,7 +22,7 @@ import math
 from geardesign.core.errors import InputError, Problem
 from geardesign.core.spec import ValidatedSpec
 from geardesign.spur.geometry import (
-    BasicRack, GeometryError, PairGeometry, PairInput, pair_geometry,
+    BasicRack, GeometryError, disc_mass, PairGeometry, PairInput, pair_geometry,
     shift_sum_for_center_distance)
 from geardesign.spur.kinematics import balanced_shift_split, sliding_at_ends
 from geardesign.spur.loads import cycles, equivalent_cycles
@@ -149,7 +149,7 @@ def _variant(g: PairGeometry, a_w: float, v: dict, mats, ok: bool, how: str) -> 
     return {"a_w": a_w, "m_n": p.m_n, "z1": p.z1, "z2": p.z2, "beta": math.degrees(p.beta),
             "b_w": p.b_w, "x1": p.x1, "x2": p.x2, "S_H": S_H, "S_F1": v["S_F1"],
             "S_F2": v["S_F2"], "margin": min(reserve), "passes": "yes" if ok else "no",
-            "mass": math.pi / 4.0 * (g.g1.d ** 2 + g.g2.d ** 2) * p.b_w * 7.85e-6}
+            "mass": disc_mass(g.g1.d, p.b_w) + disc_mass(g.g2.d, p.b_w)}
 
 
 def _ranked(variants: list) -> list:

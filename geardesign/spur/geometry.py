@@ -34,6 +34,22 @@ class GeometryError(ValueError):
         self.limit = limit
 
 
+STEEL_DENSITY = 7850.0
+"""Density of steel [kg/m³] for the estimated masses of gear bodies (the shaft calculator's
+default too)."""
+
+
+def disc_volume(d, b):
+    """Volume [mm³] of a solid disc of diameter d and width b [mm], π/4·d²·b (a gear body
+    estimated at its reference or pitch diameter); numbers or arrays."""
+    return math.pi / 4.0 * d * d * b
+
+
+def disc_mass(d, b, density: float = STEEL_DENSITY):
+    """Mass [kg] of that disc: ``density`` [kg/m³]·:func:`disc_volume`·10⁻⁹."""
+    return density * disc_volume(d, b) * 1e-9
+
+
 @dataclass(frozen=True)
 class BasicRack:
     """Basic rack profile (GOST 13755-81: α = 20°, h_a* = 1, c* = 0.25, ρ_f* = 0.38).

@@ -29,6 +29,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.spur.geometry import disc_mass, disc_volume
 
 CHUNK = 50_000
 """Candidates per kernel call (about 60 MB of arrays at a time: 10⁷ candidates run in
@@ -94,7 +95,6 @@ FULL_CHECKS = 50
 check"): the peak-torque checks and the warnings the kernel does not make."""
 """Columns of the varied materials: the index into the key's list of material tables."""
 
-STEEL_DENSITY = 7.85e-3   # kg/cm³
 
 
 @dataclass
@@ -472,8 +472,8 @@ def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int, rows: bool
     r["passed"] &= ~bad
     r["helix_angle"] = np.degrees(c["beta"])
     r["m_n"], r["b_w"] = c["m_n"], c["b_w"]
-    r["volume"] = math.pi / 4.0 * (r["d1"] ** 2 + r["d2"] ** 2) * r["b_w"] / 1000.0
-    r["mass"] = r["volume"] * STEEL_DENSITY
+    r["volume"] = (disc_volume(r["d1"], r["b_w"]) + disc_volume(r["d2"], r["b_w"])) / 1000.0
+    r["mass"] = disc_mass(r["d1"], r["b_w"]) + disc_mass(r["d2"], r["b_w"])
     r["S_Hmin"] = np.minimum(r["S_H1"], r["S_H2"])
     from geardesign.planetary.efficiency import loss_factor
     from geardesign.spur.kinematics import specific_sliding
