@@ -900,24 +900,17 @@ def _iso_rate(rate, st: dict, train: K.Train, meshes: list, pinion: str):
     ``[strength.scuffing]``, the scuffing rating; the multiple mesh factor X_mp counts the
     meshes of the mesh's gear 1: a central gear meshes with every planet, a planet crown
     with each central gear it engages ([ISO6336-21], X_mp)."""
-    from geardesign.spur.strength.iso6336.rating import IsoSetting, ScuffingSetting
+    from geardesign.spur.strength.iso6336.rating import IsoSetting
+    from geardesign.spur.strength.iso6336.spec import scuffing_setting
 
-    sc = st.get("scuffing")
-    scuffing = None
-    if sc is not None:
-        central = pinion in ("sun", "ring", "ring2")
-        n_p = train.planets if central else sum(
-            1 for m in meshes if pinion in (m.spec.pinion, m.spec.wheel))
-        scuffing = ScuffingSetting(
-            fzg_load_stage=sc["fzg_load_stage"], oil_temperature=sc["oil_temperature"],
-            nu100=sc["oil_viscosity_100"], density15=sc["oil_density"],
-            lubricant=sc["lubricant"], lubrication=sc["lubrication"], meshes=n_p,
-            structure=sc["structure"], B_M=sc["thermal_contact_coefficient"],
-            S_Smin=sc["S_Smin"])
+    central = pinion in ("sun", "ring", "ring2")
+    n_p = train.planets if central else sum(
+        1 for m in meshes if pinion in (m.spec.pinion, m.spec.wheel))
+    scuffing = scuffing_setting(st.get("scuffing"), meshes=n_p)
+    oil = {} if st["lubricant_viscosity"] is None else {"nu40": st["lubricant_viscosity"]}
 
     def iso_rate(g, mats, duty, setting):
-        nu40 = st["lubricant_viscosity"] if st["lubricant_viscosity"] is not None else 220.0
-        iso = IsoSetting(grade=setting.grade, nu40=nu40, scuffing=scuffing)
+        iso = IsoSetting(grade=setting.grade, scuffing=scuffing, **oil)
         return rate(g, mats, duty, setting, iso)
 
     return iso_rate

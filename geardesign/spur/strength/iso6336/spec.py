@@ -250,7 +250,7 @@ def gear_checks(iso: dict, geom) -> None:
 
 def iso_setting(spec, overrides: dict | None = None):
     """The :class:`~.rating.IsoSetting` of a validated, prepared spec."""
-    from geardesign.spur.strength.iso6336.rating import IsoGear, IsoSetting, ScuffingSetting
+    from geardesign.spur.strength.iso6336.rating import IsoGear, IsoSetting
 
     iso = spec.data["iso"]
     gears = tuple(IsoGear(t["material_type"], t["quality"], t["sigma_Hlim"], t["sigma_Flim"],
@@ -267,14 +267,20 @@ def iso_setting(spec, overrides: dict | None = None):
         f_pb=iso["f_pb"], f_falpha=iso["f_falpha"], F_beta=iso["F_beta"],
         S_Hmin=iso["S_Hmin"], S_Fmin=iso["S_Fmin"], limited_pitting=iso["limited_pitting"],
         optimum=iso["optimum_conditions"], protuberance=iso["protuberance"], gears=gears,
-        overrides=o, scuffing=_scuffing(iso.get("scuffing"), ScuffingSetting))
+        overrides=o, scuffing=scuffing_setting(iso.get("scuffing")))
 
 
-def _scuffing(t: dict | None, cls):
+def scuffing_setting(t: dict | None, meshes: int | None = None):
+    """The :class:`~.rating.ScuffingSetting` of a validated scuffing table (``[iso.scuffing]``
+    or the planetary ``[strength.scuffing]``, which has no ``meshes`` and ``driving``:
+    ``meshes`` then comes from the train); None without a table."""
+    from geardesign.spur.strength.iso6336.rating import ScuffingSetting
+
     if t is None:
         return None
-    return cls(fzg_load_stage=t["fzg_load_stage"], oil_temperature=t["oil_temperature"],
-               nu100=t["oil_viscosity_100"], density15=t["oil_density"],
-               lubricant=t["lubricant"], lubrication=t["lubrication"], meshes=t["meshes"],
-               driving=t["driving"], structure=t["structure"],
-               B_M=t["thermal_contact_coefficient"], S_Smin=t["S_Smin"])
+    return ScuffingSetting(
+        fzg_load_stage=t["fzg_load_stage"], oil_temperature=t["oil_temperature"],
+        nu100=t["oil_viscosity_100"], density15=t["oil_density"], lubricant=t["lubricant"],
+        lubrication=t["lubrication"], meshes=meshes if meshes is not None else t["meshes"],
+        driving=t.get("driving", "pinion"), structure=t["structure"],
+        B_M=t["thermal_contact_coefficient"], S_Smin=t["S_Smin"])
