@@ -151,15 +151,17 @@ def check_golden(spec, update: bool = False, rtol: float = RTOL) -> list[Differe
     ``FileNotFoundError`` when there is no expected file (and no ``update``)."""
     import json
 
-    from geardesign.core.registry import run
+    from geardesign.core.registry import load
     from geardesign.core.spec import load_toml
 
-    if "sweep" in load_toml(spec):
-        from geardesign.spur.sweep import run_file
+    data = load_toml(spec)                 # read once: a sweep spec or a calculator's spec
+    if "sweep" in data:
+        from geardesign.spur.sweep import run_data as run_sweep_data
 
-        doc = run_file(spec)[2].document()
+        doc = run_sweep_data(data, str(spec)).document()
     else:
-        doc = run(spec).document()
+        calc, vspec = load(spec, data=data)
+        doc = calc.compute(vspec).document()
     path = expected_path(spec)
     if update:
         path.write_text(golden_text(doc), encoding="utf-8")

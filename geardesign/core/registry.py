@@ -107,9 +107,11 @@ def _kind_problem(value: object) -> Problem:
     return Problem("kind", f"must be one of {known}", value)
 
 
-def load(path: Path, expect_kind: str | None = None) -> tuple[Calculator, ValidatedSpec]:
-    """Read and validate a spec file; raise :class:`InputError` with every problem."""
-    calc, spec = load_data(load_toml(path), str(path), expect_kind)
+def load(path: Path, expect_kind: str | None = None,
+         data: dict | None = None) -> tuple[Calculator, ValidatedSpec]:
+    """Read and validate a spec file (``data``: its content already parsed); raise
+    :class:`InputError` with every problem."""
+    calc, spec = load_data(load_toml(path) if data is None else data, str(path), expect_kind)
     spec.base_dir = Path(path).resolve().parent
     return calc, spec
 

@@ -823,11 +823,8 @@ def _material_label(t: dict) -> str:
     return " ".join(p for p in parts if p)
 
 
-def run_file(path, vary=(), samples=None, seed=None, workers=1, scheduler=None,
-             progress=None, rows_sink=None):
-    """Load, run and report a sweep spec file: ``(data, sweep, result)``."""
-    from geardesign.core.spec import load_toml
-
-    data, sw = load_sweep(load_toml(path), str(path), vary, samples, seed)
-    summary = run_sweep(data, sw, workers, scheduler, progress, rows_sink)
-    return data, sw, sweep_result(data, sw, summary, str(path))
+def run_data(data: dict, source: str = ""):
+    """The :class:`~geardesign.core.result.Result` of a parsed sweep spec, run in this
+    process (what ``geardesign check`` compares with the golden file)."""
+    base, sw = load_sweep(data, source)
+    return sweep_result(base, sw, run_sweep(base, sw), source)
