@@ -110,13 +110,17 @@ def steps(spec: ValidatedSpec) -> list[Step]:
     return out
 
 
+def _on_shaft(key: str, position: float, length: float) -> None:
+    """A load or support position must lie on the shaft (0 … the sum of the step lengths)."""
+    if position > length * (1 + 1e-12):
+        raise InputError.at(key, position, f"outside the shaft: must be within 0…{length:g} mm "
+                            f"(the sum of the step lengths)")
+
+
 def loads(spec: ValidatedSpec, length: float) -> list[Load]:
     out = []
     for i, ld in enumerate(spec.data["load"]):
-        if ld["position"] > length * (1 + 1e-12):
-            raise InputError.at(f"load[{i}].position", ld["position"],
-                                f"outside the shaft: must be within 0…{length:g} mm (the sum "
-                                f"of the step lengths)")
+        _on_shaft(f"load[{i}].position", ld["position"], length)
         out.append(Load(ld["position"], ld["Fy"], ld["Fz"], ld["Fx"], ld["torque"],
                         ld["moment_y"], ld["moment_z"], ld["mass"], ld["name"] or "",
                         ld["module"]))
@@ -133,10 +137,7 @@ def loads(spec: ValidatedSpec, length: float) -> list[Load]:
 def supports(spec: ValidatedSpec, length: float) -> list[Support]:
     out = []
     for i, s in enumerate(spec.data["support"]):
-        if s["position"] > length * (1 + 1e-12):
-            raise InputError.at(f"support[{i}].position", s["position"],
-                                f"outside the shaft: must be within 0…{length:g} mm (the sum "
-                                f"of the step lengths)")
+        _on_shaft(f"support[{i}].position", s["position"], length)
         out.append(Support(s["position"], s["stiffness"], s["type"], s["axial"],
                            s["name"] or ""))
     xs = sorted(s.position for s in out)
