@@ -102,6 +102,18 @@ ERROR_CODES = ("CONTACT_RATIO", "UNDERCUT_PINION", "UNDERCUT_WHEEL", "POINTED_TI
                "CONTACT_FATIGUE", "BENDING_FATIGUE_PINION", "BENDING_FATIGUE_WHEEL")
 
 
+def _spec_of(base: dict, c: dict, i: int) -> dict:
+    """The spur spec of candidate ``i``: the base spec with the candidate's gear data."""
+    d = {k: (dict(v) if isinstance(v, dict) else v) for k, v in base.items()}
+    d["gear"] = {k: v for k, v in base["gear"].items()
+                 if k not in ("center_distance", "x1", "x2", "x_sum", "shift_split")}
+    d["gear"].update(module=float(c["m_n"][i]), z1=int(c["z1"][i]), z2=int(c["z2"][i]),
+                     x1=float(c["x1"][i]), x2=float(c["x2"][i]),
+                     helix_angle=math.degrees(float(c["beta"][i])),
+                     face_width=float(c["b_w"][i]))
+    return d
+
+
 def test_kernel_checks_equal_the_calculator():
     """The pass/fail of each error check of the kernel is the calculator's, pair by pair."""
     base = load_toml(SPECS / "spur_reducer_through_hardened.toml")
@@ -112,13 +124,7 @@ def test_kernel_checks_equal_the_calculator():
     out = evaluate(c, f)
     seen = 0
     for i in range(300):
-        d = {k: (dict(v) if isinstance(v, dict) else v) for k, v in base.items()}
-        d["gear"] = {k: v for k, v in base["gear"].items()
-                     if k not in ("center_distance", "x1", "x2", "x_sum", "shift_split")}
-        d["gear"].update(module=float(c["m_n"][i]), z1=int(c["z1"][i]), z2=int(c["z2"][i]),
-                         x1=float(c["x1"][i]), x2=float(c["x2"][i]),
-                         helix_angle=math.degrees(float(c["beta"][i])),
-                         face_width=float(c["b_w"][i]))
+        d = _spec_of(base, c, i)
         try:
             doc = run_data(d).document()
         except InputError:
@@ -245,13 +251,7 @@ def test_iso_kernel_checks_equal_the_calculator():
     out = evaluate(c, f)
     seen = passed = 0
     for i in range(300):
-        d = {k: (dict(v) if isinstance(v, dict) else v) for k, v in base.items()}
-        d["gear"] = {k: v for k, v in base["gear"].items()
-                     if k not in ("center_distance", "x1", "x2", "x_sum", "shift_split")}
-        d["gear"].update(module=float(c["m_n"][i]), z1=int(c["z1"][i]), z2=int(c["z2"][i]),
-                         x1=float(c["x1"][i]), x2=float(c["x2"][i]),
-                         helix_angle=math.degrees(float(c["beta"][i])),
-                         face_width=float(c["b_w"][i]))
+        d = _spec_of(base, c, i)
         try:
             doc = run_data(d).document()
         except InputError:
