@@ -604,7 +604,7 @@ def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | Non
     elif workers > 1 and len(bounds) > 1:
         from concurrent.futures import ProcessPoolExecutor
 
-        with ProcessPoolExecutor(max_workers=workers) as pool:
+        with ProcessPoolExecutor(max_workers=min(workers, len(bounds))) as pool:
             for res in pool.map(evaluate_chunk, itertools.repeat(spec_data), itertools.repeat(sw),
                                 [a for a, _ in bounds], [b for _, b in bounds],
                                 itertools.repeat(rows)):
