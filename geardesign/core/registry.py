@@ -86,6 +86,27 @@ def _symbol(key: str, symbol: str) -> str:
     return f"{parent}.{symbol}" if head.count(".") >= 1 else symbol
 
 
+def lazy_calculator(kind: str, summary: str, methods: tuple[str, ...]):
+    """A package's module ``__getattr__`` that builds its ``CALCULATOR`` on first use from
+    ``geardesign.<kind>.calculator.compute`` and ``geardesign.<kind>.spec.SCHEMA``: importing
+    the package (e.g. for one of its modules) does not import the calculation."""
+    from functools import lru_cache
+
+    @lru_cache(maxsize=1)
+    def build() -> Calculator:
+        compute = importlib.import_module(f"geardesign.{kind}.calculator").compute
+        schema = importlib.import_module(f"geardesign.{kind}.spec").SCHEMA
+        return Calculator(kind=kind, summary=summary, methods=methods, schema=schema,
+                          compute=compute)
+
+    def __getattr__(name: str):
+        if name == "CALCULATOR":
+            return build()
+        raise AttributeError(name)
+
+    return __getattr__
+
+
 def known_kinds() -> list[str]:
     return list(KINDS)
 

@@ -4,25 +4,13 @@ bearings and their bearings' lives.  Modules: :mod:`.stages` (stage adapters),
 
 from __future__ import annotations
 
-from functools import lru_cache
+from geardesign.core.registry import lazy_calculator
 
-
-@lru_cache(maxsize=1)
-def _calculator():
-    from geardesign.core.registry import Calculator
-    from geardesign.drive.calculator import compute
-    from geardesign.drive.spec import SCHEMA
-
-    return Calculator(
-        kind="drive",
-        summary="a whole drive: motor to output, every stage, shaft reactions, bearing lives",
-        methods=("stage calculators", "statics of two-bearing shafts", "bearing calculator"),
-        schema=SCHEMA,
-        compute=compute,
-    )
-
-
-def __getattr__(name: str):
-    if name == "CALCULATOR":
-        return _calculator()
-    raise AttributeError(name)
+# the calculator is built on first use: importing one of the package's modules does not
+# import the calculation
+__getattr__ = lazy_calculator(
+    "drive",
+    summary="a whole drive: motor to output, every stage, shaft reactions, bearing lives; "
+    "with steps and keys the shafts and hubs, with [lubrication] the losses and heat balance",
+    methods=("stage calculators", "statics of two-bearing shafts", "bearing calculator"),
+)

@@ -10,27 +10,13 @@ factors), :mod:`.checks`, :mod:`.spec`, :mod:`.calculator`.
 
 from __future__ import annotations
 
-from functools import lru_cache
+from geardesign.core.registry import lazy_calculator
 
-
-@lru_cache(maxsize=1)
-def _calculator():
-    # built on first use: the shaft calculator borrows .endurance without the rest
-    from geardesign.core.registry import Calculator
-    from geardesign.epicycle_rim.calculator import compute
-    from geardesign.epicycle_rim.spec import SCHEMA
-
-    return Calculator(
-        kind="epicycle_rim",
-        summary="ring-gear rim: probabilistic fatigue of the thin rim, parametric resonance",
-        methods=("GOST 25.504-82 (Serensen-Kogaev)", "Gutyria et al. 2017",
-                 "Yaglinskyi et al. 2017", "Mathieu/Floquet"),
-        schema=SCHEMA,
-        compute=compute,
-    )
-
-
-def __getattr__(name: str):
-    if name == "CALCULATOR":
-        return _calculator()
-    raise AttributeError(name)
+# the calculator is built on first use: importing one of the package's modules does not
+# import the calculation
+__getattr__ = lazy_calculator(
+    "epicycle_rim",
+    summary="ring-gear rim: probabilistic fatigue of the thin rim, parametric resonance",
+    methods=("GOST 25.504-82 (Serensen-Kogaev)", "Gutyria et al. 2017",
+    "Yaglinskyi et al. 2017", "Mathieu/Floquet"),
+)

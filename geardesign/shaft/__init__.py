@@ -11,28 +11,13 @@ and checks).
 
 from __future__ import annotations
 
-from functools import lru_cache
+from geardesign.core.registry import lazy_calculator
 
-
-@lru_cache(maxsize=1)
-def _calculator():
-    # built on first use: a drive that reads the shaft spec (geardesign.shaft.spec) without
-    # analysing a shaft does not import numpy
-    from geardesign.core.registry import Calculator
-    from geardesign.shaft.calculator import compute
-    from geardesign.shaft.spec import SCHEMA
-
-    return Calculator(
-        kind="shaft",
-        summary="stepped shaft: beam model, deflections and bearing slopes, critical speed, "
-                "static and fatigue safety per section",
-        methods=("Euler–Bernoulli finite elements", "GOST 25.504-82 (Dunaev & Lelikov)"),
-        schema=SCHEMA,
-        compute=compute,
-    )
-
-
-def __getattr__(name: str):
-    if name == "CALCULATOR":
-        return _calculator()
-    raise AttributeError(name)
+# the calculator is built on first use: importing one of the package's modules does not
+# import the calculation
+__getattr__ = lazy_calculator(
+    "shaft",
+    summary="stepped shaft: beam model, deflections and bearing slopes, critical speed, "
+    "static and fatigue safety per section",
+    methods=("Euler–Bernoulli finite elements", "GOST 25.504-82 (Dunaev & Lelikov)"),
+)

@@ -10,26 +10,14 @@ this package does not import the calculator (``CALCULATOR`` is built on first us
 
 from __future__ import annotations
 
-from functools import lru_cache
+from geardesign.core.registry import lazy_calculator
 
-
-@lru_cache(maxsize=1)
-def _calculator():
-    from geardesign.core.registry import Calculator
-    from geardesign.spur.calculator import compute
-    from geardesign.spur.spec import SCHEMA
-
-    return Calculator(
-        kind="spur",
-        summary="external or internal spur/helical gear pair: geometry, contact ratio, "
-                "sliding, measurement; GOST 21354-87 strength; design mode",
-        methods=("GOST 16532-70", "GOST 13755-81"),
-        schema=SCHEMA,
-        compute=compute,
-    )
-
-
-def __getattr__(name: str):
-    if name == "CALCULATOR":
-        return _calculator()
-    raise AttributeError(name)
+# the calculator is built on first use: importing one of the package's modules does not
+# import the calculation
+__getattr__ = lazy_calculator(
+    "spur",
+    summary="external or internal spur/helical gear pair: geometry, contact ratio, "
+    "sliding, measurement, drawing data; strength by GOST 21354-87 or ISO 6336 (with "
+    "scuffing); design mode; sweeps (geardesign sweep)",
+    methods=("GOST 16532-70", "GOST 13755-81"),
+)
