@@ -92,7 +92,8 @@ def solve_plane(x: np.ndarray, EI: np.ndarray, forces: np.ndarray, couples: np.n
             fixed.append(2 * node)
         else:
             Ks[2 * node, 2 * node] += k
-    free = np.setdiff1d(np.arange(2 * n), fixed)
+    fixed_set = set(fixed)
+    free = np.array([i for i in range(2 * n) if i not in fixed_set])
     u = np.zeros(2 * n)
     u[free] = np.linalg.solve(Ks[np.ix_(free, free)], F[free])
     # force of each support on the shaft: rigid from the residual, springs from -k·w
@@ -130,7 +131,8 @@ def first_bending_frequency(x: np.ndarray, EI: np.ndarray, mass: np.ndarray,
             fixed.append(2 * node)
         else:
             K[2 * node, 2 * node] += k
-    free = np.setdiff1d(np.arange(2 * n), fixed)
+    fixed_set = set(fixed)
+    free = np.array([i for i in range(2 * n) if i not in fixed_set])
     # largest μ of M·φ = μ·K·φ (K positive definite, M may be nearly singular) = 1/λ_min:
     # with K = L·Lᵀ it is the largest eigenvalue of the symmetric L⁻¹·M·L⁻ᵀ (numpy only)
     Kf, Mf = K[np.ix_(free, free)], M[np.ix_(free, free)]
