@@ -162,7 +162,48 @@ def test_misalignment_is_the_relative_slope_along_the_line_of_action():
     norm = math.hypot(*n)
     d = ((p["slope_x"] - w["slope_x"]) * n[0] + (p["slope_y"] - w["slope_y"]) * n[1]) / norm
     row = next(r for r in res["face_load"] if r["stage"] == 2)
-    assert row["f_sh"] == pytest.approx(abs(d) * arcmin * 80.0 * 1e3, rel=1e-9)
+    assert row["f_bend"] == pytest.approx(d * arcmin * 80.0 * 1e3, rel=1e-9)
+    assert row["f_sh"] == pytest.approx(abs(row["f_bend"] + row["f_twist"]), rel=1e-12)
+
+
+def test_twist_of_the_gears_by_hand():
+    """Stage 2: its pinion sits on shaft 2 right of the stage-1 wheel, so the torque T_in
+    enters the pinion's face from −z and leaves through the teeth: the flanks close up at
+    the −z end by r_b1·T·b/(2·G·J_1).  Its wheel sits on shaft 3 left of the output
+    coupling: the torque enters through the teeth and leaves at +z, the flanks close up at
+    the +z end by r_b2·T_out·b/(2·G·J_2) (Saint-Venant torsion, [Roark] table 10.1 case 1;
+    J = π·d_w⁴/32, G = E/2.6)."""
+    res = run_data(_fast()).document()["results"]
+    geo = res["stage_reports"][1]["results"]["geometry"]
+    st = res["stages"][1]
+    G = 2.06e5 / 2.6
+    b = 80.0
+    cos_a = math.cos(math.radians(geo["alpha_tw"]))
+
+    def tw(T, d):
+        return (d / 2 * cos_a) * T * 1e3 * b / (2 * G * math.pi * d ** 4 / 32) * 1e3
+
+    want = tw(st["T_in"], geo["d_w1"]) - tw(st["T_out"], geo["d_w2"])
+    row = next(r for r in res["face_load"] if r["stage"] == 2)
+    assert row["f_twist"] == pytest.approx(want, rel=1e-6)
+    assert row["f_twist"] > 0
+
+
+@pytest.mark.parametrize("T_L, T_R, want", [
+    (1000.0, 0.0, 0.5),        # torque enters at −z, all taken off by the teeth
+    (0.0, -1000.0, -0.5),      # the same from +z: the mirror image
+    (1000.0, 500.0, 0.75),     # half goes on through the body to a gear beyond
+    (-1000.0, 0.0, 0.5),       # the other sense of rotation: the same separation
+    (0.0, 1000.0, -0.5),       # a driven gear whose torque leaves at +z
+])
+def test_face_twist_closed_forms(T_L, T_R, want):
+    """δ = −sgn(T_g)·r_b·(T_L + T_R)/2·b/(G·J), in units of r_b·T·b/(G·J)."""
+    from geardesign.drive.shaft_analysis import face_twist
+    G, J = 2.06e5 / 2.6, math.pi * 60.0 ** 4 / 32
+    unit = 28.0 * 1000.0e3 * 60.0 / (G * J) * 1e3
+    assert face_twist(T_L, T_R, 60.0, 60.0, 28.0, 2.06e5) == pytest.approx(want * unit,
+                                                                          rel=1e-12)
+    assert face_twist(500.0, 500.0, 60.0, 60.0, 28.0, 2.06e5) == 0.0   # no gear torque
 
 
 def test_without_the_new_tables_nothing_changes():

@@ -18,9 +18,12 @@ as F_β is measured) times the face width is
 
 .. math:: f_{sh} = |Δθ · n| \\, b \\quad [µm].
 
+To it adds the twist of the gear bodies under the torque that passes them
+(:func:`face_twist`: the part of f_sh that the standard's own formula carries in its torsion
+term, [ISO6336-1] 7.6.3); the sum of the signed parts is f_sh.
+
 It is passed to the stage's ISO 6336 rating as ``iso.f_sh``; K_Hβ then follows by method C
-([ISO6336-1] 7.6.1, :mod:`geardesign.spur.strength.iso6336.part1`).  The twist of the pinion
-body under torque, part of f_sh in the standard's own formula, is not included.
+([ISO6336-1] 7.6.1, :mod:`geardesign.spur.strength.iso6336.part1`).
 """
 
 from __future__ import annotations
@@ -64,6 +67,8 @@ class ShaftRun:
     r: ShaftResult
     result: Result
     connections: list = field(default_factory=list)   # dicts
+    loads: list = field(default_factory=list)         # the shaft calculator's Load records
+    E: float = 2.06e5                                  # MPa, of the shaft steel
 
 
 def _named(exc: InputError, prefix: str) -> InputError:
@@ -187,7 +192,7 @@ def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed:
     r = analyse(m["steps"], m["loads"], m["supports"], m["material"], m["options"])
     result = SC.report(spec, m, r)
     run = ShaftRun(idx, key, sh["name"] or f"shaft {idx}", start, speed, rotation, gears, r,
-                   result)
+                   result, loads=loads, E=m["material"].E)
     run.connections = [_connection(run, sh, j, c, m["material"], steps, span, K_A)
                        for j, c in enumerate(sh["key"] or [])]
     return run
@@ -263,9 +268,59 @@ def _utilisation(res: Result) -> tuple[float | None, str]:
 # ------------------------------------------------------------------ mesh misalignment
 
 
+POISSON = 0.3    # steel
+
+
+def face_twist(T_left: float, T_right: float, b: float, d: float, r_b: float,
+               E: float) -> float:
+    """Separation of the mating flanks at the +z end of the face minus the −z end that the
+    twist of a gear body gives [µm].
+
+    .. math:: δ_{tw} = -\\operatorname{sgn}(T_R - T_L) \\, r_b
+              \\frac{(T_L + T_R)/2 \\cdot b}{G \\, J_p},\\qquad J_p = \\frac{π d^4}{32},
+              \\quad G = \\frac{E}{2(1 + ν)}
+
+    Saint-Venant torsion of a solid round body ([Roark] table 10.1 case 1: θ = T·l/(G·J)):
+    the torque along the shaft (signed in the sense of rotation, the torque of everything
+    left of the section: T_L just left of the face, T_R = T_L + T_g just right of it, T_g
+    the gear's own torque, + into the shaft, − out of it) falls or rises linearly across the
+    face width as the tooth load takes it off uniformly, so the section at the +z end turns
+    against the −z end by ∫T/(G·J)·dz = (T_L + T_R)/2·b/(G·J).  Turning a section in the
+    sense of the mesh torque on the gear (sgn T_g) moves its flank along the line of action
+    away from the mate by r_b per radian.  ``T_left``, ``T_right`` [N·m], ``b``, ``d`` (the
+    body's diameter: the working pitch diameter, as d1 in the torsion term of [ISO6336-1]
+    eq. (58)), ``r_b`` (base radius) [mm], ``E`` [MPa], ν = 0.3.  A torque that enters at
+    the −z end (T_L = T, T_R = 0, T_g = −T) gives δ = +r_b·T·b/(2GJ): the flanks close up at
+    the end where the torque enters, as load distribution measurements show.
+
+    >>> round(face_twist(1000.0, 0.0, 60.0, 60.0, 28.19, 2.06e5), 3)
+    8.389
+    """
+    T_g = T_right - T_left
+    if T_g == 0.0:
+        return 0.0
+    G = E / (2.0 * (1.0 + POISSON))
+    J = math.pi * d ** 4 / 32.0
+    return -math.copysign(1.0, T_g) * r_b * 0.5 * (T_left + T_right) * 1e3 * b / (G * J) * 1e3
+
+
+def _twist(run: ShaftRun, n: int, b: float) -> float:
+    """:func:`face_twist` of the n-th gear of ``run`` (its torque path from the shaft's
+    loads)."""
+    g = run.gears[n]
+    z = g.load.z - run.start
+    T_left = sum(ld.torque for ld in run.loads if ld.position < z - TOL)
+    T_right = T_left + g.torque
+    F_t, F_r = g.load.F_t, g.load.F_r
+    r_b = g.load.r * abs(F_t) / math.hypot(F_t, F_r) if F_t or F_r else g.load.r
+    return face_twist(T_left, T_right, b, 2.0 * g.load.r, r_b, run.E)
+
+
 def misalignment(runs_by_shaft: dict, stage_runs: list) -> dict:
     """f_sh [µm] of every spur stage whose pinion and wheel shafts were analysed:
-    ``{stage: dict(f_sh, b, dtheta_n)}``."""
+    ``{stage: dict(f_sh, b, dtheta, f_bend, f_twist)}`` (f_bend = Δθ·n·b and f_twist the
+    twist of both gear bodies, signed: flank separation at the +z end minus the −z end;
+    f_sh = |f_bend + f_twist|)."""
     out = {}
     for i, sr in enumerate(stage_runs, 1):
         if sr.result.kind != "spur":
@@ -274,10 +329,10 @@ def misalignment(runs_by_shaft: dict, stage_runs: list) -> dict:
         whl = runs_by_shaft.get(i + 1)
         if pin is None or whl is None:
             continue
-        gp = next((n, g) for n, g in enumerate(pin.gears) if g.stage == i and g.which == 0) \
-            if any(g.stage == i and g.which == 0 for g in pin.gears) else None
-        gw = next((n, g) for n, g in enumerate(whl.gears) if g.stage == i and g.which == 1) \
-            if any(g.stage == i and g.which == 1 for g in whl.gears) else None
+        gp = next(((n, g) for n, g in enumerate(pin.gears) if g.stage == i and g.which == 0),
+                  None)
+        gw = next(((n, g) for n, g in enumerate(whl.gears) if g.stage == i and g.which == 1),
+                  None)
         if gp is None or gw is None:
             continue
         tp, tw = pin.r.loads[gp[0]], whl.r.loads[gw[0]]
@@ -288,7 +343,10 @@ def misalignment(runs_by_shaft: dict, stage_runs: list) -> dict:
         nx, ny = fx / norm, fy / norm
         d_n = (tp.slope_y - tw.slope_y) * nx + (tp.slope_z - tw.slope_z) * ny
         b = sr.result.document()["inputs"]["gear"]["face_width"]
-        out[i] = dict(f_sh=abs(d_n) * b * 1e3, b=b, dtheta=d_n)
+        f_bend = d_n * b * 1e3
+        f_twist = _twist(pin, gp[0], b) + _twist(whl, gw[0], b)
+        out[i] = dict(f_sh=abs(f_bend + f_twist), b=b, dtheta=d_n, f_bend=f_bend,
+                      f_twist=f_twist)
     return out
 
 
@@ -339,11 +397,12 @@ def rate_with_misalignment(mis: dict, stages: list, stage_runs: list, duty, run_
             new.result.checks.append(check(
                 "F_SH_FROM_SHAFTS", False, "info",
                 f"the drive sets iso.f_sh = {f_sh:.3g} µm from the slopes of the analysed "
-                f"shafts{capped} (the formula of ISO 6336-1 7.6.3 gives "
+                f"shafts and the twist of the gears{capped} (the formula of ISO 6336-1 7.6.3 gives "
                 f"{iso_before['f_sh']:.3g} µm)", "", f_sh, None, "drive"))
             sr.result, sr.margin, sr.margin_of = new.result, new.margin, new.margin_of
             rows.append(dict(stage=i, method="ISO 6336:2019", b=m["b"],
-                             f_sh_formula=iso_before["f_sh"], f_sh=m["f_sh"],
+                             f_sh_formula=iso_before["f_sh"], f_bend=m["f_bend"],
+                             f_twist=m["f_twist"], f_sh=m["f_sh"],
                              K_Hbeta_before=iso_before["K_Hbeta"], K_Hbeta_shafts=K_new,
                              note="stage rated with f_sh from the shafts" + capped))
         if gost is not None:
@@ -353,7 +412,7 @@ def rate_with_misalignment(mis: dict, stages: list, stage_runs: list, duty, run_
                 except InputError as exc:
                     note = f"ISO 6336 not applicable: {exc.problems[0].message}"
             rows.append(dict(stage=i, method="GOST 21354-87", b=m["b"], f_sh_formula=None,
-                             f_sh=m["f_sh"], K_Hbeta_before=gost["K_Hbeta"],
+                             f_bend=m["f_bend"], f_twist=m["f_twist"], f_sh=m["f_sh"], K_Hbeta_before=gost["K_Hbeta"],
                              K_Hbeta_shafts=K_new,
                              note=note or "informative: ISO 6336-1 method C with f_sh; the "
                                           "GOST rating keeps its chart value" + capped))
@@ -413,7 +472,8 @@ def report(res: Result, shaft_runs: list, kh_rows: list, mis: dict) -> None:
         res.tables.append(DataTable("face_load", "K_Hβ: chart/standard formula vs from the "
                                     "shaft deflections", [
             ("stage", "stage", None), ("method", "rating", None), ("b", "b", "mm"),
-            ("f_sh_formula", "f_sh formula", "µm"), ("f_sh", "f_sh shafts", "µm"),
+            ("f_sh_formula", "f_sh formula", "µm"), ("f_bend", "bending", "µm"),
+            ("f_twist", "twist", "µm"), ("f_sh", "f_sh shafts", "µm"),
             ("K_Hbeta_before", "K_Hβ chart/formula", "-"),
             ("K_Hbeta_shafts", "K_Hβ from shafts", "-"), ("note", "note", None)], kh_rows))
     for sr in shaft_runs:
