@@ -405,3 +405,52 @@ def test_fit_longer_than_its_hub():
     d["shaft"][2]["key"][0]["length"] = 90.0
     assert _problem(d) == ("shaft[2].key[0].length = 90.0: the fit is longer than its hub "
                            "(hub_length = 80 mm): give length <= 80")
+
+
+def _with_load(d: dict, **load) -> dict:
+    d = copy.deepcopy(d)
+    d["shaft"][2].setdefault("load", []).append(load)
+    return d
+
+
+def test_external_load_on_the_output_shaft_by_the_lever_rule():
+    """A sprocket's pull F = 3000 N in the drive's +y direction at z = 284 mm on the output
+    shaft (bearings at z_A = 0, z_B = 200): statics of a beam on two supports give the
+    added reactions ΔR_A = +F·(z − z_B)/L and ΔR_B = −F·(z − z_A)/L (along y), i.e.
+    +1260 N and −4260 N; the beam (shaft calculator, the shaft's y is its z) and the
+    bearing loads of the drive agree."""
+    base = run_data(_fast()).document()["results"]
+    new = run_data(_with_load(_fast(), position=284.0, force=3000.0, angle=90.0,
+                              name="sprocket")).document()["results"]
+    a, b = base["shaft_reports"][2]["results"], new["shaft_reports"][2]["results"]
+    dA = b["supports"][0]["R_z"] - a["supports"][0]["R_z"]
+    dB = b["supports"][1]["R_z"] - a["supports"][1]["R_z"]
+    assert dA == pytest.approx(3000.0 * (284.0 - 200.0) / 200.0, rel=1e-9)
+    assert dB == pytest.approx(-3000.0 * 284.0 / 200.0, rel=1e-9)
+    assert b["supports"][0]["R_y"] == pytest.approx(a["supports"][0]["R_y"], abs=1e-9)
+    brg = {(r["shaft"], r["bearing"]): r["F_r"] for r in new["bearings"]}
+    assert brg[(3, "A")] == pytest.approx(b["supports"][0]["R"], rel=1e-9)
+    assert brg[(3, "B")] == pytest.approx(b["supports"][1]["R"], rel=1e-9)
+    assert any(ld["name"] == "sprocket" for ld in b["loads"])
+
+
+def test_external_load_without_steps_loads_the_bearings():
+    d = _fast()
+    for sh in d["shaft"]:
+        for k in ("step", "key", "material", "strength"):
+            sh.pop(k, None)
+    base = run_data(d).document()["results"]["bearings"]
+    new = run_data(_with_load(d, position=100.0, force=2000.0, angle=90.0, axial=-500.0)
+                   ).document()["results"]["bearings"]
+    a = {(r["shaft"], r["bearing"]): r for r in base}
+    b = {(r["shaft"], r["bearing"]): r for r in new}
+    assert b[(3, "A")]["F_r"] != pytest.approx(a[(3, "A")]["F_r"])
+    assert b[(1, "A")]["F_r"] == pytest.approx(a[(1, "A")]["F_r"])       # other shafts
+    fixed = b[(3, "A")]["F_a"] or b[(3, "B")]["F_a"]
+    assert fixed == pytest.approx(500.0)
+
+
+def test_external_load_outside_the_steps():
+    with pytest.raises(InputError) as e:
+        run_data(_with_load(_fast(), position=900.0, force=100.0))
+    assert "shaft[2].load[0].position" in str(e.value)

@@ -18,7 +18,7 @@ from geardesign.core.registry import run_data
 from geardesign.core.result import DataTable, Result, check
 from geardesign.core.spec import ValidatedSpec, load_toml
 from geardesign.drive import split as SPLIT
-from geardesign.drive.shafts import reactions
+from geardesign.drive.shafts import external_load, reactions
 from geardesign.drive.stages import ADAPTERS, Duty, StageRun
 
 DRIVE_KEYS = ("name", "file", "efficiency")
@@ -326,6 +326,12 @@ def shaft_loads(sh: dict, k: int, runs: list[StageRun]) -> list[tuple[dict, int,
     return out
 
 
+def external_loads(sh: dict) -> list["GearLoad"]:
+    """The ``[[shaft.load]]`` forces of a shaft as point loads (:func:`.shafts.external_load`)."""
+    return [external_load(ld["force"], math.radians(ld["angle"]), ld["position"], ld["axial"])
+            for ld in sh.get("load") or []]
+
+
 def shaft_cases(shafts: list, runs: list[StageRun], n_m: float, L_h: float) -> list[dict]:
     """The bearings of the shafts with their loads: one entry per bearing, ``{"shaft",
     "side", "key", "name", "F_r", "F_a", "n", "data"}`` (``data``: the bearing spec)."""
@@ -341,7 +347,7 @@ def shaft_cases(shafts: list, runs: list[StageRun], n_m: float, L_h: float) -> l
         if sh["bearing_b"] == sh["bearing_a"]:
             raise InputError.at(f"{key}.bearing_b", sh["bearing_b"],
                                 "the two bearings must be at different positions")
-        loads = [ld for _, _, ld in shaft_loads(sh, k, runs)]
+        loads = [ld for _, _, ld in shaft_loads(sh, k, runs)] + external_loads(sh)
         R = reactions(sh["bearing_a"], sh["bearing_b"], loads, rot[idx - 1])
         name = sh["name"] or f"shaft {idx}"
         for side in ("a", "b"):

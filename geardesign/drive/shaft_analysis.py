@@ -35,7 +35,7 @@ from dataclasses import dataclass, field
 from geardesign.core.errors import InputError, Problem
 from geardesign.core.registry import load_data
 from geardesign.core.result import DataTable, Result, check
-from geardesign.drive.shafts import GearLoad, gear_force
+from geardesign.drive.shafts import GearLoad, external_load, gear_force
 from geardesign.shaft import calculator as SC
 from geardesign.spur.geometry import disc_mass
 from geardesign.shaft.solve import ARCMIN, Load, ShaftResult, Support, analyse
@@ -157,6 +157,13 @@ def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed:
                           mass=mass,
                           name=f"gear of stage {g.stage}",
                           module=stage_modules.get(g.stage, (None, 0.0))[0]))
+    for j, el in enumerate(sh.get("load") or []):
+        _inside(span, el["position"], f"{key}.load[{j}].position", "the load")
+        (fx, fy, fz), _ = gear_force(external_load(el["force"], math.radians(el["angle"]),
+                                                   el["position"], el["axial"]), rotation)
+        fx, fy, fz = (v if abs(v) >= 1e-6 else 0.0 for v in (fx, fy, fz))
+        loads.append(Load(el["position"] - start, Fy=fx, Fz=fy, Fx=fz,
+                          mass=el["mass"] or 0.0, name=el["name"] or f"load {j + 1}"))
     T_rest = -sum(g.torque for g in gears)
     if (idx == 1 or idx == n_shafts) and abs(T_rest) > 1e-9 * max(
             [abs(g.torque) for g in gears] + [1.0]):

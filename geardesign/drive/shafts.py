@@ -55,6 +55,20 @@ class Reactions:
         return math.hypot(*self.R_B)
 
 
+def external_load(force: float, angle: float, z: float, axial: float = 0.0) -> GearLoad:
+    """A point force on the shaft as a :class:`GearLoad` with no tangential force and no
+    lever: ``force`` [N] in the direction θ = ``angle`` [rad] of the transverse plane,
+    ``axial`` [N] along +z, at ``z`` [mm].  :func:`gear_force` then gives
+    F = (force·cos θ, force·sin θ, axial) at (0, 0, z): the radial force of a gear is
+    −F_r·e, so F_r = −force.
+
+    >>> gear_force(external_load(100.0, 0.0, 5.0, -20.0), 1)
+    ((100.0, 0.0, -20.0), (0.0, 0.0, 5.0))
+    """
+    return GearLoad(0.0, -force, abs(axial), 0.0, z, angle, driving=False,
+                    axial_sign=-1 if axial < 0 else 1)
+
+
 def gear_force(g: GearLoad, rotation: int) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
     """Force vector on the gear and its point of application (x, y, z) in mm."""
     ex, ey = math.cos(g.mate_angle), math.sin(g.mate_angle)

@@ -65,6 +65,23 @@ GEAR_ON_SHAFT = Table("gear", "a gear on the shaft", (
           hint="default: a solid steel disc of the pitch diameter and the face width"),
 ))
 
+LOAD_ON_SHAFT = Table("load", "an external force on the shaft: a coupling's radial force, "
+                      "a belt pulley's pull, a chain sprocket's pull, a gear of a drive "
+                      "outside this spec", (
+    Field("position", "number", "position of the force along the shaft", "mm", "z",
+          minimum=-1e5, maximum=1e5, example=-60.0),
+    Field("force", "number", "radial force on the shaft (magnitude)", "N", "F",
+          minimum=0.0, maximum=1e8, example=1500.0),
+    Field("angle", "number", "direction of the force on the shaft in the drive's x–y plane, "
+          "from x (as mate_angle)", "deg", "θ_F", default=0.0, minimum=-360.0,
+          maximum=360.0),
+    Field("axial", "number", "axial force on the shaft (+ towards bearing B)", "N", "F_a",
+          default=0.0, minimum=-1e8, maximum=1e8),
+    Field("mass", "number", "mass of the part that applies it (critical speed of an "
+          "analysed shaft)", "kg", "m", default=0.0, minimum=0.0, maximum=1e5),
+    Field("name", "string", "name of the load", default=None),
+))
+
 KEY_ON_SHAFT = Table("key", "a shaft-hub connection (key, spline or interference fit): the "
                      "connection calculator's [key], [spline] or [fit] keys follow", (
     Field("type", "string", "connection type", choices=("key", "spline", "fit"),
@@ -94,6 +111,9 @@ SHAFT = Table("shaft", "a shaft on two bearings", (
     Field("method", "string", "bearing life method (see geardesign schema bearing)",
           default="gost18855_94", choices=("gost18855_94", "iso281_2007")),
     TableList("gear", "gears on the shaft", GEAR_ON_SHAFT, max_items=4),
+    TableList("load", "external forces on the shaft (couplings, pulleys, sprockets): they "
+              "load the bearings and, with steps, the shaft", LOAD_ON_SHAFT,
+              required=False, max_items=6),
     Table("support_a", "bearing A: the [bearing] table of the bearing calculator (designation, "
           "or type and ratings)", (), open=True),
     Table("support_b", "bearing B, as support_a", (), open=True),
@@ -201,7 +221,8 @@ SCHEMA = SpecSchema(
             TableList("shaft", "shafts on two bearings: bearing loads and lives", SHAFT,
                       required=False, max_items=21, in_template=False,
                       hint="keys: index, bearing_a, bearing_b, fixed, method, [[shaft.gear]] "
-                           "(stage, position, mate_angle, axial_sign), [shaft.support_a], "
+                           "(stage, position, mate_angle, axial_sign), [[shaft.load]] "
+                           "(position, force, angle, axial), [shaft.support_a], "
                            "[shaft.support_b]; see specs/drive_two_stage_reducer.toml; with "
                            "[[shaft.step]], [shaft.material] and [[shaft.key]] the shafts and "
                            "their connections are analysed, see "
