@@ -286,3 +286,62 @@ def test_losses_above_the_input_power_is_one_line(tmp_path):
     code, out, err = cli("run", path)
     assert code == 2 and len(err.strip().splitlines()) == 1
     assert "motor.power" in err and "the drive would not turn" in err and "bearings" in err
+
+
+# ------------------------------------------------------------------ scuffing at the sump
+
+SHAFTS = ROOT / "specs" / "drive_reducer_shafts_keys_thermal.toml"
+
+
+def _scuffing_stage(doc):
+    st = doc["results"]["stage_reports"][0]
+    return st["inputs"]["iso"], st["results"]["iso6336_scuffing"]
+
+
+def test_scuffing_is_rated_at_the_sump_temperature_with_the_drives_oil():
+    doc = _run(_data(SHAFTS))
+    iso, sc = _scuffing_stage(doc)
+    th = doc["results"]["thermal"]
+    assert iso["scuffing"]["oil_temperature"] == pytest.approx(th["t_oil"], rel=1e-12)
+    assert iso["lubricant_viscosity"] == th["nu40"]
+    assert iso["scuffing"]["oil_viscosity_100"] == pytest.approx(
+        _nu100(th["nu40"], th["VI"]), rel=1e-12)
+    assert iso["scuffing"]["oil_density"] == doc["inputs"]["lubrication"]["density"]
+    msg = next(c for c in doc["checks"] if c["code"] == "SCUFFING_OIL_1")
+    assert msg["passed"] and "sump temperature" in msg["message"]
+
+
+def _nu100(nu40, VI):
+    from geardesign.materials import lubricants as OIL
+    return OIL.nu100_from_vi(nu40, VI)
+
+
+def test_scuffing_equals_the_spur_calculator_at_that_temperature():
+    """The stage's scuffing rating is the spur calculator's for the stage as the drive
+    loads it, with Θ_oil = the sump temperature: one formula, no copy."""
+    doc = _run(_data(SHAFTS))
+    st = doc["results"]["stage_reports"][0]
+    data = {"kind": "spur", **{k: v for k, v in st["inputs"].items()
+                               if k not in ("kind", "title")}}
+    alone = run_data(data).document()["results"]["iso6336_scuffing"]
+    assert alone["S_intS"] == pytest.approx(_scuffing_stage(doc)[1]["S_intS"], rel=1e-12)
+
+
+def test_a_given_oil_temperature_below_the_sump_warns():
+    d = _data(SHAFTS)
+    d["stage"][0]["iso"]["scuffing"]["oil_temperature"] = 30.0
+    doc = _run(d)
+    iso, _ = _scuffing_stage(doc)
+    assert iso["scuffing"]["oil_temperature"] == 30.0
+    c = next(c for c in doc["checks"] if c["code"] == "SCUFFING_OIL_1")
+    assert not c["passed"] and c["severity"] == "warning"
+    assert "leave oil_temperature out" in c["message"]
+
+
+def test_scuffing_without_lubrication_needs_its_oil_temperature():
+    d = _data(SHAFTS)
+    d.pop("lubrication")
+    d.pop("thermal")
+    with pytest.raises(Exception) as e:
+        _run(d)
+    assert "oil_temperature" in str(e.value)

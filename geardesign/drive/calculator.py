@@ -174,10 +174,11 @@ def compute(spec: ValidatedSpec) -> Result:
             return T1, _run_chain(st, T1, n_m, duty)
         return T_m, _run_chain(st, T_m, n_m, duty)
 
+    scuff = LUB.scuffing_oil(spec, stages) if lub is not None else {}
     T_in, runs = chain()
     thermal = None
     if lub is not None:
-        thermal = LUB.solve(spec, stages, chain, T_in, runs, n_m)
+        thermal = LUB.solve(spec, stages, chain, T_in, runs, n_m, scuff)
         T_in, runs = thermal.T_in, thermal.runs
 
     u = math.prod(r.ratio for r in runs)
@@ -242,6 +243,7 @@ def compute(spec: ValidatedSpec) -> Result:
 
     if thermal is not None:
         LUB.report(res, thermal, stages)
+        LUB.scuffing_checks(res, thermal, stages, scuff)
     if d["shaft"]:
         _bearing_report(res, bearings, load["life_hours"])
     if layout is not None:

@@ -10,6 +10,8 @@ from the losses at that temperature; until they change by less than 1e-6 (at mos
 
 from __future__ import annotations
 
+import copy
+
 import math
 from dataclasses import dataclass
 
@@ -208,7 +210,64 @@ def prepare(spec: ValidatedSpec) -> None:
         spec.assumed += [f"thermal.{f.key}" for f in THERMAL.fields if f.default is not None]
 
 
-def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m) -> Thermal:
+SCUFFING_T_MAX = 150.0     # °C, the largest iso.scuffing.oil_temperature of a stage spec
+
+
+# the drive's base oil names ([lubrication] base_oil) as the scuffing table's lubricant names
+SCUFFING_LUBRICANT = {"mineral": "mineral", "pao": "polyalphaolefin",
+                      "pag_insoluble": "polyglycol", "pag_soluble": "polyglycol_water_soluble",
+                      "traction": "traction_fluid", "phosphate_ester": "phosphate_ester"}
+
+
+def scuffing_oil(spec: ValidatedSpec, stages: list) -> dict:
+    """The cylindrical stages rated for scuffing (``[iso.scuffing]``, ISO/TS 6336-21):
+    ``{stage index: "balance" | "given"}``.  Their spec data is copied in ``stages`` and
+    takes the drive's oil where it names none: ``iso.lubricant_viscosity`` = ν40 of
+    ``[lubrication] oil``, ``iso.scuffing.oil_viscosity_100``, ``oil_density`` and
+    ``lubricant`` (the base oil).  A stage that gives no ``oil_temperature`` takes the sump
+    temperature of the heat balance (the oil before the mesh of a dip-lubricated gear,
+    [ISO6336-21] Θ_oil); until the balance is known it starts at the permissible sump
+    temperature."""
+    d = spec.data
+    lub = d["lubrication"]
+    oil, _ = _oil(spec)
+    t0 = min(d["thermal"]["max_oil_temperature"], SCUFFING_T_MAX)
+    out = {}
+    for i, (where, name, data, eta) in enumerate(stages):
+        iso = data.get("iso") if data.get("kind") == "spur" else None
+        sc = iso.get("scuffing") if isinstance(iso, dict) else None
+        if not isinstance(sc, dict):
+            continue
+        data = copy.deepcopy(data)
+        iso, sc = data["iso"], data["iso"]["scuffing"]
+        iso.setdefault("lubricant_viscosity", oil.nu40)
+        sc.setdefault("oil_viscosity_100", oil.nu100)
+        sc.setdefault("oil_density", lub["density"])
+        sc.setdefault("lubricant", SCUFFING_LUBRICANT[lub["base_oil"]])
+        if sc.get("oil_temperature") is None:
+            sc["oil_temperature"] = t0
+            out[i] = "balance"
+        else:
+            out[i] = "given"
+        stages[i] = (where, name, data, eta)
+    return out
+
+
+def _set_scuffing_oil(stages: list, scuff: dict, t_oil: float) -> bool:
+    """Put the sump temperature into the stages whose scuffing takes it; True if one
+    changed."""
+    t = min(t_oil, SCUFFING_T_MAX)
+    changed = False
+    for i, how in scuff.items():
+        if how == "balance":
+            sc = stages[i][2]["iso"]["scuffing"]
+            changed |= sc["oil_temperature"] != t
+            sc["oil_temperature"] = t
+    return changed
+
+
+def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m, scuff: dict | None = None
+          ) -> Thermal:
     from geardesign.drive.calculator import run_bearing, shaft_cases
 
     d = spec.data
@@ -262,6 +321,7 @@ def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m) -> Thermal:
                                          f"the power, or check the oil grade, the immersion "
                                          f"and the oil volume"))
         etas = {i: s.eta for i, s in enumerate(sl) if i in m.meshes}
+        oil_moved = _set_scuffing_oil(stages, scuff or {}, bal.t_oil)
         if etas_before is not None and all(
                 abs(etas[i] - etas_before[i]) <= EFFICIENCY_TOL for i in etas):
             break
@@ -270,6 +330,13 @@ def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m) -> Thermal:
         etas_before = etas
         T_in, runs = chain(etas, runs)
         for i in etas:
+            runs[i].efficiency_source = ETA_SOURCE
+    else:
+        oil_moved = False
+    if oil_moved:
+        # the stages rated for scuffing at the sump temperature of the last balance
+        T_in, runs = chain(etas_before or None, runs)
+        for i in etas_before or {}:
             runs[i].efficiency_source = ETA_SOURCE
     losses = HEAT.stage_losses(m, bal.t_oil)
     info.update(nu40=oil.nu40, VI=oil.VI, X_L=oil.X_L)
@@ -378,3 +445,30 @@ def report(res: Result, t: Thermal, stages) -> None:
         f"the oil sump settles at {b.t_oil:.1f} °C <= {t.t_max:g} °C (losses {b.P_V:.0f} W); "
         f"thermal power limit {b.scale_limit * P1 / 1000.0:.2f} kW",
         b.t_oil, t.t_max, SRC_HEAT))
+
+
+def scuffing_checks(res: Result, t: Thermal, stages: list, scuff: dict) -> None:
+    """Say at which oil temperature each stage was rated for scuffing: the sump temperature
+    of the balance, or the stage's own value (a warning when it is below the sump's)."""
+    t_oil = t.balance.t_oil
+    for i, how in sorted(scuff.items()):
+        t_st = stages[i][2]["iso"]["scuffing"]["oil_temperature"]
+        if how == "balance":
+            capped = (f" (capped at {SCUFFING_T_MAX:g} °C, the method's limit)"
+                      if t_oil > SCUFFING_T_MAX else "")
+            res.checks.append(check(
+                f"SCUFFING_OIL_{i + 1}", True, "info", "",
+                f"stage {i + 1} is rated for scuffing at the sump temperature of the heat "
+                f"balance, Θ_oil = {t_st:.1f} °C{capped}", t_st, None, "heat balance"))
+        else:
+            low = t_st < t_oil - 0.5
+            res.checks.append(check(
+                f"SCUFFING_OIL_{i + 1}", not low, "warning",
+                f"stage {i + 1} is rated for scuffing at Θ_oil = {t_st:g} °C (its "
+                f"iso.scuffing.oil_temperature) but the heat balance gives a sump of "
+                f"{t_oil:.1f} °C: leave oil_temperature out to rate it at the sump "
+                f"temperature, or cool the oil (fan, cooler)",
+                f"stage {i + 1} is rated for scuffing at Θ_oil = {t_st:g} °C, not below the "
+                f"sump temperature {t_oil:.1f} °C of the heat balance", t_st, t_oil,
+                "heat balance"))
+
