@@ -12,9 +12,16 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from statistics import NormalDist
+from functools import lru_cache
 
-_PHI = NormalDist()
+
+@lru_cache(maxsize=1)
+def _phi():
+    """The standard normal distribution (statistics is imported on first use: the shaft
+    calculator imports this module for K_σD only)."""
+    from statistics import NormalDist
+
+    return NormalDist()
 
 
 def blank_size_factor(blank_size: float, d0: float = 7.5) -> float:
@@ -286,12 +293,12 @@ def part_endurance(*, sigma_u: float, sigma_m1: float, d0: float, blank_size: fl
 
 def normal_quantile(P: float) -> float:
     """Quantile z_P of the standard normal distribution for the probability P (0 < P < 1)."""
-    return _PHI.inv_cdf(P)
+    return _phi().inv_cdf(P)
 
 
 def normal_cdf(z: float) -> float:
     """Standard normal distribution function Φ(z)."""
-    return _PHI.cdf(z)
+    return _phi().cdf(z)
 
 
 def quantile_endurance(sigma_m1D: float, v: float, P: float) -> float:
@@ -334,7 +341,7 @@ def probability_of_non_failure(sigma_eq: float, sigma_m1D: float, v: float,
     spread = math.sqrt(n * n * v * v + v_stress * v_stress)
     if spread == 0.0:            # no scatter: certain survival above the limit
         return 1.0 if n > 1.0 else (0.5 if n == 1.0 else 0.0)
-    return _PHI.cdf((n - 1.0) / spread)
+    return _phi().cdf((n - 1.0) / spread)
 
 
 def sn_slope(sigma_u: float, K: float) -> float:

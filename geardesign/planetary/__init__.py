@@ -9,15 +9,15 @@ Modules: :mod:`.kinematics`, :mod:`.assembly`, :mod:`.geometry`, :mod:`.efficien
 :mod:`geardesign.spur.internal`.
 """
 
-from geardesign.core.registry import Calculator
-from geardesign.planetary.calculator import compute
-from geardesign.planetary.spec import SCHEMA
+from __future__ import annotations
 
-CALCULATOR = Calculator(
-    kind="planetary",
+from geardesign.core.registry import lazy_calculator
+
+# the calculator is built on first use: importing one of the package's modules (the drive's
+# loss model uses .efficiency) does not import the calculation
+__getattr__ = lazy_calculator(
+    "planetary",
     summary="planetary train 2K-H/3K: kinematics, assembly, geometry with shifts, "
             "efficiency, self-locking, strength, frequencies, synthesis",
     methods=("Willis method", "GOST 16532-70", "GOST 19274-73", "Matusevich et al. 2017"),
-    schema=SCHEMA,
-    compute=compute,
 )
