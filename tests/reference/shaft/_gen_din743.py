@@ -112,8 +112,8 @@ def cases() -> list[dict]:
         case["K_V"] = round(rng.choice([1.0, 1.0, 1.1, 1.2]), 2)
         case["hard_surface"] = rng.random() < 0.2
         kp = round(rng.uniform(1.3, 2.5), 2)
-        M = round(rng.uniform(0.02, 0.12) * d ** 3 / 1000.0 * 10.0, 3)  # σ_b ≈ 20…120 MPa
-        T = round(rng.uniform(0.0, 0.12) * d ** 3 / 1000.0 * 10.0, 3)
+        M = round(rng.uniform(0.2, 1.5) * d ** 3 / 1000.0 * 10.0, 3)  # σ_b ≈ 20…150 MPa
+        T = round(rng.uniform(0.0, 3.0) * d ** 3 / 1000.0 * 10.0, 3)   # τ ≈ 0…150 MPa
         F = round(rng.choice([0.0, rng.uniform(0.0, 20.0) * d * d]), 1)
         cycle = rng.choice(["pulsating", "steady", "reversed"])
         ta, tm = {"pulsating": (T / 2, T / 2), "steady": (0.0, T), "reversed": (T, 0.0)}[cycle]
