@@ -446,6 +446,10 @@ def _section_din743(xs: float, label: str, M: float, T: float, N: float,
 def diameter_for(section: SectionResult, S_required: float) -> float:
     """Diameter at which the section reaches ``S_required`` with the same factors: the
     nominal stresses scale with 1/d³ (the size and concentration factors are kept)."""
+    if section.S <= 0 < section.S_static:
+        # DIN 743 load case 1, mean stress above the yield limit: no fatigue strength left;
+        # scale by the static safety instead
+        return section.d * (S_required / min(section.S_static, 1.0)) ** (1.0 / 3.0)
     if not math.isfinite(section.S) or section.S <= 0:
         return section.d
     return section.d * (S_required / section.S) ** (1.0 / 3.0)

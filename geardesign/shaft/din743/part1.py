@@ -125,7 +125,9 @@ def safety(sigma_zd: float, sigma_b: float, tau_t: float, zd_K: float, b_K: floa
     .. math:: S = 1\\Big/\\sqrt{\\Big(\\frac{σ_{zd}}{σ_{zdK}} + \\frac{σ_b}{σ_{bK}}\\Big)^2
               + \\Big(\\frac{τ_t}{τ_{tK}}\\Big)^2}
 
-    A term without stress is 0; no stress at all gives an infinite safety.
+    A term without stress is 0; no stress at all gives an infinite safety.  A strength of 0
+    or below with a stress (σ_ADK = σ_FK − σ_mv < 0 in load case 1: the mean stress alone
+    exceeds the yield limit) gives S = 0.
 
     >>> round(safety(0.0, 100.0, 50.0, 1.0, 200.0, 100.0), 4)
     1.4142

@@ -10,7 +10,7 @@ dependency din6885 are importable; the test suite itself never imports them.
 
 Cases: the MEL1 examples of the package's own tests that our notches cover (a shoulder on
 50CrMo4, load case 1, with axial force and non-rotating bending; a key seat on C50 with a
-hard surface layer, load case 2) and 24 random sections (shoulders, key seats, press fits)
+hard surface layer, load case 2) 24 random sections (shoulders, key seats, press fits)
 on steels given by type and random σ_B, σ_S, with random d, D, r, d_eff, moments, torques,
 axial forces, R_z, K_V, load case and hard surface layer.  The inputs are forces and
 moments (N, N·m) as the package takes them; the stresses follow from the solid section.
@@ -121,6 +121,22 @@ def cases() -> list[dict]:
         case["peak_factor"] = kp
         case["loads"] = {"F_zdm": F, "F_zdmax": kp * F, "M_bm": 0.0, "M_ba": M,
                          "M_bmax": kp * M, "M_tm": tm, "M_ta": ta, "M_tmax": kp * T}
+        out.append(case)
+    # high mean stress: the yield branches of σ_ADK, τ_ADK (eqs. (13), (14), (18), (19))
+    for j, (kind, lc, typ) in enumerate((("key", 1, "structural"), ("key", 2, "structural"),
+                                         ("shoulder", 2, "quenched_tempered"))):
+        d = 40.0
+        W, Wp = 3.141592653589793 / 32.0 * d ** 3, 3.141592653589793 / 16.0 * d ** 3
+        M, T, F = 60.0 * W / 1e3, 300.0 * Wp / 1e3, 100.0 * 3.141592653589793 / 4 * d * d
+        case = {"name": f"high mean stress {j + 1} ({kind}, load case {lc})", "notch": kind,
+                "d": d, "d_eff": 50.0, "load_case": lc, "Rz": 6.3, "K_V": 1.0,
+                "hard_surface": False, "torsion_cycle": "steady", "peak_factor": 1.5,
+                "material": {"type": typ, "sigma_B": 600.0, "sigma_S": 400.0,
+                             "d_B": D_B[typ][0], "d_B_S": D_B[typ][1]},
+                "loads": {"F_zdm": F, "F_zdmax": 1.5 * F, "M_bm": 0.0, "M_ba": M,
+                          "M_bmax": 1.5 * M, "M_tm": T, "M_ta": 0.0, "M_tmax": 1.5 * T}}
+        if kind == "shoulder":
+            case.update(D=50.0, r=2.0)
         out.append(case)
     return out
 

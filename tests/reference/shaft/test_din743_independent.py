@@ -18,7 +18,8 @@ cross-bore (Querbohrung) are no notches of our steps.  Then 24 random sections: 
 shoulders, 7 key seats, 7 press fits on quenched-and-tempered, structural, nitriding and
 CrNiMo case-hardening steels of random σ_B 500…1200 MPa, with random d 20…120 mm, shoulder
 height and fillet radius, blank diameter, bending moment, torque (pulsating, steady or
-reversed), axial force, R_z, K_V, load case and hard surface layer.
+reversed), axial force, R_z, K_V, load case and hard surface layer; and 3 sections of
+high mean stress.
 
 The one difference, and why: for a case-hardening steel other than CrNiMo (16MnCr5,
 20MnCr5, ...) [din743py] takes K_1 of the tensile strength from the branch of the
@@ -29,6 +30,15 @@ scripts of the method do and as the continuity of that branch at 150 mm (0.601 �
 requires.  The last random case is such a steel: the generator records [din743py]'s own
 K_1B and safeties and then runs it again with our K_1B imposed; the test checks that all
 24 quantities then agree and that the recorded K_1B differs as stated.
+
+A second difference, in a case outside the method's sense: in load case 1 a mean stress
+above the component yield limit (σ_mv > σ_FK) makes σ_ADK = σ_FK − σ_mv negative.
+[din743py] squares the negative quotient σ_a/σ_ADK and reports a positive S_Dauer (1.222 in
+the first "high mean stress" case, whose S_Verform is 0.55); we report S_Dauer = 0: no
+amplitude is endurable once the mean stress alone yields the section.  The three
+"high mean stress" cases (σ_mv = 529 MPa on a steel of σ_S = 400 MPa) are there to run the
+yield branches of σ_ADK (eqs. (13), (14), (18), (19)); every other quantity of that case
+agrees.
 """
 
 from __future__ import annotations
@@ -86,8 +96,12 @@ def _ours(case: dict) -> dict:
 @pytest.mark.parametrize("case", DATA["cases"], ids=[c["name"] for c in DATA["cases"]])
 def test_same_section_as_din743py(case):
     ours, ref = _ours(case), case["reference"]
+    negative = min(ref["sigma_zdADK"], ref["sigma_bADK"], ref["tau_tADK"]) < 0
     for k, theirs in MAP.items():
         a, b = ours[k], ref[theirs]
+        if k == "S" and negative:
+            assert a == 0.0        # second difference of the module docstring
+            continue
         assert math.isclose(a, b, rel_tol=TOL, abs_tol=1e-9), (k, a, b)
 
 
