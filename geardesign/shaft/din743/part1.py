@@ -101,13 +101,19 @@ def amplitude_strength(load_case: int, mv: float, a: float, FK: float, WK: float
     181.8182
     """
     if load_case == 1:
-        if mv <= (FK - WK) / (1.0 - psi):
+        if mv <= _limit(FK - WK, 1.0 - psi):
             return WK - psi * mv
         return FK - mv
     ratio = mv / a if a > 0 else (math.inf if mv > 0 else 0.0)
-    if ratio <= (FK - WK) / (WK - FK * psi):
+    if ratio <= _limit(FK - WK, WK - FK * psi):
         return WK / (1.0 + psi * ratio)
     return FK / (1.0 + ratio)
+
+
+def _limit(num: float, den: float) -> float:
+    """The branch limit num/den of σ_ADK; where den <= 0 (ψ_σK >= 1, or σ_WK <= ψ·σ_FK:
+    the fatigue line never meets the yield line for a positive mean stress) infinite."""
+    return num / den if den > 0 else math.inf
 
 
 def _q(a: float, b: float) -> float:
