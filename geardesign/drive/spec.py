@@ -97,6 +97,10 @@ KEY_ON_SHAFT = Table("key", "a shaft-hub connection (key, spline or interference
 
 _SHAFT_LIMITS = tuple(
     replace(f, default=None, hint="default: motor.peak_ratio, else 2") if f.key == "peak_factor"
+    # the required safeties default by the method (GOST 2.0 and 1.5, DIN743 1.2): left to
+    # the shaft calculator
+    else replace(f, default=None, hint=f"default: the shaft calculator's ({f.hint})")
+    if f.key in ("S_min", "S_static_min")
     else f for f in SHAFT_SPEC.SHAFT.fields if f.key != "speed")
 
 SHAFT = Table("shaft", "a shaft on two bearings", (

@@ -18,8 +18,10 @@ from geardesign.shaft.solve import ARCMIN, ShaftResult, analyse, diameter_for
 
 def model(spec: ValidatedSpec) -> dict:
     """The plain data of :func:`.solve.analyse` read from the spec (every input rule)."""
-    mat, origin = IN.material(spec.data["material"])
+    IN.resolve_defaults(spec)
     steps = IN.steps(spec)
+    mat, origin = IN.material(spec.data["material"], IN.method(spec),
+                              max(s.diameter for s in steps))
     length = sum(s.length for s in steps)
     return dict(steps=steps, loads=IN.loads(spec, length), supports=IN.supports(spec, length),
                 material=mat, options=IN.options(spec), origin=origin)
@@ -40,20 +42,25 @@ def report(spec: ValidatedSpec, m: dict, r: ShaftResult) -> Result:
     res = CALCULATOR.new_result(spec)
     lim = spec.data["shaft"]
 
-    m = res.section("material", "Material")
-    m.add("sigma_B", mat.sigma_B, "MPa", "σ_B", "ultimate tensile strength",
-          S.MATERIAL if origin.get("sigma_B") == "grade" else "input")
-    m.add("sigma_T", mat.sigma_T, "MPa", "σ_T", "yield strength",
-          S.MATERIAL if origin.get("sigma_T") == "grade" else "input")
-    m.add("sigma_m1", mat.sigma_m1, "MPa", "σ_-1", "endurance limit, rotating bending",
-          {"grade": S.MATERIAL, "given": "input"}.get(origin.get("sigma_m1"), S.ESTIMATE))
-    m.add("tau_m1", mat.tau_m1, "MPa", "τ_-1", "endurance limit, torsion",
-          {"grade": S.MATERIAL, "given": "input"}.get(origin.get("tau_m1"), S.ESTIMATE))
-    m.add("psi_sigma", mat.psi_sigma, "-", "ψ_σ", "mean-stress sensitivity, bending",
-          "input" if spec.data["material"]["psi_sigma"] is not None else "[GOST25504]")
-    m.add("psi_tau", mat.psi_tau, "-", "ψ_τ", "mean-stress sensitivity, torsion",
-          {"grade": S.MATERIAL, "given": "input"}.get(origin.get("psi_tau"), "[GOST25504]"))
-    m.add("alloy", mat.alloy, None, "", "alloy steel (size factor in bending)", S.TABLES)
+    din = opt.method == "DIN743"
+    if din:
+        res.methods[:] = [x for x in res.methods if not x.startswith("GOST")] + [S.DIN_METHOD]
+        _din_material_rows(res, mat, origin)
+    else:
+        m = res.section("material", "Material")
+        m.add("sigma_B", mat.sigma_B, "MPa", "σ_B", "ultimate tensile strength",
+              S.MATERIAL if origin.get("sigma_B") == "grade" else "input")
+        m.add("sigma_T", mat.sigma_T, "MPa", "σ_T", "yield strength",
+              S.MATERIAL if origin.get("sigma_T") == "grade" else "input")
+        m.add("sigma_m1", mat.sigma_m1, "MPa", "σ_-1", "endurance limit, rotating bending",
+              {"grade": S.MATERIAL, "given": "input"}.get(origin.get("sigma_m1"), S.ESTIMATE))
+        m.add("tau_m1", mat.tau_m1, "MPa", "τ_-1", "endurance limit, torsion",
+              {"grade": S.MATERIAL, "given": "input"}.get(origin.get("tau_m1"), S.ESTIMATE))
+        m.add("psi_sigma", mat.psi_sigma, "-", "ψ_σ", "mean-stress sensitivity, bending",
+              "input" if spec.data["material"]["psi_sigma"] is not None else "[GOST25504]")
+        m.add("psi_tau", mat.psi_tau, "-", "ψ_τ", "mean-stress sensitivity, torsion",
+              {"grade": S.MATERIAL, "given": "input"}.get(origin.get("psi_tau"), "[GOST25504]"))
+        m.add("alloy", mat.alloy, None, "", "alloy steel (size factor in bending)", S.TABLES)
 
     g = res.section("shaft", "Shaft and beam model")
     g.add("length", r.length, "mm", "L", "length of the shaft", "input")
@@ -70,7 +77,7 @@ def report(spec: ValidatedSpec, m: dict, r: ShaftResult) -> Result:
 
     res.tables.append(_support_table(r))
     res.tables.append(_load_table(r))
-    res.tables.extend(_section_tables(r))
+    res.tables.extend(_section_tables(r, din))
 
     dg = res.section("diagrams", "Diagrams along the shaft (arrays over x)")
     dg.add("x", r.x, "mm", "x", "position of the nodes", S.FE)
@@ -89,19 +96,78 @@ def report(spec: ValidatedSpec, m: dict, r: ShaftResult) -> Result:
     c = r.critical
     st = res.section("strength", "Strength: critical sections")
     if c is not None:
+        fat = S.DIN_FATIGUE if din else S.FATIGUE
+        stat = S.DIN_STATIC if din else S.VON_MISES
         st.add("critical_section", c.label, None, "", "section of the lowest fatigue safety",
-               S.FATIGUE)
-        st.add("x_critical", c.x, "mm", "x", "its position", S.FATIGUE)
-        st.add("S", c.S, "-", "S", "lowest fatigue safety factor", S.FATIGUE)
-        st.add("S_min", lim["S_min"], "-", "[S]", "required", S.FATIGUE_LIMIT)
+               fat)
+        st.add("x_critical", c.x, "mm", "x", "its position", fat)
+        st.add("S", c.S, "-", "S", "lowest fatigue safety factor", fat)
+        st.add("S_min", lim["S_min"], "-", "[S]", "required",
+               S.DIN_LIMIT if din else S.FATIGUE_LIMIT)
         cs = r.critical_static
         st.add("critical_section_static", cs.label, None, "",
-               "section of the lowest static safety", S.VON_MISES)
+               "section of the lowest static safety", stat)
         st.add("S_static", cs.S_static, "-", "S_T", "lowest static safety factor (peak load)",
-               S.VON_MISES)
-        st.add("S_static_min", lim["S_static_min"], "-", "[S_T]", "required", S.STATIC_LIMIT)
-    res.checks.extend(_checks(r, lim, opt.speed, loads, supports, origin, steps, mat.sigma_B))
+               stat)
+        st.add("S_static_min", lim["S_static_min"], "-", "[S_T]", "required",
+               S.DIN_LIMIT if din else S.STATIC_LIMIT)
+    res.checks.extend(_checks(r, lim, opt.speed, loads, supports, origin, steps, mat.sigma_B,
+                              din, mat.din.d_eff if din else 0.0))
     return res
+
+
+def _din_range_checks(r: ShaftResult, d_eff: float) -> list:
+    """Warnings where DIN 743's formulas are used outside their range."""
+    from geardesign.shaft.din743 import tables as din_tables
+
+    out = []
+    sh = din_tables()["shoulder"]
+    if any(s.outside_table for s in r.sections):
+        where = ", ".join(s.label for s in r.sections if s.outside_table)
+        out.append(check(
+            "FILLET_TABLE_RANGE", False, "warning",
+            f"the shoulder at {where} lies outside the range of the DIN 743-2 formula for α "
+            f"(r/t >= {sh['r_t_min']:g}, d/D <= {sh['d_D_max']:g}): the formula is used "
+            f"beyond it; enlarge the fillet or check α against a handbook",
+            "", None, None, S.DIN_NOTCH))
+    d_eff_max = din_tables()["K_1"]["d_eff_max"]
+    if d_eff > d_eff_max:
+        out.append(check(
+            "FACTOR_TABLE_RANGE", False, "warning",
+            f"the blank diameter d_eff = {d_eff:g} mm is above the {d_eff_max:g} mm of the "
+            f"DIN 743 technological size factor K_1: its last value is used; give the "
+            f"blank's own sigma_B and sigma_T", "", None, None, S.DIN_K1))
+    return out
+
+
+def _din_material_rows(res: Result, mat, origin: dict) -> None:
+    """The material section of the DIN 743 method: the steel at d_B and at d_eff."""
+    dm = mat.din
+    st = dm.steel
+    m = res.section("material", "Material (DIN 743-3)")
+    src = S.DIN_STEEL if origin.get("grade") else "input"
+    if origin.get("grade"):
+        m.add("grade", st.name, None, "", "EN grade of DIN 743-3"
+              + (f" (for GOST {origin['gost']})" if origin.get("gost") else ""), S.DIN_STEEL)
+    m.add("steel_type", st.type, None, "", "steel type (K_1)", src)
+    m.add("sigma_B_dB", st.sigma_B, "MPa", "σ_B(d_B)", "tensile strength at d_B",
+          src if origin.get("sigma_B") == "grade" else "input")
+    m.add("sigma_S_dB", st.sigma_S, "MPa", "σ_S(d_B)", "yield strength at d_B",
+          src if origin.get("sigma_T") == "grade" else "input")
+    m.add("d_B", st.d_B, "mm", "d_B", "reference diameter (σ_B)", S.DIN_STEEL)
+    m.add("d_eff", dm.d_eff, "mm", "d_eff", "blank diameter at heat treatment",
+          "input" if origin.get("d_eff") == "given" else "largest step diameter")
+    m.add("K_1B", dm.K_1B, "-", "K_1B(d_eff)", "technological size factor, tensile",
+          S.DIN_K1)
+    m.add("K_1S", dm.K_1S, "-", "K_1S(d_eff)", "technological size factor, yield",
+          S.DIN_K1)
+    m.add("sigma_B", dm.sigma_B_d, "MPa", "σ_B(d)", "tensile strength of the blank",
+          S.DIN_K1)
+    m.add("sigma_T", dm.sigma_S_d, "MPa", "σ_S(d)", "yield strength of the blank", S.DIN_K1)
+    m.add("sigma_bW", 0.5 * st.sigma_B, "MPa", "σ_bW(d_B)", "endurance limit, bending",
+          S.DIN_STEEL)
+    m.add("tau_tW", 0.3 * st.sigma_B, "MPa", "τ_tW(d_B)", "endurance limit, torsion",
+          S.DIN_STEEL)
 
 
 def _support_table(r: ShaftResult) -> DataTable:
@@ -126,7 +192,29 @@ def _load_table(r: ShaftResult) -> DataTable:
     return t
 
 
-def _section_tables(r: ShaftResult) -> list[DataTable]:
+def _din_fatigue_table(r: ShaftResult) -> DataTable:
+    """Fatigue and static safety of every section by DIN 743 (the governing notch)."""
+    f = DataTable("fatigue", "Sections: fatigue and static safety (" + S.DIN_FATIGUE + ")", [
+        ("label", "section", None), ("concentrator", "notch", None),
+        ("beta_sigma", "β_σ", "-"), ("beta_tau", "β_τ", "-"),
+        ("K_2", "K_2", "-"), ("K_F", "K_Fσ", "-"), ("K_sigma", "K_σ", "-"),
+        ("K_tau", "K_τ", "-"), ("sigma_WK", "σ_WK", "MPa"), ("tau_WK", "τ_WK", "MPa"),
+        ("psi_sigma", "ψ_σK", "-"), ("psi_tau", "ψ_τK", "-"),
+        ("sigma_ADK", "σ_ADK", "MPa"), ("tau_ADK", "τ_ADK", "MPa"), ("S", "S", "-"),
+        ("sigma_FK", "σ_FK", "MPa"), ("S_static", "S_Verform", "-")])
+    for s in r.sections:
+        d = s.din
+        f.rows.append({"label": s.label, "concentrator": s.concentrator,
+                       "beta_sigma": d.notch.beta_b, "beta_tau": d.notch.beta_t,
+                       "K_2": d.K_2, "K_F": d.K_F_sigma, "K_sigma": d.K_sigma,
+                       "K_tau": d.K_tau, "sigma_WK": d.sigma_WK, "tau_WK": d.tau_WK,
+                       "psi_sigma": d.psi_sigma, "psi_tau": d.psi_tau,
+                       "sigma_ADK": d.sigma_ADK, "tau_ADK": d.tau_ADK, "S": s.S,
+                       "sigma_FK": d.sigma_FK, "S_static": s.S_static})
+    return f
+
+
+def _section_tables(r: ShaftResult, din: bool = False) -> list[DataTable]:
     t = DataTable("sections", "Sections: loads and stresses (static at the peak load)", [
         ("label", "section", None), ("x", "x", "mm"), ("d", "d", "mm"), ("M", "M", "N·m"),
         ("T", "T", "N·m"), ("N", "N", "N"), ("sigma_a", "σ_a", "MPa"),
@@ -146,7 +234,7 @@ def _section_tables(r: ShaftResult) -> list[DataTable]:
                        "K_sigma_Kd": s.ratio_sigma, "K_tau_Kd": s.ratio_tau,
                        "K_F": s.K_F_sigma, "K_sigma_D": s.K_sigma_D, "K_tau_D": s.K_tau_D,
                        "S_sigma": s.S_sigma, "S_tau": s.S_tau, "S": s.S})
-    return [t, f]
+    return [t, _din_fatigue_table(r) if din else f]
 
 
 def _val(v: float) -> float | None:
@@ -160,7 +248,7 @@ def _fmt(v: float) -> str:
 
 
 def _checks(r: ShaftResult, lim: dict, speed: float, loads, supports, origin, steps,
-            mat_sigma_B: float) -> list:
+            mat_sigma_B: float, din: bool = False, d_eff: float = 0.0) -> list:
     out = []
     c = r.critical
     if c is not None:
@@ -182,7 +270,7 @@ def _checks(r: ShaftResult, lim: dict, speed: float, loads, supports, origin, st
             f"fatigue safety S = {_fmt(c.S)} < [S] = {S_req:g} at {c.label} (x = {c.x:g} mm, "
             f"{c.concentrator}): {advice}",
             f"fatigue safety S = {_fmt(c.S)} >= [S] = {S_req:g} (lowest at {c.label}, "
-            f"x = {c.x:g} mm)", _val(c.S), S_req, S.FATIGUE))
+            f"x = {c.x:g} mm)", _val(c.S), S_req, S.DIN_FATIGUE if din else S.FATIGUE))
         cs = r.critical_static
         S_req = lim["S_static_min"]
         d_req = math.ceil(cs.d * (S_req / cs.S_static) ** (1 / 3) * 10.0) / 10.0 \
@@ -193,7 +281,8 @@ def _checks(r: ShaftResult, lim: dict, speed: float, loads, supports, origin, st
             f"{cs.label} (x = {cs.x:g} mm): increase the diameter there from {cs.d:g} to at "
             f"least {d_req:g} mm or use a steel of higher yield strength",
             f"static safety at the peak load S_T = {_fmt(cs.S_static)} >= [S_T] = {S_req:g} "
-            f"(lowest at {cs.label})", _val(cs.S_static), S_req, S.VON_MISES))
+            f"(lowest at {cs.label})", _val(cs.S_static), S_req,
+            S.DIN_STATIC if din else S.VON_MISES))
     margin = lim["critical_speed_margin"]
     ratio = r.n_cr / speed
     out.append(check(
@@ -227,6 +316,9 @@ def _checks(r: ShaftResult, lim: dict, speed: float, loads, supports, origin, st
             f"{limit * 1000:.1f} µm: stiffen the shaft or bring the bearings closer",
             f"deflection at {p.name} {p.w * 1000:.1f} µm <= 0.01·m = {limit * 1000:.1f} µm",
             p.w, limit, S.GEAR_SEAT))
+    if din:
+        out.extend(_din_range_checks(r, d_eff))
+        return out
     if any(s.outside_table for s in r.sections):
         where = ", ".join(s.label for s in r.sections if s.outside_table)
         out.append(check(

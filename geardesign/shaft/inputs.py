@@ -9,7 +9,42 @@ from geardesign.core.errors import InputError, Problem
 from geardesign.core.spec import ValidatedSpec
 from geardesign.materials.gear_steel import normalize_grade
 from geardesign.shaft import strength as ST
+from geardesign.shaft.din743 import part3 as D3
+from geardesign.shaft.din743 import rating as DR
+from geardesign.shaft.din743 import tables as din_tables
 from geardesign.shaft.solve import Load, Material, Options, Step, Support
+
+GOST_ONLY = ("hardness_HB", "sigma_m1", "tau_m1", "psi_sigma", "psi_tau", "alloy")
+"""Material keys of the GOST method (the DIN 743 method derives these from σ_B)."""
+DIN_ONLY = ("steel_type", "d_eff")
+"""Material keys of the DIN 743 method."""
+
+
+def method(spec: ValidatedSpec) -> str:
+    """The strength method: ``[shaft] method``, default "GOST"."""
+    return spec.data["shaft"].get("method") or "GOST"
+
+
+def resolve_defaults(spec: ValidatedSpec) -> None:
+    """Fill in the defaults that depend on the method, so that the report echoes them
+    (marked assumed): with DIN743 the load case 2, no hard surface layer, and
+    S_min = S_static_min = 1.2 of [DIN743-1] where the spec leaves them out.  With GOST the
+    spec is left as validated."""
+    sh = spec.data["shaft"]
+    if method(spec) != "DIN743":
+        for key in ("din743_load_case", "din743_hard_surface"):
+            if sh.get(key) is not None:
+                raise InputError.at(f"shaft.{key}", sh[key],
+                                    'used only by method = "DIN743" (this spec rates by GOST)')
+        return
+    lim = din_tables()["limits"]
+    for key, value in (("din743_load_case", 2), ("din743_hard_surface", False),
+                       ("S_min", lim["S_min"]), ("S_static_min", lim["S_static_min"])):
+        path = f"shaft.{key}"
+        if sh.get(key) is None or path in spec.assumed:
+            sh[key] = value
+            if path not in spec.assumed:
+                spec.assumed.append(path)
 
 
 def _grade_key(name: str) -> str:
@@ -21,8 +56,16 @@ def _grade_key(name: str) -> str:
     return latin if latin in steels else key
 
 
-def material(m: dict) -> tuple[Material, dict]:
-    """The shaft material and a record of where each value came from."""
+def material(m: dict, how: str = "GOST", d_max: float = 0.0) -> tuple[Material, dict]:
+    """The shaft material and a record of where each value came from.  ``how``: the
+    method; ``d_max``: the largest step diameter (DIN 743: default d_eff)."""
+    if how == "DIN743":
+        return din_material(m, d_max)
+    for key in DIN_ONLY:
+        if m.get(key) is not None:
+            raise InputError.at(f"material.{key}", m[key],
+                                'used only by [shaft] method = "DIN743" (this spec rates by '
+                                'GOST)')
     steels = ST.tables()["steel"]
     row, alloy_default, origin = {}, False, {}
     if m["grade"] is not None:
@@ -83,6 +126,68 @@ def material(m: dict) -> tuple[Material, dict]:
                      m["density"], alloy), origin)
 
 
+def din_material(m: dict, d_max: float) -> tuple[Material, dict]:
+    """The shaft steel for DIN 743: an EN grade of [DIN743-3] (or a GOST grade with an EN
+    equivalent), or sigma_B, sigma_T and steel_type; at the blank diameter d_eff."""
+    for key in GOST_ONLY:
+        if m.get(key) is not None:
+            raise InputError.at(f"material.{key}", m[key],
+                                "used only by the GOST method; DIN 743 takes the endurance "
+                                "limits and the mean-stress sensitivity from sigma_B "
+                                "(DIN 743-3) and one row per grade: leave it out, or give "
+                                "sigma_B and sigma_T of the blank")
+    origin: dict = {}
+    if m["grade"] is not None:
+        name = m["grade"]
+        st = D3.steel(name)
+        if st is None:
+            en = D3.gost_equivalent(_grade_key(name))
+            st = D3.steel(en) if en else None
+            if st is not None:
+                origin["gost"] = _grade_key(name)
+        if st is None:
+            known = ", ".join(din_tables()["steel"])
+            gost = ", ".join(din_tables()["gost_equivalent"])
+            key = _grade_key(name)
+            why = ("a GOST grade without an EN equivalent in DIN 743-3"
+                   if key in ST.tables()["steel"] else "not a steel of DIN 743-3")
+            raise InputError.at("material.grade", name,
+                                f"{why}; known: {known} (and the GOST grades {gost}); or "
+                                f"leave out grade and give sigma_B, sigma_T and steel_type")
+        if m.get("steel_type") is not None and m["steel_type"] != st.type:
+            raise InputError.at("material.steel_type", m["steel_type"],
+                                f"steel {st.name} is {st.type} in DIN 743-3: leave out "
+                                f"steel_type, or leave out grade")
+        origin["grade"] = st.name
+    else:
+        missing = [k for k in ("sigma_B", "sigma_T", "steel_type") if m.get(k) is None]
+        if missing:
+            what = ("the DIN 743-3 steel type (" + ", ".join(D3.STEEL_TYPES) + ")"
+                    if missing[0] == "steel_type" else "the ultimate and the yield strength")
+            raise InputError(Problem(
+                f"material.{missing[0]}",
+                f"missing; method DIN743 without a grade needs sigma_B, sigma_T and "
+                f"steel_type: {what} (or give an EN grade of DIN 743-3 as material.grade)"))
+        dB, dBS = D3.REFERENCE_DIAMETER[m["steel_type"]]
+        st = D3.Steel("", m["steel_type"], m["sigma_B"], m["sigma_T"], dB, dBS)
+    sigma_B = m["sigma_B"] if m.get("sigma_B") is not None else st.sigma_B
+    sigma_S = m["sigma_T"] if m.get("sigma_T") is not None else st.sigma_S
+    origin["sigma_B"] = "given" if m.get("sigma_B") is not None else "grade"
+    origin["sigma_T"] = "given" if m.get("sigma_T") is not None else "grade"
+    if sigma_S >= sigma_B:
+        raise InputError.at("material.sigma_T", sigma_S,
+                            f"must be below the ultimate strength sigma_B = {sigma_B:g} MPa")
+    st = D3.Steel(st.name, st.type, sigma_B, sigma_S, st.d_B, st.d_B_S)
+    d_eff = m["d_eff"] if m.get("d_eff") is not None else d_max
+    origin["d_eff"] = "given" if m.get("d_eff") is not None else "largest step"
+    din = DR.material(st, d_eff)
+    _, W_b, W_t = D3.endurance_limits(st.sigma_B)
+    psi_s, psi_t = ST.mean_stress_sensitivity(din.sigma_B_d)
+    mat = Material(din.sigma_B_d, din.sigma_S_d, W_b * din.K_1B, W_t * din.K_1B, psi_s,
+                   psi_t, m["E"], m["density"], st.type != "structural", din)
+    return mat, origin
+
+
 def steps(spec: ValidatedSpec) -> list[Step]:
     out, x = [], 0.0
     for i, s in enumerate(spec.data["step"]):
@@ -98,6 +203,12 @@ def steps(spec: ValidatedSpec) -> list[Step]:
         if s["groove_K_tau"] is not None and s["groove_K_sigma"] is None:
             raise InputError.at(f"step[{i}].groove_K_tau", s["groove_K_tau"],
                                 "needs groove_K_sigma (the groove's factor in bending)")
+        if (s["keyway"] and s["keyway_cutter"] != "end_mill"
+                and method(spec) == "DIN743"):
+            raise InputError.at(f"step[{i}].keyway_cutter", s["keyway_cutter"],
+                                "DIN 743-2 gives the notch factor of a key seat cut by an end "
+                                "mill only: no data for a disc cutter (use end_mill, or "
+                                "method GOST)")
         if s["groove_K_sigma"] is not None and i == len(spec.data["step"]) - 1:
             raise InputError.at(f"step[{i}].groove_K_sigma", s["groove_K_sigma"],
                                 "a groove sits at the right end of its step, and the last step "
@@ -155,4 +266,8 @@ def supports(spec: ValidatedSpec, length: float) -> list[Support]:
 
 def options(spec: ValidatedSpec) -> Options:
     s = spec.data["shaft"]
-    return Options(s["speed"], s["peak_factor"], s["torsion_cycle"], s["Rz"], s["K_V"])
+    how = method(spec)
+    if how != "DIN743":
+        return Options(s["speed"], s["peak_factor"], s["torsion_cycle"], s["Rz"], s["K_V"])
+    return Options(s["speed"], s["peak_factor"], s["torsion_cycle"], s["Rz"], s["K_V"], how,
+                   s["din743_load_case"], s["din743_hard_surface"])

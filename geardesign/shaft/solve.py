@@ -18,6 +18,7 @@ import numpy as np
 from geardesign.core.errors import InputError, Problem
 from geardesign.shaft import beam
 from geardesign.shaft import strength as ST
+from geardesign.shaft.din743 import rating as DR
 from geardesign.spur.geometry import STEEL_DENSITY
 
 ARCMIN = math.pi / (180.0 * 60.0)
@@ -71,6 +72,7 @@ class Material:
     E: float = 2.06e5
     density: float = STEEL_DENSITY   # kg/m³
     alloy: bool = False
+    din: DR.Material | None = None   # the DIN 743 steel at its blank size (method DIN743)
 
 
 @dataclass(frozen=True)
@@ -80,6 +82,9 @@ class Options:
     torsion_cycle: str = "pulsating"
     Rz: float = 6.3                  # µm
     K_V: float = 1.0                 # surface hardening factor
+    method: str = "GOST"             # "GOST" or "DIN743"
+    load_case: int = 2               # DIN 743-1 load case
+    hard_surface: bool = False       # DIN 743 hard surface layer
 
 
 @dataclass(frozen=True)
@@ -111,6 +116,7 @@ class SectionResult:
     fillet_t: float | None = None
     fillet_r: float | None = None
     keyway_cutter: str = ""
+    din: DR.Rating | None = None          # method DIN743: every factor of the section
 
 
 @dataclass(frozen=True)
@@ -296,6 +302,8 @@ def analyse(steps: list[Step], loads: list[Load], supports: list[Support],
 def _section(xs: float, label: str, M: float, T: float, N: float, bounds: list[float],
              steps: list[Step], mat: Material, opt: Options) -> SectionResult:
     """Stresses and safeties at x = xs.  M, T in N·mm, N in N."""
+    if opt.method == "DIN743":
+        return _section_din743(xs, label, M, T, N, bounds, steps, mat, opt)
     sb = mat.sigma_B
     tol = 1e-9 * max(1.0, bounds[-1])
     boundary = next((i for i in range(1, len(steps)) if abs(bounds[i] - xs) <= tol), None)
@@ -361,9 +369,87 @@ def _section(xs: float, label: str, M: float, T: float, N: float, bounds: list[f
         fat.S_tau, fat.S, outside, *fillet, st.keyway_cutter if st.keyway else "")
 
 
+def _torsion(tau: float, cycle: str) -> tuple[float, float]:
+    """Amplitude and mean of the torsional stress by ``torsion_cycle``."""
+    if cycle == "pulsating":
+        return tau / 2.0, tau / 2.0
+    if cycle == "reversed":
+        return tau, 0.0
+    return 0.0, tau
+
+
+def _section_din743(xs: float, label: str, M: float, T: float, N: float,
+                    bounds: list[float], steps: list[Step], mat: Material,
+                    opt: Options) -> SectionResult:
+    """Stresses and safeties at x = xs by DIN 743 ([DIN743-1], [DIN743-2], [DIN743-3]).
+
+    The notches of the section are those of the GOST method (a shoulder with its fillet, a
+    groove of given β, the press fit of the smaller step at a step boundary; a key seat or a
+    press fit elsewhere), each rated in full; the one of the lowest fatigue safety counts
+    (its static safety likewise the lowest).  Rotating shaft: the bending stress is a
+    reversed amplitude (σ_bm = 0); the axial stress |N|/A a constant mean (σ_zda = 0); the
+    torsion by ``torsion_cycle``; the peaks are K_p times the nominal stresses."""
+    din = mat.din
+    tol = 1e-9 * max(1.0, bounds[-1])
+    boundary = next((i for i in range(1, len(steps)) if abs(bounds[i] - xs) <= tol), None)
+    notches: list[DR.Notch] = []
+    fillet = (None, None, None)
+    if boundary is not None:
+        left, right = steps[boundary - 1], steps[boundary]
+        st = left if left.diameter <= right.diameter else right
+        D = max(left.diameter, right.diameter)
+        t = (D - st.diameter) / 2.0
+        if t > 0:
+            n = DR.shoulder(st.diameter, D, left.fillet, din, opt.hard_surface)
+            notches.append(n)
+            fillet = (n.alpha_b, t, left.fillet)
+        if left.groove_K_sigma is not None:
+            notches.append(DR.given(left.groove_K_sigma,
+                                    left.groove_K_tau or left.groove_K_sigma))
+        if st.press_fit:
+            notches.append(DR.measured("press_fit", st.diameter, din))
+    else:
+        st = steps[_step_at(bounds, xs)]
+    if boundary is None or not notches:
+        if st.keyway:
+            notches.append(DR.measured("key", st.diameter, din))
+        if st.press_fit:
+            notches.append(DR.measured("press_fit", st.diameter, din))
+    if not notches:
+        notches.append(DR.smooth())
+    d, bore = st.diameter, st.bore
+    A, W, Wp = ST.section_moduli(d, bore)
+    sigma_b, sigma_n, tau = M / W, abs(N) / A, T / Wp
+    tau_a, tau_m = _torsion(tau, opt.torsion_cycle)
+    kp = opt.peak_factor
+    stresses = DR.Stresses(zdm=sigma_n, zdmax=kp * sigma_n, ba=sigma_b, bmax=kp * sigma_b,
+                           ta=tau_a, tm=tau_m, tmax=kp * tau)
+    rz = st.Rz if st.Rz is not None else opt.Rz
+    ratings = [DR.rate(n, din, d, stresses, rz, opt.K_V, opt.hard_surface, bore > 0,
+                       opt.load_case) for n in notches]
+    r = min(ratings, key=lambda x: (x.S, x.S_static))
+    S_static = min(x.S_static for x in ratings)
+    outside = not r.notch.in_range
+    S_sigma = r.sigma_ADK / sigma_b if sigma_b > 0 else math.inf
+    S_tau = r.tau_ADK / tau_a if tau_a > 0 else math.inf
+    sv = kp * ST.von_mises(sigma_b + sigma_n, tau)
+    name = {"shoulder": "fillet"}.get(r.notch.kind, r.notch.kind)
+    if r.notch.kind != "shoulder":
+        fillet = (None, None, None)
+    return SectionResult(
+        xs, label, d, bore, M / 1e3, T / 1e3, N, sigma_b, sigma_n, tau_a, tau_m, sv,
+        S_static, name, r.notch.beta_b / r.K_2, r.notch.beta_t / r.K_2, r.K_F_sigma,
+        r.K_sigma, r.K_tau, S_sigma, S_tau, r.S, outside, *fillet,
+        st.keyway_cutter if st.keyway else "", r)
+
+
 def diameter_for(section: SectionResult, S_required: float) -> float:
     """Diameter at which the section reaches ``S_required`` with the same factors: the
     nominal stresses scale with 1/d³ (the size and concentration factors are kept)."""
+    if section.S <= 0 < section.S_static:
+        # DIN 743 load case 1, mean stress above the yield limit: no fatigue strength left;
+        # scale by the static safety instead
+        return section.d * (S_required / min(section.S_static, 1.0)) ** (1.0 / 3.0)
     if not math.isfinite(section.S) or section.S <= 0:
         return section.d
     return section.d * (S_required / section.S) ** (1.0 / 3.0)

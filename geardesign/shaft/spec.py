@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from geardesign.core.spec import Field, SpecSchema, Table, TableList
 
+METHODS = ("GOST", "DIN743")
+
 BEARING_TYPES = ("deep_groove_ball", "cylindrical_roller", "tapered_roller", "spherical_roller",
                  "other")
 
@@ -23,17 +25,30 @@ SHAFT = Table("shaft", "operating conditions and design limits", (
     Field("K_V", "number", "surface hardening factor (1: none; induction hardening, rolling, "
           "shot peening raise it)", symbol="K_V", default=1.0, minimum=0.5, maximum=3.0),
     Field("S_min", "number", "required fatigue safety factor", symbol="[S]", default=2.0,
-          minimum=1.0, maximum=10.0, hint="[S] = 1.5…2.5 (Dunaev & Lelikov)"),
+          minimum=1.0, maximum=10.0,
+          hint="[S] = 1.5…2.5 (Dunaev & Lelikov); method DIN743: default 1.2 (DIN 743-1)"),
     Field("S_static_min", "number", "required static safety factor against yield",
           symbol="[S_T]", default=1.5, minimum=1.0, maximum=10.0,
-          hint="[S_T] = 1.3…2 (Dunaev & Lelikov)"),
+          hint="[S_T] = 1.3…2 (Dunaev & Lelikov); method DIN743: default 1.2 (DIN 743-1)"),
     Field("critical_speed_margin", "number", "required ratio of the first critical speed to "
           "the speed", symbol="n_cr/n", default=1.3, minimum=1.0, maximum=10.0),
+    Field("method", "string", "strength method of the sections (fatigue and static)",
+          default=None, choices=METHODS,
+          hint='default "GOST" (GOST 25.504-82 as in Dunaev & Lelikov); "DIN743": DIN 743-1/-2/-3 '
+               '(2012), with an EN steel grade or sigma_B, sigma_T and steel_type'),
+    Field("din743_load_case", "integer", "DIN 743-1 load case of the mean stress under "
+          "overload: 1 (σ_mv constant) or 2 (σ_mv/σ_a constant)", default=None, minimum=1,
+          maximum=2, hint="default 2; method DIN743 only"),
+    Field("din743_hard_surface", "boolean", "DIN 743 hard surface layer (case-hardened, "
+          "nitrided, induction-hardened): support number, K_2F and γ_F", default=None,
+          hint="default false; method DIN743 only"),
 ))
 
 MATERIAL = Table("material", "shaft steel: a grade of the library, or its properties", (
     Field("grade", "string", "steel grade of the shaft-steel table (45, 40Kh, 40KhN, 20Kh, "
-          "12KhN3A, 18KhGT; Cyrillic accepted)", default=None, example="45"),
+          "12KhN3A, 18KhGT; Cyrillic accepted); method DIN743: an EN grade of DIN 743-3 "
+          "(C45, 42CrMo4, 34CrNiMo6, 16MnCr5, 18CrNiMo7-6, S235, E335, ...) or 45, 40Kh",
+          default=None, example="45"),
     Field("hardness_HB", "number", "hardness of the blank; picks the row of the grade",
           symbol="HB", default=None, minimum=100.0, maximum=700.0, example=270.0,
           hint="default: the lowest hardness listed for the grade"),
@@ -51,6 +66,13 @@ MATERIAL = Table("material", "shaft steel: a grade of the library, or its proper
           default=None, minimum=0.0, maximum=0.5, hint="default: the grade's, else 0.5·ψ_σ"),
     Field("alloy", "boolean", "alloy steel (size factor in bending)", default=None,
           hint="default: from the grade, else false"),
+    Field("steel_type", "string", "DIN 743-3 steel type (technological size factor K_1), "
+          "with sigma_B and sigma_T in place of a grade", default=None,
+          choices=("structural", "quenched_tempered", "case_hardening",
+                   "case_hardening_CrNiMo", "nitriding"), hint="method DIN743 only"),
+    Field("d_eff", "number", "DIN 743 diameter of the blank at heat treatment (K_1)", "mm",
+          "d_eff", default=None, gt=0, maximum=5000.0,
+          hint="default: the largest step diameter; method DIN743 only"),
     Field("E", "number", "modulus of elasticity", "MPa", "E", default=2.06e5, minimum=1e4,
           maximum=5e5),
     Field("density", "number", "density (critical speed)", "kg/m^3", "ρ", default=7850.0,
@@ -114,7 +136,7 @@ SUPPORT = Table("support", "a bearing", (
 SCHEMA = SpecSchema(
     kind="shaft",
     description="Shaft: beam model (reactions, diagrams, deflection, slopes, critical speed), "
-                "static strength and fatigue (GOST 25.504-82 / Dunaev & Lelikov)",
+                "static strength and fatigue (GOST 25.504-82 / Dunaev & Lelikov, or DIN 743)",
     tables=(
         SHAFT, MATERIAL,
         TableList("step", "cylindrical steps from the left end", STEP, max_items=100,

@@ -1,0 +1,240 @@
+"""kind = "shaft" with ``[shaft] method = "DIN743"``: the method's spec keys and defaults,
+every input rule of the method (exact one-line message, exit 2), the report (DIN factors,
+S_min 1.2), a failing design with advice, random shafts (finite positive safeties), the
+drive's shafts by DIN 743, and the DIN 743 formulas against hand values.  The factors
+against an independent implementation: tests/reference/shaft/test_din743_independent.py."""
+
+import math
+
+import pytest
+from hypothesis import given, settings
+
+from geardesign.core.registry import run_data
+from geardesign.core.spec import parse_toml
+from geardesign.shaft.din743 import part1 as P1
+from geardesign.shaft.din743 import part2 as P2
+from geardesign.shaft.din743 import part3 as P3
+from geardesign.shaft.din743 import rating as R
+from geardesign.shaft.solve import Material, Options, analyse, diameter_for
+from tests.helpers_cli import run_bad, run_failing
+from tests.test_shaft import BASE, shafts
+
+DIN = BASE.replace("[shaft]\nspeed = 200.0\n", '[shaft]\nspeed = 200.0\nmethod = "DIN743"\n') \
+    .replace('grade = "45"\nhardness_HB = 270.0\n', 'grade = "C45"\n')
+
+
+def test_din_spec_passes_with_din_factors_and_defaults():
+    doc = run_data(parse_toml(DIN)).document()
+    assert doc["verdict"] == "pass"
+    assert "DIN 743-1/-2/-3 (2012)" in doc["methods"]
+    assert not any(m.startswith("GOST") for m in doc["methods"])
+    sh = doc["inputs"]["shaft"]
+    assert (sh["S_min"], sh["S_static_min"], sh["din743_load_case"],
+            sh["din743_hard_surface"]) == (1.2, 1.2, 2, False)
+    assert {"shaft.S_min", "shaft.din743_load_case"} <= set(doc["assumed"])
+    fat = doc["results"]["fatigue"]
+    assert {"beta_sigma", "beta_tau", "K_2", "K_F", "K_sigma", "K_tau", "sigma_WK",
+            "tau_WK", "psi_sigma", "sigma_ADK", "tau_ADK", "S", "S_static"} <= set(fat[0])
+    notches = {r["concentrator"] for r in fat}
+    assert {"key", "fillet"} <= notches
+    mat = doc["results"]["material"]
+    assert mat["sigma_B_dB"] == 700.0 and mat["d_eff"] == 55.0
+    assert math.isclose(mat["K_1B"], 1 - 0.26 * math.log10(55 / 16), rel_tol=1e-12)
+
+
+def test_given_S_min_is_kept():
+    doc = run_data(parse_toml(DIN.replace('method = "DIN743"\n',
+                                          'method = "DIN743"\nS_min = 1.8\n'))).document()
+    assert doc["inputs"]["shaft"]["S_min"] == 1.8
+    assert next(c for c in doc["checks"] if c["code"] == "FATIGUE")["limit"] == 1.8
+
+
+def test_gost_grade_45_is_C45_and_strengths_override():
+    a = run_data(parse_toml(DIN)).document()
+    b = run_data(parse_toml(DIN.replace('grade = "C45"', 'grade = "45"'))).document()
+    assert a["results"]["strength"]["S"] == b["results"]["strength"]["S"]
+    c = run_data(parse_toml(DIN.replace(
+        'grade = "C45"', 'sigma_B = 700.0\nsigma_T = 490.0\nsteel_type = "quenched_tempered"'
+    ))).document()
+    assert math.isclose(c["results"]["strength"]["S"], a["results"]["strength"]["S"],
+                        rel_tol=1e-12)
+
+
+@pytest.mark.parametrize("change, line", [
+    (('method = "DIN743"', 'method = "ISO"'),
+     's.toml: shaft.method = "ISO": must be one of "GOST", "DIN743"'),
+    (('grade = "C45"', 'grade = "40KhN"'),
+     's.toml: material.grade = "40KhN": a GOST grade without an EN equivalent in DIN 743-3; '
+     'known: ' + ", ".join(P3.tables()["steel"]) + ' (and the GOST grades 45, 40Kh); or '
+     'leave out grade and give sigma_B, sigma_T and steel_type'),
+    (('grade = "C45"', 'grade = "St52"'),
+     's.toml: material.grade = "St52": not a steel of DIN 743-3; known: '
+     + ", ".join(P3.tables()["steel"]) + ' (and the GOST grades 45, 40Kh); or leave out '
+     'grade and give sigma_B, sigma_T and steel_type'),
+    (('grade = "C45"', 'sigma_B = 800.0\nsigma_T = 600.0'),
+     "s.toml: material.steel_type: missing; method DIN743 without a grade needs sigma_B, "
+     "sigma_T and steel_type: the DIN 743-3 steel type (structural, quenched_tempered, "
+     "case_hardening, case_hardening_CrNiMo, nitriding) (or give an EN grade of DIN 743-3 "
+     "as material.grade)"),
+    (('grade = "C45"', 'grade = "C45"\nhardness_HB = 240.0'),
+     "s.toml: material.hardness_HB = 240.0: used only by the GOST method; DIN 743 takes the "
+     "endurance limits and the mean-stress sensitivity from sigma_B (DIN 743-3) and one row "
+     "per grade: leave it out, or give sigma_B and sigma_T of the blank"),
+    (('grade = "C45"', 'grade = "C45"\nsteel_type = "nitriding"'),
+     's.toml: material.steel_type = "nitriding": steel C45 is quenched_tempered in DIN '
+     '743-3: leave out steel_type, or leave out grade'),
+    (("keyway = true", 'keyway = true\nkeyway_cutter = "disc_cutter"'),
+     's.toml: step[1].keyway_cutter = "disc_cutter": DIN 743-2 gives the notch factor of a '
+     'key seat cut by an end mill only: no data for a disc cutter (use end_mill, or method '
+     'GOST)'),
+])
+def test_din_input_errors(tmp_path, change, line):
+    old, new = change
+    assert old in DIN
+    assert run_bad(tmp_path, DIN.replace(old, new, 1)) == [line]
+
+
+@pytest.mark.parametrize("change, line", [
+    (('grade = "45"\nhardness_HB = 270.0', 'grade = "45"\nhardness_HB = 270.0\nd_eff = 80.0'),
+     's.toml: material.d_eff = 80.0: used only by [shaft] method = "DIN743" (this spec rates '
+     'by GOST)'),
+    (("speed = 200.0", "speed = 200.0\ndin743_load_case = 1"),
+     "s.toml: shaft.din743_load_case = 1: used only by method = \"DIN743\" (this spec rates "
+     "by GOST)"),
+])
+def test_din_keys_are_refused_by_gost(tmp_path, change, line):
+    old, new = change
+    assert old in BASE
+    assert run_bad(tmp_path, BASE.replace(old, new, 1)) == [line]
+
+
+def test_weak_din_shaft_fails_with_advice_that_reaches_S(tmp_path):
+    import re
+
+    text = DIN.replace("Fy = 3000.0", "Fy = 60000.0")
+    doc = run_failing(tmp_path, text)
+    fat = next(c for c in doc["checks"] if c["code"] == "FATIGUE")
+    assert not fat["passed"] and fat["limit"] == 1.2
+    m = re.search(r"at (.+?) \(x = ([\d.]+) mm\) from ([\d.]+) to at least ([\d.]+) mm",
+                  fat["message"])
+    assert m, fat["message"]
+    d_old, d_new = float(m.group(3)), float(m.group(4))
+    assert d_new > d_old
+    # the advised diameter at the critical step (the keyed gear seat) reaches [S] within
+    # the change of K_2, K_3 and β with d
+    again = text.replace(f"diameter = {d_old:.1f}\n", f"diameter = {d_new!r}\n", 1)
+    assert again != text
+    S = run_data(parse_toml(again)).document()["results"]["strength"]["S"]
+    assert S >= 0.95 * 1.2, S
+
+
+def test_load_case_1_and_hard_surface_change_the_result():
+    a = run_data(parse_toml(DIN)).document()["results"]["strength"]
+    b = run_data(parse_toml(DIN.replace('method = "DIN743"', 'method = "DIN743"\n'
+                                        'din743_hard_surface = true'))).document()
+    assert b["results"]["strength"]["S_static"] < a["S_static"]   # K_2F 1.2 -> 1.0
+    c = run_data(parse_toml(DIN.replace('method = "DIN743"', 'method = "DIN743"\n'
+                                        'din743_load_case = 1'))).document()
+    assert c["results"]["strength"]["S"] != a["S"]
+
+
+C45 = R.material(P3.steel("C45"), 60.0)
+DIN_MAT = Material(C45.sigma_B_d, C45.sigma_S_d, 0.5 * 700 * C45.K_1B, 0.3 * 700 * C45.K_1B,
+                   0.1, 0.05, din=C45)
+
+
+@settings(max_examples=40, deadline=None)
+@given(shafts())
+def test_random_shafts_have_finite_positive_din_safeties(case):
+    steps, loads, supports = case
+    for lc in (1, 2):
+        r = analyse(steps, loads, supports, DIN_MAT,
+                    Options(speed=100.0, method="DIN743", load_case=lc))
+        for s in r.sections:
+            # S = 0 only where the mean stress alone yields the section (load case 1)
+            assert s.S_static > 0 and (s.S > 0 or (lc == 1 and s.S_static < 1.0))
+            d = s.din
+            assert d.K_sigma > 0 and d.K_tau > 0 and d.notch.beta_b >= 1.0
+            for v in (d.sigma_WK, d.tau_WK, d.sigma_ADK, d.tau_ADK, d.sigma_FK, d.tau_FK):
+                assert math.isfinite(v)
+            if math.isfinite(s.S):
+                assert diameter_for(s, 1.2) > 0
+
+
+# ------------------------------------------------------------------ formulas by hand
+
+
+def test_size_factors_at_their_ends():
+    assert P2.K_2(7.5) == 1.0 and P2.K_2(5.0) == 1.0
+    assert math.isclose(P2.K_2(150.0), 0.8, rel_tol=1e-12)
+    assert math.isclose(P2.K_2(400.0), 0.8, rel_tol=1e-12)
+    assert math.isclose(P2.K_3(150.0, 2.0), 1 - 0.2 * math.log10(2.0), rel_tol=1e-12)
+
+
+@pytest.mark.parametrize("typ, strength, d_2", [
+    ("structural", "B", 300.0), ("structural", "S", 300.0),
+    ("quenched_tempered", "B", 300.0), ("quenched_tempered", "S", 300.0),
+    ("case_hardening", "B", 150.0), ("case_hardening_CrNiMo", "S", 300.0),
+    ("nitriding", "B", 300.0)])
+def test_K1_branches_meet_their_end_value(typ, strength, d_2):
+    """Each K_1 branch reaches its constant end value at d_2 to the printed digit (a check
+    of the transcribed constants)."""
+    row = P3.tables()["K_1"][f"{typ}_{strength}"]
+    assert abs(P3.K_1(typ, d_2 - 1e-9, strength) - row["K_min"]) < 0.005
+    assert P3.K_1(typ, 10.0, strength) == 1.0
+
+
+def test_gamma_F_and_K_2F():
+    assert P1.gamma_F(1.4, True, False) == 1.0
+    assert P1.gamma_F(1.5, True, False) == 1.05
+    assert P1.gamma_F(2.5, True, False) == 1.1
+    assert P1.gamma_F(3.2, True, False) == 1.15
+    assert P1.gamma_F(3.2, False, False) == 1.0 and P1.gamma_F(3.2, True, True) == 1.0
+    assert (P1.K_2F("bending", False, False), P1.K_2F("bending", False, True),
+            P1.K_2F("torsion", False, True), P1.K_2F("tension", False, False),
+            P1.K_2F("torsion", True, False)) == (1.2, 1.1, 1.0, 1.0, 1.0)
+
+
+def test_amplitude_strength_is_continuous_at_the_branch_limit():
+    WK, FK, psi = 200.0, 500.0, 0.15
+    lim1 = (FK - WK) / (1 - psi)
+    assert math.isclose(P1.amplitude_strength(1, lim1, 1.0, FK, WK, psi),
+                        P1.amplitude_strength(1, lim1 * (1 + 1e-12), 1.0, FK, WK, psi),
+                        rel_tol=1e-9)
+    lim2 = (FK - WK) / (WK - FK * psi)
+    a = 100.0
+    assert math.isclose(P1.amplitude_strength(2, lim2 * a, a, FK, WK, psi),
+                        P1.amplitude_strength(2, lim2 * a * (1 + 1e-12), a, FK, WK, psi),
+                        rel_tol=1e-9)
+    # no mean stress: the fatigue limit itself in both cases
+    assert P1.amplitude_strength(1, 0.0, a, FK, WK, psi) == WK
+    assert P1.amplitude_strength(2, 0.0, a, FK, WK, psi) == WK
+
+
+def test_drive_shafts_by_din743():
+    """A drive's [shaft.strength] takes the method like [shaft] of the shaft calculator."""
+    from pathlib import Path
+
+    from geardesign.core.registry import load
+
+    path = Path("specs/drive_reducer_shafts_keys_thermal.toml")
+    text = path.read_text(encoding="utf-8")
+    text = text.replace('grade = "40Kh"\nhardness_HB = 270.0', 'grade = "42CrMo4"') \
+        .replace('grade = "45"\nhardness_HB = 240.0', 'grade = "C45"')
+    data = parse_toml(text)
+    for sh in data["shaft"]:
+        sh.setdefault("strength", {})["method"] = "DIN743"
+    calc, spec = load(path, data=data)
+    doc = calc.compute(spec).document()
+    rows = doc["results"]["shafts"]
+    assert all(r["S_min"] == 1.2 and r["S_static_min"] == 1.2 for r in rows)
+    for part in doc["results"]["shaft_reports"]:
+        assert "DIN 743-1/-2/-3 (2012)" in part["methods"]
+
+
+@pytest.mark.parametrize("mod", [P1, P2, P3])
+def test_docstring_examples_run(mod):
+    import doctest
+
+    result = doctest.testmod(mod)
+    assert result.attempted > 0 and result.failed == 0
