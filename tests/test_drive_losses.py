@@ -345,3 +345,22 @@ def test_scuffing_without_lubrication_needs_its_oil_temperature():
     with pytest.raises(Exception) as e:
         _run(d)
     assert "oil_temperature" in str(e.value)
+
+
+def test_planetary_stage_scuffing_at_the_sump_temperature():
+    """A planetary stage's [strength.scuffing] takes the sump temperature and the drive's
+    oil as a cylindrical stage's [iso.scuffing] does."""
+    d = load_toml(ROOT / "specs" / "drive_planetary_spur_iso.toml")
+    pl = load_toml(ROOT / "specs" / "planetary_2kh_reducer.toml")
+    pl.pop("title", None)
+    pl.setdefault("strength", {})["scuffing"] = {"fzg_load_stage": 12}
+    d["stage"][0] = {"name": "planetary reducer", **pl}
+    d["lubrication"] = {"oil": "VG 320"}
+    d["thermal"] = {"length": 700.0, "width": 400.0, "height": 500.0}
+    doc = _run(d)
+    st = doc["results"]["stage_reports"][0]
+    sc = st["inputs"]["strength"]["scuffing"]
+    t = doc["results"]["thermal"]["t_oil"]
+    assert sc["oil_temperature"] == pytest.approx(min(t, 150.0), rel=1e-12)
+    assert st["inputs"]["strength"]["lubricant_viscosity"] == 320.0
+    assert any(c["code"] == "SCUFFING_OIL_1" for c in doc["checks"])

@@ -219,28 +219,37 @@ SCUFFING_LUBRICANT = {"mineral": "mineral", "pao": "polyalphaolefin",
                       "traction": "traction_fluid", "phosphate_ester": "phosphate_ester"}
 
 
+def _scuffing_tables(data: dict) -> tuple[dict, dict] | None:
+    """(the table that holds ``lubricant_viscosity``, the scuffing table) of a stage spec
+    rated for scuffing: ``[iso]``/``[iso.scuffing]`` of a cylindrical stage,
+    ``[strength]``/``[strength.scuffing]`` of a planetary stage; None for the others."""
+    holder = {"spur": "iso", "planetary": "strength"}.get(data.get("kind"))
+    t = data.get(holder) if holder else None
+    sc = t.get("scuffing") if isinstance(t, dict) else None
+    return (t, sc) if isinstance(sc, dict) else None
+
+
 def scuffing_oil(spec: ValidatedSpec, stages: list) -> dict:
-    """The cylindrical stages rated for scuffing (``[iso.scuffing]``, ISO/TS 6336-21):
-    ``{stage index: "balance" | "given"}``.  Their spec data is copied in ``stages`` and
-    takes the drive's oil where it names none: ``iso.lubricant_viscosity`` = ν40 of
-    ``[lubrication] oil``, ``iso.scuffing.oil_viscosity_100``, ``oil_density`` and
-    ``lubricant`` (the base oil).  A stage that gives no ``oil_temperature`` takes the sump
-    temperature of the heat balance (the oil before the mesh of a dip-lubricated gear,
-    [ISO6336-21] Θ_oil); until the balance is known it starts at the permissible sump
-    temperature."""
+    """The stages rated for scuffing (ISO/TS 6336-21: ``[iso.scuffing]`` of a cylindrical
+    stage, ``[strength.scuffing]`` of a planetary one): ``{stage index: "balance" |
+    "given"}``.  Their spec data is copied in ``stages`` and takes the drive's oil where it
+    names none: ``lubricant_viscosity`` = ν40 of ``[lubrication] oil``, and in the scuffing
+    table ``oil_viscosity_100``, ``oil_density`` and ``lubricant`` (the base oil).  A stage
+    that gives no ``oil_temperature`` takes the sump temperature of the heat balance (the
+    oil before the mesh of a dip-lubricated gear, [ISO6336-21] Θ_oil); until the balance is
+    known it starts at the permissible sump temperature."""
     d = spec.data
     lub = d["lubrication"]
     oil, _ = _oil(spec)
     t0 = min(d["thermal"]["max_oil_temperature"], SCUFFING_T_MAX)
     out = {}
     for i, (where, name, data, eta) in enumerate(stages):
-        iso = data.get("iso") if data.get("kind") == "spur" else None
-        sc = iso.get("scuffing") if isinstance(iso, dict) else None
-        if not isinstance(sc, dict):
+        if _scuffing_tables(data) is None:
             continue
         data = copy.deepcopy(data)
-        iso, sc = data["iso"], data["iso"]["scuffing"]
-        iso.setdefault("lubricant_viscosity", oil.nu40)
+        holder, sc = _scuffing_tables(data)
+        if holder.get("lubricant_viscosity") is None:
+            holder["lubricant_viscosity"] = oil.nu40
         sc.setdefault("oil_viscosity_100", oil.nu100)
         sc.setdefault("oil_density", lub["density"])
         sc.setdefault("lubricant", SCUFFING_LUBRICANT[lub["base_oil"]])
@@ -260,7 +269,7 @@ def _set_scuffing_oil(stages: list, scuff: dict, t_oil: float) -> bool:
     changed = False
     for i, how in scuff.items():
         if how == "balance":
-            sc = stages[i][2]["iso"]["scuffing"]
+            sc = _scuffing_tables(stages[i][2])[1]
             changed |= sc["oil_temperature"] != t
             sc["oil_temperature"] = t
     return changed
@@ -452,7 +461,7 @@ def scuffing_checks(res: Result, t: Thermal, stages: list, scuff: dict) -> None:
     of the balance, or the stage's own value (a warning when it is below the sump's)."""
     t_oil = t.balance.t_oil
     for i, how in sorted(scuff.items()):
-        t_st = stages[i][2]["iso"]["scuffing"]["oil_temperature"]
+        t_st = _scuffing_tables(stages[i][2])[1]["oil_temperature"]
         if how == "balance":
             capped = (f" (capped at {SCUFFING_T_MAX:g} °C, the method's limit)"
                       if t_oil > SCUFFING_T_MAX else "")
@@ -465,7 +474,7 @@ def scuffing_checks(res: Result, t: Thermal, stages: list, scuff: dict) -> None:
             res.checks.append(check(
                 f"SCUFFING_OIL_{i + 1}", not low, "warning",
                 f"stage {i + 1} is rated for scuffing at Θ_oil = {t_st:g} °C (its "
-                f"iso.scuffing.oil_temperature) but the heat balance gives a sump of "
+                f"scuffing table's oil_temperature) but the heat balance gives a sump of "
                 f"{t_oil:.1f} °C: leave oil_temperature out to rate it at the sump "
                 f"temperature, or cool the oil (fan, cooler)",
                 f"stage {i + 1} is rated for scuffing at Θ_oil = {t_st:g} °C, not below the "
