@@ -367,8 +367,8 @@ def test_a_failing_shaft_fails_the_drive_with_its_advice():
     assert not c["passed"] and c["severity"] == "error" and doc["verdict"] == "fail"
     assert c["message"].startswith("intermediate shaft fails (positions x from the shaft's "
                                    "left end: z = x − 12 mm): FATIGUE: fatigue safety S = ")
-    assert "increase the diameter at gear of stage 2 (x = 152 mm) from 30 to at least" in \
-        c["message"]
+    assert "scale every step's diameter (and bore and fillet radius) by" in c["message"]
+    assert "at gear of stage 2 (x = 152 mm) from 30 to" in c["message"]
 
 
 def test_informative_K_Hbeta_is_the_spur_calculators_iso_rating(golden):

@@ -143,6 +143,15 @@ def test_critical_speed_of_a_disc_on_a_light_shaft():
 # ----------------------------------------------------------------------- properties
 
 
+def _magnitude(hi: float, signed: bool = True):
+    """0 or a magnitude in the spec's physical domain (no force or torque below 1 mN or
+    1 mN·m: core/spec.UNIT_DOMAINS refuses them), up to ``hi``, of either sign."""
+    mag = st.one_of(st.just(0.0), st.floats(1e-3, hi))
+    if not signed:
+        return mag
+    return st.tuples(mag, st.sampled_from((-1.0, 1.0))).map(lambda t: t[0] * t[1])
+
+
 @st.composite
 def shafts(draw):
     n = draw(st.integers(1, 5))
@@ -154,9 +163,9 @@ def shafts(draw):
     b = draw(st.floats(0.55, 1.0)) * L
     loads = []
     for k in range(draw(st.integers(1, 4))):
-        loads.append(Load(draw(st.floats(0, 1)) * L, Fy=draw(st.floats(-5e3, 5e3)),
-                          Fz=draw(st.floats(-5e3, 5e3)), Fx=draw(st.floats(-2e3, 2e3))))
-    T = draw(st.floats(0, 2000))
+        loads.append(Load(draw(st.floats(0, 1)) * L, Fy=draw(_magnitude(5e3)),
+                          Fz=draw(_magnitude(5e3)), Fx=draw(_magnitude(2e3))))
+    T = draw(_magnitude(2000.0, signed=False))
     loads.append(Load(draw(st.floats(0, 1)) * L, torque=T))
     loads.append(Load(draw(st.floats(0, 1)) * L, torque=-T))
     return steps, loads, [Support(a), Support(b)]
@@ -322,28 +331,50 @@ def test_weak_shaft_fails_with_advice(tmp_path):
     codes = {c["code"] for c in failed_errors(doc)}
     assert "FATIGUE" in codes
     fat = next(c for c in doc["checks"] if c["code"] == "FATIGUE")
-    assert "increase the diameter at" in fat["message"] and "to at least" in fat["message"]
+    assert "scale every step's diameter (and bore and fillet radius) by" in fat["message"]
 
 
-def test_advice_diameter_reaches_the_required_safety(tmp_path):
-    """Re-running with the advised diameter at the critical step reaches [S] (within the
-    change of the size factor)."""
+def apply_scale_advice(text: str, message: str) -> dict:
+    """The spec with the advice of a FATIGUE or STATIC_STRENGTH message applied: every
+    step's diameter, bore and fillet radius times the advised factor."""
     import re
 
     from geardesign.core.spec import parse_toml
 
-    text = BASE.replace("torque = 500.0", "torque = 1500.0").replace(
-        "torque = -500.0", "torque = -1500.0")
-    doc = run_failing(tmp_path, text)
-    fat = next(c for c in doc["checks"] if c["code"] == "FATIGUE")
-    m = re.search(r"from ([\d.]+) to at least ([\d.]+) mm", fat["message"])
-    d_old, d_new = float(m.group(1)), float(m.group(2))
+    k = float(re.search(r"fillet radius\) by ([\d.]+), which reaches", message).group(1))
     data = parse_toml(text)
     for s in data["step"]:
-        if s["diameter"] == d_old:
-            s["diameter"] = d_new
-    doc2 = run_data(data).document()
-    assert doc2["results"]["strength"]["S"] >= 0.95 * 2.0
+        for key in ("diameter", "bore", "fillet"):
+            if s.get(key) is not None:
+                s[key] *= k
+        s.setdefault("fillet", 1.0 * k)          # the default radius scales too
+    return data
+
+
+@pytest.mark.parametrize("T", [1500.0, 3000.0, 6000.0])
+def test_advice_reaches_the_required_safety(tmp_path, T):
+    """The advised scale, applied to the whole shaft, passes FATIGUE: the calculator
+    analysed the scaled shaft again (size factors and the neighbours' shoulders change with
+    the diameters), so the advice leads to a passing design."""
+    text = BASE.replace("torque = 500.0", f"torque = {T}").replace(
+        "torque = -500.0", f"torque = -{T}")
+    doc = run_failing(tmp_path, text)
+    fat = next(c for c in doc["checks"] if c["code"] == "FATIGUE")
+    assert not fat["passed"]
+    doc2 = run_data(apply_scale_advice(text, fat["message"])).document()
+    assert doc2["results"]["strength"]["S"] >= 2.0
+    assert next(c for c in doc2["checks"] if c["code"] == "FATIGUE")["passed"]
+
+
+def test_static_advice_reaches_the_required_safety(tmp_path):
+    text = BASE.replace("[shaft]\n", "[shaft]\nS_min = 1.0\nS_static_min = 3.0\n", 1) \
+        .replace("torque = 500.0", "torque = 2500.0").replace("torque = -500.0",
+                                                              "torque = -2500.0")
+    doc = run_failing(tmp_path, text)
+    c = next(c for c in doc["checks"] if c["code"] == "STATIC_STRENGTH")
+    assert not c["passed"], c["message"]
+    doc2 = run_data(apply_scale_advice(text, c["message"])).document()
+    assert next(x for x in doc2["checks"] if x["code"] == "STATIC_STRENGTH")["passed"]
 
 
 def test_bearing_tilt_fails_on_a_soft_shaft(tmp_path):

@@ -7,13 +7,15 @@ module writes the rows, the tables and the checks (with advice).
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
+from geardesign.core.errors import InputError
 from geardesign.core.result import DataTable, Result, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.shaft import inputs as IN
 from geardesign.shaft import sources as S
 from geardesign.shaft import strength as ST
-from geardesign.shaft.solve import ARCMIN, ShaftResult, analyse, diameter_for
+from geardesign.shaft.solve import ARCMIN, ShaftResult, analyse
 
 
 def model(spec: ValidatedSpec) -> dict:
@@ -37,6 +39,7 @@ def report(spec: ValidatedSpec, m: dict, r: ShaftResult) -> Result:
     """Rows, tables and checks of an analysed shaft (``m`` from :func:`model`)."""
     from geardesign.shaft import CALCULATOR
 
+    model_ = m
     mat, origin, steps = m["material"], m["origin"], m["steps"]
     loads, supports, opt = m["loads"], m["supports"], m["options"]
     res = CALCULATOR.new_result(spec)
@@ -111,9 +114,67 @@ def report(spec: ValidatedSpec, m: dict, r: ShaftResult) -> Result:
                stat)
         st.add("S_static_min", lim["S_static_min"], "-", "[S_T]", "required",
                S.DIN_LIMIT if din else S.STATIC_LIMIT)
+    scale = {}
+    if c is not None:
+        if c.S < lim["S_min"]:
+            scale["S"] = scale_to_pass(spec, model_, "S", lim["S_min"])
+        if r.critical_static.S_static < lim["S_static_min"]:
+            scale["S_static"] = scale_to_pass(spec, model_, "S_static",
+                                              lim["S_static_min"])
     res.checks.extend(_checks(r, lim, opt.speed, loads, supports, origin, steps, mat.sigma_B,
-                              din, mat.din.d_eff if din else 0.0))
+                              din, mat.din.d_eff if din else 0.0, scale))
     return res
+
+
+MAX_SCALE = 3.0      # the largest scale of the diameters the advice looks at
+
+
+def scaled_steps(steps: list, k: float) -> list:
+    """The steps with every diameter, bore and fillet radius times ``k`` (lengths kept)."""
+    return [replace(s, diameter=s.diameter * k, bore=s.bore * k, fillet=s.fillet * k)
+            for s in steps]
+
+
+def scale_to_pass(spec: ValidatedSpec, m: dict, which: str, S_req: float) -> float | None:
+    """The least factor k (rounded up to 0.01) by which every step's diameter, bore and
+    fillet radius must grow for the shaft's lowest safety ``which`` ("S": fatigue,
+    "S_static": static) to reach ``S_req``, found by analysing the scaled shaft again (its
+    size, notch and, by DIN 743, material factors change with the diameters; the bending
+    moments of a shaft on more than two supports too).  None when k = ``MAX_SCALE`` does not
+    reach it.  The nominal stresses fall as 1/k³, so k = (S_req/S)^(1/3) is the first
+    guess; the guess is repeated from the safety it reaches (at most 12 analyses)."""
+    steps, loads, supports, opt = m["steps"], m["loads"], m["supports"], m["options"]
+    d_max = max(st.diameter for st in steps)
+
+    def lowest(k: float) -> float:
+        try:
+            mat = IN.material(spec.data["material"], opt.method, d_max * k)[0] \
+                if opt.method == "DIN743" else m["material"]
+            r = analyse(scaled_steps(steps, k), loads, supports, mat, opt)
+        except InputError:
+            return 0.0
+        worst = r.critical if which == "S" else r.critical_static
+        if worst is None:
+            return math.inf
+        return worst.S if which == "S" else worst.S_static
+
+    k, S = 1.0, lowest(1.0)
+    for _ in range(12):
+        if S >= S_req:
+            break
+        step = (S_req / S) ** (1.0 / 3.0) if S > 0 else 1.25
+        k = min(MAX_SCALE, k * max(step, 1.01))
+        S = lowest(k)
+        if S < S_req and k >= MAX_SCALE:
+            return None
+    else:
+        return None
+    k_up = math.ceil(k * 100.0 - 1e-9) / 100.0
+    while lowest(k_up) < S_req:          # rounding up keeps it passing; make sure
+        k_up += 0.01
+        if k_up > MAX_SCALE:
+            return None
+    return k_up
 
 
 def _din_range_checks(r: ShaftResult, d_eff: float) -> list:
@@ -247,15 +308,26 @@ def _fmt(v: float) -> str:
     return "∞" if math.isinf(v) else f"{v:.2f}"
 
 
+def _scale_advice(k: float | None, sec, what: str) -> str:
+    """The advice to grow the shaft: every diameter (bores, fillet radii) times ``k``."""
+    if k is None:
+        return (f"even {MAX_SCALE:g} times the diameters do not reach {what}: use a stronger "
+                f"steel or reduce the load")
+    return (f"scale every step's diameter (and bore and fillet radius) by {k:.2f}, which "
+            f"reaches {what} (analysed again): at {sec.label} (x = {sec.x:g} mm) from "
+            f"{sec.d:g} to {math.ceil(sec.d * k * 10.0 - 1e-9) / 10.0:g} mm; choose the "
+            f"bearings and hubs for the new seats")
+
+
 def _checks(r: ShaftResult, lim: dict, speed: float, loads, supports, origin, steps,
-            mat_sigma_B: float, din: bool = False, d_eff: float = 0.0) -> list:
+            mat_sigma_B: float, din: bool = False, d_eff: float = 0.0,
+            scale: dict | None = None) -> list:
     out = []
+    scale = scale or {}
     c = r.critical
     if c is not None:
         S_req = lim["S_min"]
-        d_req = math.ceil(diameter_for(c, S_req) * 10.0) / 10.0
-        advice = (f"increase the diameter at {c.label} (x = {c.x:g} mm) from {c.d:g} to at "
-                  f"least {d_req:g} mm")
+        advice = _scale_advice(scale.get("S"), c, f"[S] = {S_req:g}")
         if c.fillet_r is not None and c.concentrator == "fillet":
             r_big = min(c.fillet_t / 2.0, 0.05 * c.d) if c.fillet_t else c.fillet_r
             if r_big > c.fillet_r:
@@ -273,13 +345,12 @@ def _checks(r: ShaftResult, lim: dict, speed: float, loads, supports, origin, st
             f"x = {c.x:g} mm)", _val(c.S), S_req, S.DIN_FATIGUE if din else S.FATIGUE))
         cs = r.critical_static
         S_req = lim["S_static_min"]
-        d_req = math.ceil(cs.d * (S_req / cs.S_static) ** (1 / 3) * 10.0) / 10.0 \
-            if math.isfinite(cs.S_static) else cs.d
         out.append(check(
             "STATIC_STRENGTH", cs.S_static >= S_req, "error",
             f"static safety at the peak load S_T = {_fmt(cs.S_static)} < [S_T] = {S_req:g} at "
-            f"{cs.label} (x = {cs.x:g} mm): increase the diameter there from {cs.d:g} to at "
-            f"least {d_req:g} mm or use a steel of higher yield strength",
+            f"{cs.label} (x = {cs.x:g} mm): "
+            f"{_scale_advice(scale.get('S_static'), cs, f'[S_T] = {S_req:g}')}, or use a "
+            f"steel of higher yield strength",
             f"static safety at the peak load S_T = {_fmt(cs.S_static)} >= [S_T] = {S_req:g} "
             f"(lowest at {cs.label})", _val(cs.S_static), S_req,
             S.DIN_STATIC if din else S.VON_MISES))

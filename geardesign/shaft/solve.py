@@ -441,15 +441,3 @@ def _section_din743(xs: float, label: str, M: float, T: float, N: float,
         S_static, name, r.notch.beta_b / r.K_2, r.notch.beta_t / r.K_2, r.K_F_sigma,
         r.K_sigma, r.K_tau, S_sigma, S_tau, r.S, outside, *fillet,
         st.keyway_cutter if st.keyway else "", r)
-
-
-def diameter_for(section: SectionResult, S_required: float) -> float:
-    """Diameter at which the section reaches ``S_required`` with the same factors: the
-    nominal stresses scale with 1/d³ (the size and concentration factors are kept)."""
-    if section.S <= 0 < section.S_static:
-        # DIN 743 load case 1, mean stress above the yield limit: no fatigue strength left;
-        # scale by the static safety instead
-        return section.d * (S_required / min(section.S_static, 1.0)) ** (1.0 / 3.0)
-    if not math.isfinite(section.S) or section.S <= 0:
-        return section.d
-    return section.d * (S_required / section.S) ** (1.0 / 3.0)
