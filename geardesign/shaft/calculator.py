@@ -142,7 +142,8 @@ def scale_to_pass(spec: ValidatedSpec, m: dict, which: str, S_req: float) -> flo
     size, notch and, by DIN 743, material factors change with the diameters; the bending
     moments of a shaft on more than two supports too).  None when k = ``MAX_SCALE`` does not
     reach it.  The nominal stresses fall as 1/k³, so k = (S_req/S)^(1/3) is the first
-    guess; the guess is repeated from the safety it reaches (at most 12 analyses)."""
+    guess; the guess is repeated from the safety it reaches (at most 12 analyses, and 5 to
+    check the rounding)."""
     steps, loads, supports, opt = m["steps"], m["loads"], m["supports"], m["options"]
     d_max = max(st.diameter for st in steps)
 
@@ -170,10 +171,12 @@ def scale_to_pass(spec: ValidatedSpec, m: dict, which: str, S_req: float) -> flo
     else:
         return None
     k_up = math.ceil(k * 100.0 - 1e-9) / 100.0
-    while lowest(k_up) < S_req:          # rounding up keeps it passing; make sure
-        k_up += 0.01
+    for _ in range(5):                   # rounding up keeps it passing; make sure
         if k_up > MAX_SCALE:
             return None
+        if lowest(k_up) >= S_req:
+            break
+        k_up += 0.01
     return k_up
 
 
