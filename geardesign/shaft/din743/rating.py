@@ -1,5 +1,5 @@
-"""One section of a shaft by DIN 743: the notch (shoulder, key seat, press fit, a notch of
-given β, or none), the material at its blank size, the stresses -> :class:`Rating` (every
+"""One section of a shaft by DIN 743: the notch (shoulder, round groove, rectangular groove,
+cross-bore, key seat, press fit, a notch of given β, or none), the material at its blank size, the stresses -> :class:`Rating` (every
 factor and both safeties).  Pure functions on plain data; [DIN743-1], [DIN743-2],
 [DIN743-3] through :mod:`.part1`, :mod:`.part2`, :mod:`.part3`."""
 
@@ -17,7 +17,9 @@ class Notch:
     """A notch and its notch factors β (tension, bending, torsion) at the section's
     diameter.  ``alpha_*``: the stress concentration factor for γ_F (β where none is
     known); ``circumferential``: a notch around the shaft (γ_F applies); ``roughness``:
-    K_F from R_z applies (False where β includes the surface: key seat, press fit)."""
+    K_F from R_z applies (False where β includes the surface: key seat, press fit);
+    ``Rz_B``: β was measured with this roughness [µm], K_F is taken relative to it
+    (rectangular groove)."""
     kind: str
     beta_zd: float
     beta_b: float
@@ -30,6 +32,7 @@ class Notch:
     circumferential: bool = True
     roughness: bool = True
     in_range: bool = True
+    Rz_B: float | None = None
 
 
 @dataclass(frozen=True)
@@ -65,6 +68,44 @@ def shoulder(d: float, D: float, r: float, mat: Material, hard_surface: bool) ->
     return Notch("shoulder", b["tension"], b["bending"], b["torsion"], a["tension"],
                  a["bending"], a["torsion"], min(n["bending"], a["bending"]),
                  min(n["torsion"], a["torsion"]), True, True, P2.shoulder_in_range(d, D, r))
+
+
+def round_groove(D: float, t: float, r: float, mat: Material, hard_surface: bool) -> Notch:
+    """A round groove (umlaufende Rundnut) of depth t and radius r [mm] in a shaft of
+    diameter D [mm]; the section is the groove root d = D − 2t: α of [DIN743-2] with the
+    round-groove constants, G′ = 2·(1 + φ)/r (tension, bending), 1/r (torsion), β = α/n."""
+    d = D - 2.0 * t
+    a = {k: P2.alpha_shoulder(d, D, r, k, "round_groove")
+         for k in ("tension", "bending", "torsion")}
+    n = {k: P2.support_number(P2.stress_gradient_shoulder(d, D, r, k, "round_groove"),
+                              mat.sigma_S_d, hard_surface) for k in a}
+    b = {k: P2.beta_from_alpha(a[k], n[k]) for k in a}
+    return Notch("round groove", b["tension"], b["bending"], b["torsion"], a["tension"],
+                 a["bending"], a["torsion"], min(n["bending"], a["bending"]),
+                 min(n["torsion"], a["torsion"]), True, True, P2.shoulder_in_range(d, D, r))
+
+
+def ring_groove(D: float, t: float, m: float, r: float, mat: Material) -> Notch:
+    """A rectangular groove (umlaufende Rechtecknut, e.g. for a retaining ring) of depth t,
+    width m and root radius r [mm] in a shaft of diameter D [mm]; the section is the groove
+    root d = D − 2t: β measured ([DIN743-2] section 4.2.4, :func:`.part2.beta_ring_groove`),
+    K_F relative to R_z = 20 µm; γ_F from β (no α is known)."""
+    bzd, bb, bt = P2.beta_ring_groove(D - 2.0 * t, t, m, r, mat.sigma_S_d)
+    return Notch("ring groove", bzd, bb, bt, bzd, bb,
+                 Rz_B=P2.tables()["ring_groove"]["Rz_B"])
+
+
+def cross_bore(d: float, d_L: float, mat: Material, hard_surface: bool) -> Notch:
+    """A cross-bore (Querbohrung) of diameter d_L [mm] through a solid shaft of diameter d
+    [mm]: α of [DIN743-2] section 5.2.3, G′ = 2.3/r (+ 2/d in bending and torsion, 1.15/r
+    in torsion), β = α/n; not around the shaft (γ_F = 1)."""
+    a = dict(zip(("tension", "bending", "torsion"), P2.alpha_cross_bore(d, d_L)))
+    n = {k: P2.support_number(P2.stress_gradient_cross_bore(d, d_L, k), mat.sigma_S_d,
+                              hard_surface) for k in a}
+    b = {k: P2.beta_from_alpha(a[k], n[k]) for k in a}
+    return Notch("cross-bore", b["tension"], b["bending"], b["torsion"], a["tension"],
+                 a["bending"], a["torsion"], min(n["bending"], a["bending"]),
+                 min(n["torsion"], a["torsion"]), circumferential=False)
 
 
 def measured(kind: str, d: float, mat: Material) -> Notch:
@@ -137,7 +178,9 @@ def rate(notch: Notch, mat: Material, d: float, s: Stresses, Rz: float, K_V: flo
     [mm] with the notch ``notch`` ([DIN743-1]; factors [DIN743-2]; material [DIN743-3])."""
     st = mat.steel
     K2 = P2.K_2(d)
-    if notch.roughness:
+    if notch.roughness and notch.Rz_B is not None:
+        KFs, KFt = P2.K_F_relative(Rz, mat.sigma_B_d, notch.Rz_B)
+    elif notch.roughness:
         KFs, KFt = P2.K_F(Rz, mat.sigma_B_d)
     else:
         KFs = KFt = 1.0

@@ -10,10 +10,14 @@ dependency din6885 are importable; the test suite itself never imports them.
 
 Cases: the MEL1 examples of the package's own tests that our notches cover (a shoulder on
 50CrMo4, load case 1, with axial force and non-rotating bending; a key seat on C50 with a
-hard surface layer, load case 2) 24 random sections (shoulders, key seats, press fits)
-on steels given by type and random σ_B, σ_S, with random d, D, r, d_eff, moments, torques,
-axial forces, R_z, K_V, load case and hard surface layer.  The inputs are forces and
-moments (N, N·m) as the package takes them; the stresses follow from the solid section.
+hard surface layer, load case 2; a cross-bore in a 50 mm shaft of E335, MEL1 2022W)
+24 random sections (shoulders, key seats, press fits) and 17 random notches by geometry
+(round grooves, rectangular grooves, cross-bores) on steels given by type and random σ_B,
+σ_S, with random d, D, r, d_eff, moments, torques, axial forces, R_z, K_V, load case and
+hard surface layer.  The inputs are forces and moments (N, N·m) as the package takes them;
+the stresses follow from the solid section (the net section at a cross-bore).  A
+rectangular groove is run with ρ* corrected (``RechtecknutCorrected``) and once more with
+the package's own class, whose β and safeties are recorded as ``din743py_own``.
 """
 
 from __future__ import annotations
@@ -41,22 +45,38 @@ OUT = ("K_1B_d_eff", "K_1S_d_eff", "K_2b_d", "K_Fsigma", "K_Ftau", "beta_sigmazd
        "sigma_zdFK", "sigma_bFK", "tau_tFK", "S_Dauer", "S_Verform")
 
 
-def notch(kind: str, d: float, D: float | None, r: float | None):
+class RechtecknutCorrected(din743.UmlaufendeRechtecknut):
+    """[din743py]'s rectangular groove with ρ* = 10^-(0.514 + 0.00152·σ_S(d)) — its own
+    ``rho_s`` reads ``0.514 + 0.00152 - sigma_S_d`` (test docstring)."""
+
+    def rho_s(self, sigma_S_d):
+        return 10.0 ** -(0.514 + 0.00152 * sigma_S_d)
+
+
+def notch(kind: str, d: float, D: float | None, r: float | None, case: dict | None = None,
+          own: bool = False):
     if kind == "shoulder":
         return din743.Absatz(d, r, (D - d) / 2.0)
+    if kind == "round_groove":
+        return din743.Rundnut(d, r, (D - d) / 2.0)
+    if kind == "ring_groove":
+        cls = din743.UmlaufendeRechtecknut if own else RechtecknutCorrected
+        return cls(d, (D - d) / 2.0, r, case["m"])
+    if kind == "cross_bore":
+        return din743.Querbohrung(d, case["d_L"] / 2.0)
     if kind == "key":
         return din743.Passfeder(din6885.PassfederHoheForm(d, 0, din6885.Passfeder.Form.A), 1)
     return din743.Presssitz(d)
 
 
-def run(case: dict, K_1B: float | None = None) -> dict:
+def run(case: dict, K_1B: float | None = None, own: bool = False) -> dict:
     mat = case["material"]
     w = din743.Werkstoff(TYPES[mat["type"]], mat["sigma_B"], mat["sigma_S"], mat["d_B"],
                          mat["d_B_S"])
     L = case["loads"]
     c = din743.Calculator(
         fall=case["load_case"], werkstoff=w,
-        kerbe=notch(case["notch"], case["d"], case.get("D"), case.get("r")),
+        kerbe=notch(case["notch"], case["d"], case.get("D"), case.get("r"), case, own),
         d_eff=case["d_eff"], F_zdm=L["F_zdm"], F_zda=0.0, F_zdmax=L["F_zdmax"],
         M_bm=L["M_bm"], M_ba=L["M_ba"], M_bmax=L["M_bmax"], M_tm=L["M_tm"], M_ta=L["M_ta"],
         M_tmax=L["M_tmax"], Rz=case["Rz"], K_V=case["K_V"],
@@ -138,6 +158,62 @@ def cases() -> list[dict]:
         if kind == "shoulder":
             case.update(D=50.0, r=2.0)
         out.append(case)
+    out.extend(groove_cases())
+    return out
+
+
+def groove_cases() -> list[dict]:
+    """The notches by geometry: MEL1 2022W (cross-bore) of [din743py]'s tests, then random
+    round grooves, rectangular (retaining-ring) grooves and cross-bores."""
+    out = [{"name": "MEL1 2022W (cross-bore, E335, load case 2)", "notch": "cross_bore",
+            "d": 50.0, "d_L": 4.0, "d_eff": 80.0, "load_case": 2, "Rz": 25.0, "K_V": 1.0,
+            "hard_surface": False, "torsion_cycle": "steady", "peak_factor": 2.0,
+            "material": {"grade": "E335", "type": "structural", "sigma_B": 570.0,
+                         "sigma_S": 335.0, "d_B": 100.0, "d_B_S": 16.0},
+            "loads": {"F_zdm": 0.0, "F_zdmax": 0.0, "M_bm": 0.0, "M_ba": 1088.802,
+                      "M_bmax": 1088.802 * 2, "M_tm": 596.831, "M_ta": 0.0,
+                      "M_tmax": 596.831 * 2},
+            "published": {"S_Dauer": [1.1045, 1.1055], "S_Verform": [1.6065, 1.6075]}}]
+    rng = random.Random(7432)
+    kinds = ["round_groove"] * 6 + ["ring_groove"] * 6 + ["cross_bore"] * 5
+    types = ["quenched_tempered", "structural", "nitriding", "case_hardening_CrNiMo"]
+    for i, kind in enumerate(kinds):
+        typ = types[i % len(types)]
+        D = round(rng.uniform(20.0, 120.0), 1)
+        case = {"name": f"random groove {i + 1} ({kind}, {typ})", "notch": kind}
+        if kind == "round_groove":
+            t = round(rng.uniform(0.5, 0.12 * D), 2)
+            r = round(rng.uniform(0.15, 2.0) * t, 2)
+            case.update(d=round(D - 2 * t, 4), D=D, r=r)
+        elif kind == "ring_groove":
+            t = round(rng.uniform(0.3, 0.05 * D), 2)
+            m = round(rng.uniform(0.6, 2.5) * t, 2)      # both sides of m/t = 1.4
+            r = round(rng.uniform(0.0, 0.4) * t, 2)
+            case.update(d=round(D - 2 * t, 4), D=D, r=r, m=m)
+        else:
+            case.update(d=D, d_L=round(rng.uniform(0.03, 0.3) * D, 1))
+        d = case["d"]
+        sB = round(rng.uniform(500.0, 1200.0), 0)
+        sS = round(sB * rng.uniform(0.6, 0.85), 0)
+        dB, dBS = D_B[typ]
+        case["material"] = {"type": typ, "sigma_B": sB, "sigma_S": sS, "d_B": dB,
+                            "d_B_S": dBS}
+        case["d_eff"] = round(D + rng.uniform(0.0, 40.0), 1)
+        case["load_case"] = rng.choice([1, 2])
+        case["Rz"] = round(rng.uniform(1.0, 25.0), 1)
+        case["K_V"] = round(rng.choice([1.0, 1.0, 1.1, 1.2]), 2)
+        case["hard_surface"] = rng.random() < 0.2
+        kp = round(rng.uniform(1.3, 2.5), 2)
+        M = round(rng.uniform(0.2, 1.2) * d ** 3 / 1000.0 * 10.0, 3)
+        T = round(rng.uniform(0.0, 2.5) * d ** 3 / 1000.0 * 10.0, 3)
+        F = round(rng.choice([0.0, rng.uniform(0.0, 20.0) * d * d]), 1)
+        cycle = rng.choice(["pulsating", "steady", "reversed"])
+        ta, tm = {"pulsating": (T / 2, T / 2), "steady": (0.0, T), "reversed": (T, 0.0)}[cycle]
+        case["torsion_cycle"] = cycle
+        case["peak_factor"] = kp
+        case["loads"] = {"F_zdm": F, "F_zdmax": kp * F, "M_bm": 0.0, "M_ba": M,
+                         "M_bmax": kp * M, "M_tm": tm, "M_ta": ta, "M_tmax": kp * T}
+        out.append(case)
     return out
 
 
@@ -165,6 +241,15 @@ def main() -> None:
             k1b = 1.0 - 0.41 * log10(case["d_eff"] / 16.0) if case["d_eff"] > 16 else 1.0
             case["K_1B_imposed"] = k1b
             ref = run(case, K_1B=k1b)
+        if case["notch"] == "ring_groove":
+            # [din743py]'s own ρ* (the error of the test docstring): record its β and S
+            try:
+                own = run(case, own=True)
+                case["din743py_own"] = {k: own[k] for k in ("beta_sigmazd", "beta_sigmab",
+                                                            "beta_tau", "S_Dauer",
+                                                            "S_Verform")}
+            except OverflowError as e:     # 10^(σ_S(d) − 0.516) beyond the float range
+                case["din743py_own"] = {"error": f"OverflowError: {e}"}
         case["reference"] = ref
         doc["cases"].append(case)
     path = Path(__file__).with_name("din743_independent.json")

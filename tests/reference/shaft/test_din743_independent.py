@@ -49,6 +49,7 @@ from pathlib import Path
 
 import pytest
 
+from geardesign.shaft.din743 import part2 as P2
 from geardesign.shaft.din743 import part3 as P3
 from geardesign.shaft.din743 import rating as R
 
@@ -76,6 +77,8 @@ def _ours(case: dict) -> dict:
     d = case["d"]
     A, W = math.pi / 4.0 * d * d, math.pi / 32.0 * d ** 3
     Wp = 2.0 * W
+    if case["notch"] == "cross_bore":
+        A, W, Wp = P2.cross_bore_section(d, case["d_L"])
     L = case["loads"]
     s = R.Stresses(zdm=L["F_zdm"] / A, zdmax=L["F_zdmax"] / A, ba=L["M_ba"] * 1e3 / W,
                    bm=L["M_bm"] * 1e3 / W, bmax=L["M_bmax"] * 1e3 / W,
@@ -83,6 +86,13 @@ def _ours(case: dict) -> dict:
                    tmax=L["M_tmax"] * 1e3 / Wp)
     if case["notch"] == "shoulder":
         notch = R.shoulder(d, case["D"], case["r"], mat, case["hard_surface"])
+    elif case["notch"] == "round_groove":
+        notch = R.round_groove(case["D"], (case["D"] - d) / 2.0, case["r"], mat,
+                               case["hard_surface"])
+    elif case["notch"] == "ring_groove":
+        notch = R.ring_groove(case["D"], (case["D"] - d) / 2.0, case["m"], case["r"], mat)
+    elif case["notch"] == "cross_bore":
+        notch = R.cross_bore(d, case["d_L"], mat, case["hard_surface"])
     else:
         notch = R.measured(case["notch"], d, mat)
     r = R.rate(notch, mat, d, s, case["Rz"], case["K_V"], case["hard_surface"], False,
