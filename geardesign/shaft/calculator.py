@@ -131,7 +131,12 @@ MAX_SCALE = 3.0      # the largest scale of the diameters the advice looks at
 
 def scaled_steps(steps: list, k: float) -> list:
     """The steps with every diameter, bore and fillet radius times ``k`` (lengths kept)."""
-    return [replace(s, diameter=s.diameter * k, bore=s.bore * k, fillet=s.fillet * k)
+    def times(v):
+        return None if v is None else v * k
+
+    return [replace(s, diameter=s.diameter * k, bore=s.bore * k, fillet=s.fillet * k,
+                    groove_depth=times(s.groove_depth), groove_radius=times(s.groove_radius),
+                    groove_width=times(s.groove_width), cross_bore=times(s.cross_bore))
             for s in steps]
 
 
@@ -311,13 +316,16 @@ def _fmt(v: float) -> str:
     return "∞" if math.isinf(v) else f"{v:.2f}"
 
 
-def _scale_advice(k: float | None, sec, what: str) -> str:
-    """The advice to grow the shaft: every diameter (bores, fillet radii) times ``k``."""
+def _scale_advice(k: float | None, sec, what: str, notches: bool = False) -> str:
+    """The advice to grow the shaft: every diameter (bores, fillet radii; with ``notches``
+    the grooves' depth, radius and width and the cross-bores) times ``k``."""
     if k is None:
         return (f"even {MAX_SCALE:g} times the diameters do not reach {what}: use a stronger "
                 f"steel or reduce the load")
+    also = (" (the grooves' depth, radius and width and the cross-bores' diameter scale "
+            "with them)" if notches else "")
     return (f"scale every step's diameter (and bore and fillet radius) by {k:.2f}, which "
-            f"reaches {what} (analysed again): at {sec.label} (x = {sec.x:g} mm) from "
+            f"reaches {what} (analysed again){also}: at {sec.label} (x = {sec.x:g} mm) from "
             f"{sec.d:g} to {math.ceil(sec.d * k * 10.0 - 1e-9) / 10.0:g} mm; choose the "
             f"bearings and hubs for the new seats")
 
@@ -330,7 +338,9 @@ def _checks(r: ShaftResult, lim: dict, speed: float, loads, supports, origin, st
     c = r.critical
     if c is not None:
         S_req = lim["S_min"]
-        advice = _scale_advice(scale.get("S"), c, f"[S] = {S_req:g}")
+        notches = any(st.groove_depth is not None or st.cross_bore is not None
+                      for st in steps)
+        advice = _scale_advice(scale.get("S"), c, f"[S] = {S_req:g}", notches)
         if c.fillet_r is not None and c.concentrator == "fillet":
             r_big = min(c.fillet_t / 2.0, 0.05 * c.d) if c.fillet_t else c.fillet_r
             if r_big > c.fillet_r:
@@ -340,6 +350,12 @@ def _checks(r: ShaftResult, lim: dict, speed: float, loads, supports, origin, st
             advice += ", or cut the keyway with a disc cutter"
         elif c.concentrator == "press fit":
             advice += ", or relieve the hub edge (groove, thinner hub end)"
+        elif c.concentrator == "round groove":
+            advice += ", or give the groove a larger radius"
+        elif c.concentrator == "ring groove":
+            advice += ", or give the groove a larger root radius"
+        elif c.concentrator == "cross-bore":
+            advice += ", or make the hole smaller"
         out.append(check(
             "FATIGUE", c.S >= S_req, "error",
             f"fatigue safety S = {_fmt(c.S)} < [S] = {S_req:g} at {c.label} (x = {c.x:g} mm, "
@@ -352,8 +368,8 @@ def _checks(r: ShaftResult, lim: dict, speed: float, loads, supports, origin, st
             "STATIC_STRENGTH", cs.S_static >= S_req, "error",
             f"static safety at the peak load S_T = {_fmt(cs.S_static)} < [S_T] = {S_req:g} at "
             f"{cs.label} (x = {cs.x:g} mm): "
-            f"{_scale_advice(scale.get('S_static'), cs, f'[S_T] = {S_req:g}')}, or use a "
-            f"steel of higher yield strength",
+            f"{_scale_advice(scale.get('S_static'), cs, f'[S_T] = {S_req:g}', notches)}, "
+            f"or use a steel of higher yield strength",
             f"static safety at the peak load S_T = {_fmt(cs.S_static)} >= [S_T] = {S_req:g} "
             f"(lowest at {cs.label})", _val(cs.S_static), S_req,
             S.DIN_STATIC if din else S.VON_MISES))

@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import difflib
+import math
 
 from geardesign.core.errors import InputError, Problem
 from geardesign.core.spec import ValidatedSpec
@@ -18,6 +19,8 @@ GOST_ONLY = ("hardness_HB", "sigma_m1", "tau_m1", "psi_sigma", "psi_tau", "alloy
 """Material keys of the GOST method (the DIN 743 method derives these from σ_B)."""
 DIN_ONLY = ("steel_type", "d_eff")
 """Material keys of the DIN 743 method."""
+DIN_STEP = ("groove_depth", "groove_radius", "groove_width", "cross_bore", "cross_bore_at")
+"""Step keys of the DIN 743 method: notches by their geometry ([DIN743-2])."""
 
 
 def method(spec: ValidatedSpec) -> str:
@@ -209,6 +212,18 @@ def steps(spec: ValidatedSpec) -> list[Step]:
                                 "DIN 743-2 gives the notch factor of a key seat cut by an end "
                                 "mill only: no data for a disc cutter (use end_mill, or "
                                 "method GOST)")
+        if method(spec) == "DIN743":
+            _din_notches(i, s, len(spec.data["step"]))
+        else:
+            for key in DIN_STEP:
+                if s.get(key) is not None:
+                    what = "cross-bore" if key.startswith("cross") else "groove"
+                    hint = (": give the groove's factors groove_K_sigma/groove_K_tau"
+                            if what == "groove" else "")
+                    raise InputError.at(f"step[{i}].{key}", s[key],
+                                        f'a DIN 743 key, used only by [shaft] method = '
+                                        f'"DIN743" (this spec rates by GOST, whose tables '
+                                        f'have no factors of a {what} by its geometry{hint})')
         if s["groove_K_sigma"] is not None and i == len(spec.data["step"]) - 1:
             raise InputError.at(f"step[{i}].groove_K_sigma", s["groove_K_sigma"],
                                 "a groove sits at the right end of its step, and the last step "
@@ -216,9 +231,82 @@ def steps(spec: ValidatedSpec) -> list[Step]:
                                 "groove's shoulder")
         out.append(Step(s["length"], s["diameter"], s["bore"], s["fillet"], s["keyway"],
                         s["keyway_cutter"], s["press_fit"], s["groove_K_sigma"],
-                        s["groove_K_tau"], s["Rz"]))
+                        s["groove_K_tau"], s["Rz"], s["groove_depth"], s["groove_radius"],
+                        s["groove_width"], s["cross_bore"], s["cross_bore_at"]))
         x += s["length"]
     return out
+
+
+def _din_notches(i: int, s: dict, n_steps: int) -> None:
+    """The validity domains of a step's DIN 743 notches by geometry (one line each)."""
+    at = f"step[{i}]"
+    D, bore, L = s["diameter"], s["bore"], s["length"]
+    t, r, m = s["groove_depth"], s["groove_radius"], s["groove_width"]
+    for key in ("groove_width", "groove_radius"):
+        if s[key] is not None and t is None:
+            raise InputError.at(f"{at}.{key}", s[key],
+                                "needs groove_depth (the depth of the groove at the step's "
+                                "right end)")
+    if t is not None:
+        if s["groove_K_sigma"] is not None:
+            raise InputError.at(f"{at}.groove_depth", t,
+                                "give the groove by its factors (groove_K_sigma) or by its "
+                                "geometry (groove_depth), not both")
+        if i == n_steps - 1:
+            raise InputError.at(f"{at}.groove_depth", t,
+                                "a groove sits at the right end of its step, and the last "
+                                "step ends with the shaft: give it on the step to the left of "
+                                "the groove's shoulder")
+        if r is None:
+            raise InputError(Problem(
+                f"{at}.groove_radius",
+                "missing; a groove (groove_depth) needs its radius: the radius of a round "
+                "groove, or the root radius of a rectangular groove (with groove_width)"))
+        if 2.0 * t >= D - bore:
+            raise InputError.at(f"{at}.groove_depth", t,
+                                f"must be less than (diameter − bore)/2 = {(D - bore) / 2:g} "
+                                f"mm: the groove root must stay outside the bore")
+        if t > D / 4.0:
+            raise InputError.at(f"{at}.groove_depth", t,
+                                f"at most diameter/4 = {D / 4:g} mm (a groove root below half "
+                                f"the step's diameter is no groove)")
+        if m is None:
+            if r <= 0:
+                raise InputError.at(f"{at}.groove_radius", r,
+                                    "must be above 0 for a round groove (a sharp groove is a "
+                                    "rectangular one: give groove_width)")
+            w = 2.0 * math.sqrt(2.0 * r * t - t * t) if r > t else 2.0 * r
+            if w > L:
+                raise InputError.at(f"{at}.groove_radius", r,
+                                    f"the round groove is {w:.3g} mm wide at the surface, more "
+                                    f"than the step's length {L:g} mm")
+        else:
+            if r > t or r > m / 2.0:
+                raise InputError.at(f"{at}.groove_radius", r,
+                                    f"the root radius of a rectangular groove is at most its "
+                                    f"depth {t:g} mm and half its width {m / 2:g} mm")
+            if m > L:
+                raise InputError.at(f"{at}.groove_width", m,
+                                    f"more than the step's length {L:g} mm")
+    dL = s["cross_bore"]
+    if s["cross_bore_at"] is not None and dL is None:
+        raise InputError.at(f"{at}.cross_bore_at", s["cross_bore_at"],
+                            "needs cross_bore (the diameter of the hole)")
+    if dL is not None:
+        if bore > 0:
+            raise InputError.at(f"{at}.cross_bore", dL,
+                                "DIN 743-2 rates a cross-bore through a solid shaft only "
+                                "(this step has a bore)")
+        lim = din_tables()["cross_bore"]["dL_d_max"]
+        if dL > lim * D:
+            raise InputError.at(f"{at}.cross_bore", dL,
+                                f"at most {lim:g}·diameter = {lim * D:g} mm (the range of the "
+                                f"cross-bore's factors taken here)")
+        x = s["cross_bore_at"] if s["cross_bore_at"] is not None else L / 2.0
+        if x < dL / 2.0 or x > L - dL / 2.0:
+            raise InputError.at(f"{at}.cross_bore_at", x,
+                                f"the hole must lie within the step: {dL / 2:g}…"
+                                f"{L - dL / 2:g} mm from its left end")
 
 
 def _on_shaft(key: str, position: float, length: float) -> None:

@@ -18,6 +18,7 @@ import numpy as np
 from geardesign.core.errors import InputError, Problem
 from geardesign.shaft import beam
 from geardesign.shaft import strength as ST
+from geardesign.shaft.din743 import part2 as P2
 from geardesign.shaft.din743 import rating as DR
 from geardesign.spur.geometry import STEEL_DENSITY
 
@@ -36,6 +37,18 @@ class Step:
     groove_K_sigma: float | None = None   # groove at the right end: effective factors
     groove_K_tau: float | None = None
     Rz: float | None = None          # roughness, µm (None: the shaft's)
+    # DIN 743 notches by geometry (mm): a groove at the right end, cut into this step —
+    # round (depth and radius) or rectangular (with its width) — and a cross-bore
+    groove_depth: float | None = None
+    groove_radius: float | None = None
+    groove_width: float | None = None
+    cross_bore: float | None = None
+    cross_bore_at: float | None = None   # from the step's left end (None: the middle)
+
+    @property
+    def cross_bore_x(self) -> float:
+        """Position of the cross-bore from the step's left end [mm]."""
+        return self.length / 2.0 if self.cross_bore_at is None else self.cross_bore_at
 
 
 @dataclass(frozen=True)
@@ -177,10 +190,12 @@ def node_positions(steps: list[Step], loads: list[Load], supports: list[Support]
     for s in steps:
         bounds.append(bounds[-1] + s.length)
     L = bounds[-1]
+    bores = [bounds[i] + s.cross_bore_x for i, s in enumerate(steps) if s.cross_bore]
     # points closer than 1e-3·L are one node (a load a hair beside a shoulder sits on it;
     # an element 10⁴ times shorter than its neighbours would spoil the conditioning)
     key: list[float] = []
-    for v in sorted([*bounds, *(ld.position for ld in loads), *(sp.position for sp in supports)]):
+    for v in sorted([*bounds, *(ld.position for ld in loads), *(sp.position for sp in supports),
+                     *bores]):
         if not key or v - key[-1] > 1e-3 * L:
             key.append(v)
     key[-1] = L
@@ -282,6 +297,10 @@ def analyse(steps: list[Step], loads: list[Load], supports: list[Support],
         points.setdefault(round(ld.position, 9), []).append(ld.name or f"load {k + 1}")
     for k, s in enumerate(supports):
         points.setdefault(round(s.position, 9), []).append(s.name or f"support {k + 1}")
+    for k, s in enumerate(steps):
+        if s.cross_bore:
+            points.setdefault(round(bounds[k] + s.cross_bore_x, 9), []).append(
+                f"cross-bore in step {k + 1}")
     for xs in sorted(points):
         i = _index(x, xs)
         M = max(math.hypot(py.M_left[i], pz.M_left[i]), math.hypot(py.M_right[i], pz.M_right[i]))
@@ -385,14 +404,17 @@ def _section_din743(xs: float, label: str, M: float, T: float, N: float,
 
     The notches of the section are those of the GOST method (a shoulder with its fillet, a
     groove of given β, the press fit of the smaller step at a step boundary; a key seat or a
-    press fit elsewhere), each rated in full; the one of the lowest fatigue safety counts
-    (its static safety likewise the lowest).  Rotating shaft: the bending stress is a
+    press fit elsewhere) and the notches by geometry of DIN 743-2: a round or rectangular
+    groove at the right end of the left step (rated at its root diameter D − 2t), a
+    cross-bore (rated on the net section); each is rated in full with its own nominal
+    stresses; the one of the lowest fatigue safety counts (its static safety likewise the
+    lowest).  Rotating shaft: the bending stress is a
     reversed amplitude (σ_bm = 0); the axial stress |N|/A a constant mean (σ_zda = 0); the
     torsion by ``torsion_cycle``; the peaks are K_p times the nominal stresses."""
     din = mat.din
     tol = 1e-9 * max(1.0, bounds[-1])
     boundary = next((i for i in range(1, len(steps)) if abs(bounds[i] - xs) <= tol), None)
-    notches: list[DR.Notch] = []
+    notches: list[tuple] = []        # (notch, d, bore, net section or None, step for R_z)
     fillet = (None, None, None)
     if boundary is not None:
         left, right = steps[boundary - 1], steps[boundary]
@@ -401,34 +423,56 @@ def _section_din743(xs: float, label: str, M: float, T: float, N: float,
         t = (D - st.diameter) / 2.0
         if t > 0:
             n = DR.shoulder(st.diameter, D, left.fillet, din, opt.hard_surface)
-            notches.append(n)
+            notches.append((n, st.diameter, st.bore, None, st))
             fillet = (n.alpha_b, t, left.fillet)
         if left.groove_K_sigma is not None:
-            notches.append(DR.given(left.groove_K_sigma,
-                                    left.groove_K_tau or left.groove_K_sigma))
+            notches.append((DR.given(left.groove_K_sigma,
+                                     left.groove_K_tau or left.groove_K_sigma),
+                            st.diameter, st.bore, None, st))
+        if left.groove_depth is not None:
+            # the groove is cut into the left step at its right end: the section is its root
+            dg = left.diameter - 2.0 * left.groove_depth
+            if left.groove_width is None:
+                n = DR.round_groove(left.diameter, left.groove_depth, left.groove_radius, din,
+                                    opt.hard_surface)
+            else:
+                n = DR.ring_groove(left.diameter, left.groove_depth, left.groove_width,
+                                   left.groove_radius, din)
+            notches.append((n, dg, left.bore, None, left))
         if st.press_fit:
-            notches.append(DR.measured("press_fit", st.diameter, din))
+            notches.append((DR.measured("press_fit", st.diameter, din), st.diameter, st.bore,
+                            None, st))
     else:
-        st = steps[_step_at(bounds, xs)]
+        k = _step_at(bounds, xs)
+        st = steps[k]
+        if st.cross_bore and abs(bounds[k] + st.cross_bore_x - xs) <= tol:
+            notches.append((DR.cross_bore(st.diameter, st.cross_bore, din, opt.hard_surface),
+                            st.diameter, st.bore,
+                            P2.cross_bore_section(st.diameter, st.cross_bore), st))
     if boundary is None or not notches:
         if st.keyway:
-            notches.append(DR.measured("key", st.diameter, din))
+            notches.append((DR.measured("key", st.diameter, din), st.diameter, st.bore, None,
+                            st))
         if st.press_fit:
-            notches.append(DR.measured("press_fit", st.diameter, din))
+            notches.append((DR.measured("press_fit", st.diameter, din), st.diameter, st.bore,
+                            None, st))
     if not notches:
-        notches.append(DR.smooth())
-    d, bore = st.diameter, st.bore
-    A, W, Wp = ST.section_moduli(d, bore)
-    sigma_b, sigma_n, tau = M / W, abs(N) / A, T / Wp
-    tau_a, tau_m = _torsion(tau, opt.torsion_cycle)
+        notches.append((DR.smooth(), st.diameter, st.bore, None, st))
     kp = opt.peak_factor
-    stresses = DR.Stresses(zdm=sigma_n, zdmax=kp * sigma_n, ba=sigma_b, bmax=kp * sigma_b,
-                           ta=tau_a, tm=tau_m, tmax=kp * tau)
-    rz = st.Rz if st.Rz is not None else opt.Rz
-    ratings = [DR.rate(n, din, d, stresses, rz, opt.K_V, opt.hard_surface, bore > 0,
-                       opt.load_case) for n in notches]
-    r = min(ratings, key=lambda x: (x.S, x.S_static))
-    S_static = min(x.S_static for x in ratings)
+    rated = []
+    for n, d, bore, net, where in notches:
+        rz = where.Rz if where.Rz is not None else opt.Rz
+        A, W, Wp = net if net is not None else ST.section_moduli(d, bore)
+        sigma_b, sigma_n, tau = M / W, abs(N) / A, T / Wp
+        tau_a, tau_m = _torsion(tau, opt.torsion_cycle)
+        stresses = DR.Stresses(zdm=sigma_n, zdmax=kp * sigma_n, ba=sigma_b, bmax=kp * sigma_b,
+                               ta=tau_a, tm=tau_m, tmax=kp * tau)
+        r = DR.rate(n, din, d, stresses, rz, opt.K_V, opt.hard_surface, bore > 0,
+                    opt.load_case)
+        rated.append((r, d, bore, sigma_b, sigma_n, tau, tau_a, tau_m))
+    r, d, bore, sigma_b, sigma_n, tau, tau_a, tau_m = min(
+        rated, key=lambda x: (x[0].S, x[0].S_static))
+    S_static = min(x[0].S_static for x in rated)
     outside = not r.notch.in_range
     S_sigma = r.sigma_ADK / sigma_b if sigma_b > 0 else math.inf
     S_tau = r.tau_ADK / tau_a if tau_a > 0 else math.inf

@@ -101,6 +101,22 @@ STEP = Table("step", "one cylindrical step of the shaft, from the left end", (
           default=None, minimum=1.0, maximum=6.0),
     Field("Rz", "number", "surface roughness of this step", "µm", "R_z", default=None,
           minimum=0.1, maximum=320.0),
+    Field("groove_depth", "number", "DIN 743: depth of a groove cut into this step at its "
+          "right end (round, or rectangular with groove_width)", "mm", "t", default=None,
+          gt=0, maximum=1250.0,
+          hint="method DIN743 only; the section is the groove root d = diameter − 2t"),
+    Field("groove_radius", "number", "DIN 743: radius of a round groove, or the root radius "
+          "of a rectangular groove", "mm", "r", default=None, minimum=0.0, maximum=1250.0,
+          hint="method DIN743 only; with groove_depth"),
+    Field("groove_width", "number", "DIN 743: width of a rectangular groove (retaining "
+          "ring); leave out for a round groove", "mm", "m", default=None, gt=0,
+          maximum=5000.0, hint="method DIN743 only; with groove_depth and groove_radius"),
+    Field("cross_bore", "number", "DIN 743: diameter of a radial hole through this step "
+          "(pin, lubrication)", "mm", "d_L", default=None, gt=0, maximum=1500.0,
+          hint="method DIN743 only; solid steps, d_L <= 0.3·diameter"),
+    Field("cross_bore_at", "number", "DIN 743: position of the cross-bore from the step's "
+          "left end", "mm", "x_L", default=None, minimum=0.0,
+          hint="default: the middle of the step"),
 ))
 
 LOAD = Table("load", "a load on the shaft: gear, pulley, coupling", (
