@@ -336,7 +336,8 @@ def test_weak_shaft_fails_with_advice(tmp_path):
 
 def apply_scale_advice(text: str, message: str) -> dict:
     """The spec with the advice of a FATIGUE or STATIC_STRENGTH message applied: every
-    step's diameter, bore and fillet radius times the advised factor."""
+    step's diameter, bore and fillet radius times the advised factor (and a groove's depth,
+    radius and width and a cross-bore's diameter with them)."""
     import re
 
     from geardesign.core.spec import parse_toml
@@ -344,7 +345,8 @@ def apply_scale_advice(text: str, message: str) -> dict:
     k = float(re.search(r"fillet radius\) by ([\d.]+), which reaches", message).group(1))
     data = parse_toml(text)
     for s in data["step"]:
-        for key in ("diameter", "bore", "fillet"):
+        for key in ("diameter", "bore", "fillet", "groove_depth", "groove_radius",
+                    "groove_width", "cross_bore"):
             if s.get(key) is not None:
                 s[key] *= k
         s.setdefault("fillet", 1.0 * k)          # the default radius scales too

@@ -123,6 +123,147 @@ def test_weak_din_shaft_fails_with_advice_that_reaches_S(tmp_path, F):
     assert next(c for c in again["checks"] if c["code"] == "FATIGUE")["passed"]
 
 
+# ------------------------------------------------------- notches by geometry (DIN 743-2)
+
+# DIN with a round groove at the right end of step 1 (into the 45 mm seat), a rectangular
+# groove at the right end of step 2 (55 mm; a generous fillet of the shoulder beside it) and
+# a cross-bore in step 3
+GROOVES = DIN.replace("[[step]]\nlength = 40.0\ndiameter = 45.0\n",
+                      "[[step]]\nlength = 40.0\ndiameter = 45.0\ngroove_depth = 1.0\n"
+                      "groove_radius = 1.0\n") \
+    .replace("keyway = true\n", "keyway = true\nfillet = 4.0\ngroove_depth = 1.5\n"
+             "groove_width = 1.85\ngroove_radius = 0.2\n") \
+    .replace("[[step]]\nlength = 60.0\ndiameter = 45.0\n",
+             "[[step]]\nlength = 60.0\ndiameter = 45.0\ncross_bore = 5.0\n"
+             "cross_bore_at = 40.0\n")
+
+
+def test_grooves_and_cross_bore_are_rated_and_named():
+    doc = run_data(parse_toml(GROOVES)).document()
+    fat = {r["label"]: r for r in doc["results"]["fatigue"]}
+    assert fat["step 1|2"]["concentrator"] == "round groove"
+    assert fat["step 2|3"]["concentrator"] == "ring groove"
+    cb = fat["cross-bore in step 3"]
+    assert cb["concentrator"] == "cross-bore"
+    sec = {r["label"]: r for r in doc["results"]["sections"]}
+    assert sec["step 1|2"]["d"] == 43.0          # the groove root 45 − 2·1
+    assert sec["step 2|3"]["d"] == 52.0          # 55 − 2·1.5
+    assert sec["cross-bore in step 3"]["x"] == 160.0
+    # the groove root is rated as a round groove of the DIN 743-2 formulas
+    din = R.material(P3.steel("C45"), 55.0)
+    n = R.round_groove(45.0, 1.0, 1.0, din, False)
+    assert math.isclose(fat["step 1|2"]["beta_sigma"], n.beta_b, rel_tol=1e-12)
+    assert math.isclose(n.alpha_b, P2.alpha_shoulder(43.0, 45.0, 1.0, "bending",
+                                                     "round_groove"), rel_tol=1e-15)
+    # the cross-bore's nominal stress is on the net section
+    A, W, Wp = P2.cross_bore_section(45.0, 5.0)
+    assert math.isclose(sec["cross-bore in step 3"]["sigma_a"],
+                        sec["cross-bore in step 3"]["M"] * 1e3 / W, rel_tol=1e-9)
+    # the grooves lower the safety of their sections below that of the shaft without them
+    plain = GROOVES.replace("groove_depth = 1.0\ngroove_radius = 1.0\n", "").replace(
+        "groove_depth = 1.5\ngroove_width = 1.85\ngroove_radius = 0.2\n", "")
+    plain = {r["label"]: r
+             for r in run_data(parse_toml(plain)).document()["results"]["fatigue"]}
+    assert fat["step 1|2"]["S"] < plain["step 1|2"]["S"]
+    assert fat["step 2|3"]["S"] < plain["step 2|3"]["S"]
+
+
+def test_shallow_round_groove_warns_outside_the_alpha_range():
+    text = GROOVES.replace("groove_depth = 1.0\ngroove_radius = 1.0\n",
+                           "groove_depth = 0.3\ngroove_radius = 11.0\n")
+    doc = run_data(parse_toml(text)).document()
+    warn = next(c for c in doc["checks"] if c["code"] == "FILLET_TABLE_RANGE")
+    assert "step 1|2" in warn["message"]
+
+
+@pytest.mark.parametrize("F, x, where", [(60000.0, 60.0, "round groove"),
+                                         (100000.0, 60.0, "round groove"),
+                                         (100000.0, 110.0, "ring groove")])
+def test_weak_grooved_shaft_fails_with_advice_that_passes(tmp_path, F, x, where):
+    """A grooved shaft (no keyway) that fails DIN 743 at a groove: the advised scale (the
+    grooves scale with the diameters) applied to the spec passes."""
+    from tests.test_shaft import apply_scale_advice
+
+    text = GROOVES.replace("keyway = true\n", "").replace("position = 80.0",
+                                                          f"position = {x}") \
+        .replace("Fy = 3000.0", f"Fy = {F}")
+    doc = run_failing(tmp_path, text)
+    fat = next(c for c in doc["checks"] if c["code"] == "FATIGUE")
+    assert not fat["passed"] and f"{where}):" in fat["message"]
+    assert "grooves' depth, radius and width" in fat["message"]
+    again = run_data(apply_scale_advice(text, fat["message"])).document()
+    assert again["results"]["strength"]["S"] >= 1.2
+    assert next(c for c in again["checks"] if c["code"] == "FATIGUE")["passed"]
+
+
+@pytest.mark.parametrize("change, line", [
+    (("groove_depth = 1.0\n", ""),
+     "s.toml: step[0].groove_radius = 1.0: needs groove_depth (the depth of the groove at the "
+     "step's right end)"),
+    (("groove_radius = 1.0\n", ""),
+     "s.toml: step[0].groove_radius: missing; a groove (groove_depth) needs its radius: the "
+     "radius of a round groove, or the root radius of a rectangular groove (with "
+     "groove_width)"),
+    (("groove_depth = 1.0\n", "groove_depth = 1.0\ngroove_K_sigma = 2.0\n"),
+     "s.toml: step[0].groove_depth = 1.0: give the groove by its factors (groove_K_sigma) or "
+     "by its geometry (groove_depth), not both"),
+    (("groove_depth = 1.0\n", "groove_depth = 12.0\n"),
+     "s.toml: step[0].groove_depth = 12.0: at most diameter/4 = 11.25 mm (a groove root "
+     "below half the step's diameter is no groove)"),
+    (("groove_depth = 1.0\n", "groove_depth = 5.0\nbore = 36.0\n"),
+     "s.toml: step[0].groove_depth = 5.0: must be less than (diameter − bore)/2 = 4.5 mm: the "
+     "groove root must stay outside the bore"),
+    (("groove_radius = 1.0\n", "groove_radius = 0.0\n"),
+     "s.toml: step[0].groove_radius = 0.0: must be above 0 for a round groove (a sharp groove "
+     "is a rectangular one: give groove_width)"),
+    (("groove_radius = 1.0\n", "groove_radius = 300.0\n"),
+     "s.toml: step[0].groove_radius = 300.0: the round groove is 48.9 mm wide at the surface, "
+     "more than the step's length 40 mm"),
+    (("groove_radius = 0.2\n", "groove_radius = 1.0\n"),
+     "s.toml: step[1].groove_radius = 1.0: the root radius of a rectangular groove is at most "
+     "its depth 1.5 mm and half its width 0.925 mm"),
+    (("groove_width = 1.85\n", "groove_width = 81.0\n"),
+     "s.toml: step[1].groove_width = 81.0: more than the step's length 80 mm"),
+    (("cross_bore = 5.0\n", "cross_bore = 14.0\n"),
+     "s.toml: step[2].cross_bore = 14.0: at most 0.3·diameter = 13.5 mm (the range of the "
+     "cross-bore's factors taken here)"),
+    (("cross_bore = 5.0\n", "cross_bore = 5.0\nbore = 10.0\n"),
+     "s.toml: step[2].cross_bore = 5.0: DIN 743-2 rates a cross-bore through a solid shaft "
+     "only (this step has a bore)"),
+    (("cross_bore_at = 40.0\n", "cross_bore_at = 59.0\n"),
+     "s.toml: step[2].cross_bore_at = 59.0: the hole must lie within the step: 2.5…57.5 mm "
+     "from its left end"),
+    (("cross_bore = 5.0\n", ""),
+     "s.toml: step[2].cross_bore_at = 40.0: needs cross_bore (the diameter of the hole)"),
+    (("cross_bore = 5.0\ncross_bore_at = 40.0\n",
+      "cross_bore = 5.0\ncross_bore_at = 40.0\ngroove_depth = 1.0\ngroove_radius = 1.0\n"),
+     "s.toml: step[2].groove_depth = 1.0: a groove sits at the right end of its step, and the "
+     "last step ends with the shaft: give it on the step to the left of the groove's "
+     "shoulder"),
+    (("groove_width = 1.85\n", "groove_width = 0.0\n"),
+     "s.toml: step[1].groove_width = 0.0: must be a number >= 0.001 and <= 5000 (mm)"),
+])
+def test_groove_and_cross_bore_input_errors(tmp_path, change, line):
+    old, new = change
+    assert old in GROOVES
+    assert run_bad(tmp_path, GROOVES.replace(old, new, 1)) == [line]
+
+
+@pytest.mark.parametrize("key, value, what", [
+    ("groove_depth", "1.0", "groove"), ("groove_radius", "1.0", "groove"),
+    ("groove_width", "2.0", "groove"), ("cross_bore", "4.0", "cross-bore"),
+    ("cross_bore_at", "20.0", "cross-bore")])
+def test_din_step_keys_are_refused_by_gost(tmp_path, key, value, what):
+    hint = (": give the groove's factors groove_K_sigma/groove_K_tau" if what == "groove"
+            else "")
+    text = BASE.replace("[[step]]\nlength = 40.0\n", f"[[step]]\nlength = 40.0\n{key} = "
+                        f"{value}\n", 1)
+    assert run_bad(tmp_path, text) == [
+        f's.toml: step[0].{key} = {value}: a DIN 743 key, used only by [shaft] method = '
+        f'"DIN743" (this spec rates by GOST, whose tables have no factors of a {what} by its '
+        f'geometry{hint})']
+
+
 def test_load_case_1_and_hard_surface_change_the_result():
     a = run_data(parse_toml(DIN)).document()["results"]["strength"]
     b = run_data(parse_toml(DIN.replace('method = "DIN743"', 'method = "DIN743"\n'

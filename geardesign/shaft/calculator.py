@@ -195,7 +195,8 @@ def _din_range_checks(r: ShaftResult, d_eff: float) -> list:
         where = ", ".join(s.label for s in r.sections if s.outside_table)
         out.append(check(
             "FILLET_TABLE_RANGE", False, "warning",
-            f"the shoulder at {where} lies outside the range of the DIN 743-2 formula for α "
+            f"the shoulder or round groove at {where} lies outside the range of the DIN 743-2 "
+            f"formula for α "
             f"(r/t >= {sh['r_t_min']:g}, d/D <= {sh['d_D_max']:g}): the formula is used "
             f"beyond it; enlarge the fillet or check α against a handbook",
             "", None, None, S.DIN_NOTCH))

@@ -473,7 +473,7 @@ def _section_din743(xs: float, label: str, M: float, T: float, N: float,
     r, d, bore, sigma_b, sigma_n, tau, tau_a, tau_m = min(
         rated, key=lambda x: (x[0].S, x[0].S_static))
     S_static = min(x[0].S_static for x in rated)
-    outside = not r.notch.in_range
+    outside = not all(x[0].notch.in_range for x in rated)   # any formula beyond its range
     S_sigma = r.sigma_ADK / sigma_b if sigma_b > 0 else math.inf
     S_tau = r.tau_ADK / tau_a if tau_a > 0 else math.inf
     sv = kp * ST.von_mises(sigma_b + sigma_n, tau)

@@ -96,7 +96,9 @@ STEP = Table("step", "one cylindrical step of the shaft, from the left end", (
           default=False),
     Field("groove_K_sigma", "number", "effective stress concentration factor in bending of a "
           "groove at the right end (from a handbook table)", symbol="K_σ", default=None,
-          minimum=1.0, maximum=6.0),
+          minimum=1.0, maximum=6.0,
+          hint="method DIN743: the notch factor β_σ; or give the groove by its geometry "
+               "(groove_depth, groove_radius, groove_width)"),
     Field("groove_K_tau", "number", "its factor in torsion (default: K_σ)", symbol="K_τ",
           default=None, minimum=1.0, maximum=6.0),
     Field("Rz", "number", "surface roughness of this step", "µm", "R_z", default=None,
