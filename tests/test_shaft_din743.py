@@ -168,6 +168,17 @@ def test_grooves_and_cross_bore_are_rated_and_named():
     assert fat["step 2|3"]["S"] < plain["step 2|3"]["S"]
 
 
+def test_v_notch_is_rated_at_its_root():
+    text = GROOVES.replace("groove_depth = 1.0\ngroove_radius = 1.0\n",
+                           'groove_depth = 3.0\ngroove_shape = "V"\n')
+    doc = run_data(parse_toml(text)).document()
+    fat = {r["label"]: r for r in doc["results"]["fatigue"]}
+    sec = {r["label"]: r for r in doc["results"]["sections"]}
+    assert fat["step 1|2"]["concentrator"] == "V-notch" and sec["step 1|2"]["d"] == 39.0
+    n = R.v_notch(45.0, 3.0, R.material(P3.steel("C45"), 55.0))
+    assert math.isclose(fat["step 1|2"]["beta_sigma"], n.beta_b, rel_tol=1e-12)
+
+
 def test_shallow_round_groove_warns_outside_the_alpha_range():
     text = GROOVES.replace("groove_depth = 1.0\ngroove_radius = 1.0\n",
                            "groove_depth = 0.3\ngroove_radius = 11.0\n")
@@ -240,6 +251,18 @@ def test_weak_grooved_shaft_fails_with_advice_that_passes(tmp_path, F, x, where)
      "s.toml: step[2].groove_depth = 1.0: a groove sits at the right end of its step, and the "
      "last step ends with the shaft: give it on the step to the left of the groove's "
      "shoulder"),
+    (("groove_radius = 1.0\n", 'groove_shape = "V"\ngroove_radius = 1.0\n'),
+     's.toml: step[0].groove_radius = 1.0: a V-notch (groove_shape = "V") is given by its '
+     'depth alone (DIN 743-2: a sharp notch of the test specimen): leave it out'),
+    (("groove_radius = 1.0\n", 'groove_shape = "V"\n'),
+     "s.toml: step[0].groove_depth = 1.0: a V-notch of DIN 743-2 holds for 0.05 <= t/d <= "
+     "0.2 (d = diameter − 2t the root): t from 2.05 to 6.43 mm, the root outside the bore"),
+    (("groove_radius = 1.0\n", 'groove_radius = 1.0\ngroove_shape = "rectangular"\n'),
+     's.toml: step[0].groove_width: missing; groove_shape = "rectangular" needs the width of '
+     'the groove'),
+    (("groove_width = 1.85\n", 'groove_width = 1.85\ngroove_shape = "round"\n'),
+     's.toml: step[1].groove_width = 1.85: a round groove has no width: leave it out, or give '
+     'groove_shape = "rectangular"'),
     (("groove_width = 1.85\n", "groove_width = 0.0\n"),
      "s.toml: step[1].groove_width = 0.0: must be a number >= 0.001 and <= 5000 (mm)"),
 ])
@@ -251,7 +274,8 @@ def test_groove_and_cross_bore_input_errors(tmp_path, change, line):
 
 @pytest.mark.parametrize("key, value, what", [
     ("groove_depth", "1.0", "groove"), ("groove_radius", "1.0", "groove"),
-    ("groove_width", "2.0", "groove"), ("cross_bore", "4.0", "cross-bore"),
+    ("groove_width", "2.0", "groove"), ("groove_shape", '"V"', "groove"),
+    ("cross_bore", "4.0", "cross-bore"),
     ("cross_bore_at", "20.0", "cross-bore")])
 def test_din_step_keys_are_refused_by_gost(tmp_path, key, value, what):
     hint = (": give the groove's factors groove_K_sigma/groove_K_tau" if what == "groove"

@@ -19,7 +19,8 @@ GOST_ONLY = ("hardness_HB", "sigma_m1", "tau_m1", "psi_sigma", "psi_tau", "alloy
 """Material keys of the GOST method (the DIN 743 method derives these from σ_B)."""
 DIN_ONLY = ("steel_type", "d_eff")
 """Material keys of the DIN 743 method."""
-DIN_STEP = ("groove_depth", "groove_radius", "groove_width", "cross_bore", "cross_bore_at")
+DIN_STEP = ("groove_depth", "groove_radius", "groove_width", "groove_shape", "cross_bore",
+            "cross_bore_at")
 """Step keys of the DIN 743 method: notches by their geometry ([DIN743-2])."""
 
 
@@ -232,7 +233,8 @@ def steps(spec: ValidatedSpec) -> list[Step]:
         out.append(Step(s["length"], s["diameter"], s["bore"], s["fillet"], s["keyway"],
                         s["keyway_cutter"], s["press_fit"], s["groove_K_sigma"],
                         s["groove_K_tau"], s["Rz"], s["groove_depth"], s["groove_radius"],
-                        s["groove_width"], s["cross_bore"], s["cross_bore_at"]))
+                        s["groove_width"], s["cross_bore"], s["cross_bore_at"],
+                        s["groove_shape"]))
         x += s["length"]
     return out
 
@@ -242,7 +244,8 @@ def _din_notches(i: int, s: dict, n_steps: int) -> None:
     at = f"step[{i}]"
     D, bore, L = s["diameter"], s["bore"], s["length"]
     t, r, m = s["groove_depth"], s["groove_radius"], s["groove_width"]
-    for key in ("groove_width", "groove_radius"):
+    shape = s["groove_shape"] or ("rectangular" if m is not None else "round")
+    for key in ("groove_width", "groove_radius", "groove_shape"):
         if s[key] is not None and t is None:
             raise InputError.at(f"{at}.{key}", s[key],
                                 "needs groove_depth (the depth of the groove at the step's "
@@ -257,6 +260,30 @@ def _din_notches(i: int, s: dict, n_steps: int) -> None:
                                 "a groove sits at the right end of its step, and the last "
                                 "step ends with the shaft: give it on the step to the left of "
                                 "the groove's shoulder")
+        if shape == "V":
+            for key in ("groove_radius", "groove_width"):
+                if s[key] is not None:
+                    raise InputError.at(f"{at}.{key}", s[key],
+                                        'a V-notch (groove_shape = "V") is given by its depth '
+                                        'alone (DIN 743-2: a sharp notch of the test specimen): '
+                                        'leave it out')
+            c = din_tables()["v_notch"]
+            lo, hi = c["t_d_min"] * D / (1 + 2 * c["t_d_min"]), \
+                c["t_d_max"] * D / (1 + 2 * c["t_d_max"])
+            if not lo <= t <= hi or 2.0 * t >= D - bore:
+                raise InputError.at(f"{at}.groove_depth", t,
+                                    f"a V-notch of DIN 743-2 holds for {c['t_d_min']:g} <= t/d "
+                                    f"<= {c['t_d_max']:g} (d = diameter − 2t the root): t "
+                                    f"from {lo:.3g} to {hi:.3g} mm, the root outside the bore")
+            return _cross_bore(at, s)
+        if shape == "rectangular" and m is None:
+            raise InputError(Problem(
+                f"{at}.groove_width",
+                'missing; groove_shape = "rectangular" needs the width of the groove'))
+        if shape == "round" and m is not None:
+            raise InputError.at(f"{at}.groove_width", m,
+                                'a round groove has no width: leave it out, or give '
+                                'groove_shape = "rectangular"')
         if r is None:
             raise InputError(Problem(
                 f"{at}.groove_radius",
@@ -270,7 +297,7 @@ def _din_notches(i: int, s: dict, n_steps: int) -> None:
             raise InputError.at(f"{at}.groove_depth", t,
                                 f"at most diameter/4 = {D / 4:g} mm (a groove root below half "
                                 f"the step's diameter is no groove)")
-        if m is None:
+        if shape == "round":
             if r <= 0:
                 raise InputError.at(f"{at}.groove_radius", r,
                                     "must be above 0 for a round groove (a sharp groove is a "
@@ -288,6 +315,12 @@ def _din_notches(i: int, s: dict, n_steps: int) -> None:
             if m > L:
                 raise InputError.at(f"{at}.groove_width", m,
                                     f"more than the step's length {L:g} mm")
+    _cross_bore(at, s)
+
+
+def _cross_bore(at: str, s: dict) -> None:
+    """The validity domain of a step's cross-bore."""
+    D, bore, L = s["diameter"], s["bore"], s["length"]
     dL = s["cross_bore"]
     if s["cross_bore_at"] is not None and dL is None:
         raise InputError.at(f"{at}.cross_bore_at", s["cross_bore_at"],

@@ -44,6 +44,14 @@ class Step:
     groove_width: float | None = None
     cross_bore: float | None = None
     cross_bore_at: float | None = None   # from the step's left end (None: the middle)
+    groove_shape: str | None = None      # "round", "rectangular", "V" (None: by the width)
+
+    @property
+    def groove_kind(self) -> str:
+        """The groove's shape: ``groove_shape``, else rectangular with a width, else round."""
+        if self.groove_shape:
+            return self.groove_shape
+        return "rectangular" if self.groove_width is not None else "round"
 
     @property
     def cross_bore_x(self) -> float:
@@ -432,9 +440,11 @@ def _section_din743(xs: float, label: str, M: float, T: float, N: float,
         if left.groove_depth is not None:
             # the groove is cut into the left step at its right end: the section is its root
             dg = left.diameter - 2.0 * left.groove_depth
-            if left.groove_width is None:
+            if left.groove_kind == "round":
                 n = DR.round_groove(left.diameter, left.groove_depth, left.groove_radius, din,
                                     opt.hard_surface)
+            elif left.groove_kind == "V":
+                n = DR.v_notch(left.diameter, left.groove_depth, din)
             else:
                 n = DR.ring_groove(left.diameter, left.groove_depth, left.groove_width,
                                    left.groove_radius, din)

@@ -113,6 +113,10 @@ STEP = Table("step", "one cylindrical step of the shaft, from the left end", (
     Field("groove_width", "number", "DIN 743: width of a rectangular groove (retaining "
           "ring); leave out for a round groove", "mm", "m", default=None, gt=0,
           maximum=5000.0, hint="method DIN743 only; with groove_depth and groove_radius"),
+    Field("groove_shape", "string", "DIN 743: shape of the groove (default: rectangular with "
+          "groove_width, else round)", default=None, choices=("round", "rectangular", "V"),
+          hint='method DIN743 only; "V": a sharp V-notch (Spitzkerbe), given by groove_depth '
+               'alone'),
     Field("cross_bore", "number", "DIN 743: diameter of a radial hole through this step "
           "(pin, lubrication)", "mm", "d_L", default=None, gt=0, maximum=1500.0,
           hint="method DIN743 only; solid steps, d_L <= 0.3·diameter"),

@@ -179,6 +179,33 @@ def beta_ring_groove(d: float, t: float, m: float, r: float, sigma_S_d: float
     return out[0], out[1], out[2]
 
 
+def beta_v_notch(d: float, sigma_B_d: float) -> tuple[float, float, float]:
+    """Notch factors β_σzd, β_σb, β_τ of a V-notch (Spitzkerbe, a sharp circumferential
+    notch) at its root diameter d [-] ([DIN743-2] section 4.2.3, as transcribed in
+    [din743py]; ``tables.toml`` [v_notch]):
+
+    .. math:: β_{σzd}(d_{BK}) = 0.109\\,σ_B(d)/100\\,\\mathrm{MPa} + 1.074,\\quad
+              β_{σb}(d_{BK}) = 0.0923\\,σ_B(d)/100\\,\\mathrm{MPa} + 0.985,\\quad
+              β_τ(d_{BK}) = 0.8\\,β_{σb}(d_{BK})
+
+              β(d) = β(d_{BK})\\,K_3(d_{BK})/K_3(d),\\quad d_{BK} = 15\\ \\mathrm{mm}
+
+    β is measured with R_z = 20 µm (:func:`K_F_relative`); valid for 0.05 <= t/d <= 0.2.
+
+    Parameters
+    ----------
+    d : root diameter [mm]; sigma_B_d : tensile strength σ_B(d) [MPa].
+
+    >>> [round(b, 4) for b in beta_v_notch(15.0, 500.0)]
+    [1.619, 1.4465, 1.1572]
+    """
+    c = tables()["v_notch"]
+    bzd = c["tension"]["a"] * sigma_B_d / 100.0 + c["tension"]["b"]
+    bb = c["bending"]["a"] * sigma_B_d / 100.0 + c["bending"]["b"]
+    bt = c["torsion_of_bending"] * bb
+    return tuple(b * K_3(c["d_BK"], b) / K_3(d, b) for b in (bzd, bb, bt))
+
+
 def alpha_cross_bore(d: float, d_L: float) -> tuple[float, float, float]:
     """Stress concentration factors α_σzd, α_σb, α_τ of a cross-bore (Querbohrung) of
     diameter d_L [mm] in a solid shaft of diameter d [mm] ([DIN743-2] section 5.2.3, as

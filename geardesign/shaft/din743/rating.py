@@ -1,5 +1,5 @@
 """One section of a shaft by DIN 743: the notch (shoulder, round groove, rectangular groove,
-cross-bore, key seat, press fit, a notch of given β, or none), the material at its blank size, the stresses -> :class:`Rating` (every
+V-notch, cross-bore, key seat, press fit, a notch of given β, or none), the material at its blank size, the stresses -> :class:`Rating` (every
 factor and both safeties).  Pure functions on plain data; [DIN743-1], [DIN743-2],
 [DIN743-3] through :mod:`.part1`, :mod:`.part2`, :mod:`.part3`."""
 
@@ -93,6 +93,14 @@ def ring_groove(D: float, t: float, m: float, r: float, mat: Material) -> Notch:
     bzd, bb, bt = P2.beta_ring_groove(D - 2.0 * t, t, m, r, mat.sigma_S_d)
     return Notch("ring groove", bzd, bb, bt, bzd, bb,
                  Rz_B=P2.tables()["ring_groove"]["Rz_B"])
+
+
+def v_notch(D: float, t: float, mat: Material) -> Notch:
+    """A V-notch (Spitzkerbe) of depth t [mm] in a shaft of diameter D [mm]; the section is
+    the root d = D − 2t: β measured ([DIN743-2] section 4.2.3,
+    :func:`.part2.beta_v_notch`), K_F relative to R_z = 20 µm; γ_F from β."""
+    bzd, bb, bt = P2.beta_v_notch(D - 2.0 * t, mat.sigma_B_d)
+    return Notch("V-notch", bzd, bb, bt, bzd, bb, Rz_B=P2.tables()["v_notch"]["Rz_B"])
 
 
 def cross_bore(d: float, d_L: float, mat: Material, hard_surface: bool) -> Notch:

@@ -64,6 +64,8 @@ def notch(kind: str, d: float, D: float | None, r: float | None, case: dict | No
         return cls(d, (D - d) / 2.0, r, case["m"])
     if kind == "cross_bore":
         return din743.Querbohrung(d, case["d_L"] / 2.0)
+    if kind == "v_notch":
+        return din743.Spitzkerbe(d, (D - d) / 2.0)
     if kind == "key":
         return din743.Passfeder(din6885.PassfederHoheForm(d, 0, din6885.Passfeder.Form.A), 1)
     return din743.Presssitz(d)
@@ -163,8 +165,10 @@ def cases() -> list[dict]:
 
 
 def groove_cases() -> list[dict]:
-    """The notches by geometry: MEL1 2022W (cross-bore) of [din743py]'s tests, then random
-    round grooves, rectangular (retaining-ring) grooves and cross-bores."""
+    """The notches by geometry: MEL1 2022W (cross-bore) and MEL1 2024W #4 (V-notch, a
+    tensile force and non-rotating bending; only S_Verform published) of [din743py]'s
+    tests, then random round grooves, rectangular (retaining-ring) grooves, cross-bores and
+    V-notches."""
     out = [{"name": "MEL1 2022W (cross-bore, E335, load case 2)", "notch": "cross_bore",
             "d": 50.0, "d_L": 4.0, "d_eff": 80.0, "load_case": 2, "Rz": 25.0, "K_V": 1.0,
             "hard_surface": False, "torsion_cycle": "steady", "peak_factor": 2.0,
@@ -173,9 +177,18 @@ def groove_cases() -> list[dict]:
             "loads": {"F_zdm": 0.0, "F_zdmax": 0.0, "M_bm": 0.0, "M_ba": 1088.802,
                       "M_bmax": 1088.802 * 2, "M_tm": 596.831, "M_ta": 0.0,
                       "M_tmax": 596.831 * 2},
-            "published": {"S_Dauer": [1.1045, 1.1055], "S_Verform": [1.6065, 1.6075]}}]
+            "published": {"S_Dauer": [1.1045, 1.1055], "S_Verform": [1.6065, 1.6075]}},
+           {"name": "MEL1 2024W #4 (V-notch, S235, load case 2)", "notch": "v_notch",
+            "d": 60.0, "D": 80.0, "d_eff": 80.0, "load_case": 2, "Rz": 25.0, "K_V": 1.0,
+            "hard_surface": False,
+            "material": {"grade": "S235", "type": "structural", "sigma_B": 360.0,
+                         "sigma_S": 235.0, "d_B": 100.0, "d_B_S": 16.0},
+            "loads": {"F_zdm": 40000.0, "F_zdmax": 40000.0 * 1.5, "M_bm": 12666.667,
+                      "M_ba": 0.0, "M_bmax": 12666.66667 * 1.5, "M_tm": 0.0, "M_ta": 0.0,
+                      "M_tmax": 0.0},
+            "published": {"S_Verform": [0.2735, 0.2745]}}]
     rng = random.Random(7432)
-    kinds = ["round_groove"] * 6 + ["ring_groove"] * 6 + ["cross_bore"] * 5
+    kinds = ["round_groove"] * 6 + ["ring_groove"] * 6 + ["cross_bore"] * 5 + ["v_notch"] * 4
     types = ["quenched_tempered", "structural", "nitriding", "case_hardening_CrNiMo"]
     for i, kind in enumerate(kinds):
         typ = types[i % len(types)]
@@ -190,8 +203,11 @@ def groove_cases() -> list[dict]:
             m = round(rng.uniform(0.6, 2.5) * t, 2)      # both sides of m/t = 1.4
             r = round(rng.uniform(0.0, 0.4) * t, 2)
             case.update(d=round(D - 2 * t, 4), D=D, r=r, m=m)
-        else:
+        elif kind == "cross_bore":
             case.update(d=D, d_L=round(rng.uniform(0.03, 0.3) * D, 1))
+        else:                                          # 0.05 <= t/d <= 0.2
+            d = round(D / (1.0 + 2.0 * rng.uniform(0.06, 0.19)), 2)
+            case.update(d=d, D=D)
         d = case["d"]
         sB = round(rng.uniform(500.0, 1200.0), 0)
         sS = round(sB * rng.uniform(0.6, 0.85), 0)
