@@ -10,9 +10,9 @@ dependency din6885 are importable; the test suite itself never imports them.
 
 Cases: the MEL1 examples of the package's own tests that our notches cover (a shoulder on
 50CrMo4, load case 1, with axial force and non-rotating bending; a key seat on C50 with a
-hard surface layer, load case 2; a cross-bore in a 50 mm shaft of E335, MEL1 2022W)
-24 random sections (shoulders, key seats, press fits) and 17 random notches by geometry
-(round grooves, rectangular grooves, cross-bores) on steels given by type and random σ_B,
+hard surface layer, load case 2; a cross-bore in a 50 mm shaft of E335, MEL1 2022W; a
+V-notch in S235, MEL1 2024W #4), 24 random sections (shoulders, key seats, press fits) and
+21 random notches by geometry (round grooves, rectangular grooves, cross-bores, V-notches) on steels given by type and random σ_B,
 σ_S, with random d, D, r, d_eff, moments, torques, axial forces, R_z, K_V, load case and
 hard surface layer.  The inputs are forces and moments (N, N·m) as the package takes them;
 the stresses follow from the solid section (the net section at a cross-bore).  A

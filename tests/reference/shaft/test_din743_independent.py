@@ -8,22 +8,25 @@ K_1S, K_2, K_Fσ, K_Fτ, β_σzd, β_σb, β_τ, K_σzd, K_σb, K_τ, σ_bWK, τ
 σ_zdADK, σ_bADK, τ_tADK, σ_zdFK, σ_bFK, τ_tFK, S_Dauer and S_Verform, each to ±0.5 %
 (they agree to round-off, ≤ 1e-9 relative, in every case).
 
-Cases: the three MEL1 examples of [din743py]'s tests/test_1.py that our notches cover —
+Cases: the four MEL1 examples of [din743py]'s tests/test_1.py —
 a shoulder on 50CrMo4 in load case 1 with a tensile force and non-rotating bending
 (published S_Dauer 2.3725…2.3735, S_Verform 1.4635…1.4645), a key seat on C50 with a
-hard surface layer in load case 2 (S_Dauer 1.4715…1.4725, S_Verform 2.5675…2.5685) and a
+hard surface layer in load case 2 (S_Dauer 1.4715…1.4725, S_Verform 2.5675…2.5685), a
 cross-bore of 4 mm in a 50 mm shaft of E335 in load case 2, MEL1 2022W (S_Dauer
 1.1045…1.1055, S_Verform 1.6065…1.6075; ``Querbohrung(50, 2)`` takes the hole's radius);
-all are also checked against those intervals, the key seat and the cross-bore also through
-the whole shaft calculator.  The fourth, a V-notch (Spitzkerbe), is not run: no such notch
-on our steps.  Then 24 random sections: 10 shoulders, 7 key seats, 7 press fits on
-quenched-and-tempered, structural, nitriding and CrNiMo case-hardening steels of random
-σ_B 500…1200 MPa, with random d 20…120 mm, shoulder height and fillet radius, blank
+and a V-notch (Spitzkerbe) of t = 10 mm at the root d = 60 mm in S235, load case 2,
+with a tensile force and non-rotating bending, MEL1 2024W #4 (only S_Verform published:
+0.2735…0.2745; no amplitude, S_Dauer infinite); all are also checked against those
+intervals, the key seat and the cross-bore also through the whole shaft calculator (the
+calculator's rotating shaft cannot carry the V-notch case's static bending).  Then 24
+random sections: 10 shoulders, 7 key seats, 7 press fits on quenched-and-tempered,
+structural, nitriding and CrNiMo case-hardening steels of random σ_B 500…1200 MPa, with random d 20…120 mm, shoulder height and fillet radius, blank
 diameter, bending moment, torque (pulsating, steady or reversed), axial force, R_z, K_V,
-load case and hard surface layer; 3 sections of high mean stress; and 17 random notches by
+load case and hard surface layer; 3 sections of high mean stress; and 21 random notches by
 geometry: 6 round grooves (t up to 0.12·D, r/t 0.15…2), 6 rectangular grooves (m/t
-0.6…2.5, both sides of the m/t = 1.4 correction, r/t 0…0.4) and 5 cross-bores (d_L/d
-0.03…0.3), the same steels and loads; a cross-bore's stresses on the net section.
+0.6…2.5, both sides of the m/t = 1.4 correction, r/t 0…0.4), 5 cross-bores (d_L/d
+0.03…0.3) and 4 V-notches (t/d 0.06…0.19), the same steels and loads; a cross-bore's
+stresses on the net section.
 
 The rectangular groove (umlaufende Rechtecknut), and why we differ from [din743py]:
 its ``UmlaufendeRechtecknut.rho_s`` reads ``10 ** -(0.514 + 0.00152 - sigma_S_d)``, i.e.
@@ -46,10 +49,14 @@ bounds β_σ ≤ 4, β_τ ≤ 2.5; the K_F of the groove is taken relative to R_
 test specimen (K_F(R_z)/K_F(20 µm)), as in [din743py].
 
 The round groove (umlaufende Rundnut) agrees between the two sources (A, B, C, z of α;
-G′ = 2·(1 + φ)/r and 1/r; the same n and φ) and with us.  The cross-bore is as in
-[din743py] only; no second source of its formulas was found (docs/shaft.md).
+G′ = 2·(1 + φ)/r and 1/r; the same n and φ) and with us.  The V-notch: the scripts
+have the slopes 0.109 and 0.0923 (times σ_B(d), with no division by 100 MPa) and not
+[din743py]'s constant terms 1.074 and 0.985 (β ≈ 70 for σ_B = 700 MPa, not a notch factor:
+an unfinished line), the factor 0.8 of torsion and d_BK = 15 mm as [din743py]; we follow
+[din743py].  The cross-bore is as in [din743py] only; no second source of its formulas
+was found (docs/shaft.md).
 
-The one difference, and why: for a case-hardening steel other than CrNiMo (16MnCr5,
+The difference of K_1B, and why: for a case-hardening steel other than CrNiMo (16MnCr5,
 20MnCr5, ...) [din743py] takes K_1 of the tensile strength from the branch of the
 quenched-and-tempered steels, 1 − 0.26·lg(d_eff/16 mm) (in ``din743_2.K_1`` the test
 ``zugfestigkeit and Werkstoff.Art.vergüteterStahl`` is always true), where we take
