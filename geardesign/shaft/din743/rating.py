@@ -1,7 +1,8 @@
 """One section of a shaft by DIN 743: the notch (shoulder, round groove, rectangular groove,
-V-notch, cross-bore, key seat, press fit, a notch of given β, or none), the material at its blank size, the stresses -> :class:`Rating` (every
-factor and both safeties).  Pure functions on plain data; [DIN743-1], [DIN743-2],
-[DIN743-3] through :mod:`.part1`, :mod:`.part2`, :mod:`.part3`."""
+V-notch, cross-bore, key seat, press fit, a notch of given β, or none), the material at its
+blank size, the stresses -> :class:`Rating` (every factor and both safeties).  Pure
+functions on plain data; [DIN743-1], [DIN743-2], [DIN743-3] through :mod:`.part1`,
+:mod:`.part2`, :mod:`.part3`."""
 
 from __future__ import annotations
 

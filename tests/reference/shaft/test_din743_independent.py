@@ -8,25 +8,24 @@ K_1S, K_2, K_Fσ, K_Fτ, β_σzd, β_σb, β_τ, K_σzd, K_σb, K_τ, σ_bWK, τ
 σ_zdADK, σ_bADK, τ_tADK, σ_zdFK, σ_bFK, τ_tFK, S_Dauer and S_Verform, each to ±0.5 %
 (they agree to round-off, ≤ 1e-9 relative, in every case).
 
-Cases: the four MEL1 examples of [din743py]'s tests/test_1.py —
-a shoulder on 50CrMo4 in load case 1 with a tensile force and non-rotating bending
-(published S_Dauer 2.3725…2.3735, S_Verform 1.4635…1.4645), a key seat on C50 with a
-hard surface layer in load case 2 (S_Dauer 1.4715…1.4725, S_Verform 2.5675…2.5685), a
-cross-bore of 4 mm in a 50 mm shaft of E335 in load case 2, MEL1 2022W (S_Dauer
-1.1045…1.1055, S_Verform 1.6065…1.6075; ``Querbohrung(50, 2)`` takes the hole's radius);
-and a V-notch (Spitzkerbe) of t = 10 mm at the root d = 60 mm in S235, load case 2,
-with a tensile force and non-rotating bending, MEL1 2024W #4 (only S_Verform published:
-0.2735…0.2745; no amplitude, S_Dauer infinite); all are also checked against those
-intervals, the key seat and the cross-bore also through the whole shaft calculator (the
-calculator's rotating shaft cannot carry the V-notch case's static bending).  Then 24
-random sections: 10 shoulders, 7 key seats, 7 press fits on quenched-and-tempered,
-structural, nitriding and CrNiMo case-hardening steels of random σ_B 500…1200 MPa, with random d 20…120 mm, shoulder height and fillet radius, blank
-diameter, bending moment, torque (pulsating, steady or reversed), axial force, R_z, K_V,
-load case and hard surface layer; 3 sections of high mean stress; and 21 random notches by
-geometry: 6 round grooves (t up to 0.12·D, r/t 0.15…2), 6 rectangular grooves (m/t
-0.6…2.5, both sides of the m/t = 1.4 correction, r/t 0…0.4), 5 cross-bores (d_L/d
-0.03…0.3) and 4 V-notches (t/d 0.06…0.19), the same steels and loads; a cross-bore's
-stresses on the net section.
+Cases: the four MEL1 examples of [din743py]'s tests/test_1.py — a shoulder on 50CrMo4 in
+load case 1 with a tensile force and non-rotating bending (published S_Dauer 2.3725…2.3735,
+S_Verform 1.4635…1.4645), a key seat on C50 with a hard surface layer in load case 2
+(S_Dauer 1.4715…1.4725, S_Verform 2.5675…2.5685), a cross-bore of 4 mm in a 50 mm shaft of
+E335 in load case 2, MEL1 2022W (S_Dauer 1.1045…1.1055, S_Verform 1.6065…1.6075;
+``Querbohrung(50, 2)`` takes the hole's radius); and a V-notch (Spitzkerbe) of t = 10 mm at
+the root d = 60 mm in S235, load case 2, with a tensile force and non-rotating bending, MEL1
+2024W #4 (only S_Verform published: 0.2735…0.2745; no amplitude, S_Dauer infinite); all are
+also checked against those intervals, the key seat and the cross-bore also through the whole
+shaft calculator (the calculator's rotating shaft cannot carry the V-notch case's static
+bending).  Then 24 random sections: 10 shoulders, 7 key seats, 7 press fits on
+quenched-and-tempered, structural, nitriding and CrNiMo case-hardening steels of random σ_B
+500…1200 MPa, with random d 20…120 mm, shoulder height and fillet radius, blank diameter,
+bending moment, torque (pulsating, steady or reversed), axial force, R_z, K_V, load case and
+hard surface layer; 3 sections of high mean stress; and 21 random notches by geometry: 6
+round grooves (t up to 0.12·D, r/t 0.15…2), 6 rectangular grooves (m/t 0.6…2.5, both sides
+of the m/t = 1.4 correction, r/t 0…0.4), 5 cross-bores (d_L/d 0.03…0.3) and 4 V-notches (t/d
+0.06…0.19), the same steels and loads; a cross-bore's stresses on the net section.
 
 The rectangular groove (umlaufende Rechtecknut), and why we differ from [din743py]:
 its ``UmlaufendeRechtecknut.rho_s`` reads ``10 ** -(0.514 + 0.00152 - sigma_S_d)``, i.e.
