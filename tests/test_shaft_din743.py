@@ -8,6 +8,7 @@ import math
 
 import pytest
 from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from geardesign.core.registry import run_data
 from geardesign.core.spec import parse_toml
@@ -317,6 +318,35 @@ def test_random_shafts_have_finite_positive_din_safeties(case):
             assert d.K_sigma > 0 and d.K_tau > 0 and d.notch.beta_b >= 1.0
             for v in (d.sigma_WK, d.tau_WK, d.sigma_ADK, d.tau_ADK, d.sigma_FK, d.tau_FK):
                 assert math.isfinite(v)
+
+
+@settings(max_examples=40, deadline=None)
+@given(shafts(), st.sampled_from(["round", "rectangular", "V"]), st.floats(0.06, 0.15))
+def test_random_grooved_shafts_have_finite_positive_din_safeties(case, shape, f):
+    """Every step but the last with a groove of that shape (depth f·d/2 within each
+    shape's domain) and a cross-bore of 0.1·d: finite, positive safeties, β >= 1, and the
+    sections at the groove roots and the holes exist."""
+    from dataclasses import replace
+
+    steps, loads, supports = case
+    grooved = []
+    for i, s in enumerate(steps):
+        t = f * s.diameter / 2.0
+        g = {} if i == len(steps) - 1 else {
+            "round": {"groove_depth": t, "groove_radius": t},
+            "rectangular": {"groove_depth": t, "groove_width": 1.4 * t,
+                            "groove_radius": 0.1 * t},
+            "V": {"groove_depth": t, "groove_shape": "V"}}[shape]
+        grooved.append(replace(s, cross_bore=0.1 * s.diameter, **g))
+    r = analyse(grooved, loads, supports, DIN_MAT, Options(speed=100.0, method="DIN743"))
+    labels = [s.label for s in r.sections]
+    assert sum("cross-bore" in lb for lb in labels) == len(steps)
+    for s in r.sections:
+        assert s.S_static > 0 and s.S > 0
+        d = s.din
+        assert d.notch.beta_b >= 1.0 and d.notch.beta_t >= 1.0
+        for v in (d.sigma_WK, d.tau_WK, d.sigma_ADK, d.tau_ADK, d.sigma_FK, d.tau_FK):
+            assert math.isfinite(v)
 
 
 # ------------------------------------------------------------------ formulas by hand
