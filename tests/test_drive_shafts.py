@@ -456,3 +456,41 @@ def test_external_load_outside_the_steps():
     with pytest.raises(InputError) as e:
         run_data(_with_load(_fast(), position=900.0, force=100.0))
     assert "shaft[2].load[0].position" in str(e.value)
+
+
+def test_elastic_bearings_tilt_the_shaft_by_superposition():
+    """Bearing stiffnesses on the intermediate shaft: the bearing loads stay (two supports:
+    statically determinate), each bearing deflects by w = −R/c in each plane, and the slope
+    at each gear grows by the rigid-body tilt (w_B − w_A)/L (superposition, [Roark])."""
+    rigid = run_data(_fast()).document()["results"]
+    d = _fast()
+    c_A, c_B = 2.0e5, 5.0e5
+    d["shaft"][1].update(stiffness_a=c_A, stiffness_b=c_B)
+    soft = run_data(d).document()["results"]
+    assert [b["F_r"] for b in soft["bearings"]] == pytest.approx(
+        [b["F_r"] for b in rigid["bearings"]], rel=1e-9)
+    sup = soft["shaft_reports"][1]["results"]["supports"]
+    A, B = sup
+    L = B["x"] - A["x"]
+    arcmin = 180 * 60 / math.pi
+    tilt_y = (-B["R_y"] / c_B + A["R_y"] / c_A) / L * arcmin
+    tilt_z = (-B["R_z"] / c_B + A["R_z"] / c_A) / L * arcmin
+    for p in (A, B):
+        c = c_A if p is A else c_B
+        assert p["w"] == pytest.approx(math.hypot(p["R_y"], p["R_z"]) / c, rel=1e-9)
+    g0 = [g for g in rigid["shaft_gears"] if g["shaft"] == 2]
+    g1 = [g for g in soft["shaft_gears"] if g["shaft"] == 2]
+    for a, b in zip(g0, g1):
+        assert b["slope_x"] - a["slope_x"] == pytest.approx(tilt_y, rel=1e-6, abs=1e-9)
+        assert b["slope_y"] - a["slope_y"] == pytest.approx(tilt_z, rel=1e-6, abs=1e-9)
+    f0 = {r["stage"]: r["f_sh"] for r in rigid["face_load"]}
+    f1 = {r["stage"]: r["f_sh"] for r in soft["face_load"]}
+    assert f1 != pytest.approx(f0)
+
+
+def test_bearing_stiffness_domain():
+    d = _fast()
+    d["shaft"][1]["stiffness_a"] = 10.0
+    with pytest.raises(InputError) as e:
+        run_data(d)
+    assert "shaft[1].stiffness_a" in str(e.value)

@@ -173,7 +173,7 @@ def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed:
     supports = []
     for side in ("a", "b"):
         _, typ, _ = _bearing_data(bearings[side])
-        supports.append(Support(sh[f"bearing_{side}"] - start, None,
+        supports.append(Support(sh[f"bearing_{side}"] - start, sh.get(f"stiffness_{side}"),
                                 typ if typ in BEARING_TYPES else "other",
                                 axial=sh["fixed"] == side, name=side.upper()))
     strength = {k_: v for k_, v in (sh["strength"] or {}).items() if v is not None}
@@ -189,8 +189,10 @@ def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed:
                                           ("moment_z", ld.moment_z), ("mass", ld.mass),
                                           ("module", ld.module)) if v is not None}
                      for ld in loads],
-            "support": [{"name": s.name, "position": s.position, "type": s.type,
-                         "axial": s.axial} for s in supports]}
+            "support": [{k_: v for k_, v in (("name", s.name), ("position", s.position),
+                                             ("type", s.type), ("axial", s.axial),
+                                             ("stiffness", s.stiffness)) if v is not None}
+                        for s in supports]}
     try:
         _, spec = load_data(data, key)
         m = SC.model(spec)

@@ -112,6 +112,11 @@ SHAFT = Table("shaft", "a shaft on two bearings", (
     Field("bearing_b", "number", "position of bearing B along the shaft", "mm", "z_B",
           minimum=-1e5, maximum=1e5, example=160.0),
     Field("fixed", "string", "bearing that takes the axial load", default="a", choices=("a", "b")),
+    Field("stiffness_a", "number", "radial stiffness of bearing A for the beam model of an "
+          "analysed shaft (its deflection tilts the shaft at the gears)", "N/mm", "c_A",
+          default=None, minimum=1e3, maximum=1e9, hint="default: rigid"),
+    Field("stiffness_b", "number", "radial stiffness of bearing B, as stiffness_a", "N/mm",
+          "c_B", default=None, minimum=1e3, maximum=1e9, hint="default: rigid"),
     Field("method", "string", "bearing life method (see geardesign schema bearing)",
           default="gost18855_94", choices=("gost18855_94", "iso281_2007")),
     TableList("gear", "gears on the shaft", GEAR_ON_SHAFT, max_items=4),
@@ -224,7 +229,8 @@ SCHEMA = SpecSchema(
                            "file = a spec of any stage kind in this spec's folder"),
             TableList("shaft", "shafts on two bearings: bearing loads and lives", SHAFT,
                       required=False, max_items=21, in_template=False,
-                      hint="keys: index, bearing_a, bearing_b, fixed, method, [[shaft.gear]] "
+                      hint="keys: index, bearing_a, bearing_b, fixed, method, stiffness_a, "
+                           "stiffness_b, [[shaft.gear]] "
                            "(stage, position, mate_angle, axial_sign), [[shaft.load]] "
                            "(position, force, angle, axial), [shaft.support_a], "
                            "[shaft.support_b]; see specs/drive_two_stage_reducer.toml; with "
