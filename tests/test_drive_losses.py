@@ -13,7 +13,6 @@ from hypothesis import strategies as st
 
 from geardesign.core.registry import run_data
 from geardesign.core.spec import load_toml
-from geardesign.drive import heat as HEAT
 from geardesign.drive import losses as L
 from geardesign.drive import thermal as TH
 from tests.helpers_cli import cli, write_spec

@@ -494,3 +494,13 @@ def test_bearing_stiffness_domain():
     with pytest.raises(InputError) as e:
         run_data(d)
     assert "shaft[1].stiffness_a" in str(e.value)
+
+
+def test_a_bearing_load_beyond_the_bearing_calculator_says_where_it_comes_from():
+    """An external force within its own domain can give a bearing load beyond the bearing
+    calculator's: one line that says the load is the drive's and what to change."""
+    with pytest.raises(InputError) as e:
+        run_data(_with_load(_fast(), position=284.0, force=1e8))
+    msg = str(e.value)
+    assert "shaft[2].support_b: load.F_r" in msg
+    assert "the bearing load the drive computes from the forces on the shaft" in msg

@@ -34,9 +34,10 @@ MATS = {
 }
 
 
-def planetary_doc() -> dict:
-    """A stepped 2K-H train: sun 18 – planet 27, planet2 = Z1 – ring Z2 (ring fixed)."""
-    return run_data({
+def planetary_data(**strength) -> dict:
+    """A stepped 2K-H train: sun 18 – planet 27, planet2 = Z1 – ring Z2 (ring fixed);
+    ``strength`` adds keys to its [strength] table."""
+    return {
         "kind": "planetary",
         "train": {"scheme": "2K-H-stepped", "planets": PLANETS, "module": M, "face_width": B},
         "teeth": {"sun": 18, "planet": 27, "planet2": Z1, "ring": Z2},
@@ -45,9 +46,14 @@ def planetary_doc() -> dict:
         "cutter": {"teeth": Z0},
         "operation": {"fixed": "ring", "input": "sun", "output": "carrier", "speed": N_IN,
                       "torque": T_IN},
-        "strength": {"life_hours": LIFE, "load_sharing": 1.0},
+        "strength": {"life_hours": LIFE, "load_sharing": 1.0, **strength},
         "material": {"sun": MATS["pinion"], "planet": MATS["pinion"], "ring": MATS["wheel"]},
-    }).document()
+    }
+
+
+def planetary_doc() -> dict:
+    """The train of :func:`planetary_data`, rated to GOST 21354-87."""
+    return run_data(planetary_data()).document()
 
 
 def spur_doc(T1: float | None = None, n1: float | None = None, **gear) -> dict:
@@ -227,18 +233,7 @@ def test_bad_input_one_line_exit_2(tmp_path, over, line):
 def test_iso6336_stresses_equal_planetary_mesh():
     """ISO 6336:2019 with its internal-gear rules (Z_D = 1, ρ_red with r2 − r1, the internal
     gear's Y_F, Y_S as a rack): the same in both calculators."""
-    data = {
-        "kind": "planetary",
-        "train": {"scheme": "2K-H-stepped", "planets": PLANETS, "module": M, "face_width": B},
-        "teeth": {"sun": 18, "planet": 27, "planet2": Z1, "ring": Z2},
-        "shift": {"sun": 0.0, "planet": 0.0, "planet2": X1, "ring": X2},
-        "ring": {"tip_shortening": K2},
-        "cutter": {"teeth": Z0},
-        "operation": {"fixed": "ring", "input": "sun", "output": "carrier", "speed": N_IN,
-                      "torque": T_IN},
-        "strength": {"life_hours": LIFE, "load_sharing": 1.0, "method": "ISO 6336:2019"},
-        "material": {"sun": MATS["pinion"], "planet": MATS["pinion"], "ring": MATS["wheel"]},
-    }
+    data = planetary_data(method="ISO 6336:2019")
     st = run_data(data).document()["results"]["strength_planet2_ring"]
     s = run_data({"kind": "spur", "gear": {
         "internal": True, "module": M, "z1": Z1, "z2": Z2, "x1": X1, "x2": X2, "face_width": B,

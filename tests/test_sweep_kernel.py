@@ -114,6 +114,18 @@ def _spec_of(base: dict, c: dict, i: int) -> dict:
     return d
 
 
+def _calculator_checks(base: dict, c: dict, out: dict, n: int):
+    """``(i, document, {code: passed})`` of the calculator for each of the first ``n``
+    candidates it accepts; a candidate it refuses must be invalid in the kernel too."""
+    for i in range(n):
+        try:
+            doc = run_data(_spec_of(base, c, i)).document()
+        except InputError:
+            assert not out["valid"][i]
+            continue
+        yield i, doc, {ch["code"]: ch["passed"] for ch in doc["checks"]}
+
+
 def test_kernel_checks_equal_the_calculator():
     """The pass/fail of each error check of the kernel is the calculator's, pair by pair."""
     base = load_toml(SPECS / "spur_reducer_through_hardened.toml")
@@ -123,14 +135,7 @@ def test_kernel_checks_equal_the_calculator():
     c = _candidates(300, 4)
     out = evaluate(c, f)
     seen = 0
-    for i in range(300):
-        d = _spec_of(base, c, i)
-        try:
-            doc = run_data(d).document()
-        except InputError:
-            assert not out["valid"][i]
-            continue
-        checks = {ch["code"]: ch["passed"] for ch in doc["checks"]}
+    for i, _, checks in _calculator_checks(base, c, out, 300):
         for code in ERROR_CODES:
             if code in checks:
                 assert bool(out["ok_" + code][i]) == checks[code], (i, code)
@@ -250,14 +255,7 @@ def test_iso_kernel_checks_equal_the_calculator():
     c = _candidates(300, 15)
     out = evaluate(c, f)
     seen = passed = 0
-    for i in range(300):
-        d = _spec_of(base, c, i)
-        try:
-            doc = run_data(d).document()
-        except InputError:
-            assert not out["valid"][i]
-            continue
-        checks = {ch["code"]: ch["passed"] for ch in doc["checks"]}
+    for i, doc, checks in _calculator_checks(base, c, out, 300):
         checks.setdefault("STRENGTH_NOT_RATED", True)
         for code in ISO_CODES:
             if code in checks:

@@ -18,7 +18,7 @@ from geardesign.core.registry import run_data
 from geardesign.core.result import DataTable, Result, check
 from geardesign.core.spec import ValidatedSpec, load_toml
 from geardesign.drive import split as SPLIT
-from geardesign.drive.shafts import external_load, reactions
+from geardesign.drive.shafts import GearLoad, external_loads, reactions
 from geardesign.drive.stages import ADAPTERS, Duty, StageRun
 
 DRIVE_KEYS = ("name", "file", "efficiency")
@@ -304,7 +304,7 @@ def _shaft_rotation(runs: list[StageRun]) -> list[int]:
     return s
 
 
-def shaft_loads(sh: dict, k: int, runs: list[StageRun]) -> list[tuple[dict, int, "GearLoad"]]:
+def shaft_loads(sh: dict, k: int, runs: list[StageRun]) -> list[tuple[dict, int, GearLoad]]:
     """The gears of the k-th [[shaft]]: ``(gear table, member, GearLoad)``, member 0 the
     input member of the stage, 1 its output member."""
     idx, key = sh["index"], f"shaft[{k}]"
@@ -326,12 +326,6 @@ def shaft_loads(sh: dict, k: int, runs: list[StageRun]) -> list[tuple[dict, int,
                                                      math.radians(g["mate_angle"]),
                                                      g["axial_sign"])))
     return out
-
-
-def external_loads(sh: dict) -> list["GearLoad"]:
-    """The ``[[shaft.load]]`` forces of a shaft as point loads (:func:`.shafts.external_load`)."""
-    return [external_load(ld["force"], math.radians(ld["angle"]), ld["position"], ld["axial"])
-            for ld in sh.get("load") or []]
 
 
 def shaft_cases(shafts: list, runs: list[StageRun], n_m: float, L_h: float) -> list[dict]:
@@ -372,8 +366,18 @@ def run_bearing(case: dict) -> Result:
     try:
         return run_data(case["data"], where)
     except InputError as exc:
-        raise InputError([Problem(f"{where}: {p.key}", p.message, p.value)
-                          for p in exc.problems]) from None
+        raise InputError([_bearing_problem(where, p) for p in exc.problems]) from None
+
+
+def _bearing_problem(where: str, p: Problem) -> Problem:
+    """A problem of a bearing spec the drive built: its ``load`` table is the drive's (the
+    reactions of the shaft), so say so and what to change instead of naming a key the
+    designer never wrote."""
+    if p.key.startswith("load."):
+        return Problem(f"{where}: {p.key}", f"{p.message} — this is the bearing load the drive "
+                       f"computes from the forces on the shaft: reduce them (torque, external "
+                       f"loads) or move the bearings", p.value)
+    return Problem(f"{where}: {p.key}", p.message, p.value)
 
 
 def _bearing_runs(shafts: list, runs: list[StageRun], n_m: float, L_h: float,

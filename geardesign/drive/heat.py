@@ -11,7 +11,6 @@ efficiency (or the one the spec gives); its loss (1 − η)·P_in heats the oil 
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 from geardesign.drive import losses as L

@@ -35,7 +35,7 @@ from dataclasses import dataclass, field
 from geardesign.core.errors import InputError, Problem
 from geardesign.core.registry import load_data
 from geardesign.core.result import DataTable, Result, check
-from geardesign.drive.shafts import GearLoad, external_load, gear_force
+from geardesign.drive.shafts import GearLoad, external_loads, gear_force
 from geardesign.shaft import calculator as SC
 from geardesign.spur.geometry import disc_mass
 from geardesign.shaft.solve import ARCMIN, Load, ShaftResult, Support, analyse
@@ -116,6 +116,11 @@ def _coupling(sh: dict, span) -> float:
     return a if lo - a > b - hi else b
 
 
+def _no_round_off(*values: float) -> tuple[float, ...]:
+    """Round-off (cos 90° = 6e-17) is no load: the spec refuses magnitudes below 1e-6."""
+    return tuple(v if abs(v) >= 1e-6 else 0.0 for v in values)
+
+
 def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed: float,
               rotation: int, n_shafts: int, peak: float, stage_modules: dict,
               K_A: float = 1.0) -> ShaftRun:
@@ -144,9 +149,7 @@ def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed:
     loads = []
     for g in gears:
         (fx, fy, fz), (px, py, _) = gear_force(g.load, rotation)
-        # round-off (cos 90° = 6e-17) is no load: the spec refuses magnitudes below 1e-6
-        fx, fy, fz = (v if abs(v) >= 1e-6 else 0.0 for v in (fx, fy, fz))
-        px, py = (v if abs(v) >= 1e-6 else 0.0 for v in (px, py))
+        fx, fy, fz, px, py = _no_round_off(fx, fy, fz, px, py)
         mass = sh["gear"][g.index].get("mass")
         if mass is None:
             # a solid disc of the pitch diameter and the face width
@@ -157,11 +160,10 @@ def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed:
                           mass=mass,
                           name=f"gear of stage {g.stage}",
                           module=stage_modules.get(g.stage, (None, 0.0))[0]))
-    for j, el in enumerate(sh.get("load") or []):
+    for j, (el, pl) in enumerate(zip(sh.get("load") or [], external_loads(sh))):
         _inside(span, el["position"], f"{key}.load[{j}].position", "the load")
-        (fx, fy, fz), _ = gear_force(external_load(el["force"], math.radians(el["angle"]),
-                                                   el["position"], el["axial"]), rotation)
-        fx, fy, fz = (v if abs(v) >= 1e-6 else 0.0 for v in (fx, fy, fz))
+        (fx, fy, fz), _ = gear_force(pl, rotation)
+        fx, fy, fz = _no_round_off(fx, fy, fz)
         loads.append(Load(el["position"] - start, Fy=fx, Fz=fy, Fx=fz,
                           mass=el["mass"] or 0.0, name=el["name"] or f"load {j + 1}"))
     T_rest = -sum(g.torque for g in gears)

@@ -69,6 +69,13 @@ def external_load(force: float, angle: float, z: float, axial: float = 0.0) -> G
                     axial_sign=-1 if axial < 0 else 1)
 
 
+def external_loads(sh: dict) -> list[GearLoad]:
+    """The ``[[shaft.load]]`` tables of a shaft spec (force [N], angle [deg], position [mm],
+    axial [N]) as point loads (:func:`external_load`)."""
+    return [external_load(ld["force"], math.radians(ld["angle"]), ld["position"], ld["axial"])
+            for ld in sh.get("load") or []]
+
+
 def gear_force(g: GearLoad, rotation: int) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
     """Force vector on the gear and its point of application (x, y, z) in mm."""
     ex, ey = math.cos(g.mate_angle), math.sin(g.mate_angle)

@@ -23,7 +23,6 @@ so the root is unique.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 from geardesign.drive.losses import G, data

@@ -157,8 +157,8 @@ def coaxiality_checks(meshes: list[Mesh], tol: float, needed: dict, sign_note: d
         x = needed[ring]
         fix = (f"set shift.{ring} = {x:.4f} ({sign_note[ring]}) or give train.center_distance "
                f"and let the shifts follow" if math.isfinite(x) and abs(x) <= SHIFT_REASONABLE
-               else f"no reasonable ring shift makes them coaxial; change the tooth numbers "
-                    f"(with equal modules the ring needs about z_sun + 2·z_planet teeth)")
+               else "no reasonable ring shift makes them coaxial; change the tooth numbers "
+                    "(with equal modules the ring needs about z_sun + 2·z_planet teeth)")
         out.append(check(
             f"{mesh.name.upper()}_COAXIALITY", abs(d) <= tol, "error",
             f"the {mn} mesh runs at a_w = {mesh.geom.a_w:.4f} mm, the sun–planet mesh at "

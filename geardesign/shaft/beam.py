@@ -69,6 +69,18 @@ def assemble(x: np.ndarray, EI: np.ndarray, mass: np.ndarray | None = None):
     return K, M
 
 
+def _supported(K: np.ndarray, supports: list[tuple[int, float | None]]) -> np.ndarray:
+    """Add the springs of the elastic supports to ``K`` (in place) and return the free
+    degrees of freedom (a rigid support fixes its node's deflection)."""
+    fixed = set()
+    for node, k in supports:
+        if k is None:
+            fixed.add(2 * node)
+        else:
+            K[2 * node, 2 * node] += k
+    return np.array([i for i in range(K.shape[0]) if i not in fixed])
+
+
 def solve_plane(x: np.ndarray, EI: np.ndarray, forces: np.ndarray, couples: np.ndarray,
                 supports: list[tuple[int, float | None]]) -> PlaneSolution:
     """Static solution in one plane.
@@ -86,14 +98,7 @@ def solve_plane(x: np.ndarray, EI: np.ndarray, forces: np.ndarray, couples: np.n
     F[0::2] = forces
     F[1::2] = couples
     Ks = K.copy()
-    fixed = []
-    for node, k in supports:
-        if k is None:
-            fixed.append(2 * node)
-        else:
-            Ks[2 * node, 2 * node] += k
-    fixed_set = set(fixed)
-    free = np.array([i for i in range(2 * n) if i not in fixed_set])
+    free = _supported(Ks, supports)
     u = np.zeros(2 * n)
     u[free] = np.linalg.solve(Ks[np.ix_(free, free)], F[free])
     # force of each support on the shaft: rigid from the residual, springs from -k·w
@@ -122,17 +127,9 @@ def first_bending_frequency(x: np.ndarray, EI: np.ndarray, mass: np.ndarray,
     It is solved as the largest μ = 1/λ of M·φ = μ·K·φ, which stays well conditioned when
     the point masses outweigh the shaft by orders of magnitude.
     """
-    n = len(x)
     K, M = assemble(x, EI, mass)
     M[0::2, 0::2] += np.diag(point_masses)
-    fixed = []
-    for node, k in supports:
-        if k is None:
-            fixed.append(2 * node)
-        else:
-            K[2 * node, 2 * node] += k
-    fixed_set = set(fixed)
-    free = np.array([i for i in range(2 * n) if i not in fixed_set])
+    free = _supported(K, supports)
     # largest μ of M·φ = μ·K·φ (K positive definite, M may be nearly singular) = 1/λ_min:
     # with K = L·Lᵀ it is the largest eigenvalue of the symmetric L⁻¹·M·L⁻ᵀ (numpy only)
     Kf, Mf = K[np.ix_(free, free)], M[np.ix_(free, free)]

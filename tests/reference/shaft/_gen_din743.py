@@ -87,6 +87,32 @@ def run(case: dict, K_1B: float | None = None, own: bool = False) -> dict:
     return {k: float(getattr(c, k)) for k in OUT}
 
 
+def _random_material_and_loads(rng: random.Random, case: dict, typ: str, D: float, d: float,
+                               M_hi: float, T_hi: float) -> None:
+    """Fill ``case`` with a random steel of type ``typ``, d_eff, load case, R_z, K_V, surface
+    and the loads: bending up to M_hi·d³/100 N·m (σ_b ≈ 20…150 MPa for 1.5), torque up to
+    T_hi·d³/100 N·m (τ ≈ 0…150 MPa for 3.0) split by a random torsion cycle."""
+    sB = round(rng.uniform(500.0, 1200.0), 0)
+    sS = round(sB * rng.uniform(0.6, 0.85), 0)
+    dB, dBS = D_B[typ]
+    case["material"] = {"type": typ, "sigma_B": sB, "sigma_S": sS, "d_B": dB, "d_B_S": dBS}
+    case["d_eff"] = round(D + rng.uniform(0.0, 40.0), 1)
+    case["load_case"] = rng.choice([1, 2])
+    case["Rz"] = round(rng.uniform(1.0, 25.0), 1)
+    case["K_V"] = round(rng.choice([1.0, 1.0, 1.1, 1.2]), 2)
+    case["hard_surface"] = rng.random() < 0.2
+    kp = round(rng.uniform(1.3, 2.5), 2)
+    M = round(rng.uniform(0.2, M_hi) * d ** 3 / 1000.0 * 10.0, 3)
+    T = round(rng.uniform(0.0, T_hi) * d ** 3 / 1000.0 * 10.0, 3)
+    F = round(rng.choice([0.0, rng.uniform(0.0, 20.0) * d * d]), 1)
+    cycle = rng.choice(["pulsating", "steady", "reversed"])
+    ta, tm = {"pulsating": (T / 2, T / 2), "steady": (0.0, T), "reversed": (T, 0.0)}[cycle]
+    case["torsion_cycle"] = cycle
+    case["peak_factor"] = kp
+    case["loads"] = {"F_zdm": F, "F_zdmax": kp * F, "M_bm": 0.0, "M_ba": M,
+                     "M_bmax": kp * M, "M_tm": tm, "M_ta": ta, "M_tmax": kp * T}
+
+
 def cases() -> list[dict]:
     out = [
         {"name": "MEL1 2024W #1 (shoulder, 50CrMo4, load case 1)", "notch": "shoulder",
@@ -123,26 +149,7 @@ def cases() -> list[dict]:
             D = d + 2.0 * t
             r = round(rng.uniform(0.08, 1.2) * t, 2)
             case.update(D=D, r=r)
-        sB = round(rng.uniform(500.0, 1200.0), 0)
-        sS = round(sB * rng.uniform(0.6, 0.85), 0)
-        dB, dBS = D_B[typ]
-        case["material"] = {"type": typ, "sigma_B": sB, "sigma_S": sS, "d_B": dB,
-                            "d_B_S": dBS}
-        case["d_eff"] = round(D + rng.uniform(0.0, 40.0), 1)
-        case["load_case"] = rng.choice([1, 2])
-        case["Rz"] = round(rng.uniform(1.0, 25.0), 1)
-        case["K_V"] = round(rng.choice([1.0, 1.0, 1.1, 1.2]), 2)
-        case["hard_surface"] = rng.random() < 0.2
-        kp = round(rng.uniform(1.3, 2.5), 2)
-        M = round(rng.uniform(0.2, 1.5) * d ** 3 / 1000.0 * 10.0, 3)  # σ_b ≈ 20…150 MPa
-        T = round(rng.uniform(0.0, 3.0) * d ** 3 / 1000.0 * 10.0, 3)   # τ ≈ 0…150 MPa
-        F = round(rng.choice([0.0, rng.uniform(0.0, 20.0) * d * d]), 1)
-        cycle = rng.choice(["pulsating", "steady", "reversed"])
-        ta, tm = {"pulsating": (T / 2, T / 2), "steady": (0.0, T), "reversed": (T, 0.0)}[cycle]
-        case["torsion_cycle"] = cycle
-        case["peak_factor"] = kp
-        case["loads"] = {"F_zdm": F, "F_zdmax": kp * F, "M_bm": 0.0, "M_ba": M,
-                         "M_bmax": kp * M, "M_tm": tm, "M_ta": ta, "M_tmax": kp * T}
+        _random_material_and_loads(rng, case, typ, D, d, 1.5, 3.0)
         out.append(case)
     # high mean stress: the yield branches of σ_ADK, τ_ADK (eqs. (13), (14), (18), (19))
     for j, (kind, lc, typ) in enumerate((("key", 1, "structural"), ("key", 2, "structural"),
@@ -209,26 +216,7 @@ def groove_cases() -> list[dict]:
             d = round(D / (1.0 + 2.0 * rng.uniform(0.06, 0.19)), 2)
             case.update(d=d, D=D)
         d = case["d"]
-        sB = round(rng.uniform(500.0, 1200.0), 0)
-        sS = round(sB * rng.uniform(0.6, 0.85), 0)
-        dB, dBS = D_B[typ]
-        case["material"] = {"type": typ, "sigma_B": sB, "sigma_S": sS, "d_B": dB,
-                            "d_B_S": dBS}
-        case["d_eff"] = round(D + rng.uniform(0.0, 40.0), 1)
-        case["load_case"] = rng.choice([1, 2])
-        case["Rz"] = round(rng.uniform(1.0, 25.0), 1)
-        case["K_V"] = round(rng.choice([1.0, 1.0, 1.1, 1.2]), 2)
-        case["hard_surface"] = rng.random() < 0.2
-        kp = round(rng.uniform(1.3, 2.5), 2)
-        M = round(rng.uniform(0.2, 1.2) * d ** 3 / 1000.0 * 10.0, 3)
-        T = round(rng.uniform(0.0, 2.5) * d ** 3 / 1000.0 * 10.0, 3)
-        F = round(rng.choice([0.0, rng.uniform(0.0, 20.0) * d * d]), 1)
-        cycle = rng.choice(["pulsating", "steady", "reversed"])
-        ta, tm = {"pulsating": (T / 2, T / 2), "steady": (0.0, T), "reversed": (T, 0.0)}[cycle]
-        case["torsion_cycle"] = cycle
-        case["peak_factor"] = kp
-        case["loads"] = {"F_zdm": F, "F_zdmax": kp * F, "M_bm": 0.0, "M_ba": M,
-                         "M_bmax": kp * M, "M_tm": tm, "M_ta": ta, "M_tmax": kp * T}
+        _random_material_and_loads(rng, case, typ, D, d, 1.2, 2.5)
         out.append(case)
     return out
 

@@ -173,25 +173,32 @@ def test_case_hardening_K1B_differs_as_documented():
                         rel_tol=1e-12)
 
 
+def _mel1_shaft(shaft: dict, grade: str, step: dict, M: float, T: float) -> dict:
+    """A MEL1 section as a shaft: one 400 mm step simply supported at its ends, a central
+    force that bends the middle by ``M`` [N·m], a steady torque ``T`` [N·m] from the middle
+    to the right end, R_z = 25 µm, d_eff = 80 mm, DIN 743 load case 2; the document."""
+    from geardesign.core.registry import load_data
+
+    data = {"kind": "shaft",
+            "shaft": {"speed": 100.0, "torsion_cycle": "steady", "Rz": 25.0,
+                      "method": "DIN743", "din743_load_case": 2, **shaft},
+            "material": {"grade": grade, "d_eff": 80.0},
+            "step": [{"length": 400.0, **step}],
+            "load": [{"position": 200.0, "Fz": 4.0 * M / 0.4, "torque": T},
+                     {"position": 400.0, "torque": -T}],
+            "support": [{"position": 0.0}, {"position": 400.0}]}
+    calc, spec = load_data(data, "mel1.toml")
+    return calc.compute(spec).document()
+
+
 def test_mel1_key_seat_through_the_shaft_calculator():
     """MEL1 2024W #2 as a shaft: a keyed 60 mm shaft of C50 (d_eff = 80 mm, hard surface
     layer, load case 2), simply supported over 400 mm, a central force that bends it by
     M = 1402.294 N·m, a steady torque of 1336.902 N·m from the middle to the right end,
     peak factor 1.8: the section at the force is the critical one, with the published
     S_Dauer 1.4715…1.4725 and S_Verform 2.5675…2.5685 of [din743py]'s tests."""
-    from geardesign.core.registry import load_data
-
-    data = {"kind": "shaft",
-            "shaft": {"speed": 100.0, "peak_factor": 1.8, "torsion_cycle": "steady",
-                      "Rz": 25.0, "method": "DIN743", "din743_load_case": 2,
-                      "din743_hard_surface": True},
-            "material": {"grade": "C50", "d_eff": 80.0},
-            "step": [{"length": 400.0, "diameter": 60.0, "keyway": True}],
-            "load": [{"position": 200.0, "Fz": 4.0 * 1402.294 / 0.4, "torque": 1336.902},
-                     {"position": 400.0, "torque": -1336.902}],
-            "support": [{"position": 0.0}, {"position": 400.0}]}
-    calc, spec = load_data(data, "mel1.toml")
-    doc = calc.compute(spec).document()
+    doc = _mel1_shaft({"peak_factor": 1.8, "din743_hard_surface": True}, "C50",
+                      {"diameter": 60.0, "keyway": True}, 1402.294, 1336.902)
     st = doc["results"]["strength"]
     assert st["critical_section"] == "load 1"
     assert 1.4715 <= st["S"] <= 1.4725
@@ -205,18 +212,8 @@ def test_mel1_cross_bore_through_the_shaft_calculator():
     M = 1088.802 N·m, a steady torque of 596.831 N·m runs from the middle to the right end,
     peak factor 2: the cross-bore is the critical section, with the published S_Dauer
     1.1045…1.1055 and S_Verform 1.6065…1.6075 of [din743py]'s tests."""
-    from geardesign.core.registry import load_data
-
-    data = {"kind": "shaft",
-            "shaft": {"speed": 100.0, "peak_factor": 2.0, "torsion_cycle": "steady",
-                      "Rz": 25.0, "method": "DIN743", "din743_load_case": 2},
-            "material": {"grade": "E335", "d_eff": 80.0},
-            "step": [{"length": 400.0, "diameter": 50.0, "cross_bore": 4.0}],
-            "load": [{"position": 200.0, "Fz": 4.0 * 1088.802 / 0.4, "torque": 596.831},
-                     {"position": 400.0, "torque": -596.831}],
-            "support": [{"position": 0.0}, {"position": 400.0}]}
-    calc, spec = load_data(data, "mel1.toml")
-    doc = calc.compute(spec).document()
+    doc = _mel1_shaft({"peak_factor": 2.0}, "E335", {"diameter": 50.0, "cross_bore": 4.0},
+                      1088.802, 596.831)
     st = doc["results"]["strength"]
     assert st["critical_section"] == "load 1 / cross-bore in step 1"
     fat = next(r for r in doc["results"]["fatigue"] if r["label"] == st["critical_section"])

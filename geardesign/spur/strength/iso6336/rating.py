@@ -207,10 +207,10 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
                  "f_fα", "profile form deviation (larger of the pair)"
                  + (" (given)" if iso.f_falpha is not None else ""),
                  "spec" if iso.f_falpha is not None else S1328)
-    F_beta = R.put(F, "F_beta", iso.F_beta if iso.F_beta is not None else max(Fb), "µm", "F_β",
-                   "total helix deviation (larger of the pair)"
-                   + (" (given)" if iso.F_beta is not None else ""),
-                   "spec" if iso.F_beta is not None else S1328)
+    R.put(F, "F_beta", iso.F_beta if iso.F_beta is not None else max(Fb), "µm", "F_β",
+          "total helix deviation (larger of the pair)"
+          + (" (given)" if iso.F_beta is not None else ""),
+          "spec" if iso.F_beta is not None else S1328)
     f_Hb = max(fHb)
 
     # ------------------------------------------------------------------ stiffness
@@ -355,8 +355,8 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
     Z_R = R.factor(C, "Z_R", lambda: P2.z_r(s_min, Rz[0], Rz[1], rho), "-", "Z_R",
                    "roughness factor", S2)
     hard = [t in T.SURFACE_HARDENED for t in types]
-    S_Hmin = R.put(C, "S_Hmin", iso.S_Hmin, "-", "S_Hmin", "required safety factor, pitting",
-                   "spec" if iso.S_Hmin != 1.0 else "spec default")
+    R.put(C, "S_Hmin", iso.S_Hmin, "-", "S_Hmin", "required safety factor, pitting",
+          "spec" if iso.S_Hmin != 1.0 else "spec default")
     sHG = []
     for i in range(2):
         k, who = i + 1, WHO[i]
@@ -395,8 +395,8 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
                       "-", "Y_β", "helix angle factor", S3)
     eps_an = g.eps_alpha / (cb * cb)
     Y_DT = R.factor(B, "Y_DT", lambda: P3.y_dt(eps_an, A), "-", "Y_DT", "deep tooth factor", S3)
-    S_Fmin = R.put(B, "S_Fmin", iso.S_Fmin, "-", "S_Fmin", "required safety factor, bending",
-                   "spec" if iso.S_Fmin != 1.4 else "spec default")
+    R.put(B, "S_Fmin", iso.S_Fmin, "-", "S_Fmin", "required safety factor, bending",
+          "spec" if iso.S_Fmin != 1.4 else "spec default")
     forms = []
     for i in range(2):
         k, who, gr = i + 1, WHO[i], gears[i]
