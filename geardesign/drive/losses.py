@@ -69,9 +69,11 @@ def tooth_loss_factor(u: float, z1: int, beta_b: float, eps_alpha: float,
 
 def sum_velocity_pitch(n1: float, d_w1: float, alpha_tw: float) -> float:
     """Sum of the rolling velocities at the pitch point v_ΣC = 2·v_t·sin α_tw [m/s]
-    (v_t = π·d_w1·n1/60000).  [ISOTR14179-2]"""
-    v_t = math.pi * d_w1 * n1 / 60000.0
-    return 2.0 * v_t * math.sin(math.radians(alpha_tw))
+    (v_t = π·d_w1·n1/60000), by :func:`~geardesign.spur.strength.iso6336.part21.
+    sum_velocity_pitch`.  [ISOTR14179-2]"""
+    from geardesign.spur.strength.iso6336.part21 import sum_velocity_pitch
+
+    return sum_velocity_pitch(math.pi * d_w1 * n1 / 60000.0, math.radians(alpha_tw))
 
 
 def reduced_radius_pitch(d_w1: float, d_w2: float, alpha_tw: float, beta_b: float) -> float:

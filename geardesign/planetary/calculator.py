@@ -868,7 +868,7 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
         pair = (mats[md.members[0]], mats[md.members[1]])
         mesh_rate = rate
         if st["method"] == "ISO 6336:2019":
-            mesh_rate = _iso_rate(rate, st, train, meshes, md.members[0])
+            mesh_rate = _iso_rate(rate, st, train, meshes, md.members)
         rating = rate_mesh(mesh_rate, md, pair, st["application_factor"], st["life_hours"],
                            st["regime"], (), peak_ratio, setting)
         mn = C.MESH_NAMES.get(mesh.name)
@@ -895,14 +895,17 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
     return out
 
 
-def _iso_rate(rate, st: dict, train: K.Train, meshes: list, pinion: str):
+def _iso_rate(rate, st: dict, train: K.Train, meshes: list, members: tuple[str, str]):
     """The ISO 6336 rating of a mesh with the strength table's oil and, with
     ``[strength.scuffing]``, the scuffing rating; the multiple mesh factor X_mp counts the
     meshes of the mesh's gear 1: a central gear meshes with every planet, a planet crown
-    with each central gear it engages ([ISO6336-21], X_mp)."""
+    with each central gear it engages ([ISO6336-21], X_mp).  The reduced mass of K_v takes
+    the sun shared by the planets and the ring as rigid (:func:`.strength.shared_meshes`)."""
+    from geardesign.planetary.strength import shared_meshes
     from geardesign.spur.strength.iso6336.rating import IsoSetting
     from geardesign.spur.strength.iso6336.spec import scuffing_setting
 
+    pinion = members[0]
     central = pinion in ("sun", "ring", "ring2")
     n_p = train.planets if central else sum(
         1 for m in meshes if pinion in (m.spec.pinion, m.spec.wheel))
@@ -910,7 +913,8 @@ def _iso_rate(rate, st: dict, train: K.Train, meshes: list, pinion: str):
     oil = {} if st["lubricant_viscosity"] is None else {"nu40": st["lubricant_viscosity"]}
 
     def iso_rate(g, mats, duty, setting):
-        iso = IsoSetting(grade=setting.grade, scuffing=scuffing, **oil)
+        iso = IsoSetting(grade=setting.grade, scuffing=scuffing,
+                         meshes=shared_meshes(train, members), **oil)
         return rate(g, mats, duty, setting, iso)
 
     return iso_rate

@@ -83,6 +83,15 @@ def mesh_duties(train: Train, meshes: list[Mesh], s: Speeds, T_ideal: dict,
     return out
 
 
+def shared_meshes(train: Train, members: tuple[str, str]) -> tuple[int, int]:
+    """How many meshes of its kind each gear of a rated mesh carries, for the reduced mass
+    of K_v: the sun meshes every planet at once (n_w), a planet crown one sun, a ring is
+    rigid.  [ISO6336-1] 6.5.9 (planetary gears): m_red = m_P m_S/(n_P m_P + m_S) for the
+    sun–planet mesh, m_red = m_P for the planet–ring mesh
+    (:func:`geardesign.spur.strength.iso6336.part1.reduced_mass`)."""
+    return tuple(train.planets if m == "sun" else 1 for m in members)
+
+
 def rate_mesh(rate, md: MeshDuty, mats: tuple, K_A: float, life_hours: float,
               regime: str | None, blocks: tuple, T_peak_ratio: float | None,
               setting: Setting):

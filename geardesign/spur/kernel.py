@@ -306,7 +306,7 @@ def _evaluate_iso(c: dict, f: Fixed) -> dict:
     # ------------------------------------------------------------------ dynamic factor
     m1 = P1.gear_mass(g["d_a1"], g["d_f1"], g["d_b1"], iso.gears[0].inner_diameter)
     m2 = P1.gear_mass(g["d_a2"], g["d_f2"], g["d_b2"], iso.gears[1].inner_diameter)
-    m_red = P1.reduced_mass(m1, m2)
+    m_red = P1.reduced_mass(m1, m2, *iso.meshes)
     n_E1 = P1.resonance_speed(z1, c_ga, m_red)
     N = duty.n1 / n_E1
     N_S = P1.lower_resonance_limit(line_load)

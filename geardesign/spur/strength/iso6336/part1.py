@@ -150,12 +150,22 @@ def gear_mass(d_a: float, d_f: float, d_b: float, d_i: float, rho: float = T.RHO
     return math.pi / 8.0 * rho * (1.0 - q ** 4) * d_m ** 4 / (d_b * d_b)
 
 
-def reduced_mass(m1: float, m2: float | None) -> float:
-    """Reduced mass of the pair m_red = m1*m2*/(m1* + m2*) [kg/mm]; an internal gear is
-    taken as infinitely heavy (``m2=None``: m_red = m1*).  [ISO6336-1] 6.5.9 eqs. (30), (32)."""
+def reduced_mass(m1: float, m2: float | None, n1: int = 1, n2: int = 1) -> float:
+    """Reduced mass of the mesh per face width [kg/mm]:
+
+    .. math:: m_{red} = \\frac{m_1^* m_2^*}{n_2 m_1^* + n_1 m_2^*}
+
+    m1*, m2* the gears' masses per face width reduced to the line of action (:func:`gear_mass`);
+    n1, n2 how many meshes of this kind each gear carries.  A pair (n1 = n2 = 1):
+    m_red = m1*m2*/(m1* + m2*), [ISO6336-1] 6.5.9 eq. (30).  Planetary gears, the same
+    clause: a sun carrying n_P planets vibrates against all of them at once,
+    m_red = m_P m_S/(n_P m_P + m_S) (n = n_P for the sun); the ring gear of a planet–ring
+    mesh is taken as rigid (``m2=None``: m_red = m1*/n1, the planet's own mass).  An
+    internal gear of an ordinary pair is rigid in the same way.
+    """
     if m2 is None:
-        return m1
-    return m1 * m2 / (m1 + m2)
+        return m1 / n1
+    return m1 * m2 / (n2 * m1 + n1 * m2)
 
 
 def resonance_speed(z1: int, c_gamma_alpha: float, m_red: float) -> float:
@@ -311,5 +321,6 @@ def transverse_limit_bending(eps_gamma: float, eps_alpha: float) -> float:
 
 def limited(k: float, k_max: float) -> tuple[float, bool]:
     """A transverse load factor within 1 ≤ K ≤ K_max; and whether the cap was active.
-    [ISO6336-1] 8.3.4."""
-    return xp.maximum(1.0, xp.minimum(k, k_max)), k > k_max
+    The cap is active when it lowers the factor: k > max(1, K_max) (a K below 1 is raised to
+    1 by the floor, not by the cap).  [ISO6336-1] 8.3.4."""
+    return xp.maximum(1.0, xp.minimum(k, k_max)), k > xp.maximum(1.0, k_max)

@@ -222,24 +222,32 @@ def z_r(sigma_Hlim: float, Rz1: float, Rz2: float, rho: float) -> float:
 def z_w(HB_soft: float, Rz_hard: float | None = None, Rz_soft: float | None = None,
         rho: float | None = None, v: float | None = None, nu40: float | None = None) -> float:
     """Work hardening factor Z_W of a through-hardened gear (HB 130…470) meshing with a
-    surface-hardened, smooth mate.
+    surface-hardened mate.
 
     .. math:: Z_W = \\left(1.2 - \\frac{HB - 130}{1700}\\right)\\left(\\frac{3}{R_{zH}}
-              \\right)^{0.15},\\quad R_{zH} = \\frac{R_{z1}(ρ_{red}/10)^{0.33}
-              (R_{z1}/R_{z2})^{0.66}}{(v ν_{40}/1500)^{0.33}}
+              \\right)^{0.15},\\quad R_{zH} = \\frac{R_{z1}(10/ρ_{red})^{0.33}
+              (R_{z1}/R_{z2})^{0.66}}{(ν_{40} v/1500)^{0.33}},\\; 3 ≤ R_{zH} ≤ 16\\ µm
 
-    R_zH (3…16 µm) from the hardened gear's flank roughness R_z1 and the soft gear's R_z2;
-    without roughness data (``Rz_hard=None``) the factor is 1.2 − (HB − 130)/1700, the
-    form of the 2006 edition.  [ISO6336-2] (Z_W).
+    HB the Brinell hardness of the softer gear (clamped to 130…470), R_z1 [µm] the flank
+    roughness of the surface-hardened gear, R_z2 that of the through-hardened one, ρ_red
+    [mm] the relative radius of curvature at the pitch point (:func:`rho_red`), v [m/s] the
+    pitch line velocity, ν40 [mm²/s] the oil's viscosity at 40 °C.  [ISO6336-2] clause on
+    Z_W, "surface-hardened with through-hardened"; the curvature enters as (10/ρ_red)^0.33,
+    the same way as in the mean relative roughness R_z10 of Z_R (:func:`z_r`), so that a
+    large, gently curved contact has the smaller equivalent roughness; transcribed alike in
+    [PythonGearbox2020] (``__zw``).  Without roughness data (``Rz_hard=None``) the factor is
+    1.2 − (HB − 130)/1700, the form the 2006 edition prints ([KISSsoft2017]).
 
     >>> round(z_w(240.0), 3)
+    1.135
+    >>> round(z_w(240.0, 4.8, 8.0, 159.4, 1.6, 220.0), 3)   # R_zH below 3 µm: 3
     1.135
     """
     hb = min(max(HB_soft, 130.0), 470.0)
     base = 1.2 - (hb - 130.0) / 1700.0
     if Rz_hard is None:
         return base
-    RzH = Rz_hard * (rho / 10.0) ** 0.33 * (Rz_hard / Rz_soft) ** 0.66 / (v * nu40 / 1500.0) ** 0.33
+    RzH = Rz_hard * (10.0 / rho) ** 0.33 * (Rz_hard / Rz_soft) ** 0.66 / (v * nu40 / 1500.0) ** 0.33
     RzH = xp.clip(RzH, 3.0, 16.0)
     return base * (3.0 / RzH) ** 0.15
 

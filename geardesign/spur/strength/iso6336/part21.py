@@ -66,6 +66,23 @@ def angle_factor(alpha_wt: float, alpha_n: float, alpha_t: float, beta: float) -
         math.sqrt(math.cos(alpha_t) * math.cos(alpha_wt))
 
 
+def sum_velocity_pitch(v_w: float, alpha_wt: float) -> float:
+    """Sum of the tangential (rolling) velocities at the pitch point C [m/s]:
+
+    .. math:: v_{ΣC} = 2 v_w \\sin α_{wt}
+
+    v_w = π d_w1 n1/60000 [m/s] the velocity at the operating pitch circle, α_wt [rad].  At
+    C each flank moves along the line of action's normal with ω_i ρ_Ci, ρ_Ci = ½ d_wi sin α_wt
+    (external and internal pairs alike), and ω_1 d_w1 = ω_2 d_w2: the sum is 2 v_w sin α_wt
+    ([ISO6336-21], v_ΣC; [ISOTR14179-2], the same sum in μ_mz).  The reference circle's v
+    instead of v_w misstates it by d1/d_w1 on every shifted pair (x1 + x2 ≠ 0).
+
+    >>> round(sum_velocity_pitch(21.2, math.radians(22.856)), 3)
+    16.469
+    """
+    return 2.0 * v_w * math.sin(alpha_wt)
+
+
 def geometry_factor_tip(rho_E1: float, rho_E2: float, u: float, internal: bool = False) -> float:
     """Geometry factor at the pinion tip X_BE = 0.51·√(u ± 1)·|√ρ_E1 − √(ρ_E2/u)|/
     (ρ_E1·ρ_E2)^¼, ρ_E1, ρ_E2 [mm] the transverse radii of curvature of pinion and wheel

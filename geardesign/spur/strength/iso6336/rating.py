@@ -95,6 +95,9 @@ class IsoSetting:
     optimum: bool = False
     protuberance: float = 0.0          # s_pr/m_n
     K_gamma: float = 1.0
+    # meshes of this kind each gear carries, for the reduced mass: (n_P, 1) for a sun that is
+    # gear 1 of a sun–planet mesh with n_P planets ([ISO6336-1] 6.5.9, planetary gears)
+    meshes: tuple[int, int] = (1, 1)
     gears: tuple[IsoGear, IsoGear] = (IsoGear(), IsoGear())
     scuffing: ScuffingSetting | None = None
     overrides: dict = field(default_factory=dict)
@@ -217,6 +220,10 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
     cb = math.cos(g.beta_b)
     z_n1 = p.z1 / (cb * cb * math.cos(p.beta))
     z_n2 = None if internal else p.z2 / (cb * cb * math.cos(p.beta))
+    R.put(F, "z_n1", z_n1, "-", "z_n1", "virtual number of teeth z/(cos²β_b cos β), pinion", S1)
+    R.put(F, "z_n2", (-p.z2 if internal else p.z2) / (cb * cb * math.cos(p.beta)), "-", "z_n2",
+          "virtual number of teeth z/(cos²β_b cos β), wheel"
+          + (" (internal gear: negative; infinite in c'_th)" if internal else ""), S1)
     x2 = -p.x2 if internal else p.x2      # ISO 21771 sign for an internal gear
     # the standard's pinion is the gear with fewer teeth (a sun larger than its planet)
     stiff = ((z_n2, x2, z_n1, p.x1) if z_n2 is not None and z_n2 < z_n1
@@ -257,9 +264,12 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
     m1 = P1.gear_mass(g.g1.d_a, g.g1.d_f, g.g1.d_b, iso.gears[0].inner_diameter)
     m2 = None if internal else P1.gear_mass(g.g2.d_a, g.g2.d_f, g.g2.d_b,
                                             iso.gears[1].inner_diameter)
-    m_red = R.put(F, "m_red", P1.reduced_mass(m1, m2), "kg/mm", "m_red",
-                  "reduced mass per face width" + (" (internal gear rigid)" if internal else ""),
-                  S1)
+    n_m = iso.meshes
+    shared = next((f" ({WHO[i]} shared by {n_m[i]} meshes: m1·m2/(n2·m1 + n1·m2))"
+                   for i in range(2) if n_m[i] > 1), "")
+    m_red = R.put(F, "m_red", P1.reduced_mass(m1, m2, *n_m), "kg/mm", "m_red",
+                  "reduced mass per face width" + (" (internal gear rigid)" if internal else "")
+                  + shared, S1)
     n_E1 = R.put(F, "n_E1", P1.resonance_speed(p.z1, c_ga, m_red), "min^-1", "n_E1",
                  "resonance speed of the pinion", S1)
     N = R.put(F, "N", duty.n1 / n_E1, "-", "N", "resonance ratio n1/n_E1", S1)
@@ -580,8 +590,9 @@ def _scuffing(R: _Rows, g, mats, setting, iso: IsoSetting, types, F_t: float, v:
     k_u = (u - 1.0) if internal else (u + 1.0)
     rho_C = R.put(Sc, "rho_redC", u / k_u ** 2 * path / math.cos(g.beta_b), "mm", "ρ_redC",
                   "relative radius of curvature at the pitch point (normal section)", S21)
-    v_sum = R.put(Sc, "v_sumC", 2.0 * v * math.sin(a_wt), "m/s", "v_ΣC",
-                  "sum of the tangential velocities at the pitch point", S21)
+    v_sum = R.put(Sc, "v_sumC", P21.sum_velocity_pitch(v * g.g1.d_w / g.g1.d, a_wt), "m/s",
+                  "v_ΣC", "sum of the tangential velocities at the pitch point (operating "
+                  "pitch circle)", S21)
     Ra = 0.5 * (setting.Ra[0] + setting.Ra[1])
     X_R = R.put(Sc, "X_R", P21.roughness_factor(Ra, rho_C), "-", "X_R",
                 f"roughness factor (Ra = {Ra:g} µm, mean of the flanks)", S21)
