@@ -370,10 +370,10 @@ def limited(k: float, k_max: float) -> tuple[float, bool]:
 
     The floor is applied after the cap: the cap 0.95ε_α²/ε_β of K_Hα falls below 1 for wide
     helical pairs (ε_β > 0.95ε_α²), and a load factor below 1 would rate the pair for less
-    than its load.  Returns the factor and whether the cap was active, i.e. lowered the
-    factor: k > max(1, k_max) (a k below 1 is raised by the floor, whatever the cap).
+    than its load.  Returns the factor and whether the cap set it: k > k_max ≥ 1 (with
+    k_max < 1 the floor sets the factor to 1, and the report says so, not "capped").
     """
-    capped = k > xp.maximum(1.0, k_max)
+    capped = (k > k_max) & (k_max >= 1.0)
     return xp.maximum(1.0, xp.minimum(k, k_max)), capped
 
 

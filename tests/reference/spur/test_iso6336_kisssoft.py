@@ -17,8 +17,9 @@ implement, tested on purpose:
 * Y_β: 2019 divides the 2006 factor 1 − ε_β β/120° by cos³β; the report's σ_F0, σ_F and
   S_F are compared after that ratio (``part3.y_beta_2006`` reproduces the printed 0.917).
 * Z_W of a through-hardened ring against a case-hardened planet: the report prints the
-  2006 form 1.2 − (HB − 130)/1700 (``part2.z_w`` without roughness data); 2019 adds the
-  roughness term (3/R_zH)^0.15.
+  2006 form 1.2 − (HB − 130)/1700 = 1.135; 2019 multiplies it by (3/R_zH)^0.15, which is 1
+  for this ring (R_zH = 2.2 µm, below the 3 µm floor): computed here from the flank
+  roughness, the printed value is met.
 
 Tolerances: half a unit of the printed last digit unless a reason is given next to the
 value.  KISSsoft rounds the pinion's tip alteration to k·m_n = −0.938 mm before computing
@@ -93,7 +94,10 @@ STAGE3_PRINTED = {  # section, key: (printed, tolerance)
     ("iso6336_contact", "Z_R"): (1.007, 0.0005),
     ("iso6336_contact", "Z_NT1"): (0.850, 0.0005),
     ("iso6336_contact", "Z_NT2"): (0.881, 0.0005),
-    ("iso6336_contact", "Z_W1"): (1.000, 0.0005),
+    ("iso6336_contact", "Z_W1"): (1.000, 0.0005),    # computed: two case-hardened gears
+    ("iso6336_contact", "Z_W2"): (1.000, 0.0005),
+    ("iso6336_factors", "z_n1"): (25.037, 0.0005),    # section 1, "Virtual gear no. of teeth"
+    ("iso6336_factors", "z_n2"): (99.104, 0.0005),
     ("iso6336_contact", "Z_X1"): (1.000, 0.0005),
     ("iso6336_contact", "sigma_HG1"): (1338.30, 0.005),
     ("iso6336_contact", "sigma_HG2"): (1387.31, 0.01),
@@ -218,15 +222,14 @@ def test_stage1_planet_ring_pitting():
     """Planet–ring (internal, ε_α = 1.278), K_v = 1.05 and K_Hβ = 1.15 given; the ring
     rack 1.25/0.30/1.0.  Z_W of the ring: the 2006 form (see the module notes); the
     ring's root stress is not compared (KISSsoft: pinion-type cutter method; ours: the
-    rack approximation, conservative)."""
+    rack approximation, conservative).  Z_W computed from R_z 4.8/8.0 µm, ρ_red, v, ν40."""
     g = internal_pair_geometry(InternalPairInput(
         45.0, 17, 56, 0.8021, 0.5013, 0.0, 491.0, RACK,
         ring_rack=BasicRack(math.radians(20.0), 1.0, 0.25, 0.30), pinion=SUN_PLANET.g2))
     duty = Duty(779454.877 * 765.0 / 2000.0, N_PLANET, 1.25, None, 0.0,
                 Life(175200.0, (1, 3)), (1.0, 0.0))
     iso = IsoSetting(grade=6, nu40=220.0, C_a=2.0, S_Hmin=1.25, S_Fmin=1.56, K_gamma=1.1,
-                     gears=(PLANET, RING_ISO), overrides={"K_Hbeta": 1.15, "K_v": 1.05,
-                                                          "Z_W2": P2.z_w(240.0)})
+                     gears=(PLANET, RING_ISO), overrides={"K_Hbeta": 1.15, "K_v": 1.05})
     v = rate(g, (HARD, RING), duty, Setting(grade=6), iso).v
     printed = {"c_th": (13.289 / (0.8 * 0.862 * 0.975), 0.01), "Z_H": (2.71, 0.005),
                "Z_eps": (0.952, 0.0005), "Z_B": (1.00, 0.005), "Z_D": (1.00, 0.005),
@@ -243,8 +246,14 @@ def test_stage1_planet_ring_pitting():
     assert v["Y_F2"] * v["Y_S2"] > 1.27 * 2.13
 
 
-def test_z_w_2019_roughness_term_lowers_the_2006_value():
-    """2019: (3/R_zH)^0.15 ≤ 1 on top of the 2006 value (R_zH ≥ 3 µm)."""
+def test_z_w_2019_roughness_term():
+    """2019: (3/R_zH)^0.15 ≤ 1 on top of the 2006 value.  On the NREL ring (ρ_red = 159 mm,
+    v = 1.6 m/s) R_zH = 4.8·(10/159.4)^0.33·(4.8/8)^0.66/(220·1.6/1500)^0.33 = 2.2 µm is
+    raised to 3 µm: Z_W = 1.135 as printed.  A small rough pair (ρ_red = 3 mm, R_z 6/10 µm,
+    v = 1 m/s): R_zH = 12.0 µm, Z_W = 1.135·(3/12.0)^0.15 = 0.922."""
     base = P2.z_w(240.0)
-    with_rz = P2.z_w(240.0, 4.8, 8.0, 81.6, 1.6, 220.0)
-    assert with_rz < base and abs(P2.z_w(240.0, 0.5, 0.5, 10.0, 1500.0, 1.0) - base) < 1e-12
+    assert P2.z_w(240.0, 4.8, 8.0, 159.4, 1.6, 220.0) == base
+    rzh = 6.0 * (10.0 / 3.0) ** 0.33 * (6.0 / 10.0) ** 0.66 / (220.0 / 1500.0) ** 0.33
+    assert_ref(rzh, 12.0, 0.05, "R_zH of the small pair")
+    assert_ref(P2.z_w(240.0, 6.0, 10.0, 3.0, 1.0, 220.0), base * (3.0 / rzh) ** 0.15, 1e-12,
+               "Z_W of the small pair")

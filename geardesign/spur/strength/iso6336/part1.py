@@ -321,6 +321,6 @@ def transverse_limit_bending(eps_gamma: float, eps_alpha: float) -> float:
 
 def limited(k: float, k_max: float) -> tuple[float, bool]:
     """A transverse load factor within 1 ≤ K ≤ K_max; and whether the cap was active.
-    The cap is active when it lowers the factor: k > max(1, K_max) (a K below 1 is raised to
-    1 by the floor, not by the cap).  [ISO6336-1] 8.3.4."""
-    return xp.maximum(1.0, xp.minimum(k, k_max)), k > xp.maximum(1.0, k_max)
+    The cap is active when it sets the factor: k > K_max ≥ 1 (with K_max < 1 the floor
+    sets it to 1, whatever k).  [ISO6336-1] 8.3.4."""
+    return xp.maximum(1.0, xp.minimum(k, k_max)), (k > k_max) & (k_max >= 1.0)
