@@ -18,8 +18,9 @@ Tolerances: half a unit of the printed last digit, except where a reason is give
   test_iso6336_kisssoft.py) gives 0.08 % less.
 * η_oil: KISSsoft's oil density at 80 °C is 0.845 kg/dm³, ours (ρ15 with the expansion
   0.0007/K) 0.850: 0.5 %; μ_mC ∝ η^-0.05 moves 0.03 %.
-* Θ_flaint and the temperatures after it: our Θ_flaint is 0.25 % higher (w_Bt and η above,
-  and μ_mC, printed 0.030, enters to its third digit only); Θ_int then differs by 0.08 %.
+* Θ_flaint and the temperatures after it: our Θ_flaint is 0.1 % lower (w_Bt and η above,
+  and μ_mC, printed 0.030, enters to its third digit only; v_ΣC from the operating pitch
+  circle, v(dw) = 21.20 m/s as printed); Θ_int then differs by 0.04 %.
 """
 
 from __future__ import annotations
