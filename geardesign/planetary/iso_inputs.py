@@ -33,7 +33,8 @@ MESHES = ("sun_planet", "planet_ring", "planet2_ring", "planet_ring2", "planet2_
 _FALLBACK = {"planet2": "planet", "ring2": "ring"}
 
 #: the pair keys of the spur ``[iso]`` table, without the oil (``strength.lubricant_viscosity``)
-PAIR_FIELDS = tuple(f for f in ISPEC.ISO.fields
+PAIR_FIELDS = tuple(replace(f, hint="strength.accuracy_grade when not given")
+                    if f.key == "accuracy_grade" else f for f in ISPEC.ISO.fields
                     if isinstance(f, Field) and f.key != "lubricant_viscosity")
 
 
@@ -51,7 +52,7 @@ ISO = Table("iso", "ISO 6336:2019 rating data (with strength.method = \"ISO 6336
             + tuple(replace(ISPEC._gear(m), description=f"ISO 6336 data of the {m}"
                             + (f" (default: [iso.{_FALLBACK[m]}])" if m in _FALLBACK else ""))
                     for m in MEMBERS)
-            + tuple(_mesh_table(m) for m in MESHES), required=False,
+            + tuple(_mesh_table(m) for m in MESHES), required=False, in_template=False,
             hint="gear 1 of a mesh (its shaft: shaft_span, pinion_offset, shaft_diameter) is the "
                  "report's gear1 of the mesh")
 
@@ -59,7 +60,7 @@ ISO_FACTORS = Table("iso_factors", "ISO 6336 factors given instead of computed, 
                     "(1 = the mesh's gear 1, 2 = its gear 2, as the report names them)", tuple(
                         replace(ISPEC.ISO_FACTORS, key=m, description=f"factors of the "
                                 f"{m.replace('_', '–')} mesh") for m in MESHES),
-                    required=False, hint=ISPEC.ISO_FACTORS.hint)
+                    required=False, in_template=False, hint=ISPEC.ISO_FACTORS.hint)
 
 #: ``[strength]`` keys that only the GOST 21354-87 rating reads, and what ISO takes instead
 GOST_ONLY_STRENGTH = {
