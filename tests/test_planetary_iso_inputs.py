@@ -279,3 +279,50 @@ def test_iso_input_errors(data, lines):
     with pytest.raises(InputError) as exc:
         run_data({"kind": "planetary", **data})
     assert [p.line("") for p in exc.value.problems] == lines
+
+
+def _bad_value(field):
+    if field.type == "boolean":
+        return "yes"
+    if field.type == "string":
+        return "nonsense"
+    if field.type == "integer":
+        return int(field.maximum) + 1
+    if field.maximum is not None:
+        return float(field.maximum) * 2 + 1
+    return -1.0
+
+
+def _planetary_fields():
+    from geardesign.planetary.iso_inputs import ISO, ISO_FACTORS
+    from geardesign.core.spec import Field
+
+    for f in ISO.fields:
+        if isinstance(f, Field):
+            yield "iso", f
+    for table in ("sun", "planet_ring"):
+        for f in ISO.member(table).fields:
+            yield f"iso.{table}", f
+    for f in ISO_FACTORS.member("sun_planet").fields:
+        yield "iso_factors.sun_planet", f
+
+
+FIELDS = list(_planetary_fields())
+
+
+@pytest.mark.parametrize("table, field", FIELDS, ids=[f"{t}.{f.key}" for t, f in FIELDS])
+def test_every_iso_key_has_the_spur_domain(table, field):
+    """Each planetary ISO key is the spur key: the same rule in the same words."""
+    from geardesign.core.errors import format_value
+    from geardesign.spur.strength.iso6336.spec import ISO as SPUR_ISO
+    from geardesign.spur.strength.iso6336.spec import ISO_FACTORS as SPUR_FACTORS
+
+    spur = {"iso": SPUR_ISO, "iso.sun": SPUR_ISO.member("pinion"), "iso.planet_ring": SPUR_ISO,
+            "iso_factors.sun_planet": SPUR_FACTORS}[table].member(field.key)
+    value = _bad_value(field)
+    with pytest.raises(InputError) as exc:
+        run_data({"kind": "planetary", **_with(BASE, f"{table}.{field.key}", value)})
+    lines = [p.line("") for p in exc.value.problems]
+    assert len(lines) == 1
+    assert lines[0].startswith(f"{table}.{field.key} = {format_value(value)}: must be "
+                               f"{spur.rule()}")
