@@ -114,6 +114,12 @@ def _pinned(mesh: str) -> dict:
     return f
 
 
+def _pin(data: dict, mesh: str) -> dict:
+    for k, v in _pinned(mesh).items():
+        data = _with(data, f"iso_factors.{mesh}.{k}", v)
+    return data
+
+
 # key, value; "<m>" is gear 1 of the mesh, "<w>" gear 2 (member tables)
 CASES = [
     ("iso.accuracy_grade", 5), ("iso.tip_relief", 12.0), ("iso.helix_modification", "crowning"),
@@ -147,11 +153,7 @@ def test_iso_key_changes_the_planetary_mesh_as_the_spur_pair(mesh, key, value):
             data = _with(data, f"iso.{k}", v)
     else:
         data = _with(BASE, path, value)
-    for k, v in _pinned(mesh).items():
-        data = _with(data, f"iso_factors.{mesh}.{k}", v)
-    base = copy.deepcopy(BASE)
-    for k, v in _pinned(mesh).items():
-        base = _with(base, f"iso_factors.{mesh}.{k}", v)
+    data, base = _pin(data, mesh), _pin(BASE, mesh)
     p, p0 = _planetary_rows(data, mesh), _planetary_rows(base, mesh)
     s = _spur_rows(_spur_spec(data, mesh))
     changed = {k for k in p if k not in PLANETARY_ONLY and p[k] != p0.get(k)}
@@ -193,13 +195,8 @@ def test_required_safety_sets_the_verdict():
 def test_k_gamma_is_its_own_factor():
     """ISO 6336-1: F_t is the nominal force of one planet; K_γ multiplies the load factors
     (σ_H0, σ_F0 without it, σ_H with √K_γ, σ_F with K_γ)."""
-    a = planetary(BASE)["results"]["strength_sun_planet"]
-    data = _with(BASE, "strength.load_sharing", 1.2)
-    for k, v in _pinned("sun_planet").items():
-        data = _with(data, f"iso_factors.sun_planet.{k}", v)
-    base = copy.deepcopy(BASE)
-    for k, v in _pinned("sun_planet").items():
-        base = _with(base, f"iso_factors.sun_planet.{k}", v)
+    base = _pin(BASE, "sun_planet")
+    data = _with(base, "strength.load_sharing", 1.2)
     a, b = (planetary(x)["results"]["strength_sun_planet"] for x in (base, data))
     assert b["K_gamma"] == 1.2 and "K_gamma" not in a
     for key in ("F_t", "F_t_planet", "sigma_H0", "sigma_F01", "sigma_F02"):

@@ -379,16 +379,6 @@ STAGE1_ISO_PRINTED = {
 }
 
 
-def test_kisssoft_stage1_iso_rating_through_the_planetary_calculator():
-    r = planetary(STAGE1_ISO)["results"]
-    for (mesh, key), (value, tol) in STAGE1_ISO_PRINTED.items():
-        assert_ref(r[f"strength_{mesh}"][key], value, tol, f"KISSsoft NREL stage_01 {mesh} {key}")
-    sp = r["strength_sun_planet"]
-    assert (sp["gear1"], sp["gear2"]) == ("planet", "sun")
-    # w: the report's nominal force per face width F_t/b = 1587.48 N/mm; ours K_A K_γ F_t/b
-    assert_ref(sp["w"] / (1.25 * 1.1), 1587.48, 0.005, "stage_01 w")
-
-
 STAGE2_ISO = _iso(STAGE2, (194.32, 576.96), (1.342 / 0.075, 3.142 / Y_RING),
                   (1.725 / 0.075, 4.098 / Y_RING),
                   {"sun_planet": {"K_v": 1.06, "K_Hbeta": 2.06},
@@ -477,10 +467,15 @@ STAGE2_ISO_PRINTED = {
 }
 
 
-def test_kisssoft_stage2_iso_rating_through_the_planetary_calculator():
-    r = planetary(STAGE2_ISO)["results"]
-    for (mesh, key), (value, tol) in STAGE2_ISO_PRINTED.items():
-        assert_ref(r[f"strength_{mesh}"][key], value, tol, f"KISSsoft NREL stage_02 {mesh} {key}")
+@pytest.mark.parametrize("data, printed, order, w, name", [
+    (STAGE1_ISO, STAGE1_ISO_PRINTED, ("planet", "sun"), 1587.48, "stage_01"),
+    (STAGE2_ISO, STAGE2_ISO_PRINTED, ("sun", "planet"), 519.82, "stage_02"),
+])
+def test_kisssoft_iso_rating_through_the_planetary_calculator(data, printed, order, w, name):
+    r = planetary(data)["results"]
+    for (mesh, key), (value, tol) in printed.items():
+        assert_ref(r[f"strength_{mesh}"][key], value, tol, f"KISSsoft NREL {name} {mesh} {key}")
     sp = r["strength_sun_planet"]
-    assert (sp["gear1"], sp["gear2"]) == ("sun", "planet")
-    assert_ref(sp["w"] / (1.25 * 1.1), 519.82, 0.005, "stage_02 w")
+    assert (sp["gear1"], sp["gear2"]) == order
+    # w: the report's nominal force per face width F_t/b; ours K_A K_γ F_t/b
+    assert_ref(sp["w"] / (1.25 * 1.1), w, 0.005, f"{name} w")
