@@ -227,3 +227,37 @@ def test_iso_tables_need_no_material_for_geometry(tmp_path):
     code, out, err = cli("run", path, "--format", "json")
     assert code == 0, err
     assert "iso6336_contact" not in json.loads(out)["results"]
+
+
+@pytest.mark.parametrize("who, key, value", [
+    ("pinion", "sigma_Flim", 900.0), ("wheel", "S_H", 1.2), ("pinion", "S_F", 1.8),
+    ("wheel", "sigma_HPmax", 2500.0), ("pinion", "sigma_FSt", 1800.0),
+    ("wheel", "root_ground", True)])
+def test_gost_only_material_keys_are_refused_with_iso_alone(who, key, value):
+    """A [material] key that only the GOST rating reads is an input error when ISO 6336 is
+    the only method (it would be silently unused), and valid with both methods."""
+    from geardesign.core.errors import InputError
+    from geardesign.spur.strength.iso6336.spec import GOST_ONLY_MATERIAL
+
+    data = json.loads(json.dumps(DATA))
+    data["material"][who][key] = value
+    with pytest.raises(InputError) as exc:
+        run_data(data)
+    msg = GOST_ONLY_MATERIAL[key].format(gear=f"iso.{who}", pair="iso")
+    assert [p.line("") for p in exc.value.problems] == [
+        f"material.{who}.{key} = {format_value(value)}: {msg}"]
+    data["options"] = {"methods": ["GOST 21354-87", "ISO 6336:2019"]}
+    run_data(data).document()
+
+
+def test_internal_gear_bore_is_refused():
+    from geardesign.core.errors import InputError
+
+    data = json.loads(json.dumps(DATA))
+    data["gear"].update(internal=True, z2=72, internal_tip_shortening=0.15)
+    data["iso"] = {"wheel": {"inner_diameter": 300.0}}
+    with pytest.raises(InputError) as exc:
+        run_data(data)
+    assert [p.line("") for p in exc.value.problems] == [
+        "iso.wheel.inner_diameter = 300.0: an internal gear has no bore: its body is the rim "
+        "below the tooth roots (give iso.wheel.rim_thickness, or leave the key out)"]

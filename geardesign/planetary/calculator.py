@@ -440,6 +440,9 @@ def compute(spec: ValidatedSpec) -> Result:
                                          "efficiency.model = \"given\": the efficiency of one "
                                          f"{key} mesh"))
     strength = _strength_inputs(spec, train)
+    from geardesign.planetary.iso_inputs import prepare
+
+    prepare(spec, train, meshes)
     res = CALCULATOR.new_result(spec)
     if notes is not None:
         sec = res.section("synthesis", "Synthesis")
@@ -825,7 +828,9 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
     res.methods.append(st["method"])
     # a crown meshing a sun and a ring is loaded on both flanks (alternating bending)
     both = {"planet": train.scheme != "2K-H-stepped", "planet2": False}
-    duties = mesh_duties(train, meshes, s, T_ideal, st["load_sharing"], both)
+    iso = st["method"] == "ISO 6336:2019"
+    # ISO 6336 takes K_γ as its own factor: the duties carry the nominal force
+    duties = mesh_duties(train, meshes, s, T_ideal, 1.0 if iso else st["load_sharing"], both)
     T_in = abs(T_ideal[op["input"]])
     peak_ratio = st["peak_torque"] / T_in if st["peak_torque"] is not None else None
     if peak_ratio is not None and peak_ratio < 1.0:
@@ -846,7 +851,7 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
         msec.add(f"HB_{key}", m.HB, "HB", f"HB_{key}", "surface hardness in HB (converted)",
                  "GOST 21354-87 (ZPCIL fit)")
     for mesh, md in zip(meshes, duties):
-        if st["method"] == "ISO 6336:2019":
+        if iso:
             from geardesign.spur.calculator import ratable
 
             if not ratable(mesh.geom):
@@ -867,8 +872,10 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
                           overrides)
         pair = (mats[md.members[0]], mats[md.members[1]])
         mesh_rate = rate
-        if st["method"] == "ISO 6336:2019":
-            mesh_rate = _iso_rate(rate, st, train, meshes, md.members)
+        if iso:
+            from geardesign.planetary.iso_inputs import mesh_rate_function
+
+            mesh_rate = mesh_rate_function(rate, d, train, meshes, mesh, md)
         rating = rate_mesh(mesh_rate, md, pair, st["application_factor"], st["life_hours"],
                            st["regime"], (), peak_ratio, setting)
         mn = C.MESH_NAMES.get(mesh.name)
@@ -877,13 +884,14 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
         sec.add("gear1", md.members[0], None, "", "gear 1 of the rating", S.G21354)
         sec.add("gear2", md.members[1], None, "", "gear 2 of the rating", S.G21354)
         sec.add("F_t_planet", md.F_t, "N", "F_t", "tangential force on one planet at the "
-                "reference circle, with K_γ", S.KUDRYAVTSEV)
+                "reference circle" + (" (ISO 6336: nominal, K_γ a factor of its own)" if iso
+                                      else ", with K_γ"), S.KUDRYAVTSEV)
         sec.add("n1_rel", md.n1, "min^-1", "n_1", "speed of gear 1 relative to the carrier",
                 S.WILLIS)
         for row in rating.rows:
             sec.add(row.key, row.value, row.unit, row.symbol, _members_words(row.name, md.members),
                     row.source)
-        if st["method"] == "ISO 6336:2019":
+        if iso:
             from geardesign.spur.strength.iso6336.rating import rating_checks
 
             found = rating_checks(rating, bool(mesh.spec.internal))
@@ -893,31 +901,6 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
         for c in found:
             out.append(_rename(c, mesh.name, md.members))
     return out
-
-
-def _iso_rate(rate, st: dict, train: K.Train, meshes: list, members: tuple[str, str]):
-    """The ISO 6336 rating of a mesh with the strength table's oil and, with
-    ``[strength.scuffing]``, the scuffing rating; the multiple mesh factor X_mp counts the
-    meshes of the mesh's gear 1: a central gear meshes with every planet, a planet crown
-    with each central gear it engages ([ISO6336-21], X_mp).  The reduced mass of K_v takes
-    the sun shared by the planets and the ring as rigid (:func:`.strength.shared_meshes`)."""
-    from geardesign.planetary.strength import shared_meshes
-    from geardesign.spur.strength.iso6336.rating import IsoSetting
-    from geardesign.spur.strength.iso6336.spec import scuffing_setting
-
-    pinion = members[0]
-    central = pinion in ("sun", "ring", "ring2")
-    n_p = train.planets if central else sum(
-        1 for m in meshes if pinion in (m.spec.pinion, m.spec.wheel))
-    scuffing = scuffing_setting(st.get("scuffing"), meshes=n_p)
-    oil = {} if st["lubricant_viscosity"] is None else {"nu40": st["lubricant_viscosity"]}
-
-    def iso_rate(g, mats, duty, setting):
-        iso = IsoSetting(grade=setting.grade, scuffing=scuffing,
-                         meshes=shared_meshes(train, members), **oil)
-        return rate(g, mats, duty, setting, iso)
-
-    return iso_rate
 
 
 def _material_table(d: dict, member: str) -> dict:

@@ -10,6 +10,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from geardesign.core.spec import Field, SpecSchema, Table
+from geardesign.planetary.iso_inputs import ISO, ISO_FACTORS
 from geardesign.spur.spec import PRESSURE_ANGLE, RACK, _material
 from geardesign.spur.strength import METHODS
 from geardesign.spur.strength import tables as T
@@ -154,7 +155,7 @@ def _scuffing_table() -> Table:
                                "(ISO/TS 6336-21; needs method = \"ISO 6336:2019\")")
 
 
-STRENGTH = Table("strength", "strength to GOST 21354-87 (with [material] and a torque)", (
+STRENGTH = Table("strength", "strength to GOST 21354-87 or ISO 6336:2019 (with [material] and a torque)", (
     Field("life_hours", "number", "required life", "h", "L_h", gt=0, maximum=1e7,
           example=20000.0),
     Field("application_factor", "number", "application factor", symbol="K_A", default=1.0,
@@ -162,11 +163,13 @@ STRENGTH = Table("strength", "strength to GOST 21354-87 (with [material] and a t
     Field("load_sharing", "number", "load-sharing factor of the planets: 1.0-1.1 with a "
           "floating member, 1.1-1.3 rigid (Kudryavtsev)", symbol="K_γ", default=1.1,
           minimum=1.0, maximum=2.0),
-    Field("accuracy_grade", "integer", "accuracy grade (GOST 1643-81)", symbol="n_st",
+    Field("accuracy_grade", "integer", "accuracy grade (GOST 1643-81; the ISO 1328-1 class when iso.accuracy_grade is not "
+          "given)", symbol="n_st",
           default=8, minimum=6, maximum=11),
-    Field("tip_relief", "boolean", "teeth with tip relief", default=False),
+    Field("tip_relief", "boolean", "teeth with tip relief (GOST 21354-87 only; ISO: "
+          "iso.tip_relief)", default=False),
     Field("bearing_scheme", "integer", "arrangement for K_Hβ, GOST 21354-87 chart 1…7 (planets "
-          "between carrier cheeks: 6 or 7)", default=6, minimum=1, maximum=7,
+          "between carrier cheeks: 6 or 7; GOST only)", default=6, minimum=1, maximum=7,
           hint="; ".join(f"{k}: {v}" for k, v in T.SCHEMES.items())),
     Field("regime", "string", "typical load regime of GOST 21354-87: "
           + ", ".join(f"{k} {v}" for k, v in T.REGIME_NAMES.items()), default="0",
@@ -174,7 +177,7 @@ STRENGTH = Table("strength", "strength to GOST 21354-87 (with [material] and a t
     Field("peak_torque", "number", "largest short-time input torque (static checks)", "N·m",
           "T_max", default=None, gt=0, maximum=1e10),
     Field("ring_form_factor", "number", "tooth form factor Y_FS of the rings, given instead of "
-          "the rack-limit approximation", symbol="Y_FS", default=None, gt=1.0, maximum=10.0),
+          "the rack-limit approximation (GOST only; ISO: iso_factors.<mesh>.Y_F2, Y_S2)", symbol="Y_FS", default=None, gt=1.0, maximum=10.0),
     Field("method", "string", "strength method", default="GOST 21354-87", choices=tuple(METHODS)),
     Field("lubricant_viscosity", "number", "kinematic viscosity of the oil at 40 °C (ISO VG; "
           "ISO 6336 Z_L, Z_v and scuffing)", "mm^2/s", "ν40", default=None, minimum=2,
@@ -226,7 +229,7 @@ SCHEMA = SpecSchema(
                 "mesh with shifts, efficiency and self-locking, strength (GOST 21354-87), "
                 "diagnostic frequencies, synthesis",
     tables=(TRAIN, TEETH, SYNTHESIS, SHIFT, RACK, RING, CUTTER, OPERATION, EFFICIENCY, LIMITS,
-            STRENGTH, MATERIAL, FREQUENCIES),
+            STRENGTH, MATERIAL, ISO, ISO_FACTORS, FREQUENCIES),
     title_example="2K-H reducer 18/27/72, m = 3, three planets",
     one_of=(("teeth", "synthesis"),),
 )

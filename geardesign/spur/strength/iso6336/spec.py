@@ -200,48 +200,69 @@ def prepare(spec) -> None:
     for who in ("pinion", "wheel"):
         if iso.get(who) is None:
             iso[who] = _validate_table(ISO.member(who), {}, f"iso.{who}", problems, spec.assumed)
+    problems += pair_problems(iso, "iso")
+    if chosen(d["options"]) == [ISO_NAME] and d.get("material") is not None:
+        for who in ("pinion", "wheel"):
+            problems += gost_material_problems(d["material"][who], f"material.{who}",
+                                               f"iso.{who}", "iso")
+    if problems:
+        raise InputError(problems)
+
+
+def pair_problems(iso: dict, path: str) -> list:
+    """The rules across the pair keys of an ``[iso]`` table (``path`` names it in the
+    messages): the pinion shaft needs its span and diameter with an offset inside the
+    span; the scuffing oil's ν100 below its ν40."""
+    problems = []
     if iso["pinion_offset"] and (iso["shaft_span"] is None or iso["shaft_diameter"] is None):
-        problems.append(Problem("iso.pinion_offset", "given without iso.shaft_span and "
-                                "iso.shaft_diameter: the shaft deflection needs all three "
-                                "(or give iso.f_sh)", iso["pinion_offset"]))
+        problems.append(Problem(f"{path}.pinion_offset", f"given without {path}.shaft_span and "
+                                f"{path}.shaft_diameter: the shaft deflection needs all three "
+                                f"(or give {path}.f_sh)", iso["pinion_offset"]))
     if iso["shaft_span"] is not None and iso["pinion_offset"] > 0.5 * iso["shaft_span"]:
-        problems.append(Problem("iso.pinion_offset", f"lies outside the bearing span "
+        problems.append(Problem(f"{path}.pinion_offset", f"lies outside the bearing span "
                                 f"(s <= l/2 = {0.5 * iso['shaft_span']:g} mm)",
                                 iso["pinion_offset"]))
     sc = iso.get("scuffing")
     if sc is not None and sc["oil_viscosity_100"] is not None \
             and sc["oil_viscosity_100"] >= iso["lubricant_viscosity"]:
-        problems.append(Problem("iso.scuffing.oil_viscosity_100", f"must be smaller than the "
-                                f"viscosity at 40 °C (iso.lubricant_viscosity = "
+        problems.append(Problem(f"{path}.scuffing.oil_viscosity_100", f"must be smaller than "
+                                f"the viscosity at 40 °C ({path}.lubricant_viscosity = "
                                 f"{iso['lubricant_viscosity']:g} mm²/s)",
                                 sc["oil_viscosity_100"]))
-    if problems:
-        raise InputError(problems)
+    return problems
 
 
-def gear_checks(iso: dict, geom) -> None:
+def gear_checks(iso: dict, geom, paths: tuple[str, str] = ("iso.pinion", "iso.wheel"),
+                gears: tuple[dict, dict] | None = None) -> None:
     """Inputs that need the geometry: a bore inside the root circle, a rim within the
-    domain of Y_B.  Raises :class:`InputError`."""
+    domain of Y_B; an internal gear has no bore (its body is the rim).  ``gears``: the
+    two gear tables in rating order (default ``iso["pinion"]``, ``iso["wheel"]``),
+    ``paths`` their keys in the messages.  Raises :class:`InputError`."""
     from geardesign.spur.strength.iso6336.part3 import y_b_domain
 
     problems = []
     internal = bool(getattr(geom, "internal", False))
-    for i, who in enumerate(("pinion", "wheel")):
-        t = iso[who]
+    tables = gears if gears is not None else (iso["pinion"], iso["wheel"])
+    for i, (t, path) in enumerate(zip(tables, paths)):
         gear = geom.gears[i]
         if internal and i == 1:
+            if t["inner_diameter"]:
+                problems.append(Problem(f"{path}.inner_diameter", "an internal gear has no "
+                                        "bore: its body is the rim below the tooth roots "
+                                        f"(give {path}.rim_thickness, or leave the key out)",
+                                        t["inner_diameter"]))
             continue
         if t["inner_diameter"] >= gear.d_f:
-            problems.append(Problem(f"iso.{who}.inner_diameter", f"must be smaller than the root "
+            problems.append(Problem(f"{path}.inner_diameter", f"must be smaller than the root "
                                     f"diameter d_f = {gear.d_f:.3f} mm", t["inner_diameter"]))
         if t["rim_thickness"] is not None:
             low = y_b_domain(t["rim_thickness"], gear.h, geom.inp.m_n)
             if t["rim_thickness"] <= low:
-                problems.append(Problem(f"iso.{who}.rim_thickness", f"too thin: ISO 6336-3 rates "
+                problems.append(Problem(f"{path}.rim_thickness", f"too thin: ISO 6336-3 rates "
                                         f"rims thicker than 0.5·h = {low:.3f} mm (Y_B); "
                                         f"thicken the rim", t["rim_thickness"]))
             elif 2.0 * t["rim_thickness"] > gear.d_f - t["inner_diameter"]:
-                problems.append(Problem(f"iso.{who}.rim_thickness", "larger than the gear body "
+                problems.append(Problem(f"{path}.rim_thickness", "larger than the gear body "
                                         "between the bore and the root circle",
                                         t["rim_thickness"]))
     if problems:
@@ -250,24 +271,37 @@ def gear_checks(iso: dict, geom) -> None:
 
 def iso_setting(spec, overrides: dict | None = None):
     """The :class:`~.rating.IsoSetting` of a validated, prepared spec."""
-    from geardesign.spur.strength.iso6336.rating import IsoGear, IsoSetting
-
     iso = spec.data["iso"]
-    gears = tuple(IsoGear(t["material_type"], t["quality"], t["sigma_Hlim"], t["sigma_Flim"],
-                          t["Rz_flank"], t["Rz_root"], t["inner_diameter"], t["rim_thickness"],
-                          t["web_ratio"]) for t in (iso["pinion"], iso["wheel"]))
     o = {k: v for k, v in (spec.data.get("iso_factors") or {}).items() if v is not None}
     if overrides:
         o.update(overrides)
-    return IsoSetting(
-        grade=iso["accuracy_grade"], nu40=iso["lubricant_viscosity"], C_a=iso["tip_relief"],
+    return setting_from(iso, (iso["pinion"], iso["wheel"]), o,
+                        scuffing_setting(iso.get("scuffing")))
+
+
+def setting_from(iso: dict, gears: tuple[dict, dict], overrides: dict, scuffing,
+                 **extra):
+    """The :class:`~.rating.IsoSetting` of validated ``[iso]`` pair keys, the two gear
+    tables in rating order, the given factors and the scuffing setting (``extra``: further
+    fields of the setting, e.g. a planetary mesh's ``K_gamma`` and ``nu40``)."""
+    from geardesign.spur.strength.iso6336.rating import IsoGear, IsoSetting
+
+    values = dict(
+        grade=iso["accuracy_grade"], C_a=iso["tip_relief"],
         modification=iso["helix_modification"], f_ma=iso["f_ma"], f_sh=iso["f_sh"],
         K_prime=iso["shaft_K_prime"], shaft_span=iso["shaft_span"],
         pinion_offset=iso["pinion_offset"], shaft_diameter=iso["shaft_diameter"],
         f_pb=iso["f_pb"], f_falpha=iso["f_falpha"], F_beta=iso["F_beta"],
         S_Hmin=iso["S_Hmin"], S_Fmin=iso["S_Fmin"], limited_pitting=iso["limited_pitting"],
-        optimum=iso["optimum_conditions"], protuberance=iso["protuberance"], gears=gears,
-        overrides=o, scuffing=scuffing_setting(iso.get("scuffing")))
+        optimum=iso["optimum_conditions"], protuberance=iso["protuberance"],
+        gears=tuple(IsoGear(t["material_type"], t["quality"], t["sigma_Hlim"], t["sigma_Flim"],
+                            t["Rz_flank"], t["Rz_root"], t["inner_diameter"],
+                            t["rim_thickness"], t["web_ratio"]) for t in gears),
+        overrides=dict(overrides), scuffing=scuffing)
+    if "lubricant_viscosity" in iso:
+        values["nu40"] = iso["lubricant_viscosity"]
+    values.update(extra)
+    return IsoSetting(**values)
 
 
 def scuffing_setting(t: dict | None, meshes: int | None = None):
@@ -284,3 +318,40 @@ def scuffing_setting(t: dict | None, meshes: int | None = None):
         lubrication=t["lubrication"], meshes=meshes if meshes is not None else t["meshes"],
         driving=t.get("driving", "pinion"), structure=t["structure"],
         B_M=t["thermal_contact_coefficient"], S_Smin=t["S_Smin"])
+
+
+#: ``[material.<gear>]`` keys of the GOST 21354-87 rating that the ISO 6336 rating does not
+#: read, and the key the ISO rating takes instead (``{gear}``: the gear's ISO table,
+#: ``{pair}``: the pair's).
+GOST_ONLY_MATERIAL = {
+    "sigma_Flim": "is the GOST 21354-87 bending endurance limit σ_Flimb (about σ_FE = "
+                  "2·σ_Flim of ISO 6336-5), not read by the ISO 6336 rating: give "
+                  "{gear}.sigma_Flim (the ISO 6336-5 σ_Flim) instead",
+    "S_H": "is the GOST 21354-87 required safety, not read by the ISO 6336 rating: give "
+           "{pair}.S_Hmin instead",
+    "S_F": "is the GOST 21354-87 required safety, not read by the ISO 6336 rating: give "
+           "{pair}.S_Fmin instead",
+    "sigma_HPmax": "is the GOST 21354-87 static limit, not read by the ISO 6336 rating (its "
+                   "static limit is σ_Hlim·Z_NT at the static point): leave it out",
+    "sigma_FSt": "is the GOST 21354-87 static limit, not read by the ISO 6336 rating (its "
+                 "static limit is σ_Flim·Y_ST·Y_NT·Y_δrelT at the static point): leave it out",
+    "root_ground": "is the GOST 21354-87 root treatment (q_F), not read by the ISO 6336 "
+                   "rating: give {gear}.Rz_root (the root roughness, Y_RrelT) instead",
+}
+
+
+def gost_material_problems(material: dict, path: str, gear: str, pair: str) -> list:
+    """Keys of a validated ``[material.<gear>]`` table (``path``) that only the GOST rating
+    reads, given in a spec rated by ISO 6336 alone: each is an input error naming the ISO
+    key to give instead.  A nitrided gear without ``core_HRC`` keeps its ``sigma_Flim``:
+    the library's GOST row needs one of the two."""
+    problems = []
+    for key, message in GOST_ONLY_MATERIAL.items():
+        value = material.get(key)
+        if value is None or value is False:
+            continue
+        if key == "sigma_Flim" and material.get("treatment") == "nitrided" \
+                and material.get("core_HRC") is None:
+            continue
+        problems.append(Problem(f"{path}.{key}", message.format(gear=gear, pair=pair), value))
+    return problems
