@@ -10,6 +10,8 @@ from __future__ import annotations
 from geardesign.core.errors import InputError, Problem
 from geardesign.core.spec import Field, Table
 from geardesign.spur.strength.iso6336 import tables as T
+from geardesign.spur.tolerances.iso1328 import EDITIONS as TOLERANCE_EDITIONS
+from geardesign.spur.tolerances.iso1328 import grades as tolerance_grades
 
 ISO_NAME = "ISO 6336:2019"
 
@@ -74,8 +76,13 @@ SCUFFING = Table("scuffing", "scuffing by the integral temperature method (ISO/T
 
 ISO = Table("iso", "ISO 6336:2019 rating data (used when options.method or options.methods "
             "names ISO 6336:2019)", (
-    Field("accuracy_grade", "integer", "flank tolerance class of ISO 1328-1:2013", symbol="A",
-          default=None, minimum=1, maximum=11, hint="gear.accuracy_grade when not given"),
+    Field("accuracy_grade", "integer", "flank tolerance class of ISO 1328-1 (2013: 1…11; "
+          "1995: accuracy grade 0…12)", symbol="A", default=None, minimum=0, maximum=12,
+          hint="accuracy.grade when [accuracy] names an ISO 1328-1 edition, else "
+               "gear.accuracy_grade"),
+    Field("tolerance_standard", "string", "edition of ISO 1328-1 whose tolerances give f_pb, "
+          "f_fα, f_Hβ and F_β", default=None, choices=TOLERANCE_EDITIONS,
+          hint="accuracy.standard when it names an ISO 1328-1 edition, else ISO 1328-1:2013"),
     Field("lubricant_viscosity", "number", "kinematic viscosity of the oil at 40 °C (ISO VG)",
           "mm^2/s", "ν40", default=220.0, minimum=2, maximum=3200),
     Field("tip_relief", "number", "amount of tip relief C_a (K_v)", "µm", "C_a", default=None,
@@ -208,6 +215,11 @@ def prepare(spec) -> None:
         problems.append(Problem("iso.pinion_offset", f"lies outside the bearing span "
                                 f"(s <= l/2 = {0.5 * iso['shaft_span']:g} mm)",
                                 iso["pinion_offset"]))
+    standard, grade = tolerance_class(spec)
+    classes = tolerance_grades(standard)
+    if iso["accuracy_grade"] is not None and grade not in classes:
+        problems.append(Problem("iso.accuracy_grade", f"is not a class of {standard}: give "
+                                f"{classes.start}…{classes.stop - 1}", grade))
     sc = iso.get("scuffing")
     if sc is not None and sc["oil_viscosity_100"] is not None \
             and sc["oil_viscosity_100"] >= iso["lubricant_viscosity"]:
@@ -248,11 +260,28 @@ def gear_checks(iso: dict, geom) -> None:
         raise InputError(problems)
 
 
+def tolerance_class(spec) -> tuple[str, int | None]:
+    """The ISO 1328-1 edition and class of the rating's tolerances: ``[iso]``
+    tolerance_standard and accuracy_grade; else those of ``[accuracy]`` when it names an
+    ISO 1328-1 edition (the drawing's tolerances); else ISO 1328-1:2013 and None (the
+    caller's grade, gear.accuracy_grade)."""
+    iso = spec.data["iso"]
+    acc = spec.data.get("accuracy") or {}
+    drawing = acc.get("standard") in TOLERANCE_EDITIONS
+    standard = iso.get("tolerance_standard") or (acc["standard"] if drawing
+                                                 else TOLERANCE_EDITIONS[0])
+    grade = iso.get("accuracy_grade")
+    if grade is None and drawing and acc["standard"] == standard:
+        grade = acc.get("grade")
+    return standard, grade
+
+
 def iso_setting(spec, overrides: dict | None = None):
     """The :class:`~.rating.IsoSetting` of a validated, prepared spec."""
     from geardesign.spur.strength.iso6336.rating import IsoGear, IsoSetting
 
     iso = spec.data["iso"]
+    standard, grade = tolerance_class(spec)
     gears = tuple(IsoGear(t["material_type"], t["quality"], t["sigma_Hlim"], t["sigma_Flim"],
                           t["Rz_flank"], t["Rz_root"], t["inner_diameter"], t["rim_thickness"],
                           t["web_ratio"]) for t in (iso["pinion"], iso["wheel"]))
@@ -260,7 +289,8 @@ def iso_setting(spec, overrides: dict | None = None):
     if overrides:
         o.update(overrides)
     return IsoSetting(
-        grade=iso["accuracy_grade"], nu40=iso["lubricant_viscosity"], C_a=iso["tip_relief"],
+        grade=grade, tolerance_standard=standard, nu40=iso["lubricant_viscosity"],
+        C_a=iso["tip_relief"],
         modification=iso["helix_modification"], f_ma=iso["f_ma"], f_sh=iso["f_sh"],
         K_prime=iso["shaft_K_prime"], shaft_span=iso["shaft_span"],
         pinion_offset=iso["pinion_offset"], shaft_diameter=iso["shaft_diameter"],
