@@ -21,7 +21,7 @@ diameter d, normal module m_n and face width b [mm]:
 (9) and (12) combine the unrounded slope and form tolerances.  Validity: 5 ≤ d ≤ 15 000 mm,
 0.5 ≤ m_n ≤ 70 mm, 4 ≤ b ≤ 1 200 mm.
 
-ISO 1328-1:1995 ([ISO1328-1:1995]), accuracy grades 0…12, with d, m = m_n and b replaced by
+ISO 1328-1:1995 ([ISO1328-1-1995]), accuracy grades 0…12, with d, m = m_n and b replaced by
 the geometric mean of the bounds of the size range that holds them (ranges "5 ≤ d ≤ 20,
 20 < d ≤ 50, …" in ``iso1328.toml``):
 
@@ -38,7 +38,7 @@ each times √2^(Q−5).  Validity: 5 ≤ d ≤ 10 000 mm, 0.5 ≤ m ≤ 70 mm, 
 
 Rounding, both editions: above 10 µm to the nearest micrometre, from 5 to 10 µm to the
 nearest 0.5 µm, below 5 µm to the nearest 0.1 µm, each tolerance from its own unrounded
-value of its class ([ISO1328-1] 5.2; [ISO1328-1:1995] 5).
+value of its class ([ISO1328-1] 5.2; [ISO1328-1-1995] 5).
 
 Written with :mod:`geardesign.core.xp`: d, m_n and b may be numbers or numpy arrays (the
 sweep kernel); the class is one integer.
@@ -110,7 +110,7 @@ def round_tolerance(value):
 
 def class_mean(value, bounds):
     """The geometric mean of the bounds of the size range that holds ``value``
-    ([ISO1328-1:1995]: the first range holds its lower bound, every range its upper bound);
+    ([ISO1328-1-1995]: the first range holds its lower bound, every range its upper bound);
     a value beyond the table takes its first or last range.
 
     >>> round(class_mean(341.183, [280.0, 560.0, 1000.0]), 3)

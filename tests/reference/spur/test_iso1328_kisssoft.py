@@ -105,3 +105,19 @@ def test_kisssoft_stage3_rating_computes_the_printed_tolerances(through):
         acc = res["accuracy"]
         assert acc["designation"] == "ISO 1328-1:1995 grade 6"
         assert (acc["f_pT1"], acc["f_pT2"], acc["F_betaT2"]) == (14.0, 17.0, 27.0)
+
+
+def test_kisssoft_stage1_sun_planet_rating_tolerances():
+    """The rating of the stage 1 sun–planet mesh with the 1995 tolerances, the way the
+    planetary meshes reach it (``rate`` with an :class:`IsoSetting`): f_pb, f_fα, f_Hβ and
+    F_β of the pair as printed (sun and planet share every size range: 31.0, 33, 21, 30)."""
+    from geardesign.spur.strength.iso6336.rating import IsoSetting, rate
+    from geardesign.spur.strength.rating import Duty, Life, Setting
+    from tests.reference.spur.test_iso6336_kisssoft import HARD, SUN_PLANET
+
+    duty = Duty(999650.9 / 3.0, 14.26, 1.25, None, 0.0, Life(175200.0, (3, 1)), (0.0, 1.0))
+    iso = IsoSetting(grade=6, tolerance_standard=iso1328.STANDARD_1995, C_a=2.0, K_gamma=1.1)
+    v = rate(SUN_PLANET, (HARD, HARD), duty, Setting(grade=6), iso).v
+    for key, printed, tol in (("f_pb", 31.0, 0.05), ("f_falpha", 33.0, 0.0),
+                              ("f_Hbeta", 21.0, 0.0), ("F_beta", 30.0, 0.0)):
+        assert_ref(v[key], printed, tol, f"KISSsoft stage 1 sun–planet {key}")
