@@ -908,9 +908,11 @@ def _iso_rate(rate, st: dict, train: K.Train, meshes: list, pinion: str):
         1 for m in meshes if pinion in (m.spec.pinion, m.spec.wheel))
     scuffing = scuffing_setting(st.get("scuffing"), meshes=n_p)
     oil = {} if st["lubricant_viscosity"] is None else {"nu40": st["lubricant_viscosity"]}
+    tol = {} if st["tolerance_standard"] is None else {
+        "tolerance_standard": st["tolerance_standard"]}
 
     def iso_rate(g, mats, duty, setting):
-        iso = IsoSetting(grade=setting.grade, scuffing=scuffing, **oil)
+        iso = IsoSetting(grade=setting.grade, scuffing=scuffing, **oil, **tol)
         return rate(g, mats, duty, setting, iso)
 
     return iso_rate

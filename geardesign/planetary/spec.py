@@ -13,6 +13,7 @@ from geardesign.core.spec import Field, SpecSchema, Table
 from geardesign.spur.spec import PRESSURE_ANGLE, RACK, _material
 from geardesign.spur.strength import METHODS
 from geardesign.spur.strength import tables as T
+from geardesign.spur.tolerances.iso1328 import EDITIONS as TOLERANCE_EDITIONS
 
 MEMBER_CHOICES = ("sun", "ring", "ring2", "carrier")
 
@@ -179,6 +180,9 @@ STRENGTH = Table("strength", "strength to GOST 21354-87 (with [material] and a t
     Field("lubricant_viscosity", "number", "kinematic viscosity of the oil at 40 °C (ISO VG; "
           "ISO 6336 Z_L, Z_v and scuffing)", "mm^2/s", "ν40", default=None, minimum=2,
           maximum=3200, hint="220 (ISO VG 220) when not given"),
+    Field("tolerance_standard", "string", "edition of ISO 1328-1 whose tolerances of "
+          "accuracy_grade give the ISO 6336 f_pb, f_fα, f_Hβ and F_β", default=None,
+          choices=TOLERANCE_EDITIONS, hint="ISO 1328-1:2013 when not given"),
     _scuffing_table(),
 ), required=False)
 

@@ -121,3 +121,24 @@ def test_kisssoft_stage1_sun_planet_rating_tolerances():
     for key, printed, tol in (("f_pb", 31.0, 0.05), ("f_falpha", 33.0, 0.0),
                               ("f_Hbeta", 21.0, 0.0), ("F_beta", 30.0, 0.0)):
         assert_ref(v[key], printed, tol, f"KISSsoft stage 1 sun–planet {key}")
+
+
+def test_kisssoft_stage1_through_the_planetary_calculator():
+    """The NREL stage 1 spec (``specs/planetary_nrel_stage1_iso.toml``) with
+    ``[strength] tolerance_standard = "ISO 1328-1:1995"``: both meshes carry the printed
+    tolerances of their gears, the larger of each pair (sun–planet 31.0/33/21/30; planet–ring
+    the ring's 35.7/40/24/34)."""
+    import tomllib
+    from pathlib import Path
+
+    spec = tomllib.loads((Path(__file__).parents[3] / "specs" / "planetary_nrel_stage1_iso.toml")
+                         .read_text(encoding="utf-8"))
+    spec["strength"]["tolerance_standard"] = iso1328.STANDARD_1995
+    res = run_data(spec).document()["results"]
+    for mesh, printed in (("strength_sun_planet", (31.0, 33.0, 21.0, 30.0)),
+                          ("strength_planet_ring", (35.7, 40.0, 24.0, 34.0))):
+        r = res[mesh]
+        assert r["tolerance_standard"] == iso1328.STANDARD_1995
+        for key, value, tol in zip(("f_pb", "f_falpha", "f_Hbeta", "F_beta"), printed,
+                                   (0.05, 0.0, 0.0, 0.0)):
+            assert_ref(r[key], value, tol, f"KISSsoft stage 1 {mesh} {key}")
