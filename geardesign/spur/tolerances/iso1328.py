@@ -75,8 +75,6 @@ def grades(standard: str = STANDARD) -> range:
     return range(lo, hi + 1)
 
 
-GRADES = tuple(grades(STANDARD))
-
 
 def check_standard(standard: str, key: str = "accuracy.standard") -> str:
     if standard not in EDITIONS:
