@@ -300,8 +300,7 @@ def _accuracy_rows(res: Result, acc: Accuracy) -> None:
                                 ("f_HbetaT", "f_HβT", "helix slope tolerance"),
                                 ("F_rT", "F_rT", "runout tolerance")):
             _pair(sec, attr, tuple(getattr(f, attr) for f in acc.flank), "µm", sym, name,
-                  acc.standard + (" 5.3" if acc.standard == iso1328.STANDARD
-                                  else " cl. 6, annex B"))
+                  iso1328.source(attr, acc.standard))
     sec.add("jn_min_required", acc.jn_required, "µm", "j_n min", "required least normal backlash",
             acc.jn_source)
     sec.add("fa", acc.fa, "µm", "±f_a", "limit deviation of the centre distance",

@@ -216,6 +216,13 @@ def jbn_min(a_w: float, m_n: float) -> float:
     return 2000.0 / 3.0 * (0.06 + 0.0005 * a_w + 0.03 * m_n)
 
 
+def source(key: str, standard: str = STANDARD) -> str:
+    """Where the standard gives tolerance ``key`` (a report's source column)."""
+    if standard == STANDARD:
+        return f"{STANDARD} 5.3"
+    return "ISO 1328-2:1997 annex B" if key == "F_rT" else f"{STANDARD_1995} cl. 6, annex B"
+
+
 def designation(grade: int, standard: str = STANDARD) -> str:
     """How the drawing names the accuracy: "ISO 1328-1:2013 class 6", "ISO 1328-1:1995
     grade 6"."""

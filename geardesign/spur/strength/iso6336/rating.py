@@ -199,7 +199,7 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
     R.put(F, "tolerance_standard", iso.tolerance_standard, None, "",
           "edition of ISO 1328-1 of the flank tolerances", "spec")
     tol = iso1328.rating_deviations(g.g1.d, g.g2.d, m_n, b, g.alpha_t, A, iso.tolerance_standard)
-    S_tol = f"{S1328} ({iso.tolerance_standard})"
+    S_tol = S1328 if iso.tolerance_standard == iso1328.STANDARD else "[ISO1328-1-1995]"
     f_pb = R.put(F, "f_pb", iso.f_pb if iso.f_pb is not None else tol["f_pb"], "µm", "f_pb",
                  "transverse base pitch deviation (larger of the pair, f_pT·cos α_t)"
                  + (" (given)" if iso.f_pb is not None else ""),
