@@ -211,6 +211,11 @@ CROSS = [
     ("rim larger than the body", "[iso.wheel]\nrim_thickness = 80.0\ninner_diameter = 100.0\n",
      ["s.toml: iso.wheel.rim_thickness = 80.0: larger than the gear body between the bore "
       "and the root circle"]),
+    ("class 0 of the 2013 edition", "[iso]\naccuracy_grade = 0\n",
+     ["s.toml: iso.accuracy_grade = 0: is not a class of ISO 1328-1:2013: give 1…11"]),
+    ("grade 12 of the 1995 edition is fine, class 12 of 2013 is not",
+     '[iso]\naccuracy_grade = 12\ntolerance_standard = "ISO 1328-1:2013"\n',
+     ["s.toml: iso.accuracy_grade = 12: is not a class of ISO 1328-1:2013: give 1…11"]),
 ]
 
 
@@ -261,3 +266,13 @@ def test_internal_gear_bore_is_refused():
     assert [p.line("") for p in exc.value.problems] == [
         "iso.wheel.inner_diameter = 300.0: an internal gear has no bore: its body is the rim "
         "below the tooth roots (give iso.wheel.rim_thickness, or leave the key out)"]
+
+
+def test_tolerance_edition_in_the_report():
+    """The rating says which ISO 1328-1 edition its tolerances come from; grade 12 exists in
+    the 1995 edition only."""
+    f = _run()["results"]["iso6336_factors"]
+    assert f["tolerance_standard"] == "ISO 1328-1:2013"
+    f95 = _run(iso={"tolerance_standard": "ISO 1328-1:1995", "accuracy_grade": 12})
+    f95 = f95["results"]["iso6336_factors"]
+    assert f95["tolerance_standard"] == "ISO 1328-1:1995" and f95["grade"] == 12.0

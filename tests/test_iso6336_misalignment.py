@@ -6,7 +6,7 @@ the total helix tolerance F_β that also holds the form deviation."""
 
 from __future__ import annotations
 
-from geardesign.spur.strength.iso6336 import iso1328
+from geardesign.spur.tolerances import iso1328
 from tests.test_iso6336_inputs import _run
 
 
@@ -24,6 +24,9 @@ def test_f_ma_given_wins_and_lowers_K_Hbeta():
 
 
 def test_helix_slope_tolerance_formula():
-    """ISO 1328-1:2013 f_HβT = (0.07√d + 0.45√b + 3)·√2^(A−5), rounded as the standard
-    rounds (d = 60 mm, b = 30 mm, class 8: 0.542 + 2.465 + 3 = 6.007 → 16.99 µm)."""
-    assert abs(iso1328.helix_slope(60.0, 30.0, 8) - 17.0) <= 0.5
+    """f_HβT of class 8 at d = 60 mm, b = 30 mm, worked by hand from the printed formulas:
+    ISO 1328-1:2013 eq. (10) (0.05√d + 0.35√b + 4)·2√2 = (0.3873 + 1.9170 + 4)·2.8284
+    = 17.83 → 18 µm; ISO 1328-1:1995 B.2.3 (0.07√d + 0.45√b + 3)·2√2 at the range means
+    d = √(50·125) = 79.06, b = √(20·40) = 28.28: (0.6224 + 2.3931 + 3)·2.8284 = 17.01 → 17."""
+    assert iso1328.tolerances(60.0, 2.0, 30.0, 8)["f_HbetaT"] == 18.0
+    assert iso1328.tolerances(60.0, 2.0, 30.0, 8, iso1328.STANDARD_1995)["f_HbetaT"] == 17.0

@@ -5,6 +5,8 @@ import json
 import math
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from geardesign.core.registry import run_data
 from geardesign.spur.tolerances import iso1328
@@ -165,3 +167,35 @@ def test_profile_and_plot_files(tmp_path):
     code, _, err = cli("run", spec, "-q", "--profile", tmp_path / "p.png")
     assert code == 2 and err.strip().endswith("the profile file must end in .dxf or .svg")
     assert not (tmp_path / "p.png").exists()
+
+
+@settings(max_examples=30, deadline=None, suppress_health_check=list(HealthCheck))
+@given(m_n=st.sampled_from([1.0, 2.0, 2.5, 3.5, 6.0, 10.0, 16.0]), z1=st.integers(17, 40),
+       u=st.floats(1.0, 5.0), beta=st.sampled_from([0.0, 8.0, 15.0, 22.0]),
+       b_over_m=st.floats(6.0, 25.0), standard=st.sampled_from(iso1328.EDITIONS),
+       grade=st.integers(3, 10))
+def test_rating_and_drawing_use_the_same_tolerances(m_n, z1, u, beta, b_over_m, standard,
+                                                    grade):
+    """The ISO 6336 rating's f_pb, f_fα, f_Hβ and F_β of a random gear pair are the larger of
+    the drawing's f_pT·cos α_t, f_fαT, f_HβT and F_βT of its two gears: one computation
+    reached through both paths ([accuracy] of the drawing, [iso] of the rating, the edition
+    and the class coming from [accuracy])."""
+    z2 = max(z1, round(u * z1))
+    spec = {"kind": "spur",
+            "gear": {"module": m_n, "z1": z1, "z2": z2, "helix_angle": beta,
+                     "face_width": round(b_over_m * m_n, 1), "bearing_scheme": 5},
+            "load": {"speed1": 1000.0, "torque1": 0.05 * (z1 * m_n) ** 2, "life_hours": 20000.0},
+            "material": {w: {"treatment": "carburized", "hardness_HRC": 60.0}
+                         for w in ("pinion", "wheel")},
+            "options": {"method": "ISO 6336:2019"},
+            "accuracy": {"standard": standard, "grade": grade, "fa": 40.0, "T_sn1": 50.0,
+                         "T_sn2": 70.0}}
+    res = run_data(spec).document()["results"]
+    acc, f = res["accuracy"], res["iso6336_factors"]
+    assert f["tolerance_standard"] == standard and f["grade"] == grade
+    alpha_t = math.radians(res["geometry"]["alpha_t"])
+    pair = {k: max(acc[k + "1"], acc[k + "2"]) for k in ("f_pT", "f_falphaT", "f_HbetaT",
+                                                        "F_betaT")}
+    assert f["f_pb"] == pytest.approx(pair["f_pT"] * math.cos(alpha_t), rel=1e-12)
+    assert (f["f_falpha"], f["f_Hbeta"], f["F_beta"]) == (
+        pair["f_falphaT"], pair["f_HbetaT"], pair["F_betaT"])

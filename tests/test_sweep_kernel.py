@@ -278,3 +278,22 @@ def test_xp_round_is_pythons_round_on_arrays():
     for nd in (0, 1, 12):
         got = xp.rnd(x, nd)
         assert all(got[i] == round(float(x[i]), nd) for i in range(len(x))), nd
+
+
+@pytest.mark.parametrize("standard", ["ISO 1328-1:2013", "ISO 1328-1:1995"])
+def test_iso1328_tolerances_on_arrays_are_the_scalar_ones(standard):
+    """The tolerances the kernel computes for arrays of candidates equal the calculator's
+    for each candidate, both editions, the bounds of the 1995 size ranges included."""
+    from geardesign.spur.tolerances import iso1328
+
+    rng = np.random.default_rng(1328)
+    bounds = [20.0, 50.0, 125.0, 280.0, 560.0, 1000.0]
+    d = np.concatenate([rng.uniform(5.0, 3000.0, 300), bounds, np.nextafter(bounds, 1e9)])
+    m = np.concatenate([rng.uniform(0.5, 40.0, 300), [2.0, 3.5, 6.0, 10.0, 16.0, 25.0],
+                        np.nextafter([2.0, 3.5, 6.0, 10.0, 16.0, 25.0], 1e9)])
+    b = rng.uniform(4.0, 1000.0, len(d))
+    for A in (2, 6, 10):
+        arrays = iso1328.tolerances(d, m, b, A, standard)
+        for i in range(len(d)):
+            one = iso1328.tolerances(float(d[i]), float(m[i]), float(b[i]), A, standard)
+            assert all(arrays[k][i] == one[k] for k in one), (i, A)

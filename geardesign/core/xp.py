@@ -75,6 +75,10 @@ def degrees(x):
     return math.degrees(x) if isinstance(x, _SCALARS) else _np().degrees(x)
 
 
+def floor(x):
+    return float(math.floor(x)) if isinstance(x, _SCALARS) else _np().floor(x)
+
+
 def hypot(x, y):
     if isinstance(x, _SCALARS) and isinstance(y, _SCALARS):
         return math.hypot(x, y)

@@ -37,7 +37,6 @@ from geardesign.spur.tolerances.gost1643 import ToleranceError
 
 STEEL_EXPANSION = 11.5  # 1e-6/K, assumed for a member whose coefficient is not given
 SRC_GOST = "GOST 1643-81"
-SRC_ISO = "ISO 1328-1:2013"
 SRC_BACKLASH = "ISO 21771:2007; ISO/TR 10064-2:1996"
 SRC_MEAS = "GOST 16532-70; ISO 21771:2007"
 GOST_ONLY = ("E_Hs1", "E_Hs2", "T_H1", "T_H2", "center_distance_class")
@@ -139,7 +138,7 @@ def accuracy_of(g: PairGeometry, spec: ValidatedSpec) -> Accuracy:
     for key in (ISO_ONLY if gost else GOST_ONLY):
         if acc.get(key) is not None:
             raise InputError.at(f"accuracy.{key}", acc[key],
-                                f"applies to {iso1328.STANDARD if gost else gost1643.STANDARD} "
+                                f"applies to {'ISO 1328-1' if gost else gost1643.STANDARD} "
                                 f"only; remove it with standard = \"{std}\"")
     try:
         thermal = _thermal(acc, spec)
@@ -156,13 +155,13 @@ def accuracy_of(g: PairGeometry, spec: ValidatedSpec) -> Accuracy:
             fa = acc["fa"] if acc["fa"] is not None else gost1643.fa(fa_class, a_w)
             designation = gost1643.designation(grade, mating)
         else:
-            iso1328.check_grade(grade)
+            iso1328.check_grade(grade, std)
             fa_class = None
-            fa = _require(acc, "fa", "ISO 1328-1:2013 (it sets no centre-distance tolerance): "
+            fa = _require(acc, "fa", f"{std} (it sets no centre-distance tolerance): "
                           "the limit deviation ±f_a of the centre distance in µm")
-            flank = tuple(iso1328.flank_tolerances(grade, gi.d, m_n, g.inp.b_w)
+            flank = tuple(iso1328.flank_tolerances(grade, gi.d, m_n, g.inp.b_w, std)
                           for gi in g.gears)
-            designation = iso1328.designation(grade)
+            designation = iso1328.designation(grade, std)
         if acc["jn_min"] is not None:
             jn, jn_src = acc["jn_min"], "spec"
         elif mating is not None:
@@ -187,9 +186,9 @@ def accuracy_of(g: PairGeometry, spec: ValidatedSpec) -> Accuracy:
         lower = tuple(gost1643.thickness_from_rack_shift(e + t, alpha_n)
                       for e, t in zip(E_Hs, T_H))
     else:
-        T_sn = (_require(acc, "T_sn1", "ISO 1328-1:2013: the tooth thickness tolerance of the "
+        T_sn = (_require(acc, "T_sn1", f"{std}: the tooth thickness tolerance of the "
                          "pinion in µm (DIN 3967 series)"),
-                _require(acc, "T_sn2", "ISO 1328-1:2013: the tooth thickness tolerance of the "
+                _require(acc, "T_sn2", f"{std}: the tooth thickness tolerance of the "
                          "wheel in µm"))
         assumed = acc["A_sne1"] is None or acc["A_sne2"] is None
         upper = tuple(acc[k] if acc[k] is not None else balanced for k in ("A_sne1", "A_sne2"))
@@ -282,7 +281,7 @@ def _pair(sec, key, values, unit, symbol, name, source):
 
 
 def _accuracy_rows(res: Result, acc: Accuracy) -> None:
-    src = SRC_GOST if acc.standard == gost1643.STANDARD else SRC_ISO
+    src = SRC_GOST if acc.standard == gost1643.STANDARD else acc.standard
     sec = res.section("accuracy", "Accuracy, tooth thickness allowances and backlash")
     sec.add("designation", acc.designation, None, "", "accuracy on the drawing", src)
     if acc.mating is not None:
@@ -301,7 +300,7 @@ def _accuracy_rows(res: Result, acc: Accuracy) -> None:
                                 ("f_HbetaT", "f_HβT", "helix slope tolerance"),
                                 ("F_rT", "F_rT", "runout tolerance")):
             _pair(sec, attr, tuple(getattr(f, attr) for f in acc.flank), "µm", sym, name,
-                  SRC_ISO + " 5.3")
+                  iso1328.source(attr, acc.standard))
     sec.add("jn_min_required", acc.jn_required, "µm", "j_n min", "required least normal backlash",
             acc.jn_source)
     sec.add("fa", acc.fa, "µm", "±f_a", "limit deviation of the centre distance",

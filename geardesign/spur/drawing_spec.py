@@ -6,7 +6,7 @@ from __future__ import annotations
 from geardesign.core.spec import REQUIRED, Field, Table
 from geardesign.spur.tolerances import gost1643, iso1328
 
-STANDARDS = (gost1643.STANDARD, iso1328.STANDARD)
+STANDARDS = (gost1643.STANDARD, *iso1328.EDITIONS)
 
 
 def _um(key: str, name: str, lo: float = 0.0, hi: float = 10000.0, **kw) -> Field:
@@ -28,8 +28,9 @@ def _expansion(key: str, who: str) -> Field:
 ACCURACY = Table("accuracy", "accuracy, tooth thickness allowances and backlash", (
     Field("standard", "string", "tolerance standard", default=REQUIRED, choices=STANDARDS,
           example=gost1643.STANDARD),
-    Field("grade", "integer", "accuracy degree (GOST 1643-81: 3…12) or flank tolerance class "
-          "(ISO 1328-1:2013: 1…11)", default=REQUIRED, minimum=1, maximum=12, example=8),
+    Field("grade", "integer", "accuracy degree (GOST 1643-81: 3…12), flank tolerance class "
+          "(ISO 1328-1:2013: 1…11) or accuracy grade (ISO 1328-1:1995: 0…12)",
+          default=REQUIRED, minimum=0, maximum=12, example=8),
     Field("mating", "string", "type of mating (GOST 1643-81): guaranteed backlash and the class "
           "of centre-distance deviation", default=None, choices=gost1643.MATINGS, example="B",
           hint="required with GOST 1643-81; with ISO 1328-1 it sets j_n min (else ISO/TR 10064-2)"),
@@ -38,7 +39,7 @@ ACCURACY = Table("accuracy", "accuracy, tooth thickness allowances and backlash"
           choices=gost1643.CLASSES),
     _um("jn_min", "required least normal backlash (instead of the standard's value)"),
     _um("fa", "limit deviation ±f_a of the centre distance (instead of the class value)",
-        hint="required with ISO 1328-1:2013"),
+        hint="required with ISO 1328-1"),
     _um("E_Hs1", "least additional rack shift of the pinion, −E_Hs (GOST 1643-81 table value, "
         "without its sign)", hint="from the backlash balance when not given"),
     _um("E_Hs2", "least additional rack shift of the wheel, −E_Hs"),
@@ -52,7 +53,7 @@ ACCURACY = Table("accuracy", "accuracy, tooth thickness allowances and backlash"
         hint="from the backlash balance when not given"),
     _um("A_sne2", "upper tooth thickness allowance of the wheel, ≤ 0", lo=-10000.0, hi=0.0),
     _um("T_sn1", "tooth thickness tolerance of the pinion (ISO pairs)",
-        hint="required with ISO 1328-1:2013"),
+        hint="required with ISO 1328-1"),
     _um("T_sn2", "tooth thickness tolerance of the wheel (ISO pairs)"),
     _temp("temperature_housing", "housing"),
     _temp("temperature_pinion", "pinion"),

@@ -234,12 +234,12 @@ def _evaluate_iso(c: dict, f: Fixed) -> dict:
     """ISO 6336:2019 rating of the candidates: :func:`iso6336.rating.rate` step by step
     (method B; K_Hβ by method C), external pairs, no spectrum, no scuffing."""
     from geardesign.core import xp
-    from geardesign.spur.strength.iso6336 import iso1328
     from geardesign.spur.strength.iso6336 import part1 as P1
     from geardesign.spur.strength.iso6336 import part2 as P2
     from geardesign.spur.strength.iso6336 import part3 as P3
     from geardesign.spur.strength.iso6336 import rating as IR
     from geardesign.spur.strength.iso6336 import tables as IT
+    from geardesign.spur.tolerances import iso1328
 
     m_n, z1, z2, x1, x2, beta, b = (c[k] for k in INPUTS)
     g = pair_core(m_n, z1, z2, x1, x2, beta, b, f.rack, f.tip_shortening)
@@ -272,14 +272,12 @@ def _evaluate_iso(c: dict, f: Fixed) -> dict:
         out.update({"sigma_Hlim" + k: sHlim[i], "sigma_Flim" + k: M[i]["sigma_Flim"]})
 
     # ------------------------------------------------------------------ accuracy
-    fpb = [iso1328.base_pitch(g["d" + k], m_n, g["alpha_t"], A) for k in "12"]
-    ffa = [iso1328.profile_form(g["d" + k], m_n, A) for k in "12"]
-    Fb = [iso1328.helix_total(g["d" + k], b, A) for k in "12"]
-    fHb = [iso1328.helix_slope(g["d" + k], b, A) for k in "12"]
-    f_pb = iso.f_pb if iso.f_pb is not None else np.maximum(*fpb)
-    f_fa = iso.f_falpha if iso.f_falpha is not None else np.maximum(*ffa)
-    F_beta = iso.F_beta if iso.F_beta is not None else np.maximum(*Fb)
-    f_Hb = np.maximum(*fHb)
+    tol = iso1328.rating_deviations(g["d1"], g["d2"], m_n, b, g["alpha_t"], A,
+                                    iso.tolerance_standard)
+    f_pb = iso.f_pb if iso.f_pb is not None else tol["f_pb"]
+    f_fa = iso.f_falpha if iso.f_falpha is not None else tol["f_falpha"]
+    F_beta = iso.F_beta if iso.F_beta is not None else tol["F_beta"]
+    f_Hb = tol["f_Hbeta"]
 
     # ------------------------------------------------------------------ stiffness
     cb = np.cos(g["beta_b"])

@@ -15,7 +15,6 @@ import math
 from dataclasses import dataclass, field
 
 from geardesign.core.result import Check, check
-from geardesign.spur.strength.iso6336 import iso1328
 from geardesign.spur.strength.iso6336 import part1 as P1
 from geardesign.spur.strength.iso6336 import part2 as P2
 from geardesign.spur.strength.iso6336 import part3 as P3
@@ -23,6 +22,7 @@ from geardesign.spur.strength.iso6336 import part5 as P5
 from geardesign.spur.strength.iso6336 import part21 as P21
 from geardesign.spur.strength.iso6336 import tables as T
 from geardesign.spur.strength.rating import Rating
+from geardesign.spur.tolerances import iso1328
 
 NAME = "ISO 6336:2019"
 S1, S2, S3 = "[ISO6336-1]", "[ISO6336-2]", "[ISO6336-3]"
@@ -77,6 +77,7 @@ class IsoSetting:
     """ISO 6336 inputs of a pair beyond the GOST setting."""
 
     grade: int | None = None           # ISO 1328-1 flank tolerance class; None: the spec's grade
+    tolerance_standard: str = iso1328.STANDARD   # edition of ISO 1328-1 of the tolerances
     nu40: float = 220.0                # mm²/s
     C_a: float | None = None           # tip relief, µm; None: C_ay from running-in
     modification: str = "none"
@@ -198,23 +199,23 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
     line_load = K_A * K_g * F_t / b
     R.put(F, "w", line_load, "N/mm", "K_A F_t/b", "line load", S1)
     R.put(F, "grade", float(A), "-", "A", "flank tolerance class", S1328)
-    fpb = [iso1328.base_pitch(gr.d, m_n, g.alpha_t, A) for gr in gears]
-    ffa = [iso1328.profile_form(gr.d, m_n, A) for gr in gears]
-    Fb = [iso1328.helix_total(gr.d, b, A) for gr in gears]
-    fHb = [iso1328.helix_slope(gr.d, b, A) for gr in gears]
-    f_pb = R.put(F, "f_pb", iso.f_pb if iso.f_pb is not None else max(fpb), "µm", "f_pb",
+    R.put(F, "tolerance_standard", iso.tolerance_standard, None, "",
+          "edition of ISO 1328-1 of the flank tolerances", "spec")
+    tol = iso1328.rating_deviations(g.g1.d, g.g2.d, m_n, b, g.alpha_t, A, iso.tolerance_standard)
+    S_tol = S1328 if iso.tolerance_standard == iso1328.STANDARD else "[ISO1328-1-1995]"
+    f_pb = R.put(F, "f_pb", iso.f_pb if iso.f_pb is not None else tol["f_pb"], "µm", "f_pb",
                  "transverse base pitch deviation (larger of the pair, f_pT·cos α_t)"
                  + (" (given)" if iso.f_pb is not None else ""),
-                 "spec" if iso.f_pb is not None else S1328)
-    f_fa = R.put(F, "f_falpha", iso.f_falpha if iso.f_falpha is not None else max(ffa), "µm",
-                 "f_fα", "profile form deviation (larger of the pair)"
+                 "spec" if iso.f_pb is not None else S_tol)
+    f_fa = R.put(F, "f_falpha", iso.f_falpha if iso.f_falpha is not None else tol["f_falpha"],
+                 "µm", "f_fα", "profile form deviation (larger of the pair)"
                  + (" (given)" if iso.f_falpha is not None else ""),
-                 "spec" if iso.f_falpha is not None else S1328)
-    R.put(F, "F_beta", iso.F_beta if iso.F_beta is not None else max(Fb), "µm", "F_β",
+                 "spec" if iso.f_falpha is not None else S_tol)
+    R.put(F, "F_beta", iso.F_beta if iso.F_beta is not None else tol["F_beta"], "µm", "F_β",
           "total helix deviation (larger of the pair)"
           + (" (given)" if iso.F_beta is not None else ""),
-          "spec" if iso.F_beta is not None else S1328)
-    f_Hb = max(fHb)
+          "spec" if iso.F_beta is not None else S_tol)
+    f_Hb = tol["f_Hbeta"]
 
     # ------------------------------------------------------------------ stiffness
     cb = math.cos(g.beta_b)
@@ -292,7 +293,7 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
         f_sh = R.put(F, "f_sh", P1.shaft_deflection(F_m_b, b, d1, iso.K_prime, iso.shaft_span,
                                                     iso.pinion_offset, iso.shaft_diameter),
                      "µm", "f_sh", "misalignment from the pinion shaft deflection", S1)
-    R.put(F, "f_Hbeta", f_Hb, "µm", "f_Hβ", "helix slope deviation (larger of the pair)", S1328)
+    R.put(F, "f_Hbeta", f_Hb, "µm", "f_Hβ", "helix slope deviation (larger of the pair)", S_tol)
     # f_ma = 1.0·f_Hβ for gears without provision for adjustment ([ISO6336-1] 7.6.2.4; the
     # same rule in DIN 3990-1 §3.4.2.4); the helix modification acts through B2
     f_ma = R.put(F, "f_ma", iso.f_ma if iso.f_ma is not None else f_Hb, "µm", "f_ma",

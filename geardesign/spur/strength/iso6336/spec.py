@@ -10,6 +10,8 @@ from __future__ import annotations
 from geardesign.core.errors import InputError, Problem
 from geardesign.core.spec import Field, Table
 from geardesign.spur.strength.iso6336 import tables as T
+from geardesign.spur.tolerances.iso1328 import EDITIONS as TOLERANCE_EDITIONS
+from geardesign.spur.tolerances.iso1328 import grades as tolerance_grades
 
 ISO_NAME = "ISO 6336:2019"
 
@@ -74,8 +76,13 @@ SCUFFING = Table("scuffing", "scuffing by the integral temperature method (ISO/T
 
 ISO = Table("iso", "ISO 6336:2019 rating data (used when options.method or options.methods "
             "names ISO 6336:2019)", (
-    Field("accuracy_grade", "integer", "flank tolerance class of ISO 1328-1:2013", symbol="A",
-          default=None, minimum=1, maximum=11, hint="gear.accuracy_grade when not given"),
+    Field("accuracy_grade", "integer", "flank tolerance class of ISO 1328-1 (2013: 1…11; "
+          "1995: accuracy grade 0…12)", symbol="A", default=None, minimum=0, maximum=12,
+          hint="accuracy.grade when [accuracy] names an ISO 1328-1 edition, else "
+               "gear.accuracy_grade"),
+    Field("tolerance_standard", "string", "edition of ISO 1328-1 whose tolerances give f_pb, "
+          "f_fα, f_Hβ and F_β", default=None, choices=TOLERANCE_EDITIONS,
+          hint="accuracy.standard when it names an ISO 1328-1 edition, else ISO 1328-1:2013"),
     Field("lubricant_viscosity", "number", "kinematic viscosity of the oil at 40 °C (ISO VG)",
           "mm^2/s", "ν40", default=220.0, minimum=2, maximum=3200),
     Field("tip_relief", "number", "amount of tip relief C_a (K_v)", "µm", "C_a", default=None,
@@ -200,7 +207,7 @@ def prepare(spec) -> None:
     for who in ("pinion", "wheel"):
         if iso.get(who) is None:
             iso[who] = _validate_table(ISO.member(who), {}, f"iso.{who}", problems, spec.assumed)
-    problems += pair_problems(iso, "iso")
+    problems += pair_problems(iso, "iso", d.get("accuracy"))
     if chosen(d["options"]) == [ISO_NAME] and d.get("material") is not None:
         for who in ("pinion", "wheel"):
             problems += gost_material_problems(d["material"][who], f"material.{who}",
@@ -209,10 +216,11 @@ def prepare(spec) -> None:
         raise InputError(problems)
 
 
-def pair_problems(iso: dict, path: str) -> list:
+def pair_problems(iso: dict, path: str, accuracy: dict | None = None) -> list:
     """The rules across the pair keys of an ``[iso]`` table (``path`` names it in the
     messages): the pinion shaft needs its span and diameter with an offset inside the
-    span; the scuffing oil's ν100 below its ν40."""
+    span; the accuracy grade a class of the tolerances' edition (:func:`tolerance_class`,
+    with the spec's ``[accuracy]``); the scuffing oil's ν100 below its ν40."""
     problems = []
     if iso["pinion_offset"] and (iso["shaft_span"] is None or iso["shaft_diameter"] is None):
         problems.append(Problem(f"{path}.pinion_offset", f"given without {path}.shaft_span and "
@@ -222,6 +230,11 @@ def pair_problems(iso: dict, path: str) -> list:
         problems.append(Problem(f"{path}.pinion_offset", f"lies outside the bearing span "
                                 f"(s <= l/2 = {0.5 * iso['shaft_span']:g} mm)",
                                 iso["pinion_offset"]))
+    standard, grade = tolerance_class(iso, accuracy)
+    classes = tolerance_grades(standard)
+    if iso["accuracy_grade"] is not None and grade not in classes:
+        problems.append(Problem(f"{path}.accuracy_grade", f"is not a class of {standard}: give "
+                                f"{classes.start}…{classes.stop - 1}", grade))
     sc = iso.get("scuffing")
     if sc is not None and sc["oil_viscosity_100"] is not None \
             and sc["oil_viscosity_100"] >= iso["lubricant_viscosity"]:
@@ -269,6 +282,21 @@ def gear_checks(iso: dict, geom, paths: tuple[str, str] = ("iso.pinion", "iso.wh
         raise InputError(problems)
 
 
+def tolerance_class(iso: dict, accuracy: dict | None = None) -> tuple[str, int | None]:
+    """The ISO 1328-1 edition and class of the rating's tolerances: ``[iso]``
+    tolerance_standard and accuracy_grade; else those of ``accuracy`` (a spur spec's
+    ``[accuracy]``) when it names an ISO 1328-1 edition (the drawing's tolerances); else
+    ISO 1328-1:2013 and None (the caller's grade, gear.accuracy_grade)."""
+    acc = accuracy or {}
+    drawing = acc.get("standard") in TOLERANCE_EDITIONS
+    standard = iso.get("tolerance_standard") or (acc["standard"] if drawing
+                                                 else TOLERANCE_EDITIONS[0])
+    grade = iso.get("accuracy_grade")
+    if grade is None and drawing and acc["standard"] == standard:
+        grade = acc.get("grade")
+    return standard, grade
+
+
 def iso_setting(spec, overrides: dict | None = None):
     """The :class:`~.rating.IsoSetting` of a validated, prepared spec."""
     iso = spec.data["iso"]
@@ -276,18 +304,21 @@ def iso_setting(spec, overrides: dict | None = None):
     if overrides:
         o.update(overrides)
     return setting_from(iso, (iso["pinion"], iso["wheel"]), o,
-                        scuffing_setting(iso.get("scuffing")))
+                        scuffing_setting(iso.get("scuffing")), accuracy=spec.data.get("accuracy"))
 
 
 def setting_from(iso: dict, gears: tuple[dict, dict], overrides: dict, scuffing,
-                 **extra):
+                 accuracy: dict | None = None, **extra):
     """The :class:`~.rating.IsoSetting` of validated ``[iso]`` pair keys, the two gear
-    tables in rating order, the given factors and the scuffing setting (``extra``: further
-    fields of the setting, e.g. a planetary mesh's ``K_gamma`` and ``nu40``)."""
+    tables in rating order, the given factors, the scuffing setting and the tolerances'
+    edition and class (:func:`tolerance_class`; ``accuracy``: a spur spec's ``[accuracy]``)
+    (``extra``: further fields of the setting, e.g. a planetary mesh's ``K_gamma`` and
+    ``nu40``)."""
     from geardesign.spur.strength.iso6336.rating import IsoGear, IsoSetting
 
+    standard, grade = tolerance_class(iso, accuracy)
     values = dict(
-        grade=iso["accuracy_grade"], C_a=iso["tip_relief"],
+        grade=grade, tolerance_standard=standard, C_a=iso["tip_relief"],
         modification=iso["helix_modification"], f_ma=iso["f_ma"], f_sh=iso["f_sh"],
         K_prime=iso["shaft_K_prime"], shaft_span=iso["shaft_span"],
         pinion_offset=iso["pinion_offset"], shaft_diameter=iso["shaft_diameter"],
