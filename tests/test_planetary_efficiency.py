@@ -88,3 +88,13 @@ def test_energy_balance_of_the_3k_train():
         P = f.P_mesh[x]
         losses += P * (1 - eta[x]) if f.k[x] > 0 else -P * (1 - eta[x]) / eta[x]
     assert sum(f.P.values()) == pytest.approx(losses, rel=1e-9)
+
+
+def test_the_loss_factor_holds_for_one_or_two_pairs_in_contact():
+    """Ohlendorf's H_V (ISO/TR 14179-2) is derived for 1 <= ε_α <= 2; the calculators refuse
+    a computed mesh efficiency outside (the drive: tests/test_drive_losses.py)."""
+    from geardesign.planetary.efficiency import EPS_ALPHA_RANGE, loss_factor_applies
+
+    assert EPS_ALPHA_RANGE == (1.0, 2.0)
+    assert [loss_factor_applies(e) for e in (0.99, 1.0, 1.6, 2.0, 2.01)] == [
+        False, True, True, True, False]
