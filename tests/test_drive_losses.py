@@ -85,7 +85,8 @@ def test_a_pair_that_cannot_mesh_gets_no_loss_factor(tmp_path):
     tip-circle contact ratios give H_V = 1.174): inv α_tw < 0, no working pressure angle,
     so the geometry refuses it before any loss is computed."""
     with pytest.raises(G.GeometryError) as info:
-        G.pair_geometry(G.PairInput(3.0, 12, 12, -0.25, -0.25, 0.0, 30.0, G.BasicRack(math.radians(20.0))))
+        G.pair_geometry(G.PairInput(3.0, 12, 12, -0.25, -0.25, 0.0, 30.0,
+                                    G.BasicRack(math.radians(20.0))))
     assert info.value.code == "INV_ALPHA_TW"
     lines = run_bad(tmp_path, 'kind = "spur"\n[gear]\nmodule = 3.0\nz1 = 12\nz2 = 12\n'
                     'x1 = -0.25\nx2 = -0.25\nface_width = 30.0\nallow_undercut = true\n')

@@ -292,7 +292,7 @@ def test_bad_input_exits_2_with_one_line(tmp_path):
                                    "than its hub (hub_length = 60 mm): give length <= 60")
 
 
-# ------------------------------------------------------------------ the fast spec (benchmarks/time_cases.py)
+# ---------------------------------------------- the fast spec (benchmarks/time_cases.py)
 
 
 def fast_text() -> str:
