@@ -24,6 +24,7 @@ import typer
 from geardesign import __version__
 from geardesign.core import registry
 from geardesign.core.errors import InputError, Problem
+from geardesign.testing import ATOL, RTOL
 
 app = typer.Typer(
     add_completion=True,
@@ -429,8 +430,13 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
 
 @app.command("check")
 def check_cmd(specs: List[Path] = ARG_SPECS,
-              rtol: float = typer.Option(1e-9, "--rtol", min=0.0, max=1.0,
-                                         help="Relative tolerance of every number."),
+              rtol: float = typer.Option(RTOL, "--rtol", min=0.0, max=1.0,
+                                         help="Relative tolerance: of a number to itself, "
+                                              "of an array's elements to the array's "
+                                              "largest magnitude."),
+              atol: float = typer.Option(ATOL, "--atol", min=0.0, max=1e300,
+                                         help="Absolute tolerance of every number, in its "
+                                              "own unit."),
               update: bool = typer.Option(False, "--update",
                                           help="Rewrite each SPEC.expected.json from the "
                                                "current results (on purpose; review the diff)."),
@@ -443,7 +449,7 @@ def check_cmd(specs: List[Path] = ARG_SPECS,
     code, problems = 0, []
     for spec in specs:
         try:
-            moved = check_golden(spec, update=update, rtol=rtol)
+            moved = check_golden(spec, update=update, rtol=rtol, atol=atol)
         except InputError as exc:
             problems.extend(p.line(str(spec)) for p in exc.problems)
             continue

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import math
 import os
+import time
+from contextlib import contextmanager
 
 # as the command line does (geardesign/cli.py): the beam problems are small, and OpenBLAS's
 # threads make them slow on a busy machine; read when numpy is first imported
@@ -11,11 +13,39 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 from pathlib import Path
 
 import pytest
+from hypothesis import settings
 
 from geardesign.core.registry import run_data
 
 ROOT = Path(__file__).resolve().parent.parent
 SPECS = ROOT / "specs"
+
+# Hypothesis: in CI (the environment variable CI set, as .ci/run and the usual CI services
+# do) every property test draws the same examples on every run, so a red run is reproduced
+# by running it again; locally the examples are random (and failures are kept in the
+# .hypothesis database). HYPOTHESIS_PROFILE=ci selects the CI profile by hand.
+settings.register_profile("ci", derandomize=True, database=None, print_blob=True)
+settings.register_profile("dev", print_blob=True)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE") or ("ci" if os.environ.get("CI")
+                                                               else "dev"))
+
+GUARD_FACTOR = 20.0
+"""A time bound that guards against unbounded work is this many times the figure measured
+on the development machine: it fails on a runaway loop or a quadratic cost, never on a busy
+or slow machine.  Speed goals are in ``benchmarks/`` (their figures in the docs)."""
+
+
+@contextmanager
+def bounded_work(measured_s: float, what: str = "the block"):
+    """Fail when the block takes more than :data:`GUARD_FACTOR` × ``measured_s`` seconds of
+    wall time (``measured_s``: the figure of the development machine).  The only clock a
+    test may read (``tests/test_suite_conventions.py``)."""
+    t0 = time.perf_counter()
+    yield
+    elapsed = time.perf_counter() - t0
+    assert elapsed < GUARD_FACTOR * measured_s, (
+        f"{what} took {elapsed:.2f} s, more than {GUARD_FACTOR:g} × the {measured_s} s "
+        f"measured: unbounded work?")
 
 
 def pytest_addoption(parser):

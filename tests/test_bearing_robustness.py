@@ -1,13 +1,12 @@
 """Bearing calculator robustness (issue 15): the "larger bearing" suggestion without a
 catalogue C_u, linear cost of load spectra, no check on a non-finite life."""
 
-import time
-
 import pytest
 
 from geardesign.bearing import life as L
 from geardesign.bearing.assess import Bearing, Block, Conditions, assess
 from geardesign.core.registry import run_data
+from tests.conftest import bounded_work
 from tests.helpers_cli import run_bad
 
 ISO_CASE = {"kind": "bearing", "method": "iso281_2007",
@@ -32,26 +31,27 @@ def _blocks(n):
     return [Block(1000.0 + (i % 7), 100.0 * (i % 3), 500.0 + i % 11, 1.0 / n) for i in range(n)]
 
 
-def test_spectrum_of_100000_blocks_is_linear_and_fast():
+def test_spectrum_of_100000_blocks_is_linear():
+    """Guards against a quadratic cost only (100 000 blocks squared would take hours);
+    the speed is measured by benchmarks/time_specs.py."""
     b = Bearing("deep_groove_ball", C_r=32500.0, C_0r=19000.0, f0=14.0, D_pw=60.0)
     cond = Conditions("gost18855_94", a23=1.0)
-    t = time.perf_counter()
-    a = assess(b, _blocks(100000), cond)
-    assert time.perf_counter() - t < 5.0
+    with bounded_work(1.2, "assessing 100 000 blocks"):
+        a = assess(b, _blocks(100000), cond)
     s = a.spectrum
     assert abs(sum(s.damage_share) - 1.0) < 1e-9 and a.life_h > 0
-    t = time.perf_counter()
-    L.spectrum_mean([1000.0 + i % 7 for i in range(100000)], [1000.0] * 100000,
-                    [1e-5] * 100000, 3.0)
-    assert time.perf_counter() - t < 0.5
+    with bounded_work(0.05, "the mean load of 100 000 blocks"):
+        L.spectrum_mean([1000.0 + i % 7 for i in range(100000)], [1000.0] * 100000,
+                        [1e-5] * 100000, 3.0)
 
 
-def test_spectrum_of_1000_blocks_through_a_spec_is_fast():
+def test_spectrum_of_1000_blocks_through_a_spec_is_linear():
     blocks = [{"F_r": 1000.0 + i, "speed": 1000.0, "time_share": 0.001} for i in range(1000)]
-    t = time.perf_counter()
-    doc = run_data({"kind": "bearing", "method": "gost18855_94",
-                    "bearing": {"designation": "6208"}, "load": {"spectrum": blocks}}).document()
-    assert time.perf_counter() - t < 3.0 and doc["verdict"] == "pass"
+    with bounded_work(0.1, "a spec of 1000 blocks"):
+        doc = run_data({"kind": "bearing", "method": "gost18855_94",
+                        "bearing": {"designation": "6208"},
+                        "load": {"spectrum": blocks}}).document()
+    assert doc["verdict"] == "pass"
 
 
 def test_a_non_finite_life_is_refused_not_passed():

@@ -11,11 +11,14 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from geardesign.core.errors import InputError
 from geardesign.core.registry import run_data
 from geardesign.core.spec import load_toml
 from geardesign.drive import losses as L
 from geardesign.drive import thermal as TH
-from tests.helpers_cli import cli, write_spec
+from geardesign.planetary import efficiency as EFF
+from geardesign.spur import geometry as G
+from tests.helpers_cli import cli, run_bad, write_spec
 
 ROOT = Path(__file__).resolve().parent.parent
 SPEC = ROOT / "specs" / "drive_thermal_two_stage.toml"
@@ -43,26 +46,68 @@ def test_friction_coefficient_positive_and_finite(F, b, v, rho, eta, Ra, XL):
     assert math.isfinite(mu) and mu > 0
 
 
-@settings(max_examples=200, deadline=None)
+def _pair(z1, z2, x1, x2, beta):
+    """The spur calculator's geometry of a pair (m = 3, α = 20°), None when it refuses it."""
+    try:
+        return G.pair_geometry(G.PairInput(3.0, z1, z2, x1, x2, math.radians(beta), 30.0,
+                                           G.BasicRack(math.radians(20.0))))
+    except G.GeometryError:
+        return None
+
+
+@settings(max_examples=300, deadline=None)
 @given(z1=st.integers(12, 60), u=st.floats(1.0, 8.0), beta=st.floats(0.0, 35.0),
        x1=st.floats(-0.3, 0.8), x2=st.floats(-0.3, 0.8))
-def test_tooth_loss_factor_positive(z1, u, beta, x1, x2):
-    z2 = max(z1, round(u * z1))
-    m, al = 3.0, math.radians(20.0)
-    bt = math.radians(beta)
-    at = math.atan(math.tan(al) / math.cos(bt))
-    d1, d2 = m * z1 / math.cos(bt), m * z2 / math.cos(bt)
-    db1, db2 = d1 * math.cos(at), d2 * math.cos(at)
-    inv_w = math.tan(at) - at + 2 * math.tan(al) * (x1 + x2) / (z1 + z2)
-    aw = at
-    for _ in range(60):
-        aw -= (math.tan(aw) - aw - inv_w) / math.tan(aw) ** 2
-    pbt = math.pi * m / math.cos(bt) * math.cos(at)
-    e1, e2 = L.partial_contact_ratios(d1 + 2 * m * (1 + x1), d2 + 2 * m * (1 + x2), db1, db2,
-                                      math.degrees(aw), pbt)
-    bb = math.degrees(math.atan(math.tan(bt) * math.cos(at)))
-    hv = L.tooth_loss_factor(z2 / z1, z1, bb, e1 + e2, e1)
-    assert e1 > 0 and e2 > 0 and 0 < hv < 1
+def test_tooth_loss_factor_within_its_model(z1, u, beta, x1, x2):
+    """H_V of every pair the geometry accepts: within the model (1 <= ε_α <= 2) the bracket
+    1 − ε_α + ε_1² + ε_2² lies in [½, 1 − ε_α + ε_α²], and in [½, 1] while the pitch point
+    is in single contact (0 <= ε_1, ε_2 <= 1), so H_V < 1 for z1 >= 12 there; the addendum
+    contact ratios of the loss functions are the geometry's."""
+    g = _pair(z1, max(z1, round(u * z1)), x1, x2, beta)
+    if g is None:
+        return
+    e1, e2 = L.partial_contact_ratios(g.g1.d_a, g.g2.d_a, g.g1.d_b, g.g2.d_b,
+                                      math.degrees(g.alpha_tw), g.p_bt)
+    assert e1 + e2 == pytest.approx(g.eps_alpha, rel=1e-9)
+    assert e1 > 0 and e2 > 0
+    if not EFF.loss_factor_applies(g.eps_alpha):
+        return
+    hv = L.tooth_loss_factor(g.u, z1, math.degrees(g.beta_b), g.eps_alpha, e1)
+    assert hv == pytest.approx(EFF.mesh_loss_factor(g), rel=1e-12)
+    k = math.pi * (g.u + 1) / (z1 * g.u * math.cos(g.beta_b))
+    assert 0.5 * k * (1 - 1e-12) <= hv <= k * (1 - g.eps_alpha + g.eps_alpha ** 2)
+    if e1 <= 1 and e2 <= 1:
+        assert hv <= k * (1 + 1e-12) and hv < 1
+
+
+def test_a_pair_that_cannot_mesh_gets_no_loss_factor(tmp_path):
+    """The draw that once failed the property above (z = 12/12, x = −0.25/−0.25, whose
+    tip-circle contact ratios give H_V = 1.174): inv α_tw < 0, no working pressure angle,
+    so the geometry refuses it before any loss is computed."""
+    with pytest.raises(G.GeometryError) as info:
+        G.pair_geometry(G.PairInput(3.0, 12, 12, -0.25, -0.25, 0.0, 30.0,
+                                    G.BasicRack(math.radians(20.0))))
+    assert info.value.code == "INV_ALPHA_TW"
+    lines = run_bad(tmp_path, 'kind = "spur"\n[gear]\nmodule = 3.0\nz1 = 12\nz2 = 12\n'
+                    'x1 = -0.25\nx2 = -0.25\nface_width = 30.0\nallow_undercut = true\n')
+    assert len(lines) == 1 and "no working pressure angle exists" in lines[0]
+
+
+def test_a_high_contact_ratio_stage_needs_its_efficiency_with_lubrication():
+    """ε_α = 2.57 (α = 15°, h_a* = 1.3): three pairs share the load, outside Ohlendorf's
+    H_V; the drive asks for the stage's efficiency instead, in one line (exit 2), and
+    computes with it."""
+    d = _data()
+    d["stage"][1]["gear"]["pressure_angle"] = 15.0
+    d["stage"][1]["rack"] = {"addendum_coef": 1.3}
+    with pytest.raises(InputError) as info:
+        _run(d)
+    assert [p.line("s.toml") for p in info.value.problems] == [
+        "s.toml: stage[1].efficiency: missing; [lubrication] computes the mesh loss of "
+        "stage 2 with Ohlendorf's H_V (ISO/TR 14179-2), which holds for 1 <= ε_α <= 2, and "
+        "the stage has ε_α = 2.57: give the stage's efficiency, or change its geometry"]
+    d["stage"][1]["efficiency"] = 0.98
+    assert _run(d)["results"]["losses"]
 
 
 @settings(max_examples=200, deadline=None)

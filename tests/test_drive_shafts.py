@@ -1,17 +1,14 @@
 """The drive with analysed shafts: steps, keys and fits on the shafts of a drive
 (geardesign.drive.shaft_analysis), the mesh misalignment from the shafts' slopes and the
-K_Hβ it gives, the input rules, and the time of a cold run."""
+K_Hβ it gives, and the input rules."""
 
 from __future__ import annotations
 
 import copy
 import json
 import math
-import os
 import subprocess
 import sys
-import tempfile
-import time
 
 import pytest
 
@@ -295,11 +292,12 @@ def test_bad_input_exits_2_with_one_line(tmp_path):
                                    "than its hub (hub_length = 60 mm): give length <= 60")
 
 
-# ------------------------------------------------------------------ time
+# ---------------------------------------------- the fast spec (benchmarks/time_cases.py)
 
 
-def _fast_text() -> str:
-    """The text of :func:`_fast`'s spec."""
+def fast_text() -> str:
+    """The text of :func:`_fast`'s spec (timed as a cold process by
+    benchmarks/time_cases.py)."""
     s = GOLDEN.read_text(encoding="utf-8")
     s = s[:s.index("[lubrication]")] + s[s.index("[[stage]]"):]
     s = s.replace(s[s.index("[stage.iso.scuffing]"):s.index("fzg_load_stage = 12\n") + 20], "")
@@ -312,28 +310,8 @@ def _fast_text() -> str:
 
 def test_fast_text_is_the_fast_spec(tmp_path):
     path = tmp_path / "fast.toml"
-    path.write_text(_fast_text(), encoding="utf-8")
+    path.write_text(fast_text(), encoding="utf-8")
     assert load_toml(path) == _fast()
-
-
-def test_three_shaft_drive_cold_run_is_quick(tmp_path):
-    """A cold process with the bytecode cached (as after installation): three analysed
-    shafts, five connections, two GOST stages with the informative ISO K_Hβ.  The best of
-    three runs; docs/drive.md gives the figure of the development machine."""
-    path = tmp_path / "three_shafts.toml"
-    path.write_text(_fast_text(), encoding="utf-8")
-    env = dict(os.environ, PYTHONPYCACHEPREFIX=tempfile.mkdtemp())
-    env.pop("PYTHONDONTWRITEBYTECODE", None)
-    cmd = [sys.executable, "-m", "geardesign", "run", str(path), "--format", "json"]
-    subprocess.run(cmd, capture_output=True, env=env)        # warm the bytecode cache
-    best = math.inf
-    for _ in range(3):
-        t0 = time.perf_counter()
-        proc = subprocess.run(cmd, capture_output=True, text=True, env=env)
-        best = min(best, time.perf_counter() - t0)
-        assert proc.returncode in (0, 1), proc.stderr
-    assert len(json.loads(proc.stdout)["results"]["shafts"]) == 3
-    assert best < 0.3, best
 
 
 def test_an_analysed_shaft_needs_all_its_gears():

@@ -88,3 +88,36 @@ def test_energy_balance_of_the_3k_train():
         P = f.P_mesh[x]
         losses += P * (1 - eta[x]) if f.k[x] > 0 else -P * (1 - eta[x]) / eta[x]
     assert sum(f.P.values()) == pytest.approx(losses, rel=1e-9)
+
+
+def test_the_loss_factor_holds_for_one_or_two_pairs_in_contact():
+    """Ohlendorf's H_V (ISO/TR 14179-2) is derived for 1 <= ε_α <= 2; the calculators refuse
+    a computed mesh efficiency outside (the drive: tests/test_drive_losses.py)."""
+    from geardesign.planetary.efficiency import EPS_ALPHA_RANGE, loss_factor_applies
+
+    assert EPS_ALPHA_RANGE == (1.0, 2.0)
+    assert [loss_factor_applies(e) for e in (0.99, 1.0, 1.6, 2.0, 2.01)] == [
+        False, True, True, True, False]
+
+
+def test_a_mesh_outside_the_loss_factor_is_refused_or_given(monkeypatch):
+    """The wiring of the refusal (a standard-rack train hardly leaves 1 <= ε_α <= 2, so the
+    range is narrowed here): model "niemann" is refused naming efficiency.model; with
+    model "given" the train computes and reports no H_V for that mesh."""
+    from geardesign.core.errors import InputError
+    from geardesign.core.registry import run_data
+    from geardesign.core.spec import load_toml
+    from geardesign.planetary import efficiency as EFF
+    from tests.conftest import SPECS
+
+    monkeypatch.setattr(EFF, "EPS_ALPHA_RANGE", (1.0, 1.5))
+    data = load_toml(SPECS / "planetary_2kh_reducer.toml")
+    with pytest.raises(InputError) as info:
+        run_data(data, "p.toml")
+    line = info.value.problems[0].line("p.toml")
+    assert line.startswith('p.toml: efficiency.model = "niemann": the loss factor H_V '
+                           "(Ohlendorf, ISO/TR 14179-2) holds for 1 <= ε_α <= 1.5")
+    assert 'give model = "given"' in line
+    data["efficiency"] = {"model": "given", "external": 0.99, "internal": 0.995}
+    eff = run_data(data, "p.toml").document()["results"]["efficiency"]
+    assert not any(k.startswith("H_V_") for k in eff) and eff["eta"] > 0

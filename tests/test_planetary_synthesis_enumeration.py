@@ -1,16 +1,16 @@
 """The vectorised tooth-number enumeration of the planetary synthesis gives the candidates
 of a plain loop over every tooth set (the procedure of the module notes written out), in
-the same order, and stays fast and small for the widest allowed search."""
+the same order, and stays bounded and small for the widest allowed search."""
 
 from __future__ import annotations
 
 import math
-import time
 import tracemalloc
 
 import pytest
 
 from geardesign.planetary import synthesis as S
+from tests.conftest import bounded_work
 
 
 def _loop(scheme, k, fixed, driving, driven, target, tol, sun_min, planet_min, ring_max, dev):
@@ -83,16 +83,16 @@ def test_enumeration_equals_the_loop(case):
             assert c.ratio == w[4] and c.deviation == w[5]
 
 
-def test_widest_3k_search_is_fast_and_small():
-    """ring_max = 1000, sum_deviation = 6, 20 % tolerance, sun and planet from 6 teeth."""
+def test_widest_3k_search_is_bounded_and_small():
+    """ring_max = 1000, sum_deviation = 6, 20 % tolerance, sun and planet from 6 teeth: the
+    work is bounded by the candidates counted and the memory by the peak (the speed goal is
+    benchmarks/time_cases.py's)."""
     args = ("3K", 3, "ring", "sun", "ring2", 300.0, 20.0, 6, 6, 1000, 6)
-    t = time.perf_counter()
-    got, total = S.candidates(*args, keep=S.MAX_EVALUATED)
-    dt = time.perf_counter() - t
+    with bounded_work(0.2, "the widest 3K search"):
+        got, total = S.candidates(*args, keep=S.MAX_EVALUATED)
     tracemalloc.start()
     S.candidates(*args, keep=S.MAX_EVALUATED)
     peak = tracemalloc.get_traced_memory()[1]
     tracemalloc.stop()
     assert total > 300_000 and len(got) == S.MAX_EVALUATED
-    assert dt < 1.0           # about 0.2 s on the development machine
     assert peak < 20e6        # about 8 MB

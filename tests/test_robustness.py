@@ -248,16 +248,15 @@ def test_pzdn_start_up_beyond_the_resolved_periods_is_refused_at_once(tmp_path):
 
 
 def test_bearing_spectrum_cost_is_linear(tmp_path):
-    import time
+    from tests.conftest import bounded_work
 
     blocks = "".join(f"[[load.spectrum]]\nF_r = {1000 + i}.0\nspeed = 1000.0\n"
                      f"time_share = 0.001\n" for i in range(1000))
     text = ('kind = "bearing"\nmethod = "gost18855_94"\n[bearing]\ndesignation = "6208"\n[requirements]\n'
             "life = 2000.0\n" + blocks)
-    t0 = time.perf_counter()
-    code, out, err = _run(tmp_path, text)
+    with bounded_work(0.15, "a spec of 1000 load blocks"):
+        code, out, err = _run(tmp_path, text)
     assert code in (0, 1), err
-    assert time.perf_counter() - t0 < 5.0
 
 
 def test_tiny_values_are_refused_not_divided_by(tmp_path):
@@ -321,10 +320,9 @@ def test_a_quantity_of_the_wrong_dimension_is_refused(tmp_path):
 
 
 def test_pzdn_integration_has_its_own_bound(tmp_path):
-    import time
+    from tests.conftest import bounded_work
 
-    t0 = time.perf_counter()
-    lines = run_bad(tmp_path, _spec("pzdn_ko2_startup_comparison", **{
-        'method = "both"': 'method = "both"\nt_end = 200.0'}))
-    assert time.perf_counter() - t0 < 5.0
+    with bounded_work(0.1, "refusing a start-up of 200 s"):
+        lines = run_bad(tmp_path, _spec("pzdn_ko2_startup_comparison", **{
+            'method = "both"': 'method = "both"\nt_end = 200.0'}))
     assert len(lines) == 1 and "resolved in bounded time by the integration" in lines[0]

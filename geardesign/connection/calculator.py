@@ -160,7 +160,9 @@ def _spline_report(res: Result, s: I.SplineInput, ld: I.Load,
 
 
 def _fit_report(res: Result, f: I.FitInput, ld: I.Load, r: solve.FitSolution) -> None:
-    res.methods = ["DIN 7190-1 (elastic)", "ISO 286" if f.fit_name else "interference given"]
+    res.methods = ["DIN 7190-1 (elastic)", "ISO 286" if f.fit_name else "interference given",
+                   f"permissible joint pressure: {f.pressure_limit}"]
+    limit = S.PRESSURE_LIMIT[f.pressure_limit]
     geo = res.section("interference", "Interference")
     if f.fit_name:
         geo.add("U_min", f.U_min, "µm", "U_min", f"smallest interference ({f.fit_name})",
@@ -206,14 +208,24 @@ def _fit_report(res: Result, f: I.FitInput, ld: I.Load, r: solve.FitSolution) ->
            "(bore of a hollow shaft, else the whole section)", S.LAME)
     st.add("sigma_v_shaft", s.sigma_v_shaft, "MPa", "σ_v,I", "von Mises stress of the shaft",
            S.VON_MISES)
-    st.add("S_P_hub", r.S_P_hub, "-", "S_P,A", "safety against yield, hub", S.VON_MISES)
-    st.add("S_P_shaft", r.S_P_shaft, "-", "S_P,I", "safety against yield, shaft", S.VON_MISES)
+    st.add("pressure_limit", f.pressure_limit, "-", "model", "model of the permissible joint "
+           "pressure", limit)
+    st.add("p_perm_hub", r.p_perm_hub, "MPa", "p_zul,A", "joint pressure at which the hub "
+           "yields", limit)
+    st.add("p_perm_shaft", r.p_perm_shaft, "MPa", "p_zul,I", "joint pressure at which the "
+           "shaft yields", limit)
+    st.add("S_P_hub", r.S_P_hub, "-", "S_P,A", "safety against yield, hub (p_zul,A/p_max)",
+           limit)
+    st.add("S_P_shaft", r.S_P_shaft, "-", "S_P,I", "safety against yield, shaft "
+           "(p_zul,I/p_max)", limit)
     st.add("U_perm", r.U_perm, "µm", "U_perm", f"largest interference for S_P = {_f(f.S_P)} "
-           f"(with smoothing)", S.VON_MISES)
+           f"(with smoothing)", limit)
 
     asm = res.section("assembly", "Assembly")
-    asm.add("F_press", r.F_press, "N", "F_e", "press-in force at the largest interference",
-            S.ASSEMBLY)
+    asm.add("mu_press_in", f.mu_e, "-", "μ_e", f"coefficient of friction for pressing in "
+            f"({f.surface})", f.mu_e_source)
+    asm.add("F_press", r.F_press, "N", "F_e", "press-in force at the largest interference "
+            "(π·d·l·μ_e·p_max)", S.ASSEMBLY)
     asm.add("clearance", f.clearance, "mm", "Δs", "joining clearance", S.ASSEMBLY)
     asm.add("theta_hub", r.theta, "°C", "ϑ_A", "hub temperature for shrinking on", S.ASSEMBLY)
 
@@ -233,12 +245,13 @@ def _fit_report(res: Result, f: I.FitInput, ld: I.Load, r: solve.FitSolution) ->
                             ("FIT_SHAFT_YIELD", "shaft", r.S_P_shaft)):
         res.checks.append(check(
             code, S_p >= f.S_P, "error",
-            f"the {part} yields at the largest interference: safety {S_p:.2f} < {_f(f.S_P)}; "
+            f"the {part} yields at the largest interference: safety {S_p:.2f} < {_f(f.S_P)} "
+            f"({f.pressure_limit}); "
             f"keep the largest interference below {_f(r.U_perm, 1)} µm (a looser fit) or use "
             f"a stronger material (a thicker wall hardly helps: the stress at the bore follows "
             f"the interference)",
-            f"{part} safety against yield {S_p:.2f} >= {_f(f.S_P)}",
-            S_p if math.isfinite(S_p) else None, f.S_P, S.VON_MISES))
+            f"{part} safety against yield {S_p:.2f} >= {_f(f.S_P)} ({f.pressure_limit})",
+            S_p if math.isfinite(S_p) else None, f.S_P, limit))
     if f.joining == "shrink":
         res.checks.append(check(
             "FIT_SHRINK_TEMPERATURE", r.theta <= SHRINK_TEMPERATURE_MAX, "warning",

@@ -12,6 +12,14 @@ The joint transmits the torque T = π/2·d_F²·l_F·μ·p and the axial force F
 in a solid shaft σ_t = σ_r = −p; at the bore of a hollow shaft σ_t = −2·p/(1 − Q_I²),
 σ_r = 0; the equivalent stress is von Mises' of the plane stress ([Roark]).
 
+Permissible joint pressure (:data:`PRESSURE_LIMITS`): by default DIN 7190-1's, from the
+distortion-energy hypothesis with the difference of the principal stresses at the bore,
+p_zul,A = R_eA·(1 − Q_A²)/(√3·S_P) for the hub, 2·R_eI/(√3·S_P) for a solid shaft and
+R_eI·(1 − Q_I²)/(√3·S_P) for a hollow one ([DIN7190-1]; printed as eqs. (8) to (10) of
+[WHZPressfit]); or the exact limit of the plane-stress von Mises stress above
+(``"von Mises"``), which allows √3/√(3 + Q_A⁴) of the DIN pressure at the hub (1 for a thick
+hub, 0.866 for a thin one) and √3/2 = 0.866 of it in the shaft: the stricter of the two.
+
 Units: lengths mm, interference µm (converted to mm inside), stresses and moduli MPa, forces N,
 torques N·mm.
 """
@@ -68,7 +76,9 @@ def torque(p: float, d: float, l: float, mu: float) -> float:
 
 
 def axial_force(p: float, d: float, l: float, mu: float) -> float:
-    """Transmittable (or press-in) axial force F = π·d·l·μ·p [N]."""
+    """Transmittable axial force F = π·d·l·μ·p [N] (μ the slip coefficient), or the press-in
+    force F_e = π·d·l·μ_e·p_max (μ_e the press-in coefficient; [DIN7190-1], [WHZPressfit]
+    eq. (15))."""
     return math.pi * d * l * mu * p
 
 
@@ -115,19 +125,58 @@ def stresses(p: float, d: float, D_a: float, D_i: float) -> Stresses:
     return Stresses(st_hub, st_out, von_mises(st_hub, -p), st_shaft, sv_shaft)
 
 
-def hub_pressure_limit(R_e: float, d: float, D_a: float, S_P: float) -> float:
-    """Joint pressure [MPa] at which the von Mises stress at the hub bore reaches R_e/S_P."""
+PRESSURE_LIMITS = ("DIN 7190-1", "von Mises")
+"""The models of the permissible joint pressure (spec key ``fit.pressure_limit``)."""
+
+
+def hub_pressure_limit_din(R_e: float, d: float, D_a: float, S_P: float) -> float:
+    """Permissible joint pressure of the hub [MPa], p_zul,A = R_eA·(1 − Q_A²)/(√3·S_P),
+    Q_A = d_F/D_aA ([DIN7190-1]; [WHZPressfit] eq. (8)).
+
+    >>> round(hub_pressure_limit_din(355.0, 60.0, 120.0, 1.0), 2)
+    153.72
+    """
+    Q = d / D_a
+    return R_e / S_P * (1 - Q ** 2) / math.sqrt(3.0)
+
+
+def shaft_pressure_limit_din(R_e: float, d: float, D_i: float, S_P: float) -> float:
+    """Permissible joint pressure of the shaft [MPa]: solid, 2·R_eI/(√3·S_P); hollow,
+    R_eI·(1 − Q_I²)/(√3·S_P), Q_I = D_iI/d_F ([DIN7190-1]; [WHZPressfit] eqs. (9), (10))."""
+    if D_i <= 0:
+        return 2.0 * R_e / (math.sqrt(3.0) * S_P)
+    Q = D_i / d
+    return R_e / S_P * (1 - Q ** 2) / math.sqrt(3.0)
+
+
+def hub_pressure_limit_von_mises(R_e: float, d: float, D_a: float, S_P: float) -> float:
+    """Joint pressure [MPa] at which the plane-stress von Mises stress at the hub bore
+    reaches R_e/S_P: R_e/S_P·(1 − Q_A²)/√(3 + Q_A⁴) ([Roark])."""
     Q = d / D_a
     return R_e / S_P * (1 - Q ** 2) / math.sqrt(3 + Q ** 4)
 
 
-def shaft_pressure_limit(R_e: float, d: float, D_i: float, S_P: float) -> float:
+def shaft_pressure_limit_von_mises(R_e: float, d: float, D_i: float, S_P: float) -> float:
     """Joint pressure [MPa] at which the shaft reaches R_e/S_P (solid: σ_v = p; hollow: the
-    bore, σ_v = 2p/(1 − Q_I²))."""
+    bore, σ_v = 2p/(1 − Q_I²)) ([Roark])."""
     if D_i <= 0:
         return R_e / S_P
     Q = D_i / d
     return R_e / S_P * (1 - Q ** 2) / 2.0
+
+
+def pressure_limits(model: str, R_eA: float, R_eI: float, d: float, D_a: float, D_i: float,
+                    S_P: float) -> tuple[float, float]:
+    """Permissible joint pressures (hub, shaft) [MPa] by ``model`` (:data:`PRESSURE_LIMITS`).
+
+    >>> hub, shaft = pressure_limits("DIN 7190-1", 355.0, 355.0, 60.0, 120.0, 30.0, 1.0)
+    >>> round(hub, 2), round(shaft, 2)
+    (153.72, 153.72)
+    """
+    if model == "von Mises":
+        return (hub_pressure_limit_von_mises(R_eA, d, D_a, S_P),
+                shaft_pressure_limit_von_mises(R_eI, d, D_i, S_P))
+    return hub_pressure_limit_din(R_eA, d, D_a, S_P), shaft_pressure_limit_din(R_eI, d, D_i, S_P)
 
 
 def shrink_temperature(U_max: float, d: float, alpha: float, clearance: float,

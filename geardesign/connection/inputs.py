@@ -226,6 +226,9 @@ class FitInput:
     surface: str
     mu: float
     mu_source: str
+    mu_e: float               # press-in coefficient of friction
+    mu_e_source: str
+    pressure_limit: str       # model of the permissible joint pressure
     S_R: float
     S_P: float
     E_I: float
@@ -279,15 +282,20 @@ def fit(data: dict) -> FitInput:
                             f"{what} no interference at {fmt(d)} mm (largest {fmt(U_max, 1)} "
                             f"µm): a clearance or transition fit transmits nothing by "
                             f"friction; choose an interference fit such as H7/s6")
+    friction = tables.toml()["friction"][f["hub_material"]]
     if f["friction"] is not None:
         mu, mu_src = f["friction"], "spec"
     else:
-        mu = tables.toml()["friction"][f["hub_material"]][f["joining"]][f["surface"]]
-        mu_src = S.FRICTION
+        mu, mu_src = friction[f["joining"]][f["surface"]], S.FRICTION
+    if f["friction_press_in"] is not None:
+        mu_e, mu_e_src = f["friction_press_in"], "spec"
+    else:
+        mu_e, mu_e_src = friction["press"][f["surface"]], S.FRICTION_PRESS_IN
     clearance = (f["joining_clearance"] if f["joining_clearance"] is not None
                  else CLEARANCE_SHARE * d)
     return FitInput(d, D_a, D_i, f["length"], U_min, U_max, name, src, f["rz_shaft"],
-                    f["rz_hub"], f["joining"], f["surface"], mu, mu_src, f["slip_safety"],
+                    f["rz_hub"], f["joining"], f["surface"], mu, mu_src, mu_e, mu_e_src,
+                    f["pressure_limit"], f["slip_safety"],
                     f["yield_safety"], f["shaft_modulus"], f["shaft_poisson"],
                     f["shaft_yield"], f["hub_modulus"], f["hub_poisson"], f["hub_yield"],
                     f["hub_expansion"], f["room_temperature"], clearance)

@@ -116,6 +116,8 @@ class FitSolution:
     p_req: float
     U_req: float          # [µm]
     stress: F.Stresses    # at p_max
+    p_perm_hub: float     # permissible joint pressures at S_P = 1 [MPa]
+    p_perm_shaft: float
     S_P_hub: float
     S_P_shaft: float
     U_perm: float         # [µm]
@@ -125,7 +127,8 @@ class FitSolution:
 
 def fit(f: FitInput, ld: Load) -> FitSolution:
     """Joint pressure, capacity, stresses and assembly of an interference fit
-    ([DIN7190-1]; Lamé, [Roark])."""
+    ([DIN7190-1]; Lamé, [Roark]); the yield safeties by the model ``f.pressure_limit`` of
+    the permissible pressure, the press-in force with the press-in coefficient μ_e."""
     loss = F.smoothing(f.rz_shaft, f.rz_hub)
     Uw_min, Uw_max = f.U_min - loss, f.U_max - loss
     C = F.compliance(f.d, f.D_a, f.D_i, f.E_A, f.nu_A, f.E_I, f.nu_I)
@@ -134,13 +137,14 @@ def fit(f: FitInput, ld: Load) -> FitSolution:
     S_slip = F_slip / math.hypot(2.0 * ld.T_d / f.d, ld.F_ax * ld.K_A)
     p_req = F.required_pressure(ld.T_d, ld.F_ax * ld.K_A, f.d, f.l, f.mu, f.S_R)
     s = F.stresses(p_max, f.d, f.D_a, f.D_i)
-    S_hub = f.R_eA / s.sigma_v_hub if s.sigma_v_hub > 0 else math.inf
-    S_shaft = f.R_eI / s.sigma_v_shaft if s.sigma_v_shaft > 0 else math.inf
-    p_lim = min(F.hub_pressure_limit(f.R_eA, f.d, f.D_a, f.S_P),
-                F.shaft_pressure_limit(f.R_eI, f.d, f.D_i, f.S_P))
+    # the yield safeties are the ratios of the permissible pressures (S_P = 1) to p_max
+    p_hub, p_shaft = F.pressure_limits(f.pressure_limit, f.R_eA, f.R_eI, f.d, f.D_a, f.D_i, 1.0)
+    S_hub = p_hub / p_max if p_max > 0 else math.inf
+    S_shaft = p_shaft / p_max if p_max > 0 else math.inf
+    p_lim = min(p_hub, p_shaft) / f.S_P
     return FitSolution(
         f.d / f.D_a, f.D_i / f.d, loss, Uw_min, Uw_max, p_min, p_max,
         F.torque(p_min, f.d, f.l, f.mu), F_slip, S_slip, p_req,
-        F.interference_for(p_req, f.d, C) + loss, s, S_hub, S_shaft,
-        F.interference_for(p_lim, f.d, C) + loss, F.axial_force(p_max, f.d, f.l, f.mu),
+        F.interference_for(p_req, f.d, C) + loss, s, p_hub, p_shaft, S_hub, S_shaft,
+        F.interference_for(p_lim, f.d, C) + loss, F.axial_force(p_max, f.d, f.l, f.mu_e),
         F.shrink_temperature(f.U_max, f.d, f.alpha_A, f.clearance, f.room))

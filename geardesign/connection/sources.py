@@ -16,6 +16,12 @@ ISO286 = "[ISO286] tables 1 and 2"
 LAME = "[DIN7190-1] (Lamé, elastic); [Roark] thick cylinders"
 SMOOTHING = "[DIN7190-1] (smoothing 0.8·(Rz_i + Rz_a))"
 FRICTION = "[DIN7190-1] friction table; [RoloffMatek] TB 12-6"
+FRICTION_PRESS_IN = ("[DIN7190-1] longitudinal press fits (release μ_ll; [WHZPressfit] eq. "
+                     "(15)); [RoloffMatek] TB 12-6")
+PRESSURE_LIMIT = {
+    "DIN 7190-1": "[DIN7190-1] (GEH: R_e·(1 − Q²)/√3; [WHZPressfit] eqs. (8)-(10))",
+    "von Mises": "[Roark] thick cylinders (von Mises, plane stress)",
+}
 SLIP = "[DIN7190-1] (T = π/2·d²·l·μ·p)"
 ASSEMBLY = "[DIN7190-1] (press-in force, shrink temperature)"
 VON_MISES = "[Roark] thick cylinders (von Mises, plane stress)"

@@ -97,8 +97,15 @@ FIT = Table("fit", "cylindrical interference fit (DIN 7190-1, elastic)", (
           default="shrink", choices=("shrink", "press")),
     Field("surface", "string", "joint faces oiled (normal) or degreased (dry)",
           default="oiled", choices=("oiled", "dry")),
-    Field("friction", "number", "coefficient of friction (instead of the table)", symbol="μ",
-          default=None, minimum=0.01, maximum=1.0),
+    Field("friction", "number", "coefficient of friction against slip (instead of the "
+          "table)", symbol="μ", default=None, minimum=0.01, maximum=1.0),
+    Field("friction_press_in", "number", "coefficient of friction for the press-in force "
+          "(instead of the table of longitudinal press fits)", symbol="μ_e", default=None,
+          minimum=0.01, maximum=1.0),
+    Field("pressure_limit", "string", "permissible joint pressure: \"DIN 7190-1\" "
+          "(R_e·(1 − Q²)/√3 at the bores, 2·R_e/√3 for a solid shaft) or \"von Mises\" (the "
+          "exact plane-stress limit)", default="DIN 7190-1",
+          choices=("DIN 7190-1", "von Mises")),
     Field("slip_safety", "number", "required safety against slip", symbol="S_R",
           default=1.5, minimum=1.0, maximum=10.0),
     Field("yield_safety", "number", "required safety against yield at the largest "

@@ -22,6 +22,7 @@ from geardesign.drive import heat as HEAT
 from geardesign.drive import losses as L
 from geardesign.drive import thermal as TH
 from geardesign.materials import lubricants as OIL
+from geardesign.planetary.efficiency import EPS_ALPHA_RANGE, loss_factor_applies
 
 MAX_PASSES = 5
 EFFICIENCY_TOL = 1e-6
@@ -117,8 +118,15 @@ def _build(spec, stages, runs, oil: HEAT.Oil) -> tuple:
     P_in = [r.T_in * r.n_in * math.pi / 30.0 for r in runs]
     m = HEAT.Model(oil, n, P_in)
     geo = []
-    for i, ((_, _, _, eta), r) in enumerate(zip(stages, runs)):
+    for i, ((key, _, _, eta), r) in enumerate(zip(stages, runs)):
         mesh, dip, g = (None, [], None) if eta is not None else _mesh(r, i)
+        if mesh is not None and not loss_factor_applies(mesh.eps_alpha):
+            lo, hi = EPS_ALPHA_RANGE
+            raise InputError(Problem(
+                f"{key}.efficiency", f"missing; [lubrication] computes the mesh loss of "
+                f"stage {i + 1} with Ohlendorf's H_V (ISO/TR 14179-2), which holds for "
+                f"{lo:g} <= ε_α <= {hi:g}, and the stage has ε_α = {mesh.eps_alpha:.4g}: give "
+                f"the stage's efficiency, or change its geometry"))
         if mesh is not None:
             m.meshes[i] = mesh
             m.dip += dip

@@ -575,6 +575,14 @@ def _mesh_efficiencies(d: dict, train: K.Train, meshes: list[PG.Mesh]) -> tuple[
         central = "sun" if mesh.spec.pinion == "sun" else mesh.spec.wheel
         H = E.mesh_loss_factor(mesh.geom)
         hv[mesh.name] = H
+        if eff["model"] != "given" and not E.loss_factor_applies(mesh.geom.eps_alpha):
+            lo, hi = E.EPS_ALPHA_RANGE
+            raise InputError.at("efficiency.model", eff["model"], f"the loss factor H_V "
+                                f"(Ohlendorf, ISO/TR 14179-2) holds for {lo:g} <= ε_α <= "
+                                f"{hi:g}, and the {mesh.name.replace('_', '–')} mesh has ε_α = "
+                                f"{mesh.geom.eps_alpha:.4g}: give model = \"given\" with the "
+                                f"external and internal mesh efficiencies, or change the "
+                                f"geometry")
         if eff["model"] == "given":
             eta = eff["internal"] if mesh.spec.internal else eff["external"]
         else:
@@ -624,8 +632,9 @@ def _kinematics_and_power(res: Result, d: dict, train: K.Train, meshes: list[PG.
     for mesh in meshes:
         central = "sun" if mesh.spec.pinion == "sun" else mesh.spec.wheel
         mn = C.MESH_NAMES.get(mesh.name)
-        esec.add(f"H_V_{mesh.name}", hv[mesh.name], "-", f"H_V,{mesh.name}",
-                 f"tooth loss factor of the {mn} mesh", S.HV)
+        if E.loss_factor_applies(mesh.geom.eps_alpha):   # else only a given efficiency
+            esec.add(f"H_V_{mesh.name}", hv[mesh.name], "-", f"H_V,{mesh.name}",
+                     f"tooth loss factor of the {mn} mesh", S.HV)
         esec.add(f"eta_{mesh.name}", eta[central], "-", f"η_{mesh.name}",
                  f"efficiency of the {mn} mesh", S.HV if d["efficiency"]["model"] == "niemann"
                  else "spec")

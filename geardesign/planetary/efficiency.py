@@ -32,6 +32,11 @@ from geardesign.core import xp
 from geardesign.planetary.kinematics import Speeds, Train
 
 
+EPS_ALPHA_RANGE = (1.0, 2.0)
+"""Transverse contact ratios for which :func:`loss_factor` holds: one or two pairs in
+contact, each pair carrying its share of the load."""
+
+
 def loss_factor(eps_alpha: float, eps_1: float, z1: int, u: float, beta_b: float) -> float:
     """Tooth loss factor H_V of a mesh (Ohlendorf; Niemann & Winter; ISO/TR 14179-2):
 
@@ -43,10 +48,27 @@ def loss_factor(eps_alpha: float, eps_1: float, z1: int, u: float, beta_b: float
     coefficient of friction), so its efficiency is 1 − μ_m H_V.  KISSsoft prints
     H_V = 0.181 and 0.161 for the sun–planet and planet–ring meshes of the NREL 5 MW
     stage 1 (``tests/reference/planetary``).
+
+    Validity.  The closed form is Ohlendorf's mean sliding-to-rolling ratio along the path
+    of contact with the load shared equally by the pairs in contact, derived for one or two
+    pairs in contact, 1 ≤ ε_α ≤ 2 (:data:`EPS_ALPHA_RANGE`): below 1 the mesh does not
+    transmit continuously, above 2 three pairs share the load.  It is used as printed over
+    that whole range, also when the pitch point lies in double contact (ε_1 > 1 on the
+    planet of the NREL planet–ring mesh: ε_1 = 1.24, ε_2 = 0.04, and KISSsoft prints the
+    closed form's 0.161).  Then ½ ≤ 1 − ε_α + ε_1² + ε_2² ≤ 1 − ε_α + ε_α², and ≤ 1 when
+    0 ≤ ε_1, ε_2 ≤ 1.  Outside the range the calculators refuse a computed mesh efficiency
+    (:func:`loss_factor_applies`); a pair that cannot mesh (inv α_tw ≤ 0) is refused by the
+    geometry before.
     """
     eps_2 = eps_alpha - eps_1
     return math.pi * (u + 1.0) / (z1 * u * xp.cos(beta_b)) * (
         1.0 - eps_alpha + eps_1 * eps_1 + eps_2 * eps_2)
+
+
+def loss_factor_applies(eps_alpha: float) -> bool:
+    """Whether :func:`loss_factor` holds for a mesh of transverse contact ratio ε_α."""
+    lo, hi = EPS_ALPHA_RANGE
+    return lo <= eps_alpha <= hi
 
 
 def mesh_loss_factor(geom) -> float:
