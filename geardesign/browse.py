@@ -136,16 +136,17 @@ def _hint(word: str, names: list[str]) -> str:
 # ----------------------------------------------------------------------------- commands
 
 
-def register(app: typer.Typer, choose_format: Callable) -> None:
+def register(app: typer.Typer, choose_format: Callable, finite: Callable) -> None:
     """Add the two browsing commands to the command line (called from :mod:`geardesign.cli`);
-    ``choose_format(fmt, None)`` picks the format as the other commands do."""
+    ``choose_format(fmt, None)`` picks the format as the other commands do; ``finite`` is the
+    callback that refuses a float option of ``nan`` or ``inf``."""
 
     @app.command("bearings")
     def bearings_cmd(
             filter_: Optional[str] = typer.Argument(None, metavar="[FILTER]",
                                                     help="Part of a designation: 62, NU 2, "
                                                          "302, 7208 (ISO, maker's or GOST)."),
-            bore: Optional[float] = typer.Option(None, "--bore", min=0.0,
+            bore: Optional[float] = typer.Option(None, "--bore", min=0.0, callback=finite,
                                                  help="Bore diameter d (mm)."),
             type_: Optional[str] = typer.Option(None, "--type", help="Bearing type, e.g. "
                                                 "tapered_roller."),
