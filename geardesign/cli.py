@@ -239,18 +239,16 @@ def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quie
 
 
 OPT_FORMAT = typer.Option(None, "--format", "-f", help=FORMAT_HELP, case_sensitive=False)
-OPT_OUTPUT = typer.Option(None, "--output", "-o", help="Write the report to FILE (atomically).",
-                          dir_okay=False)
+OPT_OUTPUT = typer.Option(None, "--output", "-o", help="Write the report to FILE (atomically).")
 OPT_QUIET = typer.Option(False, "--quiet", "-q",
                          help="No report on stdout and no notes on stderr; the exit code tells "
                               "the verdict (input errors are still printed).")
 ARG_SPECS = typer.Argument(..., help="Spec file(s), TOML.", show_default=False)
 OPT_PLOT = typer.Option(None, "--plot", help="Write the start-up transient of a pzdn spec "
                         "with [startup], or the mesh of a spur pair, to FILE (.png or .svg; "
-                        "needs matplotlib).",
-                        dir_okay=False)
+                        "needs matplotlib).")
 OPT_PROFILE = typer.Option(None, "--profile", help="Write the tooth profiles of a spur pair "
-                           "in mesh to FILE (.dxf needs ezdxf, or .svg).", dir_okay=False)
+                           "in mesh to FILE (.dxf needs ezdxf, or .svg).")
 OPT_SELECT = typer.Option(False, "--select",
                           help="Selection mode, as mode = \"select\" in the spec (bearing: the "
                                "smallest catalogue bearing that meets the required life).")
@@ -566,7 +564,9 @@ def main() -> None:
     _register_kinds()
     try:
         app()
-    except SystemExit:
+    except SystemExit as exc:
+        if exc.code == 130:       # typer ends a Ctrl-C in a command with a silent exit 130
+            _err("geardesign: interrupted")
         raise
     except KeyboardInterrupt:
         _err("geardesign: interrupted")

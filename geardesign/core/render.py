@@ -243,11 +243,11 @@ _FORMULA = ("=", "+", "-", "@", "\t", "\r")
 def csv_cell(x: Any) -> Any:
     """A CSV cell: numbers as they are; text with its control characters escaped
     (:func:`escape_controls`) and, when it begins like a formula (``=``, ``+``, ``-``,
-    ``@``, tab, CR) and is not a plain number, preceded by ``'`` so that a spreadsheet
+    ``@``, tab, CR) and is not a plain number (or the unit ``-``), preceded by ``'`` so that a spreadsheet
     shows it as text instead of evaluating it (OWASP, "CSV injection")."""
     if not isinstance(x, str):
         return x
-    if x.startswith(_FORMULA):
+    if x.startswith(_FORMULA) and x != "-":
         try:
             number = math.isfinite(float(x))
         except ValueError:
