@@ -159,7 +159,7 @@ def check_golden(spec, update: bool = False, rtol: float = RTOL) -> list[Differe
 
     path = expected_path(spec)
     if update:                             # before the work: refused targets cost nothing
-        check_target(path, Path(spec).resolve().parent, path.name)
+        check_target(path, Path(spec).absolute().parent.resolve(), path.name)
     data = load_toml(spec)                 # read once: a sweep spec or a calculator's spec
     if "sweep" in data:
         from geardesign.spur.sweep import run_data as run_sweep_data
@@ -169,7 +169,7 @@ def check_golden(spec, update: bool = False, rtol: float = RTOL) -> list[Differe
         calc, vspec = load(spec, data=data)
         doc = calc.compute(vspec).document()
     if update:
-        write_atomic(path, golden_text(doc), inside=Path(spec).resolve().parent)
+        write_atomic(path, golden_text(doc), inside=Path(spec).absolute().parent.resolve())
         return []
     expected = read_json(path, label=path.name)
     return compare_documents(doc, expected, rtol=rtol)

@@ -258,14 +258,17 @@ def test_sweep_workers_are_capped_at_the_cores(tmp_path, monkeypatch):
     assert code in (0, 1) and seen["workers"] == 3 and err == ""
 
 
-def test_an_unreachable_scheduler_is_one_line(tmp_path):
+def test_an_unreachable_scheduler_is_one_line(tmp_path, monkeypatch):
     pytest.importorskip("dask.distributed")
+    from geardesign.spur import sweep as SW
+
+    monkeypatch.setattr(SW, "CONNECT_TIMEOUT", 1.0)      # 10 s in use
     spec = SPECS / "sweep_spur_iso.toml"
     for address in ("tcp://127.0.0.1:9", "nonsense://x"):
         code, out, err = cli("sweep", spec, "--scheduler", address, "-f", "json")
         assert code == 2 and out == ""
         assert _one_line(err).startswith(f"geardesign sweep: --scheduler {address}: cannot "
-                                         f"reach the Dask scheduler within 10 s")
+                                         f"reach the Dask scheduler within 1 s")
 
 
 def test_reading_a_missing_spec_and_a_directory():

@@ -146,12 +146,16 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
             width = max(60, min(int(os.environ.get("COLUMNS", "120")), 1000))
         except ValueError:
             width = 120
+    def _t(text: Any, style: str = "") -> Text:
+        """Text as it is (no markup), control characters escaped."""
+        return Text(escape_controls(str(text)), style=style)
+
     buf = io.StringIO()
     console = Console(file=buf, force_terminal=color, no_color=not color, width=width,
                       highlight=False, emoji=False, soft_wrap=False)
 
     def rows_table(title: str, rows: list[Row], with_source: bool) -> Table:
-        t = Table(title=title, title_justify="left", title_style="bold", box=box.SIMPLE_HEAD,
+        t = Table(title=_t(title), title_justify="left", title_style="bold", box=box.SIMPLE_HEAD,
                   show_edge=False, pad_edge=False)
         t.add_column("symbol", no_wrap=True)
         t.add_column("name")
@@ -161,22 +165,21 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
         for row in rows:
             note = row.source if with_source else ("assumed" if row.assumed else "")
             value = fmt(row.value) + ("*" if row.assumed else "")
-            t.add_row(Text(row.symbol), Text(row.name), Text(value), Text(row.unit or ""),
-                      Text(note))
+            t.add_row(_t(row.symbol), _t(row.name), _t(value), _t(row.unit or ""), _t(note))
         return t
 
     def data_table(t) -> Table:
-        tab = Table(title=t.title, title_justify="left", title_style="bold", box=box.SIMPLE_HEAD,
+        tab = Table(title=_t(t.title), title_justify="left", title_style="bold", box=box.SIMPLE_HEAD,
                     show_edge=False, pad_edge=False)
         for _, head, unit in t.columns:
-            tab.add_column(head + (f" [{unit}]" if unit not in (None, "-") else ""))
+            tab.add_column(_t(head + (f" [{unit}]" if unit not in (None, "-") else "")))
         for row in t.rows:
-            tab.add_row(*(Text(fmt(row.get(k))) for k, _, _ in t.columns))
+            tab.add_row(*(_t(fmt(row.get(k))) for k, _, _ in t.columns))
         return tab
 
     def one(r: Result) -> None:
         console.print(Text(_header(r), style="bold"))
-        console.print(Text("Methods: " + ", ".join(r.methods)))
+        console.print(_t("Methods: " + ", ".join(r.methods)))
         console.print()
         for t in r.tables:
             console.print(data_table(t))
@@ -193,14 +196,14 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
         t.add_column("message")
         for c in r.checks:
             mark, word, style = _status(c)
-            t.add_row(Text(f"{mark} {word}", style=style), Text(c.code, style=style),
-                      Text(escape_controls(c.message)))
+            t.add_row(Text(f"{mark} {word}", style=style), _t(c.code, style),
+                      _t(c.message))
         console.print(t)
         style = "bold red" if r.failed else "bold green"
         console.print(Text(verdict_line(r), style=style))
         for _, title, part in r.parts:
             console.print()
-            console.rule(Text(escape_controls(title)))
+            console.rule(_t(title))
             one(part)
 
     for i, r in enumerate(results):

@@ -575,14 +575,16 @@ class SchedulerError(Exception):
     """The Dask scheduler given cannot be reached (one line for the user)."""
 
 
-def connect(address: str, timeout: float = CONNECT_TIMEOUT):
+def connect(address: str, timeout: float | None = None):
     """A Dask client of the scheduler at ``address``; :class:`SchedulerError` when dask is
-    not installed, the address is malformed or nothing answers within ``timeout`` s."""
+    not installed, the address is malformed or nothing answers within ``timeout`` s
+    (default :data:`CONNECT_TIMEOUT`)."""
     try:
         from dask.distributed import Client
     except ImportError:
         raise SchedulerError("dask.distributed is not installed; install it with "
                              "`pip install \"dask[distributed]\"`") from None
+    timeout = CONNECT_TIMEOUT if timeout is None else timeout
     try:
         return Client(address, timeout=timeout)
     except (OSError, ValueError, TypeError) as exc:
