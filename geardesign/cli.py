@@ -77,14 +77,14 @@ def _finite(value: Optional[float]) -> Optional[float]:
     return value
 
 
-def _targets(*paths: Optional[Path], inside: Optional[Path] = None) -> None:
+def _targets(*paths: Optional[Path]) -> None:
     """Every file to be written is looked at before the work starts
     (:func:`geardesign.core.io.target_problem`): one line and exit 2 when one cannot be."""
     from geardesign.core.io import target_problem
 
     for path in paths:
         if path is not None:
-            why = target_problem(path, inside)
+            why = target_problem(path)
             if why is not None:
                 _err(f"{path}: cannot write: {why}")
                 raise typer.Exit(2)
@@ -119,16 +119,12 @@ def _load(path: Path, expect_kind: Optional[str]):
     """A spec file, or the spec on standard input when the path is ``-``."""
     if str(path) != "-":
         return registry.load(path, expect_kind)
-    from geardesign.core.spec import MAX_SPEC_BYTES, parse_toml
+    from geardesign.core.io import MAX_SPEC_BYTES, decode, parse_toml
 
     raw = sys.stdin.buffer.read(MAX_SPEC_BYTES + 1)   # a pipe: read at most the limit
     if len(raw) > MAX_SPEC_BYTES:
         raise InputError(Problem("", "cannot be used: larger than 4 MiB; a spec is a few kB"))
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError as exc:
-        raise InputError(Problem("", f"not UTF-8 text (byte {exc.start})")) from None
-    calc, spec = registry.load_data(parse_toml(text), "<stdin>", expect_kind)
+    calc, spec = registry.load_data(parse_toml(decode(raw)), "<stdin>", expect_kind)
     spec.base_dir = Path.cwd()
     return calc, spec
 

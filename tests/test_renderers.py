@@ -94,10 +94,11 @@ def test_no_check_message_of_a_mutated_example_shows_nan_or_inf(path, seed):
         assert not NONFINITE.search(message), f"{code}: {message}"
 
 
-@pytest.mark.parametrize("message, word", [("ϑ2(E) = nan", "ϑ2(E) = undefined"),
-                                           ("L10h = inf h >= 20000 h", "L10h = unbounded h"),
-                                           ("S = -inf", "S = unbounded (negative)"),
-                                           ("x = NaN and y = Infinity", "x = undefined and y = unbounded")])
+@pytest.mark.parametrize("message, word", [
+    ("ϑ2(E) = nan", "ϑ2(E) = undefined"),
+    ("L10h = inf h >= 20000 h", "L10h = unbounded h"),
+    ("S = -inf", "S = unbounded (negative)"),
+    ("x = NaN and y = Infinity", "x = undefined and y = unbounded")])
 def test_a_check_that_meets_a_non_finite_number_is_not_rated(message, word):
     for severity in ("error", "warning"):
         c = Check("X", severity, True, message, 1.0, 2.0)

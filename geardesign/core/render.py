@@ -146,6 +146,7 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
             width = max(60, min(int(os.environ.get("COLUMNS", "120")), 1000))
         except ValueError:
             width = 120
+
     def _t(text: Any, style: str = "") -> Text:
         """Text as it is (no markup), control characters escaped."""
         return Text(escape_controls(str(text)), style=style)
@@ -155,8 +156,8 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
                       highlight=False, emoji=False, soft_wrap=False)
 
     def rows_table(title: str, rows: list[Row], with_source: bool) -> Table:
-        t = Table(title=_t(title), title_justify="left", title_style="bold", box=box.SIMPLE_HEAD,
-                  show_edge=False, pad_edge=False)
+        t = Table(title=_t(title), title_justify="left", title_style="bold",
+                  box=box.SIMPLE_HEAD, show_edge=False, pad_edge=False)
         t.add_column("symbol", no_wrap=True)
         t.add_column("name")
         t.add_column("value", justify="right", overflow="fold", max_width=40)
@@ -169,8 +170,8 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
         return t
 
     def data_table(t) -> Table:
-        tab = Table(title=_t(t.title), title_justify="left", title_style="bold", box=box.SIMPLE_HEAD,
-                    show_edge=False, pad_edge=False)
+        tab = Table(title=_t(t.title), title_justify="left", title_style="bold",
+                    box=box.SIMPLE_HEAD, show_edge=False, pad_edge=False)
         for _, head, unit in t.columns:
             tab.add_column(_t(head + (f" [{unit}]" if unit not in (None, "-") else "")))
         for row in t.rows:
@@ -246,8 +247,8 @@ _FORMULA = ("=", "+", "-", "@", "\t", "\r")
 def csv_cell(x: Any) -> Any:
     """A CSV cell: numbers as they are; text with its control characters escaped
     (:func:`escape_controls`) and, when it begins like a formula (``=``, ``+``, ``-``,
-    ``@``, tab, CR) and is not a plain number (or the unit ``-``), preceded by ``'`` so that a spreadsheet
-    shows it as text instead of evaluating it (OWASP, "CSV injection")."""
+    ``@``, tab, CR) and is not a plain number (or the unit ``-``), preceded by ``'`` so
+    that a spreadsheet shows it as text instead of evaluating it ("CSV injection")."""
     if not isinstance(x, str):
         return x
     if x.startswith(_FORMULA) and x != "-":
