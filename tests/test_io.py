@@ -276,3 +276,12 @@ def test_reading_a_missing_spec_and_a_directory():
         gio.read_toml(Path("/nonexistent/x.toml"))
     with pytest.raises(InputError, match="is a directory"):
         gio.read_toml(SPECS)
+
+
+@pytest.mark.parametrize("step", ["5e-324", "1e-300"])
+def test_a_sweep_step_too_small_to_count_is_one_line(step):
+    code, out, err = cli("sweep", SPECS / "sweep_spur_iso.toml", "--vary",
+                         f"gear.module=2:3:{step}", "-f", "json")
+    assert code == 2 and out == ""
+    assert _one_line(err).endswith(f"sweep.gear.module.step = {step}: gives more than "
+                                   f"1000000 values, the most per key: use a larger step")

@@ -281,10 +281,18 @@ _PREVIOUS: dict = {}
 
 
 def _on_signal(signum, frame) -> None:
-    """Remove every temporary file being written, then end as the signal asks."""
+    """Remove every temporary file being written, then do what the handler before ours
+    would have done: a Python handler is called, SIGINT becomes a KeyboardInterrupt, any
+    other signal its default action."""
+    previous = _PREVIOUS.get(signum)
     _remove_live()
+    if callable(previous):
+        previous(signum, frame)
+        return
     if signum == signal.SIGINT:
         raise KeyboardInterrupt
+    if previous == signal.SIG_IGN:
+        return
     signal.signal(signum, signal.SIG_DFL)
     os.kill(os.getpid(), signum)
 

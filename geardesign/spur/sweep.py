@@ -155,7 +155,11 @@ def _range(key: str, spec, where: str) -> Dim:
             if (b - a) * step < 0:
                 raise InputError.at(f"{where}.step", step, f"has the wrong sign: from {a} to "
                                     f"{b} needs a step of sign {'+' if b >= a else '-'}")
-            count = int(math.floor((b - a) / step + 1e-9)) + 1
+            span = (b - a) / step            # may overflow to inf for a denormal step
+            if not span < MAX_POINTS:
+                raise InputError.at(f"{where}.step", step, f"gives more than {MAX_POINTS} "
+                                    f"values, the most per key: use a larger step")
+            count = int(math.floor(span + 1e-9)) + 1
             if count > MAX_POINTS:
                 raise InputError.at(f"{where}.step", step, f"gives {count} values; at most "
                                     f"{MAX_POINTS} per key: use a larger step")
