@@ -154,3 +154,18 @@ def test_json_escapes_c1_controls_and_bidi_overrides(tmp_path):
         if fmt == "json":
             assert json.loads(out)["title"] == title
             assert "\\u202e" in out and "\\u0085" in out
+
+
+@settings(max_examples=300, deadline=None, derandomize=True)
+@given(st.sampled_from([math.nan, math.inf, -math.inf]),
+       st.sampled_from(["{:.2f}", "{:g}", "{:.3g}", "{:e}", "{}", "{!r}", "{:+.1f}", "{:8.3f}"]),
+       st.text(max_size=20), st.text(max_size=20),
+       st.sampled_from(["error", "warning", "info"]), st.booleans())
+def test_no_formatted_non_finite_number_survives_in_a_check(value, spec, before, after,
+                                                           severity, ok):
+    """However a calculator formats an undefined or unbounded number into a message, the
+    check shows it in words and cannot pass (an info check only reports)."""
+    message = f"{before} x = {spec.format(value)} {after}"
+    c = Check("X", severity, ok, message, 1.0, 2.0)
+    assert not NONFINITE.search(c.message)
+    assert c.passed == (ok and severity == "info")
