@@ -7,7 +7,6 @@ from __future__ import annotations
 import csv
 import difflib
 import io
-import json
 import sys
 from typing import Callable, Optional
 
@@ -92,17 +91,22 @@ def _cell(v, unit: str = "") -> str:
 
 
 def _render(rows: list[dict], columns, fmt: str) -> str:
+    from geardesign.core.render import csv_cell
+    from geardesign.core.result import clean_value
+    from geardesign.core.text import json_text
+
+    rows = [{k: clean_value(v) for k, v in r.items()} for r in rows]   # as every renderer
     if fmt == "json":
-        return json.dumps(rows, indent=2, ensure_ascii=False) + "\n"
+        return json_text(rows, indent=2) + "\n"
     if fmt == "jsonl":
-        return "".join(json.dumps(r, ensure_ascii=False) + "\n" for r in rows)
+        return "".join(json_text(r) + "\n" for r in rows)
     if fmt == "csv":
         buf = io.StringIO()
         keys = list(dict.fromkeys(k for r in rows for k in r)) or [c[0] for c in columns]
         w = csv.DictWriter(buf, keys, lineterminator="\n", restval="")
         w.writeheader()
         for r in rows:
-            w.writerow({k: _cell(v) if isinstance(v, (list, tuple)) else v
+            w.writerow({k: csv_cell(_cell(v) if isinstance(v, (list, tuple)) else v)
                         for k, v in r.items()})
         return buf.getvalue()
     head = [title + (f" ({unit})" if unit else "") for _, title, unit in columns]
@@ -136,16 +140,17 @@ def _hint(word: str, names: list[str]) -> str:
 # ----------------------------------------------------------------------------- commands
 
 
-def register(app: typer.Typer, choose_format: Callable) -> None:
+def register(app: typer.Typer, choose_format: Callable, finite: Callable) -> None:
     """Add the two browsing commands to the command line (called from :mod:`geardesign.cli`);
-    ``choose_format(fmt, None)`` picks the format as the other commands do."""
+    ``choose_format(fmt, None)`` picks the format as the other commands do; ``finite`` is the
+    callback that refuses a float option of ``nan`` or ``inf``."""
 
     @app.command("bearings")
     def bearings_cmd(
             filter_: Optional[str] = typer.Argument(None, metavar="[FILTER]",
                                                     help="Part of a designation: 62, NU 2, "
                                                          "302, 7208 (ISO, maker's or GOST)."),
-            bore: Optional[float] = typer.Option(None, "--bore", min=0.0,
+            bore: Optional[float] = typer.Option(None, "--bore", min=0.0, callback=finite,
                                                  help="Bore diameter d (mm)."),
             type_: Optional[str] = typer.Option(None, "--type", help="Bearing type, e.g. "
                                                 "tapered_roller."),

@@ -56,7 +56,39 @@ EXTENSIONS = {".json": "json", ".jsonl": "jsonl", ".md": "markdown", ".markdown"
 
 
 def _err(line: str) -> None:
-    sys.stderr.write(line + "\n")
+    """One line on stderr; control characters of a path or a value are shown, never obeyed."""
+    from geardesign.core.text import escape_controls
+
+    sys.stderr.write(escape_controls(line) + "\n")
+
+
+def _out(line: str) -> None:
+    from geardesign.core.text import escape_controls
+
+    sys.stdout.write(escape_controls(line) + "\n")
+
+
+def _finite(value: Optional[float]) -> Optional[float]:
+    """Option callback: a float option takes a finite number (``nan``, ``inf`` are no
+    tolerance, no bore)."""
+    import math
+
+    if value is not None and not math.isfinite(value):
+        raise typer.BadParameter(f"{value} is not a finite number")
+    return value
+
+
+def _targets(*paths: Optional[Path]) -> None:
+    """Every file to be written is looked at before the work starts
+    (:func:`geardesign.core.io.target_problem`): one line and exit 2 when one cannot be."""
+    from geardesign.core.io import target_problem
+
+    for path in paths:
+        if path is not None:
+            why = target_problem(path)
+            if why is not None:
+                _err(f"{path}: cannot write: {why}")
+                raise typer.Exit(2)
 
 
 MAX_PROBLEM_LINES = 20
@@ -88,16 +120,12 @@ def _load(path: Path, expect_kind: Optional[str]):
     """A spec file, or the spec on standard input when the path is ``-``."""
     if str(path) != "-":
         return registry.load(path, expect_kind)
-    from geardesign.core.spec import MAX_SPEC_BYTES, parse_toml
+    from geardesign.core.io import MAX_SPEC_BYTES, decode, parse_toml
 
-    raw = sys.stdin.buffer.read(MAX_SPEC_BYTES + 1)
+    raw = sys.stdin.buffer.read(MAX_SPEC_BYTES + 1)   # a pipe: read at most the limit
     if len(raw) > MAX_SPEC_BYTES:
         raise InputError(Problem("", "cannot be used: larger than 4 MiB; a spec is a few kB"))
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError as exc:
-        raise InputError(Problem("", f"not UTF-8 text (byte {exc.start})")) from None
-    calc, spec = registry.load_data(parse_toml(text), "<stdin>", expect_kind)
+    calc, spec = registry.load_data(parse_toml(decode(raw)), "<stdin>", expect_kind)
     spec.base_dir = Path.cwd()
     return calc, spec
 
@@ -121,6 +149,20 @@ def _compute_all(paths: List[Path], expect_kind: Optional[str], mode: Optional[s
             problems.extend(p.line("<stdin>" if str(path) == "-" else str(path))
                             for p in exc.problems)
     return results, problems
+
+
+def _write(path: Path, text: str) -> None:
+    """``text`` to ``path`` through the one atomic writer; a failure is one line, exit 2."""
+    from geardesign.core.io import write_atomic
+
+    try:
+        write_atomic(path, text)
+    except InputError as exc:
+        _err(f"{path}: cannot write: {exc.problems[0].message}")
+        raise typer.Exit(2)
+    except OSError as exc:
+        _err(f"{path}: cannot write ({exc.strerror or exc})")
+        raise typer.Exit(2)
 
 
 def _write_plot(results: list, plot: Path) -> None:
@@ -158,9 +200,10 @@ def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quie
           expect_kind: Optional[str] = None, mode: Optional[str] = None,
           plot: Optional[Path] = None, keep_going: bool = False,
           profile: Optional[Path] = None) -> None:
-    from geardesign.core.render import render, write_atomic
+    from geardesign.core.render import render
 
     fmt_name = _choose_format(fmt, output)
+    _targets(output, plot, profile)
     results, problems = _compute_all(paths, expect_kind, mode)
     if problems:
         _report_problems(problems)
@@ -183,11 +226,7 @@ def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quie
     text = render(results, fmt_name, color=color, width=width)
     code = 2 if problems else max(r.exit_code for r in results)
     if output is not None:
-        try:
-            write_atomic(output, text)
-        except OSError as exc:
-            _err(f"{output}: cannot write ({exc.strerror})")
-            raise typer.Exit(2)
+        _write(output, text)
         if not quiet:
             verdicts = ", ".join(f"{r.source}: {r.verdict}" for r in results)
             _err(f"wrote {output} ({verdicts})")
@@ -197,18 +236,16 @@ def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quie
 
 
 OPT_FORMAT = typer.Option(None, "--format", "-f", help=FORMAT_HELP, case_sensitive=False)
-OPT_OUTPUT = typer.Option(None, "--output", "-o", help="Write the report to FILE (atomically).",
-                          dir_okay=False)
+OPT_OUTPUT = typer.Option(None, "--output", "-o", help="Write the report to FILE (atomically).")
 OPT_QUIET = typer.Option(False, "--quiet", "-q",
                          help="No report on stdout and no notes on stderr; the exit code tells "
                               "the verdict (input errors are still printed).")
 ARG_SPECS = typer.Argument(..., help="Spec file(s), TOML.", show_default=False)
 OPT_PLOT = typer.Option(None, "--plot", help="Write the start-up transient of a pzdn spec "
                         "with [startup], or the mesh of a spur pair, to FILE (.png or .svg; "
-                        "needs matplotlib).",
-                        dir_okay=False)
+                        "needs matplotlib).")
 OPT_PROFILE = typer.Option(None, "--profile", help="Write the tooth profiles of a spur pair "
-                           "in mesh to FILE (.dxf needs ezdxf, or .svg).", dir_okay=False)
+                           "in mesh to FILE (.dxf needs ezdxf, or .svg).")
 OPT_SELECT = typer.Option(False, "--select",
                           help="Selection mode, as mode = \"select\" in the spec (bearing: the "
                                "smallest catalogue bearing that meets the required life).")
@@ -333,10 +370,18 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
                                                     "instead of the full grid."),
               seed: Optional[int] = typer.Option(None, "--seed", help="Seed of the sample."),
               workers: int = typer.Option(1, "--workers", min=1, max=256,
-                                          help="Local processes evaluating chunks."),
+                                          help="Local processes evaluating chunks; at most "
+                                               "the cores available unless "
+                                               "--force-workers."),
+              force_workers: bool = typer.Option(False, "--force-workers",
+                                                 help="Start --workers processes even when "
+                                                      "that is more than the cores "
+                                                      "(each holds a chunk in memory)."),
               scheduler: Optional[str] = typer.Option(None, "--scheduler", help="Dask "
                                                       "scheduler address (tcp://HOST:8786): "
-                                                      "evaluate the chunks on that cluster."),
+                                                      "evaluate the chunks on that cluster "
+                                                      "(refused when it does not answer "
+                                                      "within 10 s)."),
               data: Optional[Path] = typer.Option(None, "--data", help="Write every "
                                                   "candidate (inputs, key results, checks) "
                                                   "to FILE.csv or FILE.parquet."),
@@ -350,7 +395,7 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
               quiet: bool = OPT_QUIET) -> None:
     """Sweep a spur pair over ranges of its data: every variant rated by the vectorised
     kernel, ranked by the objectives, with the Pareto front (exit 1 when none is feasible)."""
-    from geardesign.core.render import render, write_atomic
+    from geardesign.core.render import render
     from geardesign.spur import sweep as SW
 
     fmt_name = _choose_format(format, output)
@@ -360,6 +405,13 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
     if plot is not None and plot.suffix.lower() not in (".png", ".svg", ".pdf"):
         _err(f"{plot}: --plot must end in .png, .svg or .pdf")
         raise typer.Exit(2)
+    _targets(output, data, plot)
+    cores = _cores()
+    if workers > cores and not force_workers:
+        if not quiet:
+            _err(f"geardesign sweep: --workers {workers}: using {cores}, the cores available "
+                 f"(--force-workers to start {workers})")
+        workers = cores
     try:
         from geardesign.core.spec import load_toml
 
@@ -374,6 +426,9 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
 
         try:
             writer = DatasetWriter(data)
+        except InputError as exc:
+            _err(f"{data}: cannot write: {exc.problems[0].message}")
+            raise typer.Exit(2)
         except (OSError, ImportError) as exc:
             _err(f"{data}: cannot write ({exc})")
             raise typer.Exit(2)
@@ -390,6 +445,9 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
         summary = SW.run_sweep(base, sw, workers, scheduler,
                                (lambda n: bar.advance(task, n)) if bar else None, sink)
         complete = True
+    except SW.SchedulerError as exc:
+        _err(f"geardesign sweep: --scheduler {scheduler}: {exc}")
+        raise typer.Exit(2)
     finally:
         if bar is not None:
             bar.stop()
@@ -406,7 +464,7 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
 
         text = toml_text(SW.variant_spec(base, sw, int(ranked["index"][emit_spec - 1])))
         if output is not None:
-            write_atomic(output, text)
+            _write(output, text)
         else:
             sys.stdout.write(text)
         raise typer.Exit(0)
@@ -422,7 +480,7 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
     to_terminal = output is None and sys.stdout.isatty()
     text = render([res], fmt_name, color=to_terminal and not os.environ.get("NO_COLOR"))
     if output is not None:
-        write_atomic(output, text)
+        _write(output, text)
     elif not quiet:
         sys.stdout.write(text)
     raise typer.Exit(res.exit_code)
@@ -431,10 +489,12 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
 @app.command("check")
 def check_cmd(specs: List[Path] = ARG_SPECS,
               rtol: float = typer.Option(RTOL, "--rtol", min=0.0, max=1.0,
+                                         callback=_finite,
                                          help="Relative tolerance: of a number to itself, "
                                               "of an array's elements to the array's "
                                               "largest magnitude."),
               atol: float = typer.Option(ATOL, "--atol", min=0.0, max=1e300,
+                                         callback=_finite,
                                          help="Absolute tolerance of every number, in its "
                                               "own unit."),
               update: bool = typer.Option(False, "--update",
@@ -457,19 +517,20 @@ def check_cmd(specs: List[Path] = ARG_SPECS,
             problems.append(f"{spec}: no {expected_path(spec).name} beside it; write it with "
                             f"geardesign check --update {spec}")
             continue
-        except (OSError, ValueError) as exc:
-            problems.append(f"{spec}: the expected file cannot be read ({exc})")
+        except OSError as exc:
+            problems.append(f"{spec}: {expected_path(spec).name} cannot be written or read "
+                            f"({exc.strerror or exc})")
             continue
         if update:
             if not quiet:
-                sys.stdout.write(f"{spec}: wrote {expected_path(spec).name}\n")
+                _out(f"{spec}: wrote {expected_path(spec).name}")
         elif moved:
             code = 1
-            sys.stdout.write(f"{spec}: {len(moved)} quantities moved\n")
+            _out(f"{spec}: {len(moved)} quantities moved")
             for d in moved:
-                sys.stdout.write(f"  {d.line()}\n")
+                _out(f"  {d.line()}")
         elif not quiet:
-            sys.stdout.write(f"{spec}: unchanged\n")
+            _out(f"{spec}: unchanged")
     if problems:
         _report_problems(problems)
         raise typer.Exit(2)
@@ -482,16 +543,24 @@ def validate_cmd(specs: List[Path] = ARG_SPECS, quiet: bool = OPT_QUIET) -> None
     results, problems = _compute_all(specs, None)
     if not quiet:
         for r in results:
-            sys.stdout.write(f"{r.source}: ok ({r.kind})\n")
+            _out(f"{r.source}: ok ({r.kind})")
     if problems:
         _report_problems(problems)
         raise typer.Exit(2)
 
 
+def _cores() -> int:
+    """The cores this process may run on (its CPU affinity, else the machine's count)."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:   # pragma: no cover - not Linux
+        return max(1, os.cpu_count() or 1)
+
+
 # browsing the built-in data (geardesign/browse.py): geardesign materials, geardesign bearings
 from geardesign import browse as _browse  # noqa: E402
 
-_browse.register(app, _choose_format)
+_browse.register(app, _choose_format, _finite)
 
 
 def main() -> None:
@@ -499,7 +568,9 @@ def main() -> None:
     _register_kinds()
     try:
         app()
-    except SystemExit:
+    except SystemExit as exc:
+        if exc.code == 130:       # typer ends a Ctrl-C in a command with a silent exit 130
+            _err("geardesign: interrupted")
         raise
     except KeyboardInterrupt:
         _err("geardesign: interrupted")

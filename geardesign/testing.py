@@ -24,6 +24,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 IGNORED = ("geardesign", "spec")
@@ -214,9 +215,9 @@ def _drop_paths(doc: Any) -> Any:
 
 def golden_text(doc: dict) -> str:
     """The stored form of a result document: indented JSON without machine paths."""
-    import json
+    from geardesign.core.text import json_text
 
-    return json.dumps(_drop_paths(doc), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+    return json_text(_drop_paths(doc), indent=2) + "\n"
 
 
 def check_golden(spec, update: bool = False, rtol: float = RTOL,
@@ -224,12 +225,17 @@ def check_golden(spec, update: bool = False, rtol: float = RTOL,
     """Compute ``spec`` and compare it with its expected document (see :func:`expected_path`);
     with ``update`` the expected file is (re)written instead.  A changed verdict is always
     reported.  Raises :class:`geardesign.core.errors.InputError` for an unusable spec and
-    ``FileNotFoundError`` when there is no expected file (and no ``update``)."""
-    import json
-
+    ``FileNotFoundError`` when there is no expected file (and no ``update``).  The expected
+    file is read and written through :mod:`geardesign.core.io`: a regular file of bounded
+    size and nesting, written atomically, never through a link to a file outside the spec's
+    folder."""
+    from geardesign.core.io import check_target, read_json, write_atomic
     from geardesign.core.registry import load
     from geardesign.core.spec import load_toml
 
+    path = expected_path(spec)
+    if update:                             # before the work: refused targets cost nothing
+        check_target(path, Path(spec).absolute().parent.resolve(), path.name)
     data = load_toml(spec)                 # read once: a sweep spec or a calculator's spec
     if "sweep" in data:
         from geardesign.spur.sweep import run_data as run_sweep_data
@@ -238,11 +244,10 @@ def check_golden(spec, update: bool = False, rtol: float = RTOL,
     else:
         calc, vspec = load(spec, data=data)
         doc = calc.compute(vspec).document()
-    path = expected_path(spec)
     if update:
-        path.write_text(golden_text(doc), encoding="utf-8")
+        write_atomic(path, golden_text(doc), inside=Path(spec).absolute().parent.resolve())
         return []
-    expected = json.loads(path.read_text(encoding="utf-8"))
+    expected = read_json(path, label=path.name)
     return compare_documents(doc, expected, rtol=rtol, atol=atol)
 
 

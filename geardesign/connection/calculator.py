@@ -108,10 +108,13 @@ def _key_report(res: Result, k: I.KeyInput, ld: I.Load, r: solve.KeySolution) ->
         S.KEY_GOST))
     L_hub = k.hub_length
     if L_hub is not None:
+        shortest = (f"the shortest standard key that passes ({_f(r.l_std)} mm) is longer "
+                    f"than the hub ({_f(L_hub)} mm)" if math.isfinite(r.l_std) else
+                    f"no standard key length of this section passes (not even the longest), "
+                    f"so none fits the {_f(L_hub)} mm hub")
         res.checks.append(check(
             "KEY_HUB_LENGTH", r.l_std <= L_hub, "warning",
-            f"the shortest standard key that passes ({_f(r.l_std)} mm) is longer than the hub "
-            f"({_f(L_hub)} mm): use two keys (key.count = 2), a longer hub or a spline",
+            f"{shortest}: use two keys (key.count = 2), a longer hub or a spline",
             f"a standard key of {_f(r.l_std)} mm passes and fits the {_f(L_hub)} mm hub",
             r.l_std if math.isfinite(r.l_std) else None, L_hub, S.KEY_LENGTHS))
 

@@ -7,14 +7,12 @@ import io
 import json
 import math
 import os
-import tempfile
-from contextlib import contextmanager
-from pathlib import Path
-from typing import Any, Iterator
+from typing import Any
 
 from geardesign import __version__
-from geardesign.core.result import Check, Result, Row
-from geardesign.core.text import escape_controls
+from geardesign.core.io import atomic_path, write_atomic  # noqa: F401 (one writer)
+from geardesign.core.result import Check, Result, Row, cleaned
+from geardesign.core.text import escape_controls, json_text
 
 FORMATS = ("table", "json", "jsonl", "markdown", "csv", "html")
 
@@ -73,7 +71,7 @@ def _header(r: Result) -> str:
 def to_json(results: list[Result]) -> str:
     docs = [r.document() for r in results]
     payload = docs[0] if len(docs) == 1 else docs
-    return json.dumps(payload, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+    return json_text(payload, indent=2) + "\n"
 
 
 # --------------------------------------------------------------------------- markdown
@@ -148,13 +146,18 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
             width = max(60, min(int(os.environ.get("COLUMNS", "120")), 1000))
         except ValueError:
             width = 120
+
+    def _t(text: Any, style: str = "") -> Text:
+        """Text as it is (no markup), control characters escaped."""
+        return Text(escape_controls(str(text)), style=style)
+
     buf = io.StringIO()
     console = Console(file=buf, force_terminal=color, no_color=not color, width=width,
                       highlight=False, emoji=False, soft_wrap=False)
 
     def rows_table(title: str, rows: list[Row], with_source: bool) -> Table:
-        t = Table(title=title, title_justify="left", title_style="bold", box=box.SIMPLE_HEAD,
-                  show_edge=False, pad_edge=False)
+        t = Table(title=_t(title), title_justify="left", title_style="bold",
+                  box=box.SIMPLE_HEAD, show_edge=False, pad_edge=False)
         t.add_column("symbol", no_wrap=True)
         t.add_column("name")
         t.add_column("value", justify="right", overflow="fold", max_width=40)
@@ -163,22 +166,21 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
         for row in rows:
             note = row.source if with_source else ("assumed" if row.assumed else "")
             value = fmt(row.value) + ("*" if row.assumed else "")
-            t.add_row(Text(row.symbol), Text(row.name), Text(value), Text(row.unit or ""),
-                      Text(note))
+            t.add_row(_t(row.symbol), _t(row.name), _t(value), _t(row.unit or ""), _t(note))
         return t
 
     def data_table(t) -> Table:
-        tab = Table(title=t.title, title_justify="left", title_style="bold", box=box.SIMPLE_HEAD,
-                    show_edge=False, pad_edge=False)
+        tab = Table(title=_t(t.title), title_justify="left", title_style="bold",
+                    box=box.SIMPLE_HEAD, show_edge=False, pad_edge=False)
         for _, head, unit in t.columns:
-            tab.add_column(head + (f" [{unit}]" if unit not in (None, "-") else ""))
+            tab.add_column(_t(head + (f" [{unit}]" if unit not in (None, "-") else "")))
         for row in t.rows:
-            tab.add_row(*(Text(fmt(row.get(k))) for k, _, _ in t.columns))
+            tab.add_row(*(_t(fmt(row.get(k))) for k, _, _ in t.columns))
         return tab
 
     def one(r: Result) -> None:
         console.print(Text(_header(r), style="bold"))
-        console.print(Text("Methods: " + ", ".join(r.methods)))
+        console.print(_t("Methods: " + ", ".join(r.methods)))
         console.print()
         for t in r.tables:
             console.print(data_table(t))
@@ -195,14 +197,14 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
         t.add_column("message")
         for c in r.checks:
             mark, word, style = _status(c)
-            t.add_row(Text(f"{mark} {word}", style=style), Text(c.code, style=style),
-                      Text(escape_controls(c.message)))
+            t.add_row(Text(f"{mark} {word}", style=style), _t(c.code, style),
+                      _t(c.message))
         console.print(t)
         style = "bold red" if r.failed else "bold green"
         console.print(Text(verdict_line(r), style=style))
         for _, title, part in r.parts:
             console.print()
-            console.rule(Text(escape_controls(title)))
+            console.rule(_t(title))
             one(part)
 
     for i, r in enumerate(results):
@@ -217,8 +219,7 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
 
 def to_jsonl(results: list[Result]) -> str:
     """One JSON document a line (``jq .verdict`` works for one spec and for many)."""
-    return "".join(json.dumps(r.document(), ensure_ascii=False, allow_nan=False) + "\n"
-                   for r in results)
+    return "".join(json_text(r.document()) + "\n" for r in results)
 
 
 def _csv_rows(r: Result):
@@ -229,7 +230,7 @@ def _csv_rows(r: Result):
             if isinstance(value, (list, tuple)):
                 value = json.dumps(value, allow_nan=False, default=str) if all(
                     v is None or isinstance(v, (int, float)) for v in value) else fmt(value)
-            elif isinstance(value, float) and not math.isfinite(value):
+            elif value is None:
                 value = ""
             key = f"results.{sec.key}.{row.key}"
             yield (r.source, key, row.symbol, row.name, value, doc_units.get(key, ""),
@@ -239,10 +240,32 @@ def _csv_rows(r: Result):
                "pass" if c.passed else "fail", "", c.message)
 
 
+_FORMULA = ("=", "+", "-", "@", "\t", "\r")
+"""First characters that make a spreadsheet read a cell as a formula."""
+
+
+def csv_cell(x: Any) -> Any:
+    """A CSV cell: numbers as they are; text with its control characters escaped
+    (:func:`escape_controls`) and, when it begins like a formula (``=``, ``+``, ``-``,
+    ``@``, tab, CR) and is not a plain number (or the unit ``-``), preceded by ``'`` so
+    that a spreadsheet shows it as text instead of evaluating it ("CSV injection")."""
+    if not isinstance(x, str):
+        return x
+    if x.startswith(_FORMULA) and x != "-":
+        try:
+            number = math.isfinite(float(x))
+        except ValueError:
+            number = False
+        if not number:
+            x = "'" + x
+    return escape_controls(x)
+
+
 def to_csv(results: list[Result]) -> str:
     """The results flattened for a spreadsheet: one row per quantity (spec, key, symbol,
     name, value, unit, source), then one row per check (spec, code, code, severity,
-    pass/fail, -, message); numbers at full precision."""
+    pass/fail, -, message); numbers at full precision, text cells through
+    :func:`csv_cell`."""
     import csv
 
     buf = io.StringIO()
@@ -250,7 +273,7 @@ def to_csv(results: list[Result]) -> str:
     w.writerow(("spec", "key", "symbol", "name", "value", "unit", "source"))
     for r in results:
         for row in _csv_rows(r):
-            w.writerow([escape_controls(str(x)) if isinstance(x, str) else x for x in row])
+            w.writerow([csv_cell(x) for x in row])
     return buf.getvalue()
 
 
@@ -309,6 +332,10 @@ def to_html(results: list[Result]) -> str:
 
 
 def render(results: list[Result], fmt_name: str, color: bool = False, width: int | None = None) -> str:
+    """The report of ``results`` in format ``fmt_name``.  Every format receives the same
+    cleaned results (:func:`geardesign.core.result.cleaned`: no NaN or infinity anywhere),
+    and every text reaching the output has its control characters escaped."""
+    results = [cleaned(r) for r in results]
     if fmt_name == "json":
         return to_json(results)
     if fmt_name == "jsonl":
@@ -320,82 +347,3 @@ def render(results: list[Result], fmt_name: str, color: bool = False, width: int
     if fmt_name == "markdown":
         return to_markdown(results)
     return to_table(results, color=color, width=width)
-
-
-@contextmanager
-def atomic_path(path: Path) -> Iterator[Path]:
-    """A temporary path beside ``path`` to write to; on success it replaces ``path`` in one
-    rename (a reader never sees half a file), on failure or a signal it is removed and
-    ``path`` is left as it was.
-
-    * A symbolic link is followed: the file it points to is replaced, the link stays.
-    * An existing file keeps its permission bits; a new one gets the ordinary permissions
-      (umask), not mkstemp's 0600.
-    * The data are flushed to disk (fsync) before the rename.
-    * A path that exists and is not a regular file (``/dev/null``, a FIFO, a terminal) is
-      written directly: it is never replaced by a regular file.
-    """
-    import signal
-    import stat
-
-    path = Path(path)
-    if path.is_symlink():
-        path = path.resolve()
-    try:
-        st = os.stat(path)
-    except FileNotFoundError:
-        st = None
-    if st is not None and not stat.S_ISREG(st.st_mode):
-        if stat.S_ISDIR(st.st_mode):
-            raise IsADirectoryError(21, "Is a directory", str(path))
-        yield path
-        return
-    directory = path.parent if str(path.parent) else Path(".")
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
-    os.close(fd)
-
-    def _on_signal(signum, frame):  # remove the temporary file, then die of the signal
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        signal.signal(signum, signal.SIG_DFL)
-        os.kill(os.getpid(), signum)
-
-    handled = (signal.SIGTERM, signal.SIGHUP, signal.SIGINT)
-    previous = {}
-    try:
-        for sig in handled:
-            try:
-                previous[sig] = signal.signal(sig, _on_signal)
-            except ValueError:  # not the main thread: no handlers
-                pass
-        yield Path(tmp)
-        if st is not None:
-            mode = stat.S_IMODE(st.st_mode)
-        else:
-            umask = os.umask(0)
-            os.umask(umask)
-            mode = 0o666 & ~umask
-        os.chmod(tmp, mode)
-        fd = os.open(tmp, os.O_RDONLY)
-        try:
-            os.fsync(fd)
-        finally:
-            os.close(fd)
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise
-    finally:
-        for sig, handler in previous.items():
-            signal.signal(sig, handler)
-
-
-def write_atomic(path: Path, text: str) -> None:
-    """Write ``text`` to ``path`` atomically (:func:`atomic_path`)."""
-    with atomic_path(path) as tmp:
-        tmp.write_text(text, encoding="utf-8", newline="\n")

@@ -7,7 +7,9 @@ document of ``../DESIGN.md`` and all report formats are derived from this one ob
 
 from __future__ import annotations
 
+import copy
 import math
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -80,6 +82,29 @@ class Check:
     def __post_init__(self) -> None:
         if self.severity not in SEVERITIES:
             raise ValueError(f"check {self.code}: severity {self.severity!r}")
+        if _NONFINITE.search(self.message):
+            object.__setattr__(self, "passed", self.passed and self.severity == "info")
+            object.__setattr__(self, "message", not_rated(self.message))
+
+
+_NONFINITE = re.compile(r"(?<![\w.])([-+−]?)(nan|inf(?:inity)?)(?![\w])", re.IGNORECASE)
+"""A number that is not finite, as Python formats it into a message (``nan``, ``-inf``)."""
+
+NOT_RATED = ("not rated: a quantity of this check is not a finite number at these inputs "
+             "(outside the domain of its formula), so the check cannot pass; ")
+"""How a check message that holds an undefined or unbounded number begins."""
+
+
+def not_rated(message: str) -> str:
+    """A check message whose non-finite numbers are written as words ("undefined",
+    "unbounded") after :data:`NOT_RATED`: a check never shows ``nan`` or ``inf``, and one
+    that meets such a number fails (an ``info`` check only reports it)."""
+    def word(m: re.Match) -> str:
+        if m.group(2).lower() == "nan":
+            return "undefined"
+        return "unbounded (negative)" if m.group(1) in ("-", "−") else "unbounded"
+
+    return NOT_RATED + _NONFINITE.sub(word, message)
 
 
 def check(code: str, ok: bool, severity: str, fail_message: str, pass_message: str,
@@ -90,13 +115,36 @@ def check(code: str, ok: bool, severity: str, fail_message: str, pass_message: s
                  value, limit, source)
 
 
-def _clean(v: Any) -> Any:
-    """JSON has no NaN or infinity: an undefined number is reported as null."""
+def clean_value(v: Any) -> Any:
+    """JSON has no NaN or infinity: an undefined number is reported as null (``None``),
+    in a list too.  The one cleaning step of every value before any renderer sees it."""
     if isinstance(v, float) and not math.isfinite(v):
         return None
     if isinstance(v, (list, tuple)):
-        return [_clean(x) for x in v]
+        return [clean_value(x) for x in v]
     return v
+
+
+_clean = clean_value
+
+
+def cleaned(res: "Result") -> "Result":
+    """A copy of ``res`` with every value (rows, inputs, table cells, check values and
+    limits, parts) through :func:`clean_value`: what every renderer receives, so that the
+    table, Markdown, HTML, CSV and JSON reports show the same document."""
+    from dataclasses import replace
+
+    out = copy.copy(res)
+    out.input_rows = [replace(r, value=clean_value(r.value)) for r in res.input_rows]
+    out.sections = [Section(s.key, s.title, [replace(r, value=clean_value(r.value))
+                                             for r in s.rows]) for s in res.sections]
+    out.tables = [DataTable(t.key, t.title, t.columns,
+                            [{k: clean_value(v) for k, v in row.items()} for row in t.rows])
+                  for t in res.tables]
+    out.checks = [replace(c, value=clean_value(c.value), limit=clean_value(c.limit))
+                  for c in res.checks]
+    out.parts = [(k, title, cleaned(part)) for k, title, part in res.parts]
+    return out
 
 
 @dataclass

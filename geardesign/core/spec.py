@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import Any, Iterator
 
 from geardesign.core.errors import InputError, Problem, format_value
-from geardesign.core.text import escape_controls
+from geardesign.core.io import MAX_SPEC_BYTES, parse_toml, read_toml  # noqa: F401 (API)
 
 
 class _Required:
@@ -33,8 +33,6 @@ class _Required:
 REQUIRED: Any = _Required()
 """Marks a field without a default: the spec must give it."""
 
-MAX_SPEC_BYTES = 4 * 1024 * 1024
-"""A spec file larger than this is refused before it is parsed (real specs are a few kB)."""
 MAX_ARRAY = 10_000
 """Elements of an array field, unless the field says otherwise (time histories, tables)."""
 MAX_TABLES = 1_000
@@ -406,71 +404,10 @@ def validate(schema: SpecSchema, data: dict, source: str = "") -> ValidatedSpec:
 
 
 def load_toml(path: Path) -> dict:
-    """Read a TOML spec file; problems become one-line :class:`InputError` messages."""
-    try:
-        raw = _read_regular(path, MAX_SPEC_BYTES)
-    except FileNotFoundError:
-        raise InputError(Problem("", "file not found")) from None
-    except IsADirectoryError:
-        raise InputError(Problem("", "is a directory, not a spec file")) from None
-    except SpecFileError as exc:
-        raise InputError(Problem("", f"cannot be used: {exc}")) from None
-    except OSError as exc:
-        raise InputError(Problem("", f"cannot be read ({exc.strerror})")) from None
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError as exc:
-        raise InputError(Problem("", f"not UTF-8 text (byte {exc.start})")) from None
-    return parse_toml(text)
-
-
-def parse_toml(text: str) -> dict:
-    """Parse TOML text; a syntax error or nesting deeper than the parser can follow is one
-    :class:`InputError` line."""
-    try:
-        import tomllib
-    except ModuleNotFoundError:  # pragma: no cover - Python < 3.11
-        import tomli as tomllib  # type: ignore[no-redef]
-    try:
-        return tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(Problem("", f"not valid TOML: {escape_controls(str(exc))}")) from None
-    except RecursionError:
-        raise InputError(Problem("", "arrays or tables nested too deeply to be a spec")) from None
-
-
-class SpecFileError(OSError):
-    """A path that is not a regular file of a sensible size."""
-
-
-def _read_regular(path: Path, limit: int) -> bytes:
-    """The bytes of a regular file of at most ``limit`` bytes.  The file type is checked on
-    the open descriptor before anything is read, so a FIFO or a device never blocks and is
-    never read without bound."""
-    import os
-    import stat
-
-    fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
-    try:
-        st = os.fstat(fd)
-        if stat.S_ISDIR(st.st_mode):
-            raise IsADirectoryError(path)
-        if not stat.S_ISREG(st.st_mode):
-            raise SpecFileError("not a regular file")
-        if st.st_size > limit:
-            raise SpecFileError(f"larger than {limit // (1024 * 1024)} MiB; a spec is a few kB")
-        chunks, total = [], 0
-        while True:
-            chunk = os.read(fd, 65536)
-            if not chunk:
-                break
-            total += len(chunk)
-            if total > limit:
-                raise SpecFileError(f"larger than {limit // (1024 * 1024)} MiB; a spec is a few kB")
-            chunks.append(chunk)
-        return b"".join(chunks)
-    finally:
-        os.close(fd)
+    """Read a TOML spec file through the one guarded reader
+    (:func:`geardesign.core.io.read_toml`); problems become one-line :class:`InputError`
+    messages."""
+    return read_toml(path)
 
 
 # --------------------------------------------------------------------------- walking

@@ -28,3 +28,17 @@ def escape_controls(s: str) -> str:
     'a\\\\x0ab\\\\x1b[31m'
     """
     return _CONTROLS.sub(_escape, s)
+
+
+def json_text(obj, indent: int | None = None) -> str:
+    """``obj`` as JSON (UTF-8 kept, no NaN allowed) with the characters of
+    :func:`escape_controls` that JSON itself leaves raw (DEL, C1 controls, bidi marks and
+    overrides, line/paragraph separators) written as ``\\uNNNN``: the same string to a
+    JSON reader, inert on a terminal."""
+    import json
+
+    text = json.dumps(obj, indent=indent, ensure_ascii=False, allow_nan=False)
+    return _RAW_IN_JSON.sub(lambda m: f"\\u{ord(m.group(0)):04x}", text)
+
+
+_RAW_IN_JSON = re.compile("[\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069\u2028\u2029]")

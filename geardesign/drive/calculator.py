@@ -16,6 +16,7 @@ from pathlib import Path
 from geardesign.core.errors import InputError, Problem
 from geardesign.core.registry import run_data
 from geardesign.core.result import DataTable, Result, check
+from geardesign.core.io import confined
 from geardesign.core.spec import ValidatedSpec, load_toml
 from geardesign.drive import split as SPLIT
 from geardesign.drive.shafts import GearLoad, external_loads, reactions
@@ -36,22 +37,15 @@ def stage_path(name: str, base: Path | None, root: Path | None,
 
     Stage files are regular files inside the folder of the drive spec (``root``): an
     absolute path, or one that leaves that folder (``..``, a link pointing elsewhere), is
-    refused unless ``allow_outside``; a FIFO or a device is refused when read
-    (:func:`geardesign.core.spec.load_toml`), so that a spec can neither hang the run nor
-    make it read a file it should not.  The message never shows the foreign file.
+    refused unless ``allow_outside`` (:func:`geardesign.core.io.confined`); a FIFO or a
+    device is refused when read (:func:`geardesign.core.io.read_toml`), so that a spec can
+    neither hang the run nor make it read a file it should not.  The message never shows
+    the foreign file.
     """
-    path = Path(name)
-    if path.is_absolute() and not allow_outside:
-        raise ValueError("must be a path relative to the drive spec's folder")
-    if not path.is_absolute() and base is not None:
-        path = base / path
-    path = path.resolve()
-    if root is not None and not allow_outside:
-        try:
-            path.relative_to(root.resolve())
-        except ValueError:
-            raise ValueError("must be a file inside the drive spec's folder") from None
-    return path
+    if allow_outside:
+        path = Path(name)
+        return (base / path if base is not None and not path.is_absolute() else path).resolve()
+    return confined(name, base, root, "the drive spec's folder")
 
 
 def resolve_stages(stages: list, base: Path | None, where: str = "stage",

@@ -981,9 +981,15 @@ def _startup(res: Result, spec: ValidatedSpec, st: dict, si: StartupInput, sprin
     if st["plot"] is not None:
         from geardesign.pzdn.plot import PlotError, write_plot
 
-        path = Path(st["plot"])
-        if not path.is_absolute() and spec.base_dir is not None:
-            path = spec.base_dir / path
+        from geardesign.core.io import confined, target_problem
+
+        try:   # a file the spec names: inside the spec's folder (DESIGN.md, "Spec files")
+            path = confined(st["plot"], spec.base_dir, spec.base_dir, "the spec's folder")
+        except ValueError as exc:
+            raise InputError.at("startup.plot", st["plot"], str(exc)) from None
+        why = target_problem(path, spec.base_dir)
+        if why is not None:
+            raise InputError.at("startup.plot", st["plot"], f"cannot write: {why}")
         try:
             write_plot(res, path)
         except PlotError as exc:

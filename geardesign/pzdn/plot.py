@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from geardesign.core.render import atomic_path
+from geardesign.core.io import atomic_path
 
 FORMATS = (".png", ".svg")
 

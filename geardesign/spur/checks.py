@@ -301,9 +301,19 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
         f"u = {g.u:.3f} > {RATIO_MAX:g}: large for one stage (bulky wheel); consider two stages",
         f"u = {g.u:.3f} <= {RATIO_MAX:g} for one stage", g.u, RATIO_MAX, S.PRACTICE))
 
-    # -- sliding
-    worst = max(abs(sliding.theta1_A), abs(sliding.theta2_E))
-    if math.isfinite(worst):
+    # -- sliding: both root ends are rated, or the check says which end is undefined
+    ends = {"ϑ1(A)": sliding.theta1_A, "ϑ2(E)": sliding.theta2_E}
+    undefined = [name for name, v in ends.items() if not math.isfinite(v)]
+    if undefined:
+        out.append(check(
+            "SPECIFIC_SLIDING", False, "warning",
+            f"specific sliding at the roots not rated: {' and '.join(undefined)} undefined, "
+            f"because that end of the active line of action lies at or beyond the gear's "
+            f"tangency point (interference, see the undercut and interference checks); "
+            f"change the shifts or the tooth numbers so that the contact stays on the "
+            f"involutes", "", None, SLIDING_MAX, S.SLIDING))
+    else:
+        worst = max(abs(sliding.theta1_A), abs(sliding.theta2_E))
         out.append(check(
             "SPECIFIC_SLIDING", worst <= SLIDING_MAX, "warning",
             f"specific sliding at the roots is high (ϑ1(A) = {sliding.theta1_A:.2f}, ϑ2(E) = "

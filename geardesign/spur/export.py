@@ -19,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from geardesign.core.render import atomic_path
+from geardesign.core.io import atomic_path
 
 PROFILE_FORMATS = (".dxf", ".svg")
 PLOT_FORMATS = (".png", ".svg")

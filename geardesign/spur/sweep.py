@@ -155,7 +155,11 @@ def _range(key: str, spec, where: str) -> Dim:
             if (b - a) * step < 0:
                 raise InputError.at(f"{where}.step", step, f"has the wrong sign: from {a} to "
                                     f"{b} needs a step of sign {'+' if b >= a else '-'}")
-            count = int(math.floor((b - a) / step + 1e-9)) + 1
+            span = (b - a) / step            # may overflow to inf for a denormal step
+            if not span < MAX_POINTS:
+                raise InputError.at(f"{where}.step", step, f"gives more than {MAX_POINTS} "
+                                    f"values, the most per key: use a larger step")
+            count = int(math.floor(span + 1e-9)) + 1
             if count > MAX_POINTS:
                 raise InputError.at(f"{where}.step", step, f"gives {count} values; at most "
                                     f"{MAX_POINTS} per key: use a larger step")
@@ -566,6 +570,33 @@ def _merge(a: dict, b: dict) -> dict:
     return {k: np.concatenate([a[k], b[k]]) for k in a}
 
 
+CONNECT_TIMEOUT = 10.0
+"""Seconds to reach a Dask scheduler before the sweep is refused (a scheduler on the network
+answers within a second)."""
+
+
+class SchedulerError(Exception):
+    """The Dask scheduler given cannot be reached (one line for the user)."""
+
+
+def connect(address: str, timeout: float | None = None):
+    """A Dask client of the scheduler at ``address``; :class:`SchedulerError` when dask is
+    not installed, the address is malformed or nothing answers within ``timeout`` s
+    (default :data:`CONNECT_TIMEOUT`)."""
+    try:
+        from dask.distributed import Client
+    except ImportError:
+        raise SchedulerError("dask.distributed is not installed; install it with "
+                             "`pip install \"dask[distributed]\"`") from None
+    timeout = CONNECT_TIMEOUT if timeout is None else timeout
+    try:
+        return Client(address, timeout=timeout)
+    except (OSError, ValueError, TypeError) as exc:
+        why = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+        raise SchedulerError(f"cannot reach the Dask scheduler within {timeout:g} s "
+                             f"({why[:200]})") from None
+
+
 def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | None = None,
               progress=None, rows_sink=None) -> dict:
     """Evaluate the whole sweep chunk by chunk (in parallel when asked) and return the
@@ -591,9 +622,9 @@ def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | Non
             progress(res["counts"]["evaluated"])
 
     if scheduler is not None:
-        from dask.distributed import Client, as_completed
+        from dask.distributed import as_completed
 
-        with Client(scheduler) as client:
+        with connect(scheduler) as client:
             futures = [client.submit(evaluate_chunk, spec_data, sw, a, b, rows, pure=False)
                        for a, b in bounds]
             done = {}
@@ -604,11 +635,19 @@ def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | Non
     elif workers > 1 and len(bounds) > 1:
         from concurrent.futures import ProcessPoolExecutor
 
-        with ProcessPoolExecutor(max_workers=min(workers, len(bounds))) as pool:
+        from geardesign.core.io import worker_signals
+
+        pool = ProcessPoolExecutor(max_workers=min(workers, len(bounds)),
+                                   initializer=worker_signals)
+        try:
             for res in pool.map(evaluate_chunk, itertools.repeat(spec_data), itertools.repeat(sw),
                                 [a for a, _ in bounds], [b for _, b in bounds],
                                 itertools.repeat(rows)):
                 take(res)
+        except BaseException:     # Ctrl-C or an error: stop at once, no queued chunk runs
+            pool.shutdown(wait=False, cancel_futures=True)
+            raise
+        pool.shutdown()
     else:
         for a, b in bounds:
             take(evaluate_chunk(spec_data, sw, a, b, rows))

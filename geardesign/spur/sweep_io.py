@@ -11,17 +11,20 @@ from pathlib import Path
 class DatasetWriter:
     """Writes the candidate rows chunk by chunk (bounded memory): ``.csv`` with the standard
     library, ``.parquet`` with pyarrow (one row group per chunk).  The file appears under its
-    name only when complete (written to a temporary name, then renamed)."""
+    name only when complete (:class:`geardesign.core.io.AtomicFile`)."""
 
     def __init__(self, path: Path):
+        from geardesign.core.io import AtomicFile
+
         self.path = Path(path)
-        self.tmp = self.path.with_name("." + self.path.name + ".part")
         self.kind = self.path.suffix.lower()
         self.writer = None
         self.fh = None
         if self.kind == ".parquet":
             import pyarrow  # noqa: F401  (fail early when missing)
-        else:
+        self.file = AtomicFile(self.path)
+        self.tmp = self.file.tmp
+        if self.kind != ".parquet":
             self.fh = open(self.tmp, "w", newline="", encoding="utf-8")
 
     def write(self, cols: dict) -> None:
@@ -48,16 +51,17 @@ class DatasetWriter:
     def close(self, complete: bool = True) -> None:
         """Close the file; put it in place when ``complete``, else remove it (a sweep that
         stopped half-way leaves no half dataset)."""
-        if self.kind == ".parquet":
-            if self.writer is not None:
-                self.writer.close()
-        elif self.fh is not None:
-            self.fh.close()
-        if self.tmp.exists():
-            if complete:
-                self.tmp.replace(self.path)
+        try:
+            if self.kind == ".parquet":
+                if self.writer is not None:
+                    self.writer.close()
+            elif self.fh is not None:
+                self.fh.close()
+        finally:
+            if complete and (self.writer is not None or self.kind != ".parquet"):
+                self.file.commit()
             else:
-                self.tmp.unlink()
+                self.file.abort()
 
 
 def _cell(v):
@@ -137,5 +141,10 @@ def plot_front(summary: dict, sw, path: Path) -> None:
     ax.grid(True, alpha=0.3)
     ax.legend()
     fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    from geardesign.core.io import atomic_path
+
+    try:
+        with atomic_path(path) as tmp:
+            fig.savefig(tmp, format=Path(path).suffix.lower()[1:])
+    finally:
+        plt.close(fig)

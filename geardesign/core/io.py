@@ -1,0 +1,441 @@
+"""Files in and out: the one guarded reader and the one atomic writer.
+
+Every file the tool reads (a spec, a stage file, the ``*.expected.json`` of ``geardesign
+check``) goes through :func:`read_regular`; every file it writes (``--output``, ``--data``,
+``--plot``, ``--profile``, ``check --update``, the plot a pzdn spec names) goes through
+:func:`atomic_path` / :class:`AtomicFile`, after :func:`check_target` has looked at the
+target before the work starts.
+
+Reading
+    * only a regular file: the type is checked on the open descriptor before a byte is
+      read, so a FIFO or a device never blocks and is never read without bound;
+    * at most ``limit`` bytes (a spec 4 MiB, an expected document 32 MiB), checked on the
+      size and again while reading;
+    * TOML: dotted keys of at most :data:`MAX_KEY_PARTS` parts and at most
+      :data:`MAX_TABLE_HEADERS` table headers, counted before the parser sees the text
+      (the parser's cost grows with the square of a dotted key's length);
+    * JSON: nesting at most :data:`MAX_JSON_DEPTH` deep;
+    * confinement (:func:`confined`): a file a spec refers to lies inside the spec's folder.
+
+Writing
+    * the target is checked first (:func:`check_target`): a missing folder, a folder where
+      a file is wanted, a folder that cannot be written is one line before the work starts;
+    * the data go to a temporary file beside the target, flushed to disk, then renamed over
+      it in one step: a reader never sees half a file;
+    * the temporary file is covered by the signal handlers from its creation (the signals
+      are blocked while it is created and registered): SIGINT, SIGTERM or SIGHUP remove it;
+      SIGINT then ends the run as a KeyboardInterrupt (one line, exit 130), the others with
+      the signal's default action.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import signal
+import stat
+import tempfile
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Any, Iterator
+
+from geardesign.core.errors import InputError, Problem
+
+MiB = 1024 * 1024
+MAX_SPEC_BYTES = 4 * MiB
+"""A spec or stage file larger than this is refused before it is parsed (real specs are a
+few kB)."""
+MAX_JSON_BYTES = 32 * MiB
+"""An expected result document larger than this is refused unread (the largest example's is
+0.3 MiB)."""
+MAX_JSON_DEPTH = 64
+"""Nesting of arrays and objects in a JSON document read (a result document nests about 8
+deep)."""
+MAX_KEY_PARTS = 32
+"""Parts of one dotted TOML key (``a.b.c`` has 3); a spec's tables nest at most 5 deep."""
+MAX_TABLE_HEADERS = 10_000
+"""``[table]`` and ``[[array]]`` headers in one TOML file."""
+
+
+class FileRefused(OSError):
+    """A path that is not a regular file of a sensible size."""
+
+
+# --------------------------------------------------------------------------- reading
+
+
+def read_regular(path: Path, limit: int, what: str = "a spec is a few kB") -> bytes:
+    """The bytes of the regular file ``path`` of at most ``limit`` bytes.
+
+    Raises :class:`FileRefused` (not a regular file, too large; ``what`` says what a
+    sensible size is), ``IsADirectoryError``, ``FileNotFoundError`` or another ``OSError``."""
+    fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+    try:
+        st = os.fstat(fd)
+        if stat.S_ISDIR(st.st_mode):
+            raise IsADirectoryError(21, "Is a directory", str(path))
+        if not stat.S_ISREG(st.st_mode):
+            raise FileRefused("not a regular file")
+        too_large = FileRefused(f"larger than {_size(limit)}; {what}")
+        if st.st_size > limit:
+            raise too_large
+        chunks, total = [], 0
+        while True:
+            chunk = os.read(fd, 1 << 16)
+            if not chunk:
+                break
+            total += len(chunk)
+            if total > limit:
+                raise too_large
+            chunks.append(chunk)
+        return b"".join(chunks)
+    finally:
+        os.close(fd)
+
+
+def _size(n: int) -> str:
+    return f"{n // MiB} MiB" if n >= MiB else f"{n} bytes"
+
+
+def read_problem(exc: OSError, kind: str = "spec file") -> Problem:
+    """The one line of an unreadable file (no key: it concerns the whole file)."""
+    if isinstance(exc, FileNotFoundError):
+        return Problem("", "file not found")
+    if isinstance(exc, IsADirectoryError):
+        return Problem("", f"is a directory, not a {kind}")
+    if isinstance(exc, FileRefused):
+        return Problem("", f"cannot be used: {exc}")
+    return Problem("", f"cannot be read ({exc.strerror or exc})")
+
+
+def decode(raw: bytes) -> str:
+    """UTF-8 text; a file that is not is one :class:`InputError` line."""
+    try:
+        return raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise InputError(Problem("", f"not UTF-8 text (byte {exc.start})")) from None
+
+
+def read_toml(path: Path) -> dict:
+    """A TOML spec or stage file through :func:`read_regular` and :func:`parse_toml`;
+    every problem is one :class:`InputError` line."""
+    try:
+        raw = read_regular(path, MAX_SPEC_BYTES)
+    except OSError as exc:
+        raise InputError(read_problem(exc)) from None
+    return parse_toml(decode(raw))
+
+
+_STRINGS = re.compile(r'"""[\s\S]*?"""|\'\'\'[\s\S]*?\'\'\'|"(?:[^"\\\n]|\\.)*"|\'[^\'\n]*\'')
+_PART = r"""(?:[A-Za-z0-9_-]+|"[^"\n]*"|'[^'\n]*')"""
+_HEADER = re.compile(r"^[ \t]*\[\[?[ \t]*[A-Za-z_\"']", re.M)
+
+
+def toml_bounds(text: str) -> str | None:
+    """Why ``text`` is refused before it is parsed, or ``None``: a dotted key of more than
+    :data:`MAX_KEY_PARTS` parts, or more than :data:`MAX_TABLE_HEADERS` table headers.
+    Strings are left out of the count (a title may hold dots)."""
+    bare = _STRINGS.sub('""', text)
+    run = re.search(r"(?:%s[ \t]*\.[ \t]*){%d,}%s" % (_PART, MAX_KEY_PARTS, _PART), bare)
+    if run is not None:
+        return (f"a dotted key of more than {MAX_KEY_PARTS} parts (line "
+                f"{bare.count(chr(10), 0, run.start()) + 1}); a spec's tables nest a few deep")
+    headers = len(_HEADER.findall(bare))
+    if headers > MAX_TABLE_HEADERS:
+        return f"{headers} table headers, more than {MAX_TABLE_HEADERS}"
+    return None
+
+
+def parse_toml(text: str) -> dict:
+    """Parse TOML text after :func:`toml_bounds`; a syntax error or nesting deeper than the
+    parser can follow is one :class:`InputError` line."""
+    import tomllib
+
+    from geardesign.core.text import escape_controls
+
+    why = toml_bounds(text)
+    if why is not None:
+        raise InputError(Problem("", f"cannot be used: {why}"))
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(Problem("", f"not valid TOML: {escape_controls(str(exc))}")) from None
+    except RecursionError:
+        raise InputError(Problem("", "arrays or tables nested too deeply to be a spec")) from None
+
+
+def read_json(path: Path, limit: int = MAX_JSON_BYTES,
+              what: str = "a result document is well under 1 MiB", label: str = "") -> Any:
+    """A JSON document through :func:`read_regular`, nested at most :data:`MAX_JSON_DEPTH`
+    deep; ``FileNotFoundError`` passes, every other problem is one :class:`InputError`
+    (its message begins with ``label``, when given, to name the file)."""
+    def refuse(problem: Problem) -> InputError:
+        return InputError(Problem("", f"{label}: {problem.message}" if label
+                                  else problem.message))
+
+    try:
+        raw = read_regular(path, limit, what)
+    except FileNotFoundError:
+        raise
+    except OSError as exc:
+        raise refuse(read_problem(exc, "JSON file")) from None
+    try:
+        doc = json.loads(decode(raw))
+    except InputError as exc:
+        raise refuse(exc.problems[0]) from None
+    except RecursionError:
+        doc, deep = None, True
+    except ValueError as exc:
+        raise refuse(Problem("", f"not valid JSON: {exc}")) from None
+    else:
+        deep = _depth(doc) > MAX_JSON_DEPTH
+    if deep:
+        raise refuse(Problem("", f"cannot be used: arrays or objects nested more than "
+                                 f"{MAX_JSON_DEPTH} deep"))
+    return doc
+
+
+def _depth(doc: Any) -> int:
+    """Nesting depth of a parsed JSON value, without recursion."""
+    deepest, stack = 0, [(doc, 0)]
+    while stack:
+        node, d = stack.pop()
+        deepest = max(deepest, d)
+        if d > MAX_JSON_DEPTH:
+            break
+        if isinstance(node, dict):
+            stack.extend((v, d + 1) for v in node.values())
+        elif isinstance(node, list):
+            stack.extend((v, d + 1) for v in node)
+    return deepest
+
+
+def confined(name: str, base: Path | None, root: Path | None, what: str) -> Path:
+    """The file ``name`` a spec refers to, relative to ``base``, resolved (links followed);
+    ``ValueError`` when it is absolute or lies outside ``root`` (``..``, a link pointing
+    elsewhere).  ``what`` names the folder in the message ("the drive spec's folder")."""
+    path = Path(name)
+    if path.is_absolute():
+        raise ValueError(f"must be a path relative to {what}")
+    if base is not None:
+        path = base / path
+    path = path.resolve()
+    if root is not None:
+        try:
+            path.relative_to(root.resolve())
+        except ValueError:
+            raise ValueError(f"must be a file inside {what}") from None
+    return path
+
+
+# --------------------------------------------------------------------------- writing
+
+
+def target_problem(path: Path, inside: Path | None = None) -> str | None:
+    """Why ``path`` cannot be written, or ``None``.  Looked at before the work starts: the
+    folder must exist and be writable, the path must not be a folder; with ``inside``, the
+    file written (a link followed) must lie in that folder."""
+    path = Path(path)
+    real = path.resolve() if path.is_symlink() else path
+    if inside is not None:
+        try:
+            real.resolve().relative_to(Path(inside).resolve())
+        except ValueError:
+            return (f"is a link to a file outside {inside}; remove the link or write "
+                    f"that file yourself")
+    try:
+        st = os.stat(real)
+    except FileNotFoundError:
+        st = None
+    except NotADirectoryError:
+        return "a part of the path is a file, not a folder"
+    except OSError as exc:
+        return f"cannot be written ({exc.strerror})"
+    if st is not None and stat.S_ISDIR(st.st_mode):
+        return "is a folder; give a file name"
+    if st is not None and not stat.S_ISREG(st.st_mode):
+        return None          # /dev/null, a FIFO, a terminal: written directly
+    folder = real.parent if str(real.parent) else Path(".")
+    if not folder.exists():
+        return f"the folder {folder} does not exist"
+    if not folder.is_dir():
+        return f"{folder} is a file, not a folder"
+    if not os.access(folder, os.W_OK | os.X_OK):
+        return f"the folder {folder} cannot be written"
+    return None
+
+
+def check_target(path: Path, inside: Path | None = None, label: str = "") -> None:
+    """Raise :class:`InputError` (one line) when :func:`target_problem` finds a reason;
+    ``label`` names the file when the line's source is another (the spec)."""
+    why = target_problem(path, inside)
+    if why is not None:
+        raise InputError(Problem("", f"{label}: cannot write: {why}" if label else why))
+
+
+_HANDLED = tuple(getattr(signal, s) for s in ("SIGINT", "SIGTERM", "SIGHUP")
+                 if hasattr(signal, s))
+_LIVE: set = set()
+_PREVIOUS: dict = {}
+
+
+def _on_signal(signum, frame) -> None:
+    """Remove every temporary file being written, then do what the handler before ours
+    would have done: a Python handler is called, SIGINT becomes a KeyboardInterrupt, any
+    other signal its default action."""
+    previous = _PREVIOUS.get(signum)
+    _remove_live()
+    if callable(previous):
+        previous(signum, frame)
+        return
+    if signum == signal.SIGINT:
+        raise KeyboardInterrupt
+    if previous == signal.SIG_IGN:
+        return
+    signal.signal(signum, signal.SIG_DFL)
+    os.kill(os.getpid(), signum)
+
+
+def _remove_live() -> None:
+    for tmp in list(_LIVE):
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        _LIVE.discard(tmp)
+    _restore()
+
+
+def _restore() -> None:
+    for sig, handler in list(_PREVIOUS.items()):
+        try:
+            signal.signal(sig, handler)
+        except (ValueError, TypeError):
+            pass
+    _PREVIOUS.clear()
+
+
+def _protect() -> bool:
+    """Install the handlers (once for all live files); False outside the main thread."""
+    if _PREVIOUS:
+        return True
+    try:
+        for sig in _HANDLED:
+            _PREVIOUS[sig] = signal.signal(sig, _on_signal)
+    except ValueError:     # not the main thread: no handlers
+        _restore()
+        return False
+    return True
+
+
+def worker_signals() -> None:
+    """In a worker process: ignore SIGINT (the parent stops the pool and reports the
+    interruption once) and forget the parent's temporary files."""
+    _LIVE.clear()
+    _PREVIOUS.clear()
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
+class AtomicFile:
+    """A temporary file beside ``path`` that replaces it in one rename on :meth:`commit`
+    and disappears on :meth:`abort` or a signal.
+
+    * A symbolic link is followed: the file it points to is replaced, the link stays; with
+      ``inside``, that file must lie in the folder ``inside`` (:func:`target_problem`).
+    * An existing file keeps its permission bits; a new one gets the ordinary permissions
+      (umask), not mkstemp's 0600.
+    * A path that exists and is not a regular file (``/dev/null``, a FIFO, a terminal) is
+      written directly (:attr:`tmp` is the path itself): it is never replaced.
+    """
+
+    def __init__(self, path: Path, inside: Path | None = None):
+        path = Path(path)
+        why = target_problem(path, inside)
+        if why is not None:
+            raise InputError(Problem("", why))
+        self.path = path.resolve() if path.is_symlink() else path
+        try:
+            self._st = os.stat(self.path)
+        except FileNotFoundError:
+            self._st = None
+        self.direct = self._st is not None and not stat.S_ISREG(self._st.st_mode)
+        if self.direct:
+            self.tmp = self.path
+            return
+        folder = self.path.parent if str(self.path.parent) else Path(".")
+        blocked = hasattr(signal, "pthread_sigmask") and _protect()
+        if blocked:
+            old = signal.pthread_sigmask(signal.SIG_BLOCK, _HANDLED)
+        try:
+            fd, tmp = tempfile.mkstemp(prefix=f".{self.path.name}.", suffix=".tmp", dir=folder)
+            os.close(fd)
+            _LIVE.add(tmp)
+        finally:
+            if blocked:
+                signal.pthread_sigmask(signal.SIG_SETMASK, old)
+        self.tmp = Path(tmp)
+
+    def commit(self) -> None:
+        """Flush the temporary file to disk and rename it over the target."""
+        if self.direct:
+            return
+        tmp = str(self.tmp)
+        try:
+            if self._st is not None:
+                mode = stat.S_IMODE(self._st.st_mode)
+            else:
+                umask = os.umask(0)
+                os.umask(umask)
+                mode = 0o666 & ~umask
+            os.chmod(tmp, mode)
+            fd = os.open(tmp, os.O_RDONLY)
+            try:
+                os.fsync(fd)
+            finally:
+                os.close(fd)
+            os.replace(tmp, self.path)
+        except BaseException:
+            self.abort()
+            raise
+        self._forget()
+
+    def abort(self) -> None:
+        """Remove the temporary file; the target stays as it was."""
+        if self.direct:
+            return
+        try:
+            os.unlink(self.tmp)
+        except OSError:
+            pass
+        self._forget()
+
+    def _forget(self) -> None:
+        _LIVE.discard(str(self.tmp))
+        if not _LIVE:
+            _restore()
+
+    def __enter__(self) -> Path:
+        return self.tmp
+
+    def __exit__(self, kind, exc, tb) -> None:
+        if kind is None:
+            self.commit()
+        else:
+            self.abort()
+
+
+@contextmanager
+def atomic_path(path: Path, inside: Path | None = None) -> Iterator[Path]:
+    """A temporary path beside ``path`` to write to (:class:`AtomicFile`): on success it
+    replaces ``path`` in one rename, on failure or a signal it is removed."""
+    with AtomicFile(path, inside) as tmp:
+        yield tmp
+
+
+def write_atomic(path: Path, text: str, inside: Path | None = None) -> None:
+    """Write ``text`` to ``path`` atomically (:class:`AtomicFile`)."""
+    with atomic_path(path, inside) as tmp:
+        with open(tmp, "w", encoding="utf-8", newline="\n") as fh:
+            fh.write(text)
