@@ -254,3 +254,54 @@ def test_a_warmer_housing_opens_an_external_pair_and_closes_an_internal_one():
     # all at one temperature with one material: a_w = r_w2 − r_w1 grows like the radii
     same = Thermal(60.0, 60.0, 60.0, 11.5e-6, 11.5e-6, 11.5e-6)
     assert same.delta_a(50.0, 50.0, 150.0, internal=True) == pytest.approx(0.0, abs=1e-15)
+
+
+# ----------------------------------------------------------------------------- CLI
+
+INTERNAL = """kind = "spur"
+[gear]
+internal = true
+module = 3.0
+z1 = 24
+z2 = 71
+x1 = 0.3
+center_distance = 71.5
+face_width = 30.0
+cutter_teeth = 25
+[accuracy]
+standard = "GOST 1643-81"
+grade = 7
+mating = "C"
+T_H1 = 60
+T_H2 = 100
+"""
+
+
+@pytest.mark.parametrize("extra, line", [
+    ("[drawing]\nball_diameter2 = 0.5\n",
+     "s.toml: drawing.ball_diameter2 = 0.5: the ball does not touch the flanks: it would touch "
+     "the flanks at d = 226.1409 mm, beyond the involute, which ends at d = 222.8972 mm: choose "
+     "a larger ball"),
+    ("[drawing]\nball_diameter2 = 9.0\n",
+     "s.toml: drawing.ball_diameter2 = 9.0: the ball does not touch the flanks: it is too "
+     "large: its centre would lie inside the base circle; choose a smaller ball"),
+    ("[drawing]\nk2 = 30\n",
+     "s.toml: drawing.k2 = 30: impossible span: the calliper would touch at d = 332.5588 mm, "
+     "outside the involute 210.9021…222.8972 mm; use k = 8…11"),
+])
+def test_bad_internal_drawing_inputs_name_the_key(tmp_path, extra, line):
+    from tests.helpers_cli import run_bad
+
+    assert run_bad(tmp_path, INTERNAL + extra) == [line]
+
+
+def test_internal_pair_report_profile_and_plot(tmp_path):
+    from tests.helpers_cli import cli, write_spec
+
+    spec = write_spec(tmp_path, INTERNAL)
+    code, out, err = cli("run", spec, "--format", "table", "--profile", tmp_path / "p.svg",
+                         "--plot", tmp_path / "m.svg")
+    assert code in (0, 1), err
+    assert "internal gear" in out and "between two balls" in out
+    assert (tmp_path / "p.svg").read_text().count("<path") == 2
+    assert (tmp_path / "m.svg").stat().st_size > 1000

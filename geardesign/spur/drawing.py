@@ -260,9 +260,10 @@ def tests_of(g: PairGeometry, spec: ValidatedSpec, acc: Accuracy | None) -> tupl
         if chosen:
             D = ideal_ball(t)
         res = over_balls(t, D) if ideal_ok(t, D) else None
-        why = ("it is too small: it would sink below the base circle into the tooth space; "
-               "choose a larger ball") if res is None \
-            else ball_touches(t, res)
+        why = (("it is too large: its centre would lie inside the base circle; choose a "
+                "smaller ball") if t.internal else
+               ("it is too small: it would sink below the base circle into the tooth space; "
+                "choose a larger ball")) if res is None else ball_touches(t, res)
         if why is not None:
             key = f"drawing.ball_diameter{n}"
             if chosen:
@@ -283,9 +284,11 @@ def tests_of(g: PairGeometry, spec: ValidatedSpec, acc: Accuracy | None) -> tupl
             try:
                 balls = tuple(over_balls(t, D, _width(g, i, gi.s_n + e)) for e in lim)
             except MeasurementError:
-                raise InputError.at(f"drawing.ball_diameter{n}", D, "the ball sinks below the "
-                                    "base circle of the thinnest tooth the allowances permit: "
-                                    "choose a larger ball") from None
+                raise InputError.at(f"drawing.ball_diameter{n}", D, (
+                    "the ball's centre falls inside the base circle with the narrowest space the "
+                    "allowances permit: choose a smaller ball") if t.internal else (
+                    "the ball sinks below the base circle of the thinnest tooth the allowances "
+                    "permit: choose a larger ball")) from None
             M_l = _max_min(b.M for b in balls)
             Mr_l = _max_min(b.M_r for b in balls)
             s_l = _max_min(chordal(t, _width(g, i, gi.s_n + e)).s_c for e in lim)

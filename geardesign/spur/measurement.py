@@ -133,12 +133,15 @@ def ball_touches(t: Tooth, res: OverBalls) -> str | None:
     space (external: over the tip circle; internal: inside the tip circle), else the reason."""
     lo, hi = (t.d_a, t.d_form) if t.internal else (t.d_form, t.d_a)
     lo = max(lo, t.d_b)
+    # a larger ball touches higher on an external gear's flanks, but nearer the axis (lower
+    # d) between an internal gear's teeth, whose spaces narrow outward
+    bigger, smaller = ("a smaller", "a larger") if t.internal else ("a larger", "a smaller")
     if res.d_c < lo - 1e-9:
         return (f"it would touch the flanks at d = {res.d_c:.4f} mm, below the involute, which "
-                f"starts at d = {lo:.4f} mm: choose a larger ball")
+                f"starts at d = {lo:.4f} mm: choose {bigger} ball")
     if res.d_c > hi + 1e-9:
         return (f"it would touch the flanks at d = {res.d_c:.4f} mm, beyond the involute, which "
-                f"ends at d = {hi:.4f} mm: choose a smaller ball")
+                f"ends at d = {hi:.4f} mm: choose {smaller} ball")
     edge = res.d_M - res.D if t.internal else res.d_M + res.D
     if (edge >= t.d_a) if t.internal else (edge <= t.d_a):
         return ("it would not stand out of the tooth space, so the measuring faces would touch "
