@@ -390,58 +390,47 @@ def _accuracy_rows(res: Result, acc: Accuracy, g) -> None:
                 "largest normal backlash at operating temperature", src_bl)
 
 
+def _limit_rows(sec, key: str, sym: str, name: str, limits, who: str) -> None:
+    """The upper and lower limit rows of one test dimension (none without [accuracy])."""
+    if limits:
+        for j, (side, word) in enumerate((("upper", "max"), ("lower", "min"))):
+            sec.add(f"{key}_{side}", limits[j], "mm", f"{sym} {word}",
+                    f"{name}, {side} limit, {who}", SRC_MEAS)
+
+
 def _test_rows(res: Result, tests: tuple, g) -> None:
     sec = res.section("test_dimensions", "Test dimensions")
     for i, t in enumerate(tests):
-        n, who, ins = i + 1, globals()["who"](i, g), inner(g, i)
-        sec.add(f"k{n}", t.k, "-", f"k{n}", ("spaces" if ins else "teeth") + f" spanned, {who}",
+        n, name, ins = i + 1, who(i, g), inner(g, i)
+        sec.add(f"k{n}", t.k, "-", f"k{n}", ("spaces" if ins else "teeth") + f" spanned, {name}",
                 SRC_MEAS)
-        sec.add(f"W{n}", t.W, "mm", f"W{n}", f"span over k {'spaces' if ins else 'teeth'}, {who}"
+        sec.add(f"W{n}", t.W, "mm", f"W{n}", f"span over k {'spaces' if ins else 'teeth'}, {name}"
                 + (" (internal calliper with ball or disc anvils: a standard disc micrometer "
                    "does not reach into an internal gear)" if ins else ""), SRC_MEAS)
-        sec.add(f"d_W{n}", t.d_W, "mm", f"d_W{n}", f"diameter where the calliper touches, {who}",
+        sec.add(f"d_W{n}", t.d_W, "mm", f"d_W{n}", f"diameter where the calliper touches, {name}",
                 SRC_MEAS)
-        if t.W_limits:
-            sec.add(f"W{n}_upper", t.W_limits[0], "mm", f"W{n} max", f"span, upper limit, {who}",
-                    SRC_MEAS)
-            sec.add(f"W{n}_lower", t.W_limits[1], "mm", f"W{n} min", f"span, lower limit, {who}",
-                    SRC_MEAS)
-        sec.add(f"D{n}", t.D, "mm", f"D{n}", f"ball/pin diameter, {who}"
+        _limit_rows(sec, f"W{n}", f"W{n}", "span", t.W_limits, name)
+        sec.add(f"D{n}", t.D, "mm", f"D{n}", f"ball/pin diameter, {name}"
                 + (" (chosen: contact near d + 2x·m_n)" if t.D_chosen else ""), SRC_MEAS)
         sec.add(f"M{n}", t.M, "mm", f"M{n}", f"dimension {'between' if ins else 'over'} two "
-                f"balls, {who}", SRC_MEAS)
+                f"balls, {name}", SRC_MEAS)
         sec.add(f"d_M_contact{n}", t.d_M_contact, "mm", f"d_c{n}",
-                f"diameter where the ball touches the flanks, {who}", SRC_MEAS)
-        if t.M_limits:
-            sec.add(f"M{n}_upper", t.M_limits[0], "mm", f"M{n} max", f"over balls, upper limit, "
-                    f"{who}", SRC_MEAS)
-            sec.add(f"M{n}_lower", t.M_limits[1], "mm", f"M{n} min", f"over balls, lower limit, "
-                    f"{who}", SRC_MEAS)
+                f"diameter where the ball touches the flanks, {name}", SRC_MEAS)
+        _limit_rows(sec, f"M{n}", f"M{n}", "over balls", t.M_limits, name)
         sec.add(f"M_r{n}", t.M_r, "mm", f"M_r{n}", f"radial single-ball dimension (axis to the "
-                f"{'near' if ins else 'far'} point of the ball), {who}", SRC_MEAS)
-        if t.M_r_limits:
-            sec.add(f"M_r{n}_upper", t.M_r_limits[0], "mm", f"M_r{n} max",
-                    f"radial single-ball dimension, upper limit, {who}", SRC_MEAS)
-            sec.add(f"M_r{n}_lower", t.M_r_limits[1], "mm", f"M_r{n} min",
-                    f"radial single-ball dimension, lower limit, {who}", SRC_MEAS)
-        sec.add(f"s_chord{n}", t.s_c, "mm", f"s̄{n}", f"chordal tooth thickness (normal), {who}"
+                f"{'near' if ins else 'far'} point of the ball), {name}", SRC_MEAS)
+        _limit_rows(sec, f"M_r{n}", f"M_r{n}", "radial single-ball dimension", t.M_r_limits,
+                    name)
+        sec.add(f"s_chord{n}", t.s_c, "mm", f"s̄{n}", f"chordal tooth thickness (normal), {name}"
                 + (" (of its teeth; a tooth calliper reaches them only in a large ring)"
                    if ins else ""), SRC_MEAS)
-        sec.add(f"h_chord{n}", t.h_c, "mm", f"h̄{n}", f"chordal height from the tip, {who}",
+        sec.add(f"h_chord{n}", t.h_c, "mm", f"h̄{n}", f"chordal height from the tip, {name}",
                 SRC_MEAS)
-        if t.s_c_limits:
-            sec.add(f"s_chord{n}_upper", t.s_c_limits[0], "mm", f"s̄{n} max",
-                    f"chordal thickness, upper limit, {who}", SRC_MEAS)
-            sec.add(f"s_chord{n}_lower", t.s_c_limits[1], "mm", f"s̄{n} min",
-                    f"chordal thickness, lower limit, {who}", SRC_MEAS)
-        sec.add(f"s_const{n}", t.s_cc, "mm", f"s̄_c{n}", f"constant chord, {who}", SRC_MEAS)
+        _limit_rows(sec, f"s_chord{n}", f"s̄{n}", "chordal thickness", t.s_c_limits, name)
+        sec.add(f"s_const{n}", t.s_cc, "mm", f"s̄_c{n}", f"constant chord, {name}", SRC_MEAS)
         sec.add(f"h_const{n}", t.h_cc, "mm", f"h̄_c{n}", f"constant chord height from the tip, "
-                f"{who}", SRC_MEAS)
-        if t.s_cc_limits:
-            sec.add(f"s_const{n}_upper", t.s_cc_limits[0], "mm", f"s̄_c{n} max",
-                    f"constant chord, upper limit, {who}", SRC_MEAS)
-            sec.add(f"s_const{n}_lower", t.s_cc_limits[1], "mm", f"s̄_c{n} min",
-                    f"constant chord, lower limit, {who}", SRC_MEAS)
+                f"{name}", SRC_MEAS)
+        _limit_rows(sec, f"s_const{n}", f"s̄_c{n}", "constant chord", t.s_cc_limits, name)
 
 
 COLUMNS = [("parameter", "parameter", None), ("symbol", "symbol", None), ("unit", "unit", None),
