@@ -305,3 +305,38 @@ def test_internal_pair_report_profile_and_plot(tmp_path):
     assert "internal gear" in out and "between two balls" in out
     assert (tmp_path / "p.svg").read_text().count("<path") == 2
     assert (tmp_path / "m.svg").stat().st_size > 1000
+
+
+# ----------------------------------------------------------------------------- robustness
+
+
+@settings(max_examples=40, deadline=None)
+@given(z1=st.integers(12, 40), dz=st.integers(6, 120), x1=st.floats(-0.3, 0.8),
+       x2=st.floats(-0.3, 1.0), m=st.sampled_from([1.0, 3.0, 8.0]),
+       beta=st.sampled_from([0.0, 12.0]), gost=st.booleans(),
+       temps=st.booleans())
+def test_internal_drawing_never_crashes(z1, dz, x1, x2, m, beta, gost, temps):
+    """Random internal pairs with [accuracy] and [drawing]: a report with finite numbers or
+    one input error, nothing else."""
+    import json
+
+    from geardesign.core.errors import InputError
+
+    acc = ({"standard": "GOST 1643-81", "grade": 8, "mating": "B", "T_H1": 80.0, "T_H2": 120.0}
+           if gost else {"standard": "ISO 1328-1:1995", "grade": 7, "fa": 40.0, "T_sn1": 50.0,
+                         "T_sn2": 80.0})
+    if temps:
+        acc.update(temperature_housing=70.0, temperature_wheel=50.0)
+    data = {"kind": "spur", "title": "t",
+            "gear": {"internal": True, "module": m, "z1": z1, "z2": z1 + dz, "x1": x1, "x2": x2,
+                     "helix_angle": beta, "face_width": 10 * m},
+            "accuracy": acc, "drawing": {}}
+    try:
+        doc = run_data(data).document()
+    except InputError:
+        return
+    text = json.dumps(doc, allow_nan=False)          # raises on NaN or inf
+    assert "test_dimensions" in doc["results"] and text
+    v = doc["results"]["test_dimensions"]
+    assert v["M2_upper"] >= v["M2_lower"] and v["W2_upper"] >= v["W2_lower"]
+    assert v["M2"] < v["M2_lower"]                   # thinner teeth: wider spaces
