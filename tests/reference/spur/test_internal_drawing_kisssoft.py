@@ -26,9 +26,10 @@ j_tw·cos α_n, so j_tw is compared.
 Tolerances: lengths printed to 0.001 mm, ±0.0006 mm; tolerances in µm printed as integers,
 exact.  KISSsoft's chordal limits are s_c + A_s.e/i (the allowance added to the chord, e.g.
 96.702 − 0.175 = 96.527 for the stage-1 planet); geardesign takes the chord of the thinner
-arc, 96.5286: the chord shrinks by the factor cos(ψ/2)-like ratio of the arc, 0.0016–0.0023 mm here
-(±0.003 on the chordal limits of the planets; the rings' agree to 0.0006).  The limits are ordered (largest, smallest): the upper allowance gives the smaller
-dimension between balls and the smaller span over spaces of an internal gear.
+arc, whose change is A_s·cos(s_n/d_n): 96.5286, 0.0016–0.0023 mm apart on the planets
+(±0.003 on their chordal limits; the rings' agree to 0.0006).  The limits are ordered
+(largest, smallest): the upper allowance gives the smaller dimension between balls and the
+smaller span over spaces of an internal gear.
 """
 
 import math
