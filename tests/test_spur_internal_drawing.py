@@ -47,8 +47,10 @@ def _distance_to_flank(c: np.ndarray, r_b: float, eta_b: float, side: float,
                        t_max: float) -> tuple[float, float]:
     """Least distance from ``c`` to the flank and the radius of the nearest point."""
     ts = np.linspace(0.0, t_max, 2001)
-    d = [np.linalg.norm(_involute_point(r_b, eta_b, t, side) - c) for t in ts]
-    k = int(np.argmin(d))
+    phi = side * (eta_b - ts)                 # the same curve as _involute_point, on a grid
+    px = r_b * np.sin(phi) + side * r_b * ts * np.cos(phi)
+    py = r_b * np.cos(phi) - side * r_b * ts * np.sin(phi)
+    k = int(np.argmin(np.hypot(px - c[0], py - c[1])))
     lo, hi = ts[max(k - 1, 0)], ts[min(k + 1, len(ts) - 1)]
     res = minimize_scalar(lambda t: np.linalg.norm(_involute_point(r_b, eta_b, t, side) - c),
                           bounds=(lo, hi), method="bounded",
@@ -340,3 +342,20 @@ def test_internal_drawing_never_crashes(z1, dz, x1, x2, m, beta, gost, temps):
     v = doc["results"]["test_dimensions"]
     assert v["M2_upper"] >= v["M2_lower"] and v["W2_upper"] >= v["W2_lower"]
     assert v["M2"] < v["M2_lower"]                   # thinner teeth: wider spaces
+
+
+def test_plot_curves_end_at_the_reports_sliding():
+    """The plot's sliding along the path A…E of an internal pair ends at the report's values
+    (geardesign.spur.kinematics.sliding_at_ends), and the stress ratio is 1 at the pitch
+    point."""
+    from geardesign.spur.export import sliding_along_path
+    from geardesign.spur.kinematics import sliding_at_ends
+
+    g = run_data(SPEC).pair_geometry
+    s = sliding_along_path(g, n=2001)
+    e = sliding_at_ends(g)
+    assert (s["theta1"][0], s["theta2"][0]) == pytest.approx((e.theta1_A, e.theta2_A), rel=1e-12)
+    assert (s["theta1"][-1], s["theta2"][-1]) == pytest.approx((e.theta1_E, e.theta2_E),
+                                                               rel=1e-12)
+    r1p = 0.5 * g.g1.d_w * math.sin(g.alpha_tw)
+    assert np.interp(r1p, s["rho1"], s["sigma_rel"]) == pytest.approx(1.0, abs=1e-5)
