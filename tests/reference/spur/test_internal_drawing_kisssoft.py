@@ -50,7 +50,7 @@ STAGES = {
 
 # stage: key → printed value (section 6 of each report; limits as (largest, smallest))
 PRINTED = {
-    1: {"k2": 8, "W2": 1047.070, "W2_upper": 1047.624, "W2_lower": 1047.474,
+    1: {"k1": 3, "k2": 8, "W2": 1047.070, "W2_upper": 1047.624, "W2_lower": 1047.474,
         "M2": 2445.378, "M2_upper": 2446.970, "M2_lower": 2446.539,
         "M_r2": 1222.689, "M_r2_upper": 1223.485, "M_r2_lower": 1223.270,
         "s_chord2": 54.260, "s_chord2_upper": 53.830, "s_chord2_lower": 53.670,
@@ -58,7 +58,7 @@ PRINTED = {
         "M_r1": 506.303, "M_r1_upper": 506.167, "M_r1_lower": 506.104,
         "W1": 367.520, "W1_upper": 367.356, "W1_lower": 367.281,
         "s_chord1": 96.702, "s_chord1_upper": 96.527, "s_chord1_lower": 96.447},
-    2: {"W2": 676.615, "W2_upper": 677.038, "W2_lower": 676.916,
+    2: {"k1": 5, "k2": 11, "W2": 676.615, "W2_upper": 677.038, "W2_lower": 676.916,
         "M2": 1900.511, "M2_upper": 1901.836, "M2_lower": 1901.454,
         "M_r2": 950.393, "M_r2_upper": 951.056, "M_r2_lower": 950.865,
         "s_chord2": 34.775, "s_chord2_upper": 34.455, "s_chord2_lower": 34.325,
@@ -141,3 +141,27 @@ def test_the_drawing_table_names_the_internal_gear(stage):
     assert m["wheel"] == pytest.approx(PRINTED[n]["M2"], abs=0.0006)
     assert m["wheel_es"] == pytest.approx(PRINTED[n]["M2_upper"] - PRINTED[n]["M2"], abs=0.0012)
     assert m["wheel_ei"] == pytest.approx(PRINTED[n]["M2_lower"] - PRINTED[n]["M2"], abs=0.0012)
+
+
+# diameters where the calliper (d_MWk.m) and the ball (d_MMr.m) touch the ring's flanks at
+# the mean allowance, as printed (section 6), with the printed number of spaces
+CONTACT = {1: (8, 2589.383, 2555.762), 2: (11, 1956.100, 1948.395)}
+
+
+@pytest.mark.parametrize("n", [1, 2])
+def test_ring_contact_diameters_at_the_mean_allowance(n):
+    from geardesign.spur.geometry import base_tangent_length
+    from geardesign.spur.measurement import Tooth, over_balls
+
+    s = STAGES[n]
+    x2 = planetary(s["data"])["results"]["gears"]["x_ring"]      # GOST 19274-73 sign
+    m, z, a = s["m"], s["z2"], math.radians(20.0)
+    mean = 0.5 * (s["A2"][0] + s["A2"][1]) * 1e-3
+    s_n = m * (0.5 * math.pi - 2 * x2 * math.tan(a)) + mean
+    ball = over_balls(Tooth(z, m, a, 0.0, math.pi * m - s_n, 0.0, 0.0, True), s["D"][1])
+    k, d_mw, d_mm = CONTACT[n]
+    # thinner internal teeth = a larger shift in the GOST sign
+    x_mean = x2 - mean / (2 * m * math.tan(a))
+    _, _, d_W = base_tangent_length(z, x_mean, m, a, a, 0.0, z * m, z * m * math.cos(a), k)
+    assert_ref(d_W, d_mw, 0.0006, f"KISSsoft stage {n}: dMWk.m")
+    assert_ref(ball.d_c, d_mm, 0.0006, f"KISSsoft stage {n}: dMMr.m")
