@@ -594,12 +594,6 @@ def compute(spec: ValidatedSpec) -> Result:
 
         assume_expansion(spec)
     internal = getattr(geom, "internal", False)
-    if internal:
-        for table in ("accuracy", "drawing"):
-            if spec.data.get(table) is not None:
-                raise InputError(Problem(table, f"the drawing data ([{table}]) are computed for "
-                                         "external pairs only; remove [accuracy] and [drawing] "
-                                         "for an internal pair"))
     res = CALCULATOR.new_result(spec)
     if internal:
         res.methods.append("GOST 19274-73")

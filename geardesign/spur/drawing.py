@@ -2,6 +2,14 @@
 pair, the test dimensions of each gear with their limits, and the drawing data table
 (GOST 2.403-75 / ISO 1340 parameter table).
 
+Internal pairs (:class:`~geardesign.spur.internal.InternalPairGeometry`): the same
+tolerances (the internal gear's by its own d, b), its tooth thickness allowances those of
+its teeth (≤ 0: wider spaces; [DIN3967], :mod:`~geardesign.spur.tolerances.backlash`), the
+least backlash at a_w + f_a, the dimension between two balls or pins and the radial
+single-ball dimension from its space width, the span over k spaces (with an internal
+calliper: a standard disc micrometer does not reach into an internal gear) and the chordal
+thickness of its teeth (a tooth calliper reaches them only in a large ring).
+
 inputs (:func:`drawing_inputs`, every :class:`InputError`) → solve (:func:`solve`, pure,
 typed records) → report (:func:`add_drawing`: rows, the data table and the checks).
 """
@@ -38,6 +46,7 @@ from geardesign.spur.tolerances.gost1643 import ToleranceError
 STEEL_EXPANSION = 11.5  # 1e-6/K, assumed for a member whose coefficient is not given
 SRC_GOST = "GOST 1643-81"
 SRC_BACKLASH = "ISO 21771:2007; ISO/TR 10064-2:1996"
+SRC_BACKLASH_INT = SRC_BACKLASH + "; DIN 3967:1978 (internal pair: A_a of opposite sign)"
 SRC_MEAS = "GOST 16532-70; ISO 21771:2007"
 GOST_ONLY = ("E_Hs1", "E_Hs2", "T_H1", "T_H2", "center_distance_class")
 ISO_ONLY = ("A_sne1", "A_sne2", "T_sn1", "T_sn2")
@@ -79,6 +88,8 @@ class GearTests:
     M: float
     d_M_contact: float
     M_limits: tuple[float, float] | None
+    M_r: float
+    M_r_limits: tuple[float, float] | None
     s_c: float
     h_c: float
     s_c_limits: tuple[float, float] | None
@@ -143,7 +154,8 @@ def accuracy_of(g: PairGeometry, spec: ValidatedSpec) -> Accuracy:
     try:
         thermal = _thermal(acc, spec)
         j_th = 0.0 if thermal is None else centre_distance_effect(
-            1000.0 * thermal.delta_a(a_w, g.g1.d_w, g.g2.d_w), g.alpha_tw, g.beta_b)
+            1000.0 * thermal.delta_a(a_w, g.g1.d_w, g.g2.d_w, is_internal(g)), g.alpha_tw,
+            g.beta_b)
         mating = acc["mating"]
         flank = None
         if gost:
@@ -199,9 +211,27 @@ def accuracy_of(g: PairGeometry, spec: ValidatedSpec) -> Accuracy:
                     assumed, E_Hs, T_H, flank, thermal, bl)
 
 
+def is_internal(g) -> bool:
+    """Whether gear 2 of the pair is an internal gear."""
+    return getattr(g, "internal", False)
+
+
+def inner(g, i: int) -> bool:
+    """Whether gear ``i`` (0 pinion, 1 wheel) is an internal gear."""
+    return i == 1 and is_internal(g)
+
+
+def _width(g, i: int, s_n: float) -> float:
+    """What the test-dimension functions of :mod:`~geardesign.spur.measurement` take for a
+    normal tooth thickness ``s_n``: the thickness itself, or for an internal gear its space
+    width e_n = π m_n − s_n."""
+    return math.pi * g.inp.m_n - s_n if inner(g, i) else s_n
+
+
 def _tooth(g: PairGeometry, i: int) -> Tooth:
     gi = g.gears[i]
-    return Tooth(gi.z, g.inp.m_n, g.inp.rack.alpha_n, g.inp.beta, gi.s_n, gi.d_a, gi.d_l)
+    return Tooth(gi.z, g.inp.m_n, g.inp.rack.alpha_n, g.inp.beta, _width(g, i, gi.s_n), gi.d_a,
+                 gi.d_l, inner(g, i))
 
 
 def tests_of(g: PairGeometry, spec: ValidatedSpec, acc: Accuracy | None) -> tuple:
@@ -214,12 +244,15 @@ def tests_of(g: PairGeometry, spec: ValidatedSpec, acc: Accuracy | None) -> tupl
         t = _tooth(g, i)
         lim = None if acc is None else (acc.upper[i] * 1e-3, acc.lower[i] * 1e-3)
         k = dr.get(f"k{n}")
+        # the flanks' measurable band: external from the active limit to the tip, internal
+        # from the (inner) tip to the outer end of the involute
+        band = (gi.d_a, gi.d_l) if inner(g, i) else (max(gi.d_p, gi.d_l), gi.d_a)
         try:
             if k is None:
                 k, W, d_W = gi.k, gi.W, gi.d_W
             else:
                 W, d_W = span(gi.z, gi.x, g.inp.m_n, g.inp.rack.alpha_n, g.inp.beta, k,
-                              max(gi.d_p, gi.d_l), gi.d_a, g.inp.b_w, f"drawing.k{n}")
+                              *band, g.inp.b_w, f"drawing.k{n}")
         except MeasurementError as exc:
             raise _error(exc) from None
         D = dr.get(f"ball_diameter{n}")
@@ -227,9 +260,10 @@ def tests_of(g: PairGeometry, spec: ValidatedSpec, acc: Accuracy | None) -> tupl
         if chosen:
             D = ideal_ball(t)
         res = over_balls(t, D) if ideal_ok(t, D) else None
-        why = ("it is too small: it would sink below the base circle into the tooth space; "
-               "choose a larger ball") if res is None \
-            else ball_touches(t, res)
+        why = (("it is too large: its centre would lie inside the base circle; choose a "
+                "smaller ball") if t.internal else
+               ("it is too small: it would sink below the base circle into the tooth space; "
+                "choose a larger ball")) if res is None else ball_touches(t, res)
         if why is not None:
             key = f"drawing.ball_diameter{n}"
             if chosen:
@@ -243,24 +277,39 @@ def tests_of(g: PairGeometry, spec: ValidatedSpec, acc: Accuracy | None) -> tupl
             if gi.s_n + lim[1] <= 0.1 * gi.s_n:
                 raise InputError(Problem(
                     "accuracy", f"the thickness allowances ({acc.upper[i]:.1f}…"
-                    f"{acc.lower[i]:.1f} µm) leave less than a tenth of the {who(i)}'s tooth "
+                    f"{acc.lower[i]:.1f} µm) leave less than a tenth of the {who(i, g)}'s tooth "
                     f"thickness s_n = {gi.s_n:.4f} mm: give smaller allowances or tolerances"))
-            W_l = tuple(W + e * cos_a for e in lim)
+            # an internal gear's span is over spaces: thinner teeth make it longer
+            W_l = _max_min(W + (-e if inner(g, i) else e) * cos_a for e in lim)
             try:
-                M_l = tuple(over_balls(t, D, gi.s_n + e).M for e in lim)
+                balls = tuple(over_balls(t, D, _width(g, i, gi.s_n + e)) for e in lim)
             except MeasurementError:
-                raise InputError.at(f"drawing.ball_diameter{n}", D, "the ball sinks below the "
-                                    "base circle of the thinnest tooth the allowances permit: "
-                                    "choose a larger ball") from None
-            s_l = tuple(chordal(t, gi.s_n + e).s_c for e in lim)
-            c_l = tuple(constant_chord(t, gi.s_n + e).s_c for e in lim)
-        out.append(GearTests(k, W, d_W, W_l, D, chosen, res.M, res.d_c, M_l, ch.s_c, ch.h_c,
-                             s_l, cc.s_c, cc.h_c, c_l))
+                raise InputError.at(f"drawing.ball_diameter{n}", D, (
+                    "the ball's centre falls inside the base circle with the narrowest space the "
+                    "allowances permit: choose a smaller ball") if t.internal else (
+                    "the ball sinks below the base circle of the thinnest tooth the allowances "
+                    "permit: choose a larger ball")) from None
+            M_l = _max_min(b.M for b in balls)
+            Mr_l = _max_min(b.M_r for b in balls)
+            s_l = _max_min(chordal(t, _width(g, i, gi.s_n + e)).s_c for e in lim)
+            c_l = _max_min(constant_chord(t, _width(g, i, gi.s_n + e)).s_c for e in lim)
+        if lim is None:
+            Mr_l = None
+        out.append(GearTests(k, W, d_W, W_l, D, chosen, res.M, res.d_c, M_l, res.M_r, Mr_l,
+                             ch.s_c, ch.h_c, s_l, cc.s_c, cc.h_c, c_l))
     return tuple(out)
 
 
-def who(i: int) -> str:
-    return ("pinion", "wheel")[i]
+def _max_min(values) -> tuple[float, float]:
+    """The two limits of a test dimension as (upper, lower): the upper thickness allowance
+    gives the larger dimension over balls of an external gear but the smaller one between
+    balls (and span over spaces) of an internal gear."""
+    a, b = values
+    return (a, b) if a >= b else (b, a)
+
+
+def who(i: int, g=None) -> str:
+    return ("pinion", "internal gear" if g is not None and is_internal(g) else "wheel")[i]
 
 
 def ideal_ok(t: Tooth, D: float) -> bool:
@@ -274,13 +323,17 @@ def ideal_ok(t: Tooth, D: float) -> bool:
 # ----------------------------------------------------------------------------- report
 
 
-def _pair(sec, key, values, unit, symbol, name, source):
+def _pair(sec, key, values, unit, symbol, name, source, names=("pinion", "wheel")):
     for i, v in enumerate(values):
-        sec.add(f"{key}{i + 1}", v, unit, f"{symbol}{i + 1}", f"{name}, {('pinion', 'wheel')[i]}",
-                source)
+        sec.add(f"{key}{i + 1}", v, unit, f"{symbol}{i + 1}", f"{name}, {names[i]}", source)
 
 
-def _accuracy_rows(res: Result, acc: Accuracy) -> None:
+def _accuracy_rows(res: Result, acc: Accuracy, g) -> None:
+    names = (who(0, g), who(1, g))
+    internal = is_internal(g)
+    src_bl = SRC_BACKLASH_INT if internal else SRC_BACKLASH
+    close = "a_w + f_a" if internal else "a_w − f_a"
+    open_ = "a_w − f_a" if internal else "a_w + f_a"
     src = SRC_GOST if acc.standard == gost1643.STANDARD else acc.standard
     sec = res.section("accuracy", "Accuracy, tooth thickness allowances and backlash")
     sec.add("designation", acc.designation, None, "", "accuracy on the drawing", src)
@@ -300,7 +353,7 @@ def _accuracy_rows(res: Result, acc: Accuracy) -> None:
                                 ("f_HbetaT", "f_HβT", "helix slope tolerance"),
                                 ("F_rT", "F_rT", "runout tolerance")):
             _pair(sec, attr, tuple(getattr(f, attr) for f in acc.flank), "µm", sym, name,
-                  iso1328.source(attr, acc.standard))
+                  iso1328.source(attr, acc.standard), names)
     sec.add("jn_min_required", acc.jn_required, "µm", "j_n min", "required least normal backlash",
             acc.jn_source)
     sec.add("fa", acc.fa, "µm", "±f_a", "limit deviation of the centre distance",
@@ -309,66 +362,75 @@ def _accuracy_rows(res: Result, acc: Accuracy) -> None:
     if acc.E_Hs is not None:
         _pair(sec, "E_Hs", acc.E_Hs, "µm", "−E_Hs",
               "least additional rack shift" + (" (from the backlash balance)"
-                                               if acc.upper_assumed else ""), SRC_GOST)
-        _pair(sec, "T_H", acc.T_H, "µm", "T_H", "tolerance on the additional rack shift", "spec")
+                                               if acc.upper_assumed else "")
+              + (" (internal gear: into its rim, away from the axis)" if internal else ""),
+              SRC_GOST, names)
+        _pair(sec, "T_H", acc.T_H, "µm", "T_H", "tolerance on the additional rack shift", "spec",
+              names)
     _pair(sec, "E_sns", acc.upper, "µm", "E_sns", "upper tooth thickness allowance (normal)",
-          f"{SRC_BACKLASH}; {how}")
+          f"{src_bl}; {how}", names)
     _pair(sec, "E_sni", acc.lower, "µm", "E_sni", "lower tooth thickness allowance (normal)",
-          SRC_BACKLASH)
+          src_bl, names)
+    if internal:   # the internal gear's space width: the same allowances, opposite sign
+        sec.add("E_ens2", -acc.upper[1], "µm", "E_ens2", "least space width allowance "
+                "(normal), internal gear: −E_sns2", src_bl)
+        sec.add("E_eni2", -acc.lower[1], "µm", "E_eni2", "largest space width allowance "
+                "(normal), internal gear: −E_sni2", src_bl)
     b = acc.backlash
-    sec.add("jn_min", b.jn_min, "µm", "j_n min", "least normal backlash at 20 °C, a_w − f_a",
-            SRC_BACKLASH)
-    sec.add("jn_max", b.jn_max, "µm", "j_n max", "largest normal backlash at 20 °C, a_w + f_a",
-            SRC_BACKLASH)
+    sec.add("jn_min", b.jn_min, "µm", "j_n min", f"least normal backlash at 20 °C, {close}",
+            src_bl)
+    sec.add("jn_max", b.jn_max, "µm", "j_n max", f"largest normal backlash at 20 °C, {open_}",
+            src_bl)
     if acc.thermal is not None:
         sec.add("j_thermal", b.j_thermal, "µm", "j_θ",
-                "backlash change at operating temperature (housing and gears)", SRC_BACKLASH)
+                "backlash change at operating temperature (housing and gears)", src_bl)
         sec.add("jn_min_hot", b.jn_min_hot, "µm", "j_n min,θ",
-                "least normal backlash at operating temperature", SRC_BACKLASH)
+                "least normal backlash at operating temperature", src_bl)
         sec.add("jn_max_hot", b.jn_max_hot, "µm", "j_n max,θ",
-                "largest normal backlash at operating temperature", SRC_BACKLASH)
+                "largest normal backlash at operating temperature", src_bl)
 
 
-def _test_rows(res: Result, tests: tuple) -> None:
+def _limit_rows(sec, key: str, sym: str, name: str, limits, who: str) -> None:
+    """The upper and lower limit rows of one test dimension (none without [accuracy])."""
+    if limits:
+        for j, (side, word) in enumerate((("upper", "max"), ("lower", "min"))):
+            sec.add(f"{key}_{side}", limits[j], "mm", f"{sym} {word}",
+                    f"{name}, {side} limit, {who}", SRC_MEAS)
+
+
+def _test_rows(res: Result, tests: tuple, g) -> None:
     sec = res.section("test_dimensions", "Test dimensions")
     for i, t in enumerate(tests):
-        n, who = i + 1, ("pinion", "wheel")[i]
-        sec.add(f"k{n}", t.k, "-", f"k{n}", f"teeth spanned, {who}", SRC_MEAS)
-        sec.add(f"W{n}", t.W, "mm", f"W{n}", f"span over k teeth, {who}", SRC_MEAS)
-        sec.add(f"d_W{n}", t.d_W, "mm", f"d_W{n}", f"diameter where the calliper touches, {who}",
+        n, name, ins = i + 1, who(i, g), inner(g, i)
+        sec.add(f"k{n}", t.k, "-", f"k{n}", ("spaces" if ins else "teeth") + f" spanned, {name}",
                 SRC_MEAS)
-        if t.W_limits:
-            sec.add(f"W{n}_upper", t.W_limits[0], "mm", f"W{n} max", f"span, upper limit, {who}",
-                    SRC_MEAS)
-            sec.add(f"W{n}_lower", t.W_limits[1], "mm", f"W{n} min", f"span, lower limit, {who}",
-                    SRC_MEAS)
-        sec.add(f"D{n}", t.D, "mm", f"D{n}", f"ball/pin diameter, {who}"
+        sec.add(f"W{n}", t.W, "mm", f"W{n}", f"span over k {'spaces' if ins else 'teeth'}, {name}"
+                + (" (internal calliper with ball or disc anvils: a standard disc micrometer "
+                   "does not reach into an internal gear)" if ins else ""), SRC_MEAS)
+        sec.add(f"d_W{n}", t.d_W, "mm", f"d_W{n}", f"diameter where the calliper touches, {name}",
+                SRC_MEAS)
+        _limit_rows(sec, f"W{n}", f"W{n}", "span", t.W_limits, name)
+        sec.add(f"D{n}", t.D, "mm", f"D{n}", f"ball/pin diameter, {name}"
                 + (" (chosen: contact near d + 2x·m_n)" if t.D_chosen else ""), SRC_MEAS)
-        sec.add(f"M{n}", t.M, "mm", f"M{n}", f"dimension over two balls, {who}", SRC_MEAS)
+        sec.add(f"M{n}", t.M, "mm", f"M{n}", f"dimension {'between' if ins else 'over'} two "
+                f"balls, {name}", SRC_MEAS)
         sec.add(f"d_M_contact{n}", t.d_M_contact, "mm", f"d_c{n}",
-                f"diameter where the ball touches the flanks, {who}", SRC_MEAS)
-        if t.M_limits:
-            sec.add(f"M{n}_upper", t.M_limits[0], "mm", f"M{n} max", f"over balls, upper limit, "
-                    f"{who}", SRC_MEAS)
-            sec.add(f"M{n}_lower", t.M_limits[1], "mm", f"M{n} min", f"over balls, lower limit, "
-                    f"{who}", SRC_MEAS)
-        sec.add(f"s_chord{n}", t.s_c, "mm", f"s̄{n}", f"chordal tooth thickness (normal), {who}",
+                f"diameter where the ball touches the flanks, {name}", SRC_MEAS)
+        _limit_rows(sec, f"M{n}", f"M{n}", "over balls", t.M_limits, name)
+        sec.add(f"M_r{n}", t.M_r, "mm", f"M_r{n}", f"radial single-ball dimension (axis to the "
+                f"{'near' if ins else 'far'} point of the ball), {name}", SRC_MEAS)
+        _limit_rows(sec, f"M_r{n}", f"M_r{n}", "radial single-ball dimension", t.M_r_limits,
+                    name)
+        sec.add(f"s_chord{n}", t.s_c, "mm", f"s̄{n}", f"chordal tooth thickness (normal), {name}"
+                + (" (of its teeth; a tooth calliper reaches them only in a large ring)"
+                   if ins else ""), SRC_MEAS)
+        sec.add(f"h_chord{n}", t.h_c, "mm", f"h̄{n}", f"chordal height from the tip, {name}",
                 SRC_MEAS)
-        sec.add(f"h_chord{n}", t.h_c, "mm", f"h̄{n}", f"chordal height from the tip, {who}",
-                SRC_MEAS)
-        if t.s_c_limits:
-            sec.add(f"s_chord{n}_upper", t.s_c_limits[0], "mm", f"s̄{n} max",
-                    f"chordal thickness, upper limit, {who}", SRC_MEAS)
-            sec.add(f"s_chord{n}_lower", t.s_c_limits[1], "mm", f"s̄{n} min",
-                    f"chordal thickness, lower limit, {who}", SRC_MEAS)
-        sec.add(f"s_const{n}", t.s_cc, "mm", f"s̄_c{n}", f"constant chord, {who}", SRC_MEAS)
+        _limit_rows(sec, f"s_chord{n}", f"s̄{n}", "chordal thickness", t.s_c_limits, name)
+        sec.add(f"s_const{n}", t.s_cc, "mm", f"s̄_c{n}", f"constant chord, {name}", SRC_MEAS)
         sec.add(f"h_const{n}", t.h_cc, "mm", f"h̄_c{n}", f"constant chord height from the tip, "
-                f"{who}", SRC_MEAS)
-        if t.s_cc_limits:
-            sec.add(f"s_const{n}_upper", t.s_cc_limits[0], "mm", f"s̄_c{n} max",
-                    f"constant chord, upper limit, {who}", SRC_MEAS)
-            sec.add(f"s_const{n}_lower", t.s_cc_limits[1], "mm", f"s̄_c{n} min",
-                    f"constant chord, lower limit, {who}", SRC_MEAS)
+                f"{name}", SRC_MEAS)
+        _limit_rows(sec, f"s_const{n}", f"s̄_c{n}", "constant chord", t.s_cc_limits, name)
 
 
 COLUMNS = [("parameter", "parameter", None), ("symbol", "symbol", None), ("unit", "unit", None),
@@ -380,9 +442,12 @@ COLUMNS = [("parameter", "parameter", None), ("symbol", "symbol", None), ("unit"
 def drawing_table(g: PairGeometry, acc: Accuracy | None, tests: tuple, hand: str | None,
                   rack_name: str) -> DataTable:
     """The parameter table of each gear's drawing (GOST 2.403-75 / ISO 1340): one row per
-    parameter, a column per gear with the upper and lower deviations of the test dimensions."""
+    parameter, a column per gear with the upper and lower deviations of the test dimensions.
+    An internal gear (the wheel column of an internal pair) has its span over spaces and the
+    dimension between balls; the shift is in the GOST 19274-73 sign, named."""
     p = g.inp
     rows = []
+    internal = is_internal(g)
 
     def row(name, sym, unit, v1, v2, dev1=(None, None), dev2=(None, None)):
         rows.append({"parameter": name, "symbol": sym, "unit": unit, "pinion": v1,
@@ -392,8 +457,11 @@ def drawing_table(g: PairGeometry, acc: Accuracy | None, tests: tuple, hand: str
     beta = math.degrees(p.beta)
     row("normal module", "m_n", "mm", p.m_n, p.m_n)
     row("number of teeth", "z", "-", p.z1, p.z2)
+    if internal:
+        row("toothing", "", "", "external", "internal")
     row("basic rack", "", "", rack_name, rack_name)
-    row("profile shift coefficient", "x", "-", p.x1, p.x2)
+    row("profile shift coefficient" + (" (internal gear: GOST 19274-73 sign, + away from "
+                                       "the axis)" if internal else ""), "x", "-", p.x1, p.x2)
     row("helix angle", "β", "deg", beta, beta)
     if beta > 0:
         h1 = hand or "right"
@@ -401,8 +469,11 @@ def drawing_table(g: PairGeometry, acc: Accuracy | None, tests: tuple, hand: str
     if acc is not None:
         row("accuracy", "", "", acc.designation, acc.designation)
     d = [(None, None)] * 2
-    for attr, lim, name, sym in (("W", "W_limits", "span over k teeth", "W"),
-                                 ("M", "M_limits", "dimension over balls", "M"),
+    for attr, lim, name, sym in (("W", "W_limits", "span over k teeth"
+                                  + (" (internal gear: k spaces)" if internal else ""), "W"),
+                                 ("M", "M_limits", "dimension over balls"
+                                  + (" (internal gear: between)" if internal else ""), "M"),
+                                 ("M_r", "M_r_limits", "radial single-ball dimension", "M_r"),
                                  ("s_c", "s_c_limits", "chordal tooth thickness", "s̄")):
         if acc is not None:
             d = [tuple(getattr(t, lim)[j] - getattr(t, attr) for j in (0, 1)) for t in tests]
@@ -428,9 +499,9 @@ def add_drawing(res: Result, g: PairGeometry, spec: ValidatedSpec) -> None:
     acc = accuracy_of(g, spec) if spec.data.get("accuracy") is not None else None
     tests = tests_of(g, spec, acc)
     if acc is not None:
-        _accuracy_rows(res, acc)
+        _accuracy_rows(res, acc, g)
         res.methods.append(acc.standard)
-    _test_rows(res, tests)
+    _test_rows(res, tests, g)
     r = g.inp.rack
     rack = ("GOST 13755-81" if (abs(math.degrees(r.alpha_n) - 20.0) < 1e-9 and r.h_a == 1.0
                                 and r.c == 0.25 and abs(r.rho_f - 0.38) < 1e-12)
@@ -441,18 +512,21 @@ def add_drawing(res: Result, g: PairGeometry, spec: ValidatedSpec) -> None:
     if acc is not None:
         b = acc.backlash
         least = min(b.jn_min, b.jn_min_hot)
+        internal = is_internal(g)
+        src_bl = SRC_BACKLASH_INT if internal else SRC_BACKLASH
         res.checks.append(check(
             "BACKLASH_JAM", least >= 0.0, "error",
-            f"the least normal backlash is {least:.1f} µm (centre distance at a_w − f_a"
+            f"the least normal backlash is {least:.1f} µm (centre distance at "
+            f"{'a_w + f_a' if internal else 'a_w − f_a'}"
             f"{', at operating temperature' if b.jn_min_hot < b.jn_min else ''}): the teeth "
             f"jam; thin the teeth (larger E_Hs / more negative A_sne), a wider centre-distance "
-            f"class or a larger a_w tolerance upward",
+            f"class or a larger a_w tolerance {'downward' if internal else 'upward'}",
             f"the least normal backlash {least:.1f} µm keeps the teeth free", least, 0.0,
-            SRC_BACKLASH))
+            src_bl))
         res.checks.append(check(
             "BACKLASH_GUARANTEED", least >= acc.jn_required - 1e-6, "warning",
             f"the least normal backlash {least:.1f} µm is below the required j_n min = "
             f"{acc.jn_required:.1f} µm: increase the upper thickness allowances by "
             f"{(acc.jn_required - least) / (2 * math.cos(g.inp.rack.alpha_n)):.1f} µm each",
             f"the least normal backlash {least:.1f} µm meets j_n min = {acc.jn_required:.1f} µm",
-            least, acc.jn_required, SRC_BACKLASH))
+            least, acc.jn_required, src_bl))

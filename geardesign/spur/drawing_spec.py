@@ -51,7 +51,8 @@ ACCURACY = Table("accuracy", "accuracy, tooth thickness allowances and backlash"
     _um("A_sne1", "upper tooth thickness allowance of the pinion (ISO 1328-1 pairs: "
         "DIN 3967 / ISO 21771), ≤ 0", lo=-10000.0, hi=0.0,
         hint="from the backlash balance when not given"),
-    _um("A_sne2", "upper tooth thickness allowance of the wheel, ≤ 0", lo=-10000.0, hi=0.0),
+    _um("A_sne2", "upper tooth thickness allowance of the wheel, ≤ 0 (an internal gear: of "
+        "its teeth, ≤ 0 as well: wider spaces)", lo=-10000.0, hi=0.0),
     _um("T_sn1", "tooth thickness tolerance of the pinion (ISO pairs)",
         hint="required with ISO 1328-1"),
     _um("T_sn2", "tooth thickness tolerance of the wheel (ISO pairs)"),
@@ -67,12 +68,14 @@ ACCURACY = Table("accuracy", "accuracy, tooth thickness allowances and backlash"
 DRAWING = Table("drawing", "gear drawing: test dimensions and the data table", (
     Field("k1", "integer", "number of teeth spanned for W, pinion", symbol="k1", default=None,
           minimum=1, maximum=1000, hint="the tool's choice when not given"),
-    Field("k2", "integer", "number of teeth spanned for W, wheel", symbol="k2", default=None,
+    Field("k2", "integer", "number of teeth spanned for W, wheel (an internal gear: spaces)",
+          symbol="k2", default=None,
           minimum=1, maximum=1000),
     Field("ball_diameter1", "number", "ball or pin diameter for M_d, pinion", "mm", "D1",
           default=None, minimum=0.01, maximum=1000.0,
           hint="chosen to touch near mid-height when not given"),
-    Field("ball_diameter2", "number", "ball or pin diameter for M_d, wheel", "mm", "D2",
+    Field("ball_diameter2", "number", "ball or pin diameter for M_d, wheel (an internal "
+          "gear: between its teeth)", "mm", "D2",
           default=None, minimum=0.01, maximum=1000.0),
     Field("helix_hand", "string", "hand of the pinion's helix (the wheel's is opposite)",
           default=None, choices=("right", "left"), hint="helical gears; right when not given"),

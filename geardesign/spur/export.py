@@ -35,9 +35,6 @@ def _pair_of(result):
     if geom is None:
         raise ExportError("this result has no spur gear pair to draw (a kind = \"spur\" spec "
                           "is needed)")
-    if getattr(geom, "internal", False):
-        raise ExportError("the profile and the plot draw external pairs only; this spec is an "
-                          "internal pair (gear.internal = true)")
     allow = [0.0, 0.0]
     for sec in result.sections:
         if sec.key == "accuracy":
@@ -48,19 +45,30 @@ def _pair_of(result):
 
 def line_of_action(g) -> dict:
     """Points of the line of action in the drawing frame (pinion at the origin, wheel at
-    (a_w, 0)): tangency points N1, N2 on the base circles and the ends A, E of the path of
-    contact (where the tip circles cut it), and the pitch point P."""
+    (a_w, 0), an internal gear at (−a_w, 0)): tangency points N1, N2 on the base circles
+    and the ends A, E of the path of contact (where the tip circles cut it), and the pitch
+    point P.  Internal pair: N2 lies on the same side, N2 = N1 − g_w·n, and the contact
+    starts at ρ1 = ρ_a2 − g_w ([ISO21771]; :mod:`geardesign.spur.internal`)."""
     a = g.alpha_tw
     r_b1, r_b2 = 0.5 * g.g1.d_b, 0.5 * g.g2.d_b
-    n = np.array([math.sin(a), math.cos(a)])          # direction N1 → N2
+    n = np.array([math.sin(a), math.cos(a)])          # direction of increasing ρ1
     N1 = r_b1 * np.array([math.cos(a), -math.sin(a)])
-    N2 = np.array([g.a_w, 0.0]) - r_b2 * np.array([math.cos(a), -math.sin(a)])
+    if getattr(g, "internal", False):
+        N2 = np.array([-g.a_w, 0.0]) + r_b2 * np.array([math.cos(a), -math.sin(a)])
+        rho_A = g.g2.rho_a - g.g_w
+    else:
+        N2 = np.array([g.a_w, 0.0]) - r_b2 * np.array([math.cos(a), -math.sin(a)])
+        rho_A = g.g_w - g.g2.rho_a
     # N1 + t·n, t = ρ1 (roll distance of the pinion)
     N2_t = float(np.dot(N2 - N1, n))
-    A = N1 + (g.g_w - g.g2.rho_a) * n
+    A = N1 + rho_A * n
     E = N1 + g.g1.rho_a * n
     P = N1 + 0.5 * g.g1.d_w * math.sin(a) * n
-    return {"N1": N1, "N2": N1 + N2_t * n, "A": A, "E": E, "P": P, "dir": n}
+    N2 = N1 + N2_t * n
+    # the drawn line: N1N2, or for an internal pair from N2 through N1 to E (the path of
+    # contact lies beyond N1, on the far side from N2)
+    ends = (N2, E) if getattr(g, "internal", False) else (N1, N2)
+    return {"N1": N1, "N2": N2, "A": A, "E": E, "P": P, "dir": n, "ends": ends}
 
 
 def write_profile(result, path) -> Path:
@@ -100,7 +108,8 @@ def _write_dxf(m, g, path: Path) -> Path:
         poly.lwpoints.set(v)                     # in one piece (appending point by point is
         #                                          quadratic in ezdxf)
     loa = line_of_action(g)
-    msp.add_line(tuple(loa["N1"]), tuple(loa["N2"]), dxfattribs={"layer": "LINE_OF_ACTION"})
+    msp.add_line(tuple(loa["ends"][0]), tuple(loa["ends"][1]),
+                 dxfattribs={"layer": "LINE_OF_ACTION"})
     lo = np.minimum(m.pinion.min(axis=0), m.wheel.min(axis=0))
     hi = np.maximum(m.pinion.max(axis=0), m.wheel.max(axis=0))
     ext = ((float(lo[0]), float(lo[1]), 0.0), (float(hi[0]), float(hi[1]), 0.0))
@@ -132,8 +141,8 @@ def _write_svg(m, g, path: Path) -> Path:
         f'd="{_svg_path(m.pinion)}"/>',
         f'<path id="wheel" fill="none" stroke="#b22222" stroke-width="0.05" '
         f'd="{_svg_path(m.wheel)}"/>',
-        f'<line id="line_of_action" x1="{loa["N1"][0]:.6f}" y1="{-loa["N1"][1]:.6f}" '
-        f'x2="{loa["N2"][0]:.6f}" y2="{-loa["N2"][1]:.6f}" stroke="#2e8b57" '
+        f'<line id="line_of_action" x1="{loa["ends"][0][0]:.6f}" y1="{-loa["ends"][0][1]:.6f}" '
+        f'x2="{loa["ends"][1][0]:.6f}" y2="{-loa["ends"][1][1]:.6f}" stroke="#2e8b57" '
         f'stroke-width="0.05"/>',
         '</svg>', '']
     with atomic_path(path) as tmp:
@@ -145,15 +154,19 @@ def sliding_along_path(g, n: int = 101) -> dict:
     """Specific sliding ϑ1 = 1 − ρ2/(u ρ1), ϑ2 = 1 − u ρ1/ρ2 and the contact stress relative to
     the pitch point, √((1/ρ1 + 1/ρ2) / (1/ρ1P + 1/ρ2P)) (Hertz, one pair carrying the load),
     along the path of contact A…E; ρ1 the pinion's radius of curvature (theory of gearing;
-    [Dobrov2017] (3))."""
-    rho1 = np.linspace(g.g_w - g.g2.rho_a, g.g1.rho_a, n)
-    rho2 = g.g_w - rho1
+    [Dobrov2017] (3)).  Internal pair: ρ2 = ρ1 + g_w on the concave internal flank, so
+    1/ρ1 − 1/ρ2 in the stress ([ISO21771]; the sliding formulas hold as they are, both
+    gears turning the same way)."""
+    internal = getattr(g, "internal", False)
+    sgn = -1.0 if internal else 1.0
+    rho1 = np.linspace(sgn * (g.g_w - g.g2.rho_a), g.g1.rho_a, n)
+    rho2 = g.g_w - rho1 if not internal else rho1 + g.g_w
     u = g.u
     th1 = 1.0 - rho2 / (u * rho1)
     th2 = 1.0 - u * rho1 / rho2
     r1p = 0.5 * g.g1.d_w * math.sin(g.alpha_tw)
-    r2p = g.g_w - r1p
-    rel = np.sqrt((1.0 / rho1 + 1.0 / rho2) / (1.0 / r1p + 1.0 / r2p))
+    r2p = g.g_w - r1p if not internal else r1p + g.g_w
+    rel = np.sqrt((1.0 / rho1 + sgn / rho2) / (1.0 / r1p + sgn / r2p))
     return {"rho1": rho1, "theta1": th1, "theta2": th2, "sigma_rel": rel}
 
 
@@ -180,18 +193,32 @@ def write_plot(result, path) -> Path:
     ax, ax2 = fig.subplots(1, 2, gridspec_kw={"width_ratios": [1.3, 1.0]})
     ax.fill(m.pinion[:, 0], m.pinion[:, 1], color="#9db7e0", ec="#1f4e9e", lw=0.6,
             label=f"pinion z1 = {g.inp.z1}")
-    ax.fill(m.wheel[:, 0], m.wheel[:, 1], color="#e8a0a0", ec="#b22222", lw=0.6, alpha=0.8,
-            label=f"wheel z2 = {g.inp.z2}")
+    internal = getattr(g, "internal", False)
+    if internal:   # the ring: between its toothed contour and a rim circle
+        from matplotlib.patches import PathPatch
+        from matplotlib.path import Path as MPath
+
+        t = np.linspace(0, 2 * np.pi, 721)[:-1]
+        r_rim = 0.5 * g.g2.d_f + 2.0 * g.inp.m_n
+        rim = np.column_stack([m.centre2[0] + r_rim * np.cos(t), r_rim * np.sin(t)])
+        verts = np.vstack([rim, rim[:1], m.wheel[::-1], m.wheel[-1:]])
+        codes = ([MPath.MOVETO] + [MPath.LINETO] * (len(rim) - 1) + [MPath.CLOSEPOLY]
+                 + [MPath.MOVETO] + [MPath.LINETO] * (len(m.wheel) - 1) + [MPath.CLOSEPOLY])
+        ax.add_patch(PathPatch(MPath(verts, codes), facecolor="#e8a0a0", edgecolor="#b22222",
+                               lw=0.6, alpha=0.8, label=f"internal gear z2 = {g.inp.z2}"))
+    else:
+        ax.fill(m.wheel[:, 0], m.wheel[:, 1], color="#e8a0a0", ec="#b22222", lw=0.6, alpha=0.8,
+                label=f"wheel z2 = {g.inp.z2}")
     t = np.linspace(0, 2 * np.pi, 721)
-    for cx, gi in ((0.0, g.g1), (g.a_w, g.g2)):
+    for cx, gi in ((0.0, g.g1), (m.centre2[0], g.g2)):
         for d, style in ((gi.d_b, ":"), (gi.d_w, "--")):
             ax.plot(cx + 0.5 * d * np.cos(t), 0.5 * d * np.sin(t), "k", ls=style, lw=0.4)
-    ax.plot(*np.array([loa["N1"], loa["N2"]]).T, color="#2e8b57", lw=1.0,
+    ax.plot(*np.array(loa["ends"]).T, color="#2e8b57", lw=1.0,
             label="line of action N1N2")
     for key in ("A", "P", "E"):
         ax.plot(*loa[key], "o", color="#2e8b57", ms=4)
         ax.annotate(key, loa[key], textcoords="offset points", xytext=(4, 4), fontsize=8)
-    span = max(6.0 * g.inp.m_n, 1.3 * (g.g1.rho_a + g.g2.rho_a - g.g_w))
+    span = max(6.0 * g.inp.m_n, 1.3 * float(np.linalg.norm(loa["E"] - loa["A"])))
     cx = 0.5 * g.g1.d_w
     ax.set_xlim(cx - span, cx + span)
     ax.set_ylim(-span, span)

@@ -75,6 +75,15 @@ class OverBalls:
     d_M: float        # diameter of the circle of the ball centres
     alpha_Mt: float   # transverse pressure angle at the ball centre
     d_c: float        # diameter at which the ball touches the flanks
+    internal: bool = False
+
+    @property
+    def M_r(self) -> float:
+        """Radial single-ball dimension: from the gear axis to the far point of one ball,
+        external ½(d_M + D), internal ½(d_M − D) (the near point, toward the axis), for even
+        and odd z alike ([ISO21771] 6.4; KISSsoft's M_rK, [KISSsoft2017]: the NREL stage-1
+        ring z = 56, D = 80 mm gives 1222.689 mm)."""
+        return 0.5 * (self.d_M - self.D) if self.internal else 0.5 * (self.d_M + self.D)
 
 
 def _K(t: Tooth, s_n: float) -> float:
@@ -116,7 +125,7 @@ def over_balls(t: Tooth, D: float, s_n: float | None = None) -> OverBalls:
     tan_c = math.tan(alpha_M) - sign * D * math.cos(t.beta_b) / t.d_b
     d_c = t.d_b * math.sqrt(1.0 + tan_c * tan_c) if tan_c > 0.0 else t.d_b * (1.0 - 1e-9)
     chord = 1.0 if t.z % 2 == 0 else math.cos(0.5 * math.pi / t.z)
-    return OverBalls(D, d_M * chord + sign * D, d_M, alpha_M, d_c)
+    return OverBalls(D, d_M * chord + sign * D, d_M, alpha_M, d_c, t.internal)
 
 
 def ball_touches(t: Tooth, res: OverBalls) -> str | None:
@@ -124,12 +133,15 @@ def ball_touches(t: Tooth, res: OverBalls) -> str | None:
     space (external: over the tip circle; internal: inside the tip circle), else the reason."""
     lo, hi = (t.d_a, t.d_form) if t.internal else (t.d_form, t.d_a)
     lo = max(lo, t.d_b)
+    # a larger ball touches higher on an external gear's flanks, but nearer the axis (lower
+    # d) between an internal gear's teeth, whose spaces narrow outward
+    bigger, smaller = ("a smaller", "a larger") if t.internal else ("a larger", "a smaller")
     if res.d_c < lo - 1e-9:
         return (f"it would touch the flanks at d = {res.d_c:.4f} mm, below the involute, which "
-                f"starts at d = {lo:.4f} mm: choose a larger ball")
+                f"starts at d = {lo:.4f} mm: choose {bigger} ball")
     if res.d_c > hi + 1e-9:
         return (f"it would touch the flanks at d = {res.d_c:.4f} mm, beyond the involute, which "
-                f"ends at d = {hi:.4f} mm: choose a smaller ball")
+                f"ends at d = {hi:.4f} mm: choose {smaller} ball")
     edge = res.d_M - res.D if t.internal else res.d_M + res.D
     if (edge >= t.d_a) if t.internal else (edge <= t.d_a):
         return ("it would not stand out of the tooth space, so the measuring faces would touch "
@@ -213,10 +225,18 @@ def constant_chord(t: Tooth, s_n: float | None = None) -> Chordal:
     and its height from the tip circle ([GOST16532]; [KHK]):
 
     .. math:: \\bar s_c = s_n \\cos^2 α_n, \\qquad \\bar h_c = h_a - \\tfrac12 \\bar s_c \\tan α_n
+
+    An internal gear (``t.internal``, ``s_n`` its space width e_n) has the tooth thickness
+    π m_n − e_n; its tooth widens away from the axis, so the rack's contact points lie
+    between the reference circle and its (inner) tip, ½ s̄_c tan α_n from the reference
+    line: the same height formula with h_a = ½(d − d_a) (the rack geometry mirrored).
     """
     s = t.s_n if s_n is None else s_n
+    if t.internal:
+        s = math.pi * t.m_n - s
     s_c = s * math.cos(t.alpha_n) ** 2
-    return Chordal(s_c, 0.5 * (t.d_a - t.d) - 0.5 * s_c * math.tan(t.alpha_n))
+    h_a = 0.5 * (t.d - t.d_a) if t.internal else 0.5 * (t.d_a - t.d)
+    return Chordal(s_c, h_a - 0.5 * s_c * math.tan(t.alpha_n))
 
 
 # ----------------------------------------------------------------------------- span

@@ -9,6 +9,14 @@ angle at each radius is the smaller of the two.  Helical gears: the transverse s
 the rack (α_t, π·m_t) with the rounding radius taken in the transverse section (the
 involute part is exact; the fillet approximate).  No tip chamfer or rounding.
 
+An internal gear (gear 2 of an :class:`~geardesign.spur.internal.InternalPairGeometry`):
+its space is shaped like an external tooth of thickness e_t = π m_t − s_t, so the
+half-space angle is η(r) = e_t/d + inv α_t − inv α_r and the half-tooth angle
+θ(r) = π/z − η(r), from its (inner) tip circle to the outer end of its involute (the form
+circle d_l of the shaper or rack); from there to the root circle the flank is drawn as a
+radial line (the shaper's root trochoid is not traced, an approximation confined to the
+root, below the mating tip's clearance).  Its outline runs root → tip with decreasing r.
+
 References: [ISO21771] 5 (tooth flank, generating rack); [GOST16532] (form circle, undercut);
 [Litvin] (envelope of the generating rack, instantaneous centre of rolling).
 """
@@ -120,6 +128,32 @@ def flank(g: PairGeometry, i: int, allowance_um: float = 0.0, n: int = 80,
     return Flank(radii[keep], th[keep], r_b, r_a, r_f, gi.z)
 
 
+def internal_flank(g, allowance_um: float = 0.0, n: int = 80, n_root: int = 8) -> Flank:
+    """Half-tooth angle of the internal gear of an internal pair, from its root circle (the
+    largest radius) to its tip circle (the smallest), with its normal tooth thickness changed
+    by ``allowance_um`` (µm, negative: thinner teeth, wider spaces); module docstring."""
+    p, gi = g.inp, g.g2
+    m_t, alpha_t = g.m_t, g.alpha_t
+    s_t = (gi.s_n + allowance_um * 1e-3) / math.cos(p.beta)
+    eta0 = (math.pi * m_t - s_t) / gi.d + inv(alpha_t)      # half-space angle + inv α_r
+    r_b, r_a, r_f = 0.5 * gi.d_b, 0.5 * gi.d_a, 0.5 * gi.d_f
+    r_l = min(0.5 * gi.d_l, r_f)
+    extra = [r for r in (0.5 * gi.d, 0.5 * gi.d_w) if r_a < r < r_l]
+    r_inv = np.unique(np.concatenate([np.linspace(r_a, r_l, n), extra]))
+    theta = math.pi / gi.z - _half_angle_involute(r_inv, r_b, eta0)
+    r_root = np.linspace(r_l, r_f, n_root)[1:] if r_f > r_l else np.empty(0)
+    r = np.concatenate([r_inv, r_root])[::-1]
+    th = np.concatenate([theta, np.full(r_root.shape, theta[-1])])[::-1]
+    return Flank(r, th, r_b, r_a, r_f, gi.z)
+
+
+def half_angle_at(f: Flank, r: float) -> float:
+    """θ of the flank at radius ``r`` (either order of f.r)."""
+    if f.r[0] > f.r[-1]:
+        return float(np.interp(r, f.r[::-1], f.theta[::-1]))
+    return float(np.interp(r, f.r, f.theta))
+
+
 def outline(f: Flank, rotation: float = 0.0, centre=(0.0, 0.0), arc_step: float = 0.01,
             teeth: int | None = None) -> np.ndarray:
     """Closed outline (N × 2 array, first point not repeated) of the gear: each tooth's
@@ -151,7 +185,8 @@ def outline(f: Flank, rotation: float = 0.0, centre=(0.0, 0.0), arc_step: float 
 
 @dataclass(frozen=True)
 class Mesh:
-    """Both outlines in mesh: pinion centred at (0, 0), wheel at (a_w, 0)."""
+    """Both outlines in mesh: pinion centred at (0, 0), wheel at (a_w, 0) (an internal
+    gear at (−a_w, 0), around the pinion)."""
 
     pinion: np.ndarray
     wheel: np.ndarray
@@ -159,19 +194,26 @@ class Mesh:
     flanks: tuple
     rotation2: float
     j_t: float          # circumferential backlash on the working pitch circle [mm]
+    centre2: tuple = (0.0, 0.0)
 
 
 def mesh(g: PairGeometry, allowances_um: tuple[float, float] = (0.0, 0.0),
          contact: bool = False) -> Mesh:
     """The pair in mesh at a_w: a pinion tooth on the line of centres (angle 0), the wheel
     turned so that a wheel space faces it, the backlash shared equally between both flanks
-    (``contact`` true: the wheel turned to close it on one flank)."""
-    f1, f2 = flank(g, 0, allowances_um[0]), flank(g, 1, allowances_um[1])
+    (``contact`` true: the wheel turned to close it on one flank).  An internal pair: the
+    internal gear centred at (−a_w, 0), a space of it on the line of centres at the pitch
+    point (r_w2 − a_w = r_w1)."""
+    internal = getattr(g, "internal", False)
+    f1 = flank(g, 0, allowances_um[0])
+    f2 = internal_flank(g, allowances_um[1]) if internal else flank(g, 1, allowances_um[1])
     rw1, rw2 = 0.5 * g.g1.d_w, 0.5 * g.g2.d_w
-    th1 = float(np.interp(rw1, f1.r, f1.theta))
-    th2 = float(np.interp(rw2, f2.r, f2.theta))
+    th1 = half_angle_at(f1, rw1)
+    th2 = half_angle_at(f2, rw2)
     j_t = 2.0 * rw2 * (math.pi / f2.z - th2) - 2.0 * rw1 * th1
-    rot2 = math.pi + math.pi / f2.z + (0.5 * j_t / rw2 if contact else 0.0)
+    turn = 0.5 * j_t / rw2 if contact else 0.0
+    centre2 = (-g.a_w, 0.0) if internal else (g.a_w, 0.0)
+    rot2 = (math.pi / f2.z + turn) if internal else (math.pi + math.pi / f2.z + turn)
     p1 = outline(f1, 0.0)
-    p2 = outline(f2, rot2, (g.a_w, 0.0))
-    return Mesh(p1, p2, g.a_w, (f1, f2), rot2, j_t)
+    p2 = outline(f2, rot2, centre2)
+    return Mesh(p1, p2, g.a_w, (f1, f2), rot2, j_t, centre2)

@@ -12,6 +12,20 @@ and temperature t_h moves the centres apart by a_w·α_h·(t_h − 20 °C); each
 pitch radius by ½d_w·α_i·(t_i − 20 °C), which acts as a smaller centre distance:
 
 .. math:: Δa_θ = a_w α_h Δt_h - \\tfrac12 (d_{w1} α_1 Δt_1 + d_{w2} α_2 Δt_2)
+
+Internal pairs (an external pinion in an internal gear).  The tooth thickness allowances
+of the internal gear are those of its teeth, negative as for an external gear: a thinner
+internal tooth is a wider space, E_en = −E_sn ([DIN3967] 2; [ISO21771] 6, the internal
+gear's s_n; KISSsoft prints A_s.e/i = −0.430/−0.590 mm for the NREL stage-1 ring and a
+larger dimension between balls with them, [KISSsoft2017] section 6), so the backlash from the
+allowances is the same sum.  The centre distance acts the other way: a larger a_w pushes the
+pinion into the internal teeth and closes the backlash ([DIN3967] 2, A_a of an internal
+pair with the opposite sign; KISSsoft prints A_a.e/i = −0.045/+0.045 mm for the internal
+mesh against +0.045/−0.045 mm for the external one, [KISSsoft2017] section 6).  The least
+backlash is therefore at a_w + f_a; with a symmetric ±f_a the range is unchanged.  In the
+thermal change the housing and the internal gear swap roles (a_w = r_w2 − r_w1):
+
+.. math:: Δa_θ = -a_w α_h Δt_h + \\tfrac12 (d_{w2} α_2 Δt_2 - d_{w1} α_1 Δt_1)
 """
 
 from __future__ import annotations
@@ -34,8 +48,13 @@ class Thermal:
     alpha1: float
     alpha2: float
 
-    def delta_a(self, a_w: float, d_w1: float, d_w2: float) -> float:
-        """Equivalent centre-distance change Δa_θ [mm] (module docstring)."""
+    def delta_a(self, a_w: float, d_w1: float, d_w2: float, internal: bool = False) -> float:
+        """Equivalent centre-distance change Δa_θ [mm], positive when it opens the backlash
+        (module docstring; ``internal``: gear 2 is an internal gear)."""
+        if internal:
+            return (-a_w * self.alpha_housing * (self.t_housing - T_REF)
+                    + 0.5 * (d_w2 * self.alpha2 * (self.t2 - T_REF)
+                             - d_w1 * self.alpha1 * (self.t1 - T_REF)))
         return (a_w * self.alpha_housing * (self.t_housing - T_REF)
                 - 0.5 * (d_w1 * self.alpha1 * (self.t1 - T_REF)
                          + d_w2 * self.alpha2 * (self.t2 - T_REF)))
