@@ -192,6 +192,22 @@ def chosen(options: dict) -> list[str]:
     return list(dict.fromkeys(names))
 
 
+def unused_tables(spec) -> None:
+    """``[iso]`` and ``[iso_factors]`` in a spec that does not rate by ISO 6336 (the GOST
+    21354-87 method alone) would be silently unused: an input error naming the table and
+    the key that selects the method.  Raises :class:`InputError`."""
+    d = spec.data
+    if ISO_NAME in chosen(d["options"]):
+        return
+    problems = [Problem(key, f"[{key}] is read only by the ISO 6336 rating, and this spec "
+                        f"rates by {' and '.join(chosen(d['options']))}: set options.method = "
+                        f"\"{ISO_NAME}\" or options.methods = [\"GOST 21354-87\", "
+                        f"\"{ISO_NAME}\"], or leave [{key}] out", Problem.NO_VALUE)
+                for key in ("iso", "iso_factors") if d.get(key) is not None]
+    if problems:
+        raise InputError(problems)
+
+
 def prepare(spec) -> None:
     """When the spec rates by ISO 6336: fill the defaults of ``[iso]`` (echoed as assumed) and
     check the inputs that depend on each other.  Raises :class:`InputError`."""
