@@ -121,7 +121,7 @@ ISO = Table("iso", "ISO 6336:2019 rating data (used when options.method or optio
     _gear("pinion"),
     _gear("wheel"),
     SCUFFING,
-), required=False)
+), required=False, in_template=False)
 
 _FACTORS = (
     ("K_v", "dynamic factor", 1.0, 10.0), ("K_Hbeta", "face load factor, contact", 1.0, 10.0),
@@ -175,7 +175,7 @@ _FACTORS = (
 ISO_FACTORS = Table("iso_factors", "ISO 6336 factors given instead of computed", tuple(
     Field(key, "number", name, symbol=key.replace("beta", "β").replace("alpha", "α")
           .replace("eps", "ε").replace("delta", "δ"), default=None, minimum=lo, maximum=hi)
-    for key, name, lo, hi in _FACTORS), required=False,
+    for key, name, lo, hi in _FACTORS), required=False, in_template=False,
     hint="each given factor replaces the computed one and is marked in the report")
 
 OPTIONS_METHODS = Field(
@@ -192,10 +192,21 @@ def chosen(options: dict) -> list[str]:
     return list(dict.fromkeys(names))
 
 
+def _written(value, path: str, assumed: list) -> bool:
+    """Whether a validated value holds anything the spec wrote (not a default: an empty
+    table, as the template prints it, holds nothing)."""
+    if isinstance(value, dict):
+        return any(_written(v, f"{path}.{k}", assumed) for k, v in value.items())
+    if isinstance(value, list):
+        return any(_written(v, path, assumed) for v in value) or (
+            bool(value) and not all(isinstance(v, dict) for v in value))
+    return value is not None and path not in assumed
+
+
 def unused_tables(spec) -> None:
-    """``[iso]`` and ``[iso_factors]`` in a spec that does not rate by ISO 6336 (the GOST
-    21354-87 method alone) would be silently unused: an input error naming the table and
-    the key that selects the method.  Raises :class:`InputError`."""
+    """``[iso]`` and ``[iso_factors]`` with a value in a spec that does not rate by ISO 6336
+    (the GOST 21354-87 method alone) would be silently unused: an input error naming the
+    table and the key that selects the method.  Raises :class:`InputError`."""
     d = spec.data
     if ISO_NAME in chosen(d["options"]):
         return
@@ -203,7 +214,7 @@ def unused_tables(spec) -> None:
                         f"rates by {' and '.join(chosen(d['options']))}: set options.method = "
                         f"\"{ISO_NAME}\" or options.methods = [\"GOST 21354-87\", "
                         f"\"{ISO_NAME}\"], or leave [{key}] out", Problem.NO_VALUE)
-                for key in ("iso", "iso_factors") if d.get(key) is not None]
+                for key in ("iso", "iso_factors") if _written(d.get(key), key, spec.assumed)]
     if problems:
         raise InputError(problems)
 
