@@ -16,7 +16,6 @@ from geardesign.core.errors import InputError, Problem
 from geardesign.core.registry import load_data
 from geardesign.core.result import Result
 from geardesign.drive.shafts import GearLoad
-from geardesign.spur.strength.iso6336.spec import ISO_NAME
 
 #: Efficiency of a closed cylindrical (spur, helical, Novikov) stage when the spec gives
 #: none, without bearing losses: handbook 0.97–0.98 (Dunaev & Lelikov, table 1.1; verify).
@@ -280,6 +279,8 @@ def run_planetary(data: dict, T_in: float, n_in: float, duty: Duty, eta: float |
         _put(st, "life_hours", duty.L_h)
         _put(st, "application_factor", duty.K_A)
         _put(st, "method", duty.method)
+        from geardesign.spur.strength.iso6336.spec import ISO_NAME
+
         if st.get("method") != ISO_NAME:     # the ISO 6336 rating has no GOST regime
             _put(st, "regime", duty.regime)
         if duty.peak_ratio is not None:
