@@ -71,9 +71,10 @@ def test_drive_method_domain(tmp_path):
     assert "ISO 6336:2019" in lines[0] and "GOST 21354-87" in lines[0]
 
 
-def test_drive_regime_reaches_only_the_gost_planetary_stages(tmp_path):
-    """The drive's GOST 21354-87 regime is not written into a planetary stage rated by ISO
-    6336 (whose spec refuses a regime it does not read); a GOST stage still gets it."""
+def test_drive_regime_reaches_only_the_gost_stages(tmp_path):
+    """The drive's GOST 21354-87 regime is not written into a planetary or spur stage rated
+    by ISO 6336 alone (whose spec refuses a regime it does not read); a GOST stage still
+    gets it."""
     import shutil
 
     from geardesign.core.registry import run
@@ -85,6 +86,8 @@ def test_drive_regime_reaches_only_the_gost_planetary_stages(tmp_path):
         path.write_text(text.replace('method = "ISO 6336:2019"\n',
                                      f'method = "{method}"\nregime = "III"\n', 1),
                         encoding="utf-8")
-        stage = run(path).document()["results"]["stage_reports"][0]
-        assert stage["inputs"]["strength"].get("regime") == regime
-        assert stage["methods"][-1] == method
+        stages = run(path).document()["results"]["stage_reports"]
+        assert stages[0]["inputs"]["strength"].get("regime") == regime
+        assert stages[0]["methods"][-1] == method
+        assert stages[1]["kind"] == "spur"          # the spur stage likewise
+        assert stages[1]["inputs"]["load"].get("regime") == regime

@@ -255,6 +255,21 @@ def test_iso_tables_are_refused_under_gost_alone(tmp_path, table):
     assert cli("run", path, "--format", "json")[0] in (0, 1)    # rated: no input error
 
 
+def test_gost_regime_is_refused_with_iso_alone(tmp_path):
+    """load.regime (a GOST 21354-87 typical regime) with ISO 6336 alone would be silently
+    unused: one line; read with both methods; the GOST default is not echoed by ISO."""
+    from geardesign.spur.strength.iso6336.spec import REGIME_NOT_READ
+
+    text = GOOD.replace("life_hours = 20000.0\n", 'life_hours = 20000.0\nregime = "II"\n')
+    assert run_bad(tmp_path, text) == [f's.toml: load.regime = "II": {REGIME_NOT_READ}']
+    data = json.loads(json.dumps(DATA))
+    doc = run_data(data).document()
+    assert doc["inputs"]["load"].get("regime") is None and "load.regime" not in doc["assumed"]
+    data["load"]["regime"] = "II"
+    data["options"] = {"methods": ["GOST 21354-87", "ISO 6336:2019"]}
+    assert run_data(data).document()["inputs"]["load"]["regime"] == "II"
+
+
 def test_bearing_scheme_is_needed_by_gost_and_the_design_mode_only(tmp_path):
     """The GOST 21354-87 chart of K_Hβ: the ISO rating alone does not read it (K_Hβ by
     method C), so a check by ISO 6336 alone runs without it; the GOST rating and the design

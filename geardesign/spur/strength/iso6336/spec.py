@@ -239,6 +239,13 @@ def prepare(spec) -> None:
         for who in ("pinion", "wheel"):
             problems += gost_material_problems(d["material"][who], f"material.{who}",
                                                f"iso.{who}", "iso")
+    load = d.get("load") or {}
+    if chosen(d["options"]) == [ISO_NAME] and load.get("regime") is not None:
+        if "load.regime" in spec.assumed:        # the GOST default: not echoed as used
+            spec.assumed.remove("load.regime")
+            load["regime"] = None
+        else:
+            problems.append(Problem("load.regime", REGIME_NOT_READ, load["regime"]))
     if problems:
         raise InputError(problems)
 
@@ -381,6 +388,11 @@ def scuffing_setting(t: dict | None, meshes: int | None = None):
 #: ``[material.<gear>]`` keys of the GOST 21354-87 rating that the ISO 6336 rating does not
 #: read, and the key the ISO rating takes instead (``{gear}``: the gear's ISO table,
 #: ``{pair}``: the pair's).
+REGIME_NOT_READ = ("is the GOST 21354-87 typical load regime, not read by the ISO 6336 "
+                   "rating (it rates the nominal torque, or a [[load.spectrum]] by ISO "
+                   "6336-6): leave it out, or give options.methods = [\"GOST 21354-87\", "
+                   "\"ISO 6336:2019\"]")
+
 GOST_ONLY_MATERIAL = {
     "sigma_Flim": "is the GOST 21354-87 bending endurance limit σ_Flimb (about σ_FE = "
                   "2·σ_Flim of ISO 6336-5), not read by the ISO 6336 rating: give "
