@@ -69,3 +69,25 @@ def test_drive_method_domain(tmp_path):
     lines = run_bad(tmp_path, spec)
     assert len(lines) == 1 and lines[0].startswith('s.toml: load.method = "ISO 6336": must be ')
     assert "ISO 6336:2019" in lines[0] and "GOST 21354-87" in lines[0]
+
+
+def test_drive_regime_reaches_only_the_gost_stages(tmp_path):
+    """The drive's GOST 21354-87 regime is not written into a planetary or spur stage rated
+    by ISO 6336 alone (whose spec refuses a regime it does not read); a GOST stage still
+    gets it."""
+    import shutil
+
+    from geardesign.core.registry import run
+
+    text = (ROOT / "specs" / "drive_planetary_spur_iso.toml").read_text(encoding="utf-8")
+    shutil.copy(ROOT / "specs" / "planetary_2kh_reducer.toml", tmp_path)
+    for method, regime in (("ISO 6336:2019", None), ("GOST 21354-87", "III")):
+        path = tmp_path / "drive.toml"
+        path.write_text(text.replace('method = "ISO 6336:2019"\n',
+                                     f'method = "{method}"\nregime = "III"\n', 1),
+                        encoding="utf-8")
+        stages = run(path).document()["results"]["stage_reports"]
+        assert stages[0]["inputs"]["strength"].get("regime") == regime
+        assert stages[0]["methods"][-1] == method
+        assert stages[1]["kind"] == "spur"          # the spur stage likewise
+        assert stages[1]["inputs"]["load"].get("regime") == regime

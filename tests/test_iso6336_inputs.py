@@ -234,6 +234,63 @@ def test_iso_tables_need_no_material_for_geometry(tmp_path):
     assert "iso6336_contact" not in json.loads(out)["results"]
 
 
+@pytest.mark.parametrize("table", ["[iso]\nS_Hmin = 1.2\n", "[iso_factors]\nK_v = 1.1\n",
+                                   "[iso.pinion]\nRz_flank = 3.0\n"])
+def test_iso_tables_are_refused_under_gost_alone(tmp_path, table):
+    """[iso] and [iso_factors] with the GOST 21354-87 method alone would be silently unused:
+    one line naming the table and the keys that select the ISO rating (with or without
+    [material]); valid as soon as the ISO rating is chosen too."""
+    gost = GOOD.replace('method = "ISO 6336:2019"', 'method = "GOST 21354-87"')
+    key = table.split("]")[0][1:].split(".")[0]
+    expected = [f"s.toml: {key}: [{key}] is read only by the ISO 6336 rating, and this spec "
+                f"rates by GOST 21354-87: set options.method = \"ISO 6336:2019\" or "
+                f"options.methods = [\"GOST 21354-87\", \"ISO 6336:2019\"], or leave [{key}] out"]
+    assert run_bad(tmp_path, gost + table) == expected
+    geometry = gost.split("[load]")[0] + "[options]\n" + gost.split("[options]\n")[1]
+    assert run_bad(tmp_path, geometry + table) == expected
+    both = GOOD.replace('method = "ISO 6336:2019"',
+                        'methods = ["GOST 21354-87", "ISO 6336:2019"]')
+    path = tmp_path / "both.toml"
+    path.write_text(both + table, encoding="utf-8")
+    assert cli("run", path, "--format", "json")[0] in (0, 1)    # rated: no input error
+
+
+def test_gost_regime_is_refused_with_iso_alone(tmp_path):
+    """load.regime (a GOST 21354-87 typical regime) with ISO 6336 alone would be silently
+    unused: one line; read with both methods; the GOST default is not echoed by ISO."""
+    from geardesign.spur.strength.iso6336.spec import REGIME_NOT_READ
+
+    text = GOOD.replace("life_hours = 20000.0\n", 'life_hours = 20000.0\nregime = "II"\n')
+    assert run_bad(tmp_path, text) == [f's.toml: load.regime = "II": {REGIME_NOT_READ}']
+    data = json.loads(json.dumps(DATA))
+    doc = run_data(data).document()
+    assert doc["inputs"]["load"].get("regime") is None and "load.regime" not in doc["assumed"]
+    data["load"]["regime"] = "II"
+    data["options"] = {"methods": ["GOST 21354-87", "ISO 6336:2019"]}
+    assert run_data(data).document()["inputs"]["load"]["regime"] == "II"
+
+
+def test_bearing_scheme_is_needed_by_gost_and_the_design_mode_only(tmp_path):
+    """The GOST 21354-87 chart of K_Hβ: the ISO rating alone does not read it (K_Hβ by
+    method C), so a check by ISO 6336 alone runs without it; the GOST rating and the design
+    mode (which sizes the pair with the GOST K_Hβ) still require it."""
+    data = json.loads(json.dumps(DATA))
+    del data["gear"]["bearing_scheme"]
+    r = run_data(data).document()["results"]
+    assert r["iso6336_factors"]["K_Hbeta"] > 1.0
+    assert "bearing_scheme" not in json.dumps(r["iso6336_factors"])
+    no_scheme = GOOD.replace("bearing_scheme = 5\n", "")
+    for text, key, why in (
+            (no_scheme.replace('method = "ISO 6336:2019"', 'method = "GOST 21354-87"'),
+             "gear", "the GOST 21354-87 rating"),
+            (no_scheme.replace('method = "ISO 6336:2019"',
+                               'methods = ["ISO 6336:2019", "GOST 21354-87"]'),
+             "gear", "the GOST 21354-87 rating")):
+        assert run_bad(tmp_path, text) == [
+            f"s.toml: {key}.bearing_scheme: missing; required for {why}: 1…7 as in the GOST "
+            f"21354-87 chart (see geardesign template spur)"]
+
+
 @pytest.mark.parametrize("who, key, value", [
     ("pinion", "sigma_Flim", 900.0), ("wheel", "S_H", 1.2), ("pinion", "S_F", 1.8),
     ("wheel", "sigma_HPmax", 2500.0), ("pinion", "sigma_FSt", 1800.0),

@@ -60,8 +60,7 @@ def _spur_spec(data: dict, mesh: str) -> dict:
     tr = data["train"]
     gear = {"module": tr["module"], "z1": data["teeth"][g1], "z2": data["teeth"][g2],
             "face_width": tr["face_width"], "x1": 0.0, "x2": 0.0,
-            "accuracy_grade": data["strength"]["accuracy_grade"],
-            "bearing_scheme": 6}   # required by the spur calculator, not read by ISO 6336
+            "accuracy_grade": data["strength"]["accuracy_grade"]}
     if internal:
         gear.update(internal=True, cutter_teeth=data["cutter"]["teeth"],
                     internal_tip_shortening=data["ring"]["tip_shortening"])
@@ -257,6 +256,14 @@ def test_planet_tip_of_the_sun_mesh_is_the_planet_tip_of_the_ring_mesh():
      ["strength.bearing_scheme = 6: is the GOST 21354-87 chart of K_Hβ, not read by the ISO 6336 "
       "rating (K_Hβ by method C from f_sh and f_ma): give iso.f_sh or the shaft "
       "(iso.shaft_span, iso.shaft_diameter, iso.pinion_offset, iso.shaft_K_prime) instead"]),
+    (_with(BASE, "strength.regime", "III"),
+     ['strength.regime = "III": is the GOST 21354-87 typical load regime, not read by the ISO '
+      '6336 rating (it rates the nominal torque over strength.life_hours): leave it out, or set '
+      'strength.method = "GOST 21354-87"']),
+    (_with(BASE, "strength.regime", "0"),
+     ['strength.regime = "0": is the GOST 21354-87 typical load regime, not read by the ISO '
+      '6336 rating (it rates the nominal torque over strength.life_hours): leave it out, or set '
+      'strength.method = "GOST 21354-87"']),
     (_with(BASE, "strength.ring_form_factor", 2.1),
      ["strength.ring_form_factor = 2.1: is the GOST 21354-87 form factor Y_FS, not read by the ISO "
       "6336 rating: give iso_factors.<mesh>.Y_F2 and Y_S2 instead"]),

@@ -80,7 +80,7 @@ RULES = [
     ("no life", spec(load__life_hours=None),
      ["s.toml: load.life_hours: missing; required with [material]: the required life in hours"]),
     ("no bearing scheme", spec(gear__bearing_scheme=None),
-     ["s.toml: gear.bearing_scheme: missing; required for the strength calculation: 1…7 as in "
+     ["s.toml: gear.bearing_scheme: missing; required for the GOST 21354-87 rating: 1…7 as in "
       "the GOST 21354-87 chart (see geardesign template spur)"]),
     ("peak below nominal", spec(load__peak_torque1=100.0),
      ["s.toml: load.peak_torque1 = 100.0: smaller than the nominal torque T1 = 220 N·m; give "

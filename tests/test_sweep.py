@@ -366,3 +366,19 @@ def test_interrupted_sweep_leaves_no_dataset(tmp_path, monkeypatch):
     code, out, err = cli("sweep", spec, "--data", tmp_path / "c.csv")
     assert code == 130 and "Traceback" not in err
     assert not list(tmp_path.glob("*c.csv*"))
+
+
+def test_missing_bearing_scheme_is_an_input_error_before_the_sweep():
+    """The GOST rating's bearing scheme missing from the base design: one input line (exit
+    2) from load_sweep, not an error inside the evaluation; an ISO 6336 sweep does not
+    need it."""
+    raw = load_toml(SPECS / "sweep_spur_iso.toml")
+    del raw["gear"]["bearing_scheme"]
+    SW.load_sweep(dict(raw), "s")                       # ISO 6336: not read, not required
+    gost = {k: v for k, v in raw.items() if k != "iso"}
+    gost["options"] = {"method": "GOST 21354-87"}
+    with pytest.raises(InputError) as exc:
+        SW.load_sweep(gost, "s")
+    assert [p.line("") for p in exc.value.problems] == [
+        "gear.bearing_scheme: missing; required for the GOST 21354-87 rating: 1…7 as in the "
+        "GOST 21354-87 chart (see geardesign template spur)"]

@@ -165,6 +165,7 @@ def _iso_only(d: dict) -> None:
     d.setdefault("options", {}).pop("methods", None)
     d["options"]["method"] = "ISO 6336:2019"
     d["load"].pop("spectrum", None)
+    d["load"].pop("regime", None)      # the GOST regime: not read by ISO 6336
 
 
 def _iso_mixed(d: dict) -> None:

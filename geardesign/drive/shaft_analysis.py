@@ -379,6 +379,7 @@ def _iso_K_Hbeta(data: dict, sr, duty, where: str, f_sh: float) -> float:
     opts = d.setdefault("options", {})
     opts.pop("methods", None)
     opts["method"] = ISO_METHOD
+    d["load"].pop("regime", None)        # the GOST regime: not read by the ISO rating
     _, spec = load_data(d, where)
     return iso_rating(spec).v["K_Hbeta"]
 

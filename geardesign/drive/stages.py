@@ -182,14 +182,18 @@ def spur_data(data: dict, T_in: float, n_in: float, duty: Duty, where: str) -> d
     load.pop("power", None)
     _put(load, "life_hours", duty.L_h)
     _put(load, "application_factor", duty.K_A)
-    if not load.get("spectrum"):
-        _put(load, "regime", duty.regime)
     if duty.peak_ratio is not None:
         _put(load, "peak_torque1", T_in * duty.peak_ratio)
+    opts = d.get("options")
     if duty.method is not None:
         opts = d.setdefault("options", {})
         if isinstance(opts, dict) and not opts.get("method") and not opts.get("methods"):
             opts["method"] = duty.method
+    from geardesign.spur.strength.iso6336.spec import ISO_NAME
+
+    methods = (opts.get("methods") or [opts.get("method")]) if isinstance(opts, dict) else []
+    if not load.get("spectrum") and methods != [ISO_NAME]:   # ISO 6336 has no GOST regime
+        _put(load, "regime", duty.regime)
     _validate(d, where)
     if d.get("material") is None:
         raise InputError(Problem(f"{where}: material", "missing table [material.pinion] and "
@@ -278,8 +282,11 @@ def run_planetary(data: dict, T_in: float, n_in: float, duty: Duty, eta: float |
     if st is not None:
         _put(st, "life_hours", duty.L_h)
         _put(st, "application_factor", duty.K_A)
-        _put(st, "regime", duty.regime)
         _put(st, "method", duty.method)
+        from geardesign.spur.strength.iso6336.spec import ISO_NAME
+
+        if st.get("method") != ISO_NAME:     # the ISO 6336 rating has no GOST regime
+            _put(st, "regime", duty.regime)
         if duty.peak_ratio is not None:
             _put(st, "peak_torque", T_in * duty.peak_ratio)
     res = _run(d, where, data)

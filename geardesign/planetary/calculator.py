@@ -874,11 +874,12 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
                     f"geometry first", "", None, None, "[ISO6336-2]"))
                 continue
         overrides = {}
-        if mesh.spec.internal and st["ring_form_factor"] is not None:
-            overrides["Y_FS2"] = st["ring_form_factor"]
+        if mesh.spec.internal and st.get("ring_form_factor") is not None:
+            overrides["Y_FS2"] = st.get("ring_form_factor")
         ra = tuple(_material_table(d, mb)["roughness_Ra"] for mb in md.members)
-        setting = Setting(st["accuracy_grade"], st["tip_relief"], st["bearing_scheme"], ra,
-                          overrides)
+        # the GOST-only keys are left out of an ISO 6336 spec (iso_inputs.prepare)
+        setting = Setting(st["accuracy_grade"], st.get("tip_relief", False),
+                          st.get("bearing_scheme"), ra, overrides)
         pair = (mats[md.members[0]], mats[md.members[1]])
         mesh_rate = rate
         if iso:
@@ -886,7 +887,7 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
 
             mesh_rate = mesh_rate_function(rate, d, train, meshes, mesh, md)
         rating = rate_mesh(mesh_rate, md, pair, st["application_factor"], st["life_hours"],
-                           st["regime"], (), peak_ratio, setting)
+                           st.get("regime"), (), peak_ratio, setting)
         mn = C.MESH_NAMES.get(mesh.name)
         sec = res.section(f"strength_{mesh.name}", f"Strength of the {mn} mesh "
                           f"({md.members[0]} = gear 1, {md.members[1]} = gear 2)")

@@ -73,6 +73,9 @@ GOST_ONLY_STRENGTH = {
                       "iso.shaft_K_prime) instead",
     "ring_form_factor": "is the GOST 21354-87 form factor Y_FS, not read by the ISO 6336 "
                         "rating: give iso_factors.<mesh>.Y_F2 and Y_S2 instead",
+    "regime": "is the GOST 21354-87 typical load regime, not read by the ISO 6336 rating "
+              "(it rates the nominal torque over strength.life_hours): leave it out, or set "
+              "strength.method = \"GOST 21354-87\"",
 }
 
 
@@ -100,6 +103,9 @@ def prepare(spec, train, meshes: list) -> None:
     for key, message in GOST_ONLY_STRENGTH.items():
         if f"strength.{key}" not in spec.assumed and st[key] not in (None, False):
             problems.append(Problem(f"strength.{key}", message, st[key]))
+        elif f"strength.{key}" in spec.assumed:     # a GOST default: not echoed as used
+            spec.assumed.remove(f"strength.{key}")
+            st.pop(key)
     if d.get("iso") is None:
         d["iso"] = _validate_table(ISO, {}, "iso", problems, spec.assumed)
     iso = d["iso"]

@@ -417,11 +417,18 @@ def _strength_inputs(spec: ValidatedSpec, gear: dict):
     if load["life_hours"] is None:
         raise InputError(Problem("load.life_hours", "missing; required with [material]: the "
                                  "required life in hours"))
-    if gear["bearing_scheme"] is None:
+    from geardesign.spur.strength.iso6336.spec import ISO_NAME, chosen
+
+    # the GOST 21354-87 chart of K_Hβ: the GOST rating and the design mode's sizing read it,
+    # the ISO 6336 rating does not (K_Hβ by method C from f_sh and f_ma)
+    if gear["bearing_scheme"] is None and (d["design"] is not None
+                                           or chosen(d["options"]) != [ISO_NAME]):
         where = "design" if d["design"] is not None else "gear"
-        raise InputError(Problem(f"{where}.bearing_scheme", "missing; required for the strength "
-                                 "calculation: 1…7 as in the GOST 21354-87 chart (see "
-                                 "geardesign template spur)"))
+        why = ("the design mode sizes the pair with the GOST 21354-87 K_Hβ" if d["design"]
+               is not None else "the GOST 21354-87 rating")
+        raise InputError(Problem(f"{where}.bearing_scheme", f"missing; required for {why}: "
+                                 "1…7 as in the GOST 21354-87 chart (see geardesign template "
+                                 "spur)"))
     T1 = load["torque1"] if load["torque1"] is not None else torque_from_power(load["power"],
                                                                                load["speed1"])
     if load["peak_torque1"] is not None and load["peak_torque1"] < T1:
@@ -586,6 +593,9 @@ def compute(spec: ValidatedSpec) -> Result:
         gear = spec.data["gear"]
         geom, how = solve_geometry(spec)
         notes = variants = None
+    from geardesign.spur.strength.iso6336.spec import unused_tables
+
+    unused_tables(spec)
     strength = _strength_inputs(spec, gear)
     if strength is None:
         _drop_unused_defaults(spec, STRENGTH_ONLY)

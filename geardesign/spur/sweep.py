@@ -717,6 +717,12 @@ def load_sweep(data: dict, source: str, vary=(), samples=None, seed=None):
         raise InputError(Problem("gear.internal", "a sweep rates external pairs", True))
     from geardesign.spur.strength.iso6336.spec import ISO_NAME, chosen
 
+    if not any(d.key == "gear.bearing_scheme" for d in sw.dims):
+        from geardesign.spur.calculator import _strength_inputs
+
+        # the base design's strength inputs (a missing bearing scheme of the GOST rating):
+        # input errors here, not inside the evaluation
+        _strength_inputs(spec, spec.data["gear"])
     methods = chosen(spec.data["options"])
     if len(methods) > 1:
         raise InputError(Problem("options.methods", "a sweep rates by one method: give "

@@ -182,16 +182,41 @@ def flank_tolerances(grade: int, d: float, m_n: float, b: float,
     14.0
     """
     check_grade(grade, standard)
-    limits = _data()[standard]["limits"]
-    for key, name, value in (("d", "reference diameter d", abs(d)),
-                             ("m_n", "normal module", m_n), ("b", "face width", b)):
-        lo, hi = limits[key]
-        if not lo <= value <= hi:
-            raise ToleranceError("accuracy.grade", grade,
-                                 f"{standard} applies to a {name} of {lo:g}…{hi:g} mm, "
-                                 f"not {value:.6g} mm")
+    for key, value, lo, hi in outside_validity(d, m_n, b, standard)[:1]:
+        raise ToleranceError("accuracy.grade", grade,
+                             f"{standard} applies to a {SIZE_NAMES[key]} of {lo:g}…{hi:g} mm, "
+                             f"not {value:.6g} mm")
     return FlankTolerances(grade=grade, standard=standard,
                            **tolerances(abs(d), m_n, b, grade, standard))
+
+
+SIZE_NAMES = {"d": "reference diameter d", "m_n": "normal module", "b": "face width"}
+
+
+def validity(standard: str = STANDARD) -> dict:
+    """The edition's range of validity {"d": (lo, hi), "m_n": …, "b": …} [mm] (data)."""
+    return {k: tuple(v) for k, v in _data()[check_standard(standard)]["limits"].items()}
+
+
+def outside_validity(d: float, m_n: float, b: float, standard: str = STANDARD) -> list:
+    """The sizes of one gear outside the edition's range of validity, as (key, value, lo,
+    hi) with key "d", "m_n" or "b" [mm] (d by its magnitude); empty within the range.
+    Beyond it the 2013 formulas are extrapolated and the 1995 edition takes its first or
+    last size range (:func:`class_mean`): the drawing refuses such a gear
+    (:func:`flank_tolerances`), the ISO 6336 rating warns.
+
+    >>> outside_validity(12000.0, 14.0, 360.0, STANDARD_1995)
+    [('d', 12000.0, 5.0, 10000.0)]
+    """
+    return [(key, value, *validity(standard)[key])
+            for key, value in (("d", abs(d)), ("m_n", m_n), ("b", b))
+            if not validity(standard)[key][0] <= value <= validity(standard)[key][1]]
+
+
+def beyond_range_words(standard: str = STANDARD) -> str:
+    """What the edition's formulas do beyond their range (for messages)."""
+    return ("the 1995 size ranges end there: the first or last range was taken"
+            if standard == STANDARD_1995 else "the 2013 formulas were extrapolated")
 
 
 def rating_deviations(d1, d2, m_n, b, alpha_t, A: int, standard: str = STANDARD) -> dict:

@@ -216,6 +216,12 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
           + (" (given)" if iso.F_beta is not None else ""),
           "spec" if iso.F_beta is not None else S_tol)
     f_Hb = tol["f_Hbeta"]
+    for k, (gear, who) in enumerate(zip(gears, WHO), 1):
+        outside = iso1328.outside_validity(gear.d, m_n, b, iso.tolerance_standard)
+        if outside:
+            R.put(F, f"tolerance_range{k}", _range_words(iso.tolerance_standard, abs(gear.d),
+                                                         m_n, b, outside), None, "",
+                  f"ISO 1328-1 tolerances outside the edition's range, {who}", S_tol)
 
     # ------------------------------------------------------------------ stiffness
     cb = math.cos(g.beta_b)
@@ -681,6 +687,17 @@ def _pct(x: float) -> str:
                                                  "inputs and their units)"
 
 
+def _range_words(standard: str, d: float, m_n: float, b: float, outside: list) -> str:
+    """The sizes of a gear outside the range of ``standard`` (ISO 1328-1), for the warning."""
+    rng = iso1328.validity(standard)
+    names = " and ".join(iso1328.SIZE_NAMES[key].split(" d")[0] for key, *_ in outside)
+    return (f"d = {d:.6g} mm, m_n = {m_n:.6g} mm, b = {b:.6g} mm: the {names} "
+            + ("lie" if len(outside) > 1 else "lies")
+            + f" outside the range of {standard} ({rng['d'][0]:g} ≤ d ≤ {rng['d'][1]:g}, "
+              f"{rng['m_n'][0]:g} ≤ m_n ≤ {rng['m_n'][1]:g}, {rng['b'][0]:g} ≤ b ≤ "
+              f"{rng['b'][1]:g} mm); {iso1328.beyond_range_words(standard)}")
+
+
 def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
            peak: bool = False, internal: bool = False, clamped: tuple = (),
            found: dict | None = None) -> list[Check]:
@@ -757,6 +774,16 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
                          "tends to (conservative); give Y_F2 and Y_S2 under [iso_factors] from "
                          "the standard's internal-gear method for a closer rating", "",
                          None, None, S3))
+    for k in (1, 2):
+        if f"tolerance_range{k}" in v:
+            out.append(check(
+                f"ISO_TOLERANCE_RANGE_{members[k - 1].upper()}", False, "warning",
+                f"ISO 6336: the {members[k - 1]}'s flank tolerances (f_pb, f_fα, f_Hβ, F_β "
+                f"of K_v, K_Hα, K_Hβ): {v[f'tolerance_range{k}']}; give the measured "
+                f"deviations (iso.f_pb, iso.f_falpha, iso.F_beta, iso.f_ma) for a rating "
+                f"within the standard", "", None, None,
+                "[ISO1328-1-1995]" if v.get("tolerance_standard") == iso1328.STANDARD_1995
+                else S1328))
     for k, (lo, hi, scale) in clamped:
         out.append(check(f"ISO_HARDNESS_RANGE_{members[k - 1].upper()}", False, "warning",
                          f"ISO 6336-5: the {members[k - 1]} hardness lies outside the material "

@@ -121,7 +121,7 @@ ISO = Table("iso", "ISO 6336:2019 rating data (used when options.method or optio
     _gear("pinion"),
     _gear("wheel"),
     SCUFFING,
-), required=False)
+), required=False, in_template=False)
 
 _FACTORS = (
     ("K_v", "dynamic factor", 1.0, 10.0), ("K_Hbeta", "face load factor, contact", 1.0, 10.0),
@@ -175,7 +175,7 @@ _FACTORS = (
 ISO_FACTORS = Table("iso_factors", "ISO 6336 factors given instead of computed", tuple(
     Field(key, "number", name, symbol=key.replace("beta", "β").replace("alpha", "α")
           .replace("eps", "ε").replace("delta", "δ"), default=None, minimum=lo, maximum=hi)
-    for key, name, lo, hi in _FACTORS), required=False,
+    for key, name, lo, hi in _FACTORS), required=False, in_template=False,
     hint="each given factor replaces the computed one and is marked in the report")
 
 OPTIONS_METHODS = Field(
@@ -190,6 +190,33 @@ def chosen(options: dict) -> list[str]:
     ``method``; a method named twice counts once)."""
     names = options.get("methods") or [options["method"]]
     return list(dict.fromkeys(names))
+
+
+def _written(value, path: str, assumed: list) -> bool:
+    """Whether a validated value holds anything the spec wrote (not a default: an empty
+    table, as the template prints it, holds nothing)."""
+    if isinstance(value, dict):
+        return any(_written(v, f"{path}.{k}", assumed) for k, v in value.items())
+    if isinstance(value, list):
+        return any(_written(v, path, assumed) for v in value) or (
+            bool(value) and not all(isinstance(v, dict) for v in value))
+    return value is not None and path not in assumed
+
+
+def unused_tables(spec) -> None:
+    """``[iso]`` and ``[iso_factors]`` with a value in a spec that does not rate by ISO 6336
+    (the GOST 21354-87 method alone) would be silently unused: an input error naming the
+    table and the key that selects the method.  Raises :class:`InputError`."""
+    d = spec.data
+    if ISO_NAME in chosen(d["options"]):
+        return
+    problems = [Problem(key, f"[{key}] is read only by the ISO 6336 rating, and this spec "
+                        f"rates by {' and '.join(chosen(d['options']))}: set options.method = "
+                        f"\"{ISO_NAME}\" or options.methods = [\"GOST 21354-87\", "
+                        f"\"{ISO_NAME}\"], or leave [{key}] out", Problem.NO_VALUE)
+                for key in ("iso", "iso_factors") if _written(d.get(key), key, spec.assumed)]
+    if problems:
+        raise InputError(problems)
 
 
 def prepare(spec) -> None:
@@ -212,6 +239,13 @@ def prepare(spec) -> None:
         for who in ("pinion", "wheel"):
             problems += gost_material_problems(d["material"][who], f"material.{who}",
                                                f"iso.{who}", "iso")
+    load = d.get("load") or {}
+    if chosen(d["options"]) == [ISO_NAME] and load.get("regime") is not None:
+        if "load.regime" in spec.assumed:        # the GOST default: not echoed as used
+            spec.assumed.remove("load.regime")
+            load["regime"] = None
+        else:
+            problems.append(Problem("load.regime", REGIME_NOT_READ, load["regime"]))
     if problems:
         raise InputError(problems)
 
@@ -354,6 +388,11 @@ def scuffing_setting(t: dict | None, meshes: int | None = None):
 #: ``[material.<gear>]`` keys of the GOST 21354-87 rating that the ISO 6336 rating does not
 #: read, and the key the ISO rating takes instead (``{gear}``: the gear's ISO table,
 #: ``{pair}``: the pair's).
+REGIME_NOT_READ = ("is the GOST 21354-87 typical load regime, not read by the ISO 6336 "
+                   "rating (it rates the nominal torque, or a [[load.spectrum]] by ISO "
+                   "6336-6): leave it out, or give options.methods = [\"GOST 21354-87\", "
+                   "\"ISO 6336:2019\"]")
+
 GOST_ONLY_MATERIAL = {
     "sigma_Flim": "is the GOST 21354-87 bending endurance limit σ_Flimb (about σ_FE = "
                   "2·σ_Flim of ISO 6336-5), not read by the ISO 6336 rating: give "
