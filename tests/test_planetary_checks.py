@@ -212,3 +212,20 @@ def test_template_is_a_valid_passing_spec(tmp_path):
     assert doc["verdict"] == "pass" and "strength_planet_ring" in doc["results"]
     code, out, _ = cli("list")
     assert "planetary" in out
+
+
+def test_one_planet_has_no_neighbour():
+    """A train with one planet has no neighbouring planet: NEIGHBOUR passes, no clearance
+    row (2·a_w·sin(180°) − d_a would be the planet's own tip diameter, negative)."""
+    import tomllib
+
+    from geardesign.core.registry import run_data
+    from tests.conftest import SPECS
+
+    data = tomllib.loads((SPECS / "planetary_2kh_reducer.toml").read_text(encoding="utf-8"))
+    data["train"]["planets"] = 1
+    doc = run_data(data).document()
+    codes = {c["code"]: c for c in doc["checks"]}
+    assert codes["NEIGHBOUR"]["passed"] and "one planet" in codes["NEIGHBOUR"]["message"]
+    assert "NEIGHBOUR_GAP" not in codes
+    assert "neighbour_clearance" not in doc["results"]["assembly"]

@@ -522,8 +522,9 @@ def _assembly(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], lay: 
              "spaced", S.ASSEMBLY)
     if spc.equal_ok or uneven:
         asec.add("planet_angles", angles, "deg", "θ_i", "angles of the planets", S.ASSEMBLY)
-    asec.add("neighbour_clearance", clearance, "mm", "c_n",
-             "gap between the tips of neighbouring planets", S.KUDRYAVTSEV)
+    if train.planets > 1:
+        asec.add("neighbour_clearance", clearance, "mm", "c_n",
+                 "gap between the tips of neighbouring planets", S.KUDRYAVTSEV)
     asec.add("planets_max", n_max, "-", "n_w,max",
              f"most equally spaced planets with a gap of {lim['neighbour_gap']:g}·m", S.KUDRYAVTSEV)
     ph = A.phasing(train, angles)

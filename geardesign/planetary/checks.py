@@ -170,6 +170,11 @@ def coaxiality_checks(meshes: list[Mesh], tol: float, needed: dict, sign_note: d
 
 def neighbour_checks(clearance: float, gap: float, m: float, n_max: int, planets: int
                      ) -> list[Check]:
+    """NEIGHBOUR (the tips of neighbouring planets clear) and NEIGHBOUR_GAP (by the gap
+    Kudryavtsev recommends); a single planet has no neighbour and passes both."""
+    if planets == 1:
+        return [check("NEIGHBOUR", True, "error", "", "one planet: no neighbouring planet",
+                      None, None, S.KUDRYAVTSEV)]
     out = [check(
         "NEIGHBOUR", clearance > 0.0, "error",
         f"the tips of neighbouring planets overlap (clearance {clearance:.3f} mm <= 0): use at "

@@ -200,7 +200,7 @@ def feasible(cand: Candidate, lay: PG.Layout, gap: float, tip_min: float, slidin
                           False)
     sp_ = A.spacing(cand.train)
     clearance = A.neighbour_clearance(cand.a_w, sp.g2.d_a, math.radians(sp_.min_angle))
-    ok = clearance >= gap * lay.m and not [c for c in checks
+    ok = (cand.train.planets == 1 or clearance >= gap * lay.m) and not [c for c in checks
                                            if not c.passed and c.severity == "error"]
     return ok, meshes
 
