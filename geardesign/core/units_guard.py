@@ -84,4 +84,4 @@ def given(table: dict | None, keys: dict[str, str], prefix: str) -> list[tuple[s
         return []
     return [(f"{prefix}.{k}", float(table[k]), u) for k, u in keys.items()
             if isinstance(table.get(k), (int, float)) and not isinstance(table.get(k), bool)
-            and table.get(k) > 0]
+            and table.get(k) != 0]
