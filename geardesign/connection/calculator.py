@@ -43,7 +43,7 @@ def compute(spec: ValidatedSpec) -> Result:
         f = I.fit(data)
         r = solve.fit(f, ld)
         _fit_report(res, f, ld, r)
-        fraction = 1.0 / r.S_slip
+        fraction = 1.0 / r.S_slip if r.S_slip > 0.0 else math.inf   # no grip: no slip warning
         what = "the torque is {:.2g} % of what the fit transmits before it slips"
     from geardesign.core.units_guard import given, light_load
 
