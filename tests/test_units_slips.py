@@ -216,3 +216,13 @@ def test_methods_differ_follows_the_designers_assumption(tmp_path):
     assert "f_ma = 7 µm (iso.f_ma)" in out or "K_Hβ" not in out.split("METHODS_DIFFER")[1]
     after = re.search(r"K_Hβ [\d.]+ by GOST against [\d.]+ by ISO \(×([\d.]+)\)", out)
     assert after is None or float(after.group(1)) < float(before.group(1))
+
+
+def test_pzdn_coupling_gear_slip_names_the_coupling_torque(tmp_path):
+    text = (SPECS / "pzdn_ko2_coupling_gear.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^torque = 22\.1", "torque = 0.0221", text)
+    text = re.sub(r"(?m)^peak_torque = 48\.6", "peak_torque = 0.0486", text)
+    code, out = run_table(tmp_path, text)
+    head = out.split("Coupling gear: the spur calculator's report")[0]
+    assert "UNITS_LOAD" in head
+    assert "coupling_gear.torque = 0.0221 N·m: if kN·m was meant, give 22.1" in head
