@@ -488,6 +488,31 @@ def _suggestion(a: Assessment, info: dict, blocks: list, cond: Conditions) -> st
     return ""
 
 
+def units_checks(a: Assessment, spec: ValidatedSpec) -> list[Check]:
+    """``UNITS_LOAD`` when the life is beyond ``LIFE_UNITS_MAX`` and the load P below the
+    requisite minimum load (0.01·C_r ball, 0.02·C_r roller bearings, [SKFMinLoad]): the
+    life equation does not hold there ("other failure mechanisms than fatigue are
+    determining"), and a load in N given where kN was meant lands there.  The fraction is
+    P over the minimum load, scaled to :data:`geardesign.core.units_guard.LIGHT_LOAD_FRACTION`."""
+    from geardesign.core.units_guard import LIGHT_LOAD_FRACTION, given, light_load
+
+    if not a.life_h > T.LIFE_UNITS_MAX:
+        return []
+    kind = "ball" if a.p == 3.0 else "roller"
+    P_min = T.MIN_LOAD_RATIO[kind] * a.bearing.C_r
+    what = (f"P = {_f(a.P, 3)} N is {_f(100 * a.P / a.bearing.C_r, 2)} % of C_r = "
+            f"{_kn(a.bearing.C_r)}, below the minimum load "
+            f"{_f(T.MIN_LOAD_RATIO[kind], 2)}·C_r = {_f(P_min, 3)} N of a {kind} bearing, where "
+            f"the elements skid and the life equation no longer holds; {a.life_name} = "
+            f"{_h(a.life_h)} h")
+    load = spec.data.get("load") or {}
+    inputs = given(load, {"F_r": "N", "F_a": "N"}, "load")
+    for i, blk in enumerate(load.get("spectrum") or []):
+        inputs += given(blk, {"F_r": "N", "F_a": "N"}, f"load.spectrum[{i}]")
+    return light_load("UNITS_LOAD", LIGHT_LOAD_FRACTION * a.P / P_min, what, inputs[:2],
+                      "[SKFMinLoad]")
+
+
 def life_checks(a: Assessment, info: dict, blocks: list, cond: Conditions) -> list[Check]:
     b, c = a.bearing, a.cond
     src = S.method_source(c.method)
@@ -700,6 +725,7 @@ def _select(spec: ValidatedSpec, blocks: list, checks: list, new_result) -> Resu
     # when nothing passes, SELECTION already names the life shortfall
     checks.extend(c for c in life_checks(pick[2], {}, blocks, pick[2].cond)
                   if chosen is not None or c.code != "LIFE")
+    checks.extend(units_checks(pick[2], spec))
     checks.extend(_common_checks(spec, info))
     return res
 
@@ -729,6 +755,7 @@ def compute(spec: ValidatedSpec) -> Result:
     add_rows(res, a, info)
     res.checks.extend(checks)
     res.checks.extend(life_checks(a, info, blocks, cond))
+    res.checks.extend(units_checks(a, spec))
     res.checks.extend(_common_checks(spec, info))
     return res
 
@@ -846,6 +873,7 @@ def _pair(spec: ValidatedSpec, blocks: list, checks: list, new_result) -> Result
     add_rows(res, xa, info_a)
     _add_b_rows(res, xb, info_b)
     checks.extend(life_checks(xa, info_a, bA, cond))
+    checks.extend(units_checks(xa if xa.P <= xb.P else xb, spec))
     checks.extend(replace(c, message="bearing B: " + c.message)
                   for c in life_checks(xb, info_b, bB, cond_b))
     checks.extend(_common_checks(spec, info_a))

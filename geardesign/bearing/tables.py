@@ -243,6 +243,8 @@ WEIBULL_SLOPE = {"ball": 10.0 / 9.0, "roller": 9.0 / 8.0}
 # ----------------------------------------------------------------------------- limits
 
 S0_MIN_DEFAULT = 1.0        # catalogue practice: normal demands (NTN Table 3.4, [ISO76])
+MIN_LOAD_RATIO = {"ball": 0.01, "roller": 0.02}  # P_min/C_r: below, the elements skid ([SKFMinLoad])
+LIFE_UNITS_MAX = 1e7        # h: a life beyond (1 100 years) with P below P_min reads as a unit slip
 HIGH_LOAD_RATIO = 0.5       # P > 0.5·C_r: ISO 281 accuracy reduced ([NTN])
 LOW_SPEED = 10.0            # min^-1: below, dynamic life is meaningless ([NTN])
 HOT = 150.0                 # °C: dimensional stabilisation needed above ([NTN])

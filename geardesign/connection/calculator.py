@@ -29,13 +29,26 @@ def compute(spec: ValidatedSpec) -> Result:
     ld = I.load(data)
     if data.get("key") is not None:
         k = I.key(data)
-        _key_report(res, k, ld, solve.key(k, ld))
+        r = solve.key(k, ld)
+        _key_report(res, k, ld, r)
+        fraction = max([r.tau / r.tau_allow] + [fl.p / fl.p_allow for fl in r.flanks])
+        what = "the key uses {:.2g} % of its capacity (pressure and shear over their limits)"
     elif data.get("spline") is not None:
         s = I.spline(data)
-        _spline_report(res, s, ld, solve.spline(s, ld))
+        r = solve.spline(s, ld)
+        _spline_report(res, s, ld, r)
+        fraction = r.p / r.p_allow
+        what = "the spline uses {:.2g} % of its capacity (flank pressure over its limit)"
     else:
         f = I.fit(data)
-        _fit_report(res, f, ld, solve.fit(f, ld))
+        r = solve.fit(f, ld)
+        _fit_report(res, f, ld, r)
+        fraction = 1.0 / r.S_slip if r.S_slip > 0.0 else math.inf   # no grip: no slip warning
+        what = "the torque is {:.2g} % of what the fit transmits before it slips"
+    from geardesign.core.units_guard import given, light_load
+
+    res.checks.extend(light_load("UNITS_LOAD", fraction, what.format(100 * fraction),
+                                 given(data["load"], {"torque": "N·m"}, "load"), S.PRACTICE))
     return res
 
 

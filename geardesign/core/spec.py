@@ -188,9 +188,10 @@ class Field:
             if isinstance(value, str) and self.unit not in (None, "-"):
                 from geardesign.core.units import convert   # "4 mm", "520 kN*mm" (pint)
 
-                value, why = convert(value, self.unit)
+                text, (value, why) = value, convert(value, self.unit)
                 if why:
                     return None, f"{bad}, or {why}"
+                bad = f"{text} = {value:.6g} {self.unit}: {bad}"   # what it became
             if isinstance(value, bool) or not isinstance(value, (int, float)):
                 return None, bad
             if not math.isfinite(value):

@@ -216,6 +216,15 @@ def compute(spec: ValidatedSpec) -> Result:
             f"below for what to change",
             f"stage {i} \"{st[1]}\" ({r.result.kind}) passes (worst margin {r.margin:.2f}, "
             f"{r.margin_of})", r.margin, 1.0, "stage calculator"))
+    from geardesign.core.units_guard import given, lifted
+
+    typed = (given(motor, {"power": "kW", "torque": "N·m"}, "motor")
+             + given(load, {"torque": "N·m"}, "load"))
+    for i, r in enumerate(runs, 1):
+        found = lifted(r.result, "UNITS_LOAD", typed, f"stage {i}")
+        if found:
+            res.checks.extend(found)
+            break
 
     if load["torque"] is not None:
         res.checks.append(check(

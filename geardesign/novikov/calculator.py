@@ -445,6 +445,7 @@ def compute(spec: ValidatedSpec) -> Result:
                                    _where(eng.sigma_F1.at, b_w), share_F, S.BENDING))
     res.checks.append(stress_check("SIGMA_F_WHEEL", eng.sigma_F2.value, FP[1], "σ_F2max",
                                    _where(eng.sigma_F2.at, b_w), share_F, S.BENDING))
+    res.checks.extend(_units_checks(eng, FP, spec))
     res.checks.append(_psi_check(eng))
     res.checks.append(check(
         "EDGE_LOADING", eng.min_active >= 2, "warning",
@@ -526,3 +527,17 @@ def _phase_rows(res: Result, eng: Engagement, b_w: float) -> None:
         stresses = ", ".join(f"{e.sigma_F:.0f}/{e.sigma_H:.0f}" for e in r)
         view.add(f"k{k:0{width}d}", where or "no point", None, f"k = {k}",
                  f"σ_F/σ_H: {stresses}" if r else "contact interrupted", S.TABLE1)
+
+
+def _units_checks(eng, FP, spec: ValidatedSpec) -> list:
+    """``UNITS_LOAD`` when the teeth carry less than 1 % of their bending capacity
+    (max σ_Fmax/σ_FP, nearly proportional to the load, [Korotkin2017]), as a torque typed
+    in N·m where kN·m was meant does (:mod:`geardesign.core.units_guard`)."""
+    from geardesign.core.units_guard import given, light_load
+
+    fraction = max(eng.sigma_F1.value / FP[0], eng.sigma_F2.value / FP[1])
+    what = (f"the teeth carry {100 * fraction:.2g} % of their bending capacity (σ_Fmax = "
+            f"{max(eng.sigma_F1.value, eng.sigma_F2.value):.3g} MPa against σ_FP = "
+            f"{min(FP):.0f} MPa)")
+    return light_load("UNITS_LOAD", fraction, what,
+                      given(spec.data["load"], {"torque2": "N·m"}, "load"), S.BENDING)

@@ -860,6 +860,7 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
                  f"data used, {key}", "library" if m.grade else "spec")
         msec.add(f"HB_{key}", m.HB, "HB", f"HB_{key}", "surface hardness in HB (converted)",
                  "GOST 21354-87 (ZPCIL fit)")
+    rated = []
     for mesh, md in zip(meshes, duties):
         if iso:
             from geardesign.spur.calculator import ratable
@@ -911,6 +912,14 @@ def _strength(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], s: K.
                                     st["accuracy_grade"], peak_ratio is not None)
         for c in found:
             out.append(_rename(c, mesh.name, md.members))
+        rated.append(rating.v)
+    if rated:   # a load typed in a unit a thousand times too small: the lightest mesh
+        from geardesign.core.units_guard import given
+        from geardesign.spur.checks import contact_load_fraction, light_load_checks
+
+        v = min(rated, key=lambda x: contact_load_fraction(x)[0])
+        out.extend(light_load_checks(v, given(op, {"torque": "N·m", "power": "kW"},
+                                              "operation")))
     return out
 
 

@@ -548,6 +548,10 @@ def _coupling_rows(res: Result, g: dict, est: dict, spur_spec: dict) -> None:
         if key in v:
             sec.add(key, v[key], unit, sym, name + " (from the spur report)",
                     f"spur calculator ({g['method']})")
+    from geardesign.core.units_guard import given, lifted
+
+    res.checks.extend(lifted(spur, "UNITS_LOAD", given(
+        g, {"torque": "N·m", "peak_torque": "N·m"}, "coupling_gear"), "the coupling gear"))
     failed = [c.code for c in spur.failed]
     if "sigma_H" in v and "sigma_HP" in v:      # GOST 21354-87: one σ_H of the pair
         passed = (f"coupling gear passes every check of the spur calculator (σ_H = "

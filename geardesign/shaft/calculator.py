@@ -123,7 +123,29 @@ def report(spec: ValidatedSpec, m: dict, r: ShaftResult) -> Result:
                                               lim["S_static_min"])
     res.checks.extend(_checks(r, lim, opt.speed, loads, supports, origin, steps, mat.sigma_B,
                               din, mat.din.d_eff if din else 0.0, scale))
+    res.checks.extend(_units_checks(r, spec))
     return res
+
+
+def _units_checks(r: ShaftResult, spec: ValidatedSpec) -> list:
+    """``UNITS_LOAD`` when the peak loads use less than 1 % of the static strength
+    (1/S_T: the stresses are proportional to the loads), as loads typed in N and N·m where
+    kN and kN·m were meant do (:mod:`geardesign.core.units_guard`); the hints name the
+    largest loads given."""
+    from geardesign.core.units_guard import given, light_load
+
+    cs = r.critical_static
+    if cs is None or not cs.S_static > 0.0 or not math.isfinite(cs.S_static):
+        return []
+    fraction = 1.0 / cs.S_static
+    inputs = []
+    for i, ld in enumerate(spec.data.get("load") or []):
+        inputs += given(ld, {"Fy": "N", "Fz": "N", "Fx": "N", "torque": "N·m", "moment_y": "N·m",
+                             "moment_z": "N·m"}, f"load[{i}]")
+    inputs.sort(key=lambda x: -abs(x[1]))
+    what = (f"the peak loads use {100 * fraction:.2g} % of the static strength (S_T = "
+            f"{cs.S_static:.4g} at {cs.label})")
+    return light_load("UNITS_LOAD", fraction, what, inputs[:2], S.VON_MISES)
 
 
 MAX_SCALE = 3.0      # the largest scale of the diameters the advice looks at

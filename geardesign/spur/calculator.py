@@ -13,7 +13,7 @@ from geardesign.core.result import Result, Section, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.spur import internal as I
 from geardesign.spur import sources as S
-from geardesign.spur.checks import geometry_checks
+from geardesign.spur.checks import LOAD_INPUTS, geometry_checks
 from geardesign.spur.geometry import (
     BasicRack,
     GeometryError,
@@ -497,8 +497,9 @@ def add_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inputs) -
     from geardesign.spur.strength.iso6336.spec import ISO_NAME, chosen
 
     names = chosen(spec.data["options"])
+    rated = {}
     if "GOST 21354-87" in names:
-        _add_gost_strength(res, geom, spec, inputs)
+        rated["GOST 21354-87"] = _add_gost_strength(res, geom, spec, inputs)
     else:   # the mesh forces (shafts, bearings, a drive) whatever the method
         from geardesign.spur.strength.rating import Rating, put_forces
 
@@ -510,12 +511,29 @@ def add_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inputs) -
     if ISO_NAME in names:
         from geardesign.spur.strength.iso6336.report import add_iso_strength
 
-        add_iso_strength(res, geom, spec, inputs)
+        rated[ISO_NAME] = add_iso_strength(res, geom, spec, inputs)
+    _add_method_checks(res, spec, rated)
 
 
-def _add_gost_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inputs) -> None:
+def _add_method_checks(res: Result, spec: ValidatedSpec, rated: dict) -> None:
+    """The checks over the methods' ratings (``rated``: method → value record): a load
+    that looks like a unit slip (the lightest of the methods' readings) and, with both
+    methods, the factors in which they differ most."""
+    from geardesign.core.units_guard import given
+    from geardesign.spur.checks import contact_load_fraction, light_load_checks
+
+    if rated:
+        v = min(rated.values(), key=lambda x: contact_load_fraction(x)[0])
+        res.checks.extend(light_load_checks(v, given(spec.data["load"], LOAD_INPUTS, "load")))
+    if len(rated) == 2:
+        from geardesign.spur.methods_differ import methods_differ
+
+        res.checks.extend(methods_differ(rated, spec))
+
+
+def _add_gost_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inputs) -> dict:
     """Rate the pair to GOST 21354-87 (``inputs`` from :func:`_strength_inputs`); add rows
-    and checks."""
+    and checks; the rating's value record."""
     from geardesign.materials.gear_steel import data_used
     from geardesign.spur.checks import strength_checks
     from geardesign.spur.strength import method
@@ -572,6 +590,7 @@ def _add_gost_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inp
                                       duty.T_peak is not None,
                                       None if internal else geom.inp.b_w, b_contact,
                                       b_bending, geom.a_w, k_contact))
+    return v
 
 
 def ratable(g) -> bool:

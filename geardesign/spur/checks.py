@@ -532,3 +532,38 @@ def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool,
         f"v = {v['v_H']:.2f} m/s <= {vmax:g} m/s for grade {grade}", v["v_H"], vmax,
         "handbook (GOST 1643-81 grades)"))
     return out
+
+
+LOAD_INPUTS = {"torque1": "N·m", "power": "kW"}
+"""The load inputs of a spur spec's [load] table and their fixed units."""
+
+
+def contact_load_fraction(v: dict) -> tuple[float, str]:
+    """The fraction of its contact capacity a rated pair carries, and how it was found.
+
+    .. math:: \\text{fraction} = (σ_{H0}/σ_{Hlim})^2
+
+    σ_H0 [MPa]: the nominal contact stress without load factors (ISO 6336-2 eq. (2) as
+    rated; GOST 21354-87: σ_H/√K_H, σ_H ∝ √(F_t K_H)), σ_Hlim [MPa]: the weaker gear's
+    endurance limit. σ_H ∝ √F_t, so the square is a load ratio. ``v`` is the value record of
+    either method's rating.  Source: [ISO6336-2] eq. (2), [GOST21354]."""
+    sH0 = v["sigma_H0"] if "sigma_H0" in v else v["sigma_H"] / math.sqrt(v["K_H"])
+    lim = min(v["sigma_Hlim1"], v["sigma_Hlim2"])
+    K_v = v.get("K_v", v.get("K_Hv", 1.0))
+    fraction = (sH0 / lim) ** 2
+    what = (f"the pair carries {100 * fraction:.2g} % of its contact capacity (nominal σ_H0 = "
+            f"{sH0:.3g} MPa against σ_Hlim = {lim:.0f} MPa)")
+    if K_v > 2.0:
+        what += (f"; the dynamic factor {'K_v' if 'K_v' in v else 'K_Hv'} = {K_v:.4g} "
+                 f"comes from this light load, far above the 1…2 the method is made for")
+    return fraction, what
+
+
+def light_load_checks(v: dict, inputs: list, code: str = "UNITS_LOAD") -> list[Check]:
+    """``UNITS_LOAD`` when a rated pair carries less than 1 % of its contact capacity
+    (:func:`geardesign.core.units_guard.light_load`); ``inputs`` from
+    :func:`geardesign.core.units_guard.given`."""
+    from geardesign.core.units_guard import light_load
+
+    fraction, what = contact_load_fraction(v)
+    return light_load(code, fraction, what, inputs, "[ISO6336-1] 6.5.3, 9.3.1 eq. (84)")

@@ -472,7 +472,23 @@ def compute(spec: ValidatedSpec) -> Result:
     if dres is not None:
         checks.insert(0, _design_check(dres))
     res.checks.extend(checks)
+    res.checks.extend(_units_checks(a, spec))
     return res
+
+
+def _units_checks(a, spec: ValidatedSpec) -> list[Check]:
+    """``UNITS_LOAD`` when the wheel carries less than 1 % of its contact capacity,
+    (σ_H/[σ]_H)² (σ_H ∝ √T2, [Dunaev]), as a torque typed in N·m where kN·m was meant
+    does (:mod:`geardesign.core.units_guard`)."""
+    from geardesign.core.units_guard import given, light_load
+
+    if not a.sigma_HP > 0.0:
+        return []
+    fraction = (a.sigma_H / a.sigma_HP) ** 2
+    what = (f"the wheel carries {100 * fraction:.2g} % of its contact capacity (σ_H = "
+            f"{a.sigma_H:.3g} MPa against [σ]_H = {a.sigma_HP:.0f} MPa)")
+    return light_load("UNITS_LOAD", fraction, what,
+                      given(spec.data["load"], {"torque2": "N·m"}, "load"), S.TEXTBOOK)
 
 
 def _design_check(d: DesignResult) -> Check:

@@ -6,9 +6,10 @@ from geardesign.spur.strength.iso6336 import rating as IR
 from geardesign.spur.strength.iso6336.spec import ISO_NAME, gear_checks, iso_setting
 
 
-def add_iso_strength(res, geom, spec, inputs) -> None:
+def add_iso_strength(res, geom, spec, inputs) -> dict:
     """Rate the pair of a spur spec to ISO 6336 (``inputs`` from the calculator's
-    ``_strength_inputs``): rows under the sections ``iso6336_*``, checks, method name."""
+    ``_strength_inputs``): rows under the sections ``iso6336_*``, checks, method name; the
+    rating's value record."""
     mats, duty, setting = inputs
     gear_checks(spec.data["iso"], geom)
     iso = iso_setting(spec)
@@ -20,6 +21,7 @@ def add_iso_strength(res, geom, spec, inputs) -> None:
     internal = bool(getattr(geom, "internal", False))
     res.checks.extend(IR.rating_checks(rating, internal, found=None if internal else
                                        _advice(rating.v, geom, mats, duty, setting, iso)))
+    return rating.v
 
 
 def iso_rating(spec) -> "IR.Rating":
