@@ -689,7 +689,8 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
 
     The advice names the face width and the scale of the pair (centre distance, module and
     face width in proportion) that pass, when ``found`` carries them (``{"b": (b_w,
-    b_pitting, b_bending), "k": (a_w, k_pitting, k_bending)}``, found by re-rating); else
+    b_pitting, b_bending), "k": (a_w, k_pitting, k_bending), "face_limit": the largest
+    face width tried as a multiple of b_w}``, found by re-rating); else
     it follows the scaling of the formulas at the present load factors: σ_H ∝ 1/√b and
     ∝ a^(-3/2) at a fixed ratio b/a; σ_F ∝ 1/(b m_n)."""
     found = found or {}
@@ -703,7 +704,14 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
         if "b" in found and found["b"][kind] is not None:
             b_w, b = found["b"][0], found["b"][kind]
             parts.append(f"the face width to at least {b:.1f} mm (+{100 * (b / b_w - 1):.0f} %)")
-        return (" or ".join(parts) + " (found by re-rating)") if parts else None
+        if not parts:
+            return None
+        text = " or ".join(parts) + " (found by re-rating)"
+        if "b" in found and found["b"][kind] is None:
+            from geardesign.spur.checks import face_width_beyond
+
+            text += "; " + face_width_beyond(found["b"][0], found["face_limit"])
+        return text
 
     out: list[Check] = []
     S_Hmin, S_Fmin = v["S_Hmin"], v["S_Fmin"]
