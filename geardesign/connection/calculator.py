@@ -144,13 +144,6 @@ def _key_report(res: Result, k: I.KeyInput, ld: I.Load, r: solve.KeySolution) ->
         f"key length {_f(k.l)} mm <= {KEY_LENGTH_RATIO:g}·d = {_f(l_ratio)} mm", k.l, l_ratio,
         S.KEY_PRACTICE))
     if L_hub is not None:
-        res.checks.append(check(
-            "KEY_IN_HUB", k.l <= L_hub + 1e-9, "error",
-            f"key length {_f(k.l)} mm > hub length {_f(L_hub)} mm: the key overhangs the hub "
-            f"and only {_f(L_hub)} mm of it bears; shorten the key to at most {_f(L_hub)} mm "
-            f"and see KEY_PRESSURE, or lengthen the hub",
-            f"key length {_f(k.l)} mm <= hub length {_f(L_hub)} mm", None, None,
-            S.KEY_PRACTICE))   # no value/limit: a fit of lengths, not a load utilisation
         shortest = (f"the shortest standard key that passes ({_f(r.l_std)} mm) is longer "
                     f"than the hub ({_f(L_hub)} mm)" if math.isfinite(r.l_std) else
                     f"no standard key length of this section passes (not even the longest), "
