@@ -422,7 +422,7 @@ def compute(spec: ValidatedSpec) -> Result:
     from geardesign.planetary import CALCULATOR
 
     d = spec.data
-    tr, op = d["train"], d["operation"]
+    op = d["operation"]
     notes = None
     if d["synthesis"] is not None:
         train, conv, lay, shifts, how, _, notes = _synthesis(spec)

@@ -423,9 +423,9 @@ def least_passing(rerate, start: float, passes, limit: float = ADVICE_FACE_MAX
 
 def face_advice_limit(b_w: float, d_w1: float) -> float:
     """The largest face width the advice may propose, as a multiple of the present ``b_w``:
-    b_w/d_w1 <= :data:`PSI_BD_MAX` (the bound of the ``FACE_WIDTH_RATIO`` check: wider
-    faces concentrate the load, [Ivanov] table of ψ_bd, GOST 21354-87 appendix), and at
-    most :data:`ADVICE_FACE_MAX`."""
+    b_w/d_w1 <= :data:`PSI_BD_MAX` (the bound of the ``FACE_WIDTH_RATIO`` check, just above
+    the ψ_bd ranges of the handbook table, [Ivanov] ch. 8: wider faces concentrate the
+    load), and at most :data:`ADVICE_FACE_MAX`."""
     return min(ADVICE_FACE_MAX, PSI_BD_MAX * d_w1 / b_w)
 
 
