@@ -225,3 +225,35 @@ def test_planetary_every_fix_passes_when_followed(sun, planet, extra, offset):
     except InputError:           # refused input: nothing to advise
         return
     _property(data)
+
+
+# ------------------------------------------------------------------------- spur face width
+
+
+def _spur(torque: float, method: str, face: float) -> dict:
+    data = tomllib.loads((SPECS / "spur_reducer_through_hardened.toml").read_text(
+        encoding="utf-8"))
+    data["load"]["torque1"] = torque
+    data["load"]["peak_torque1"] = 2.0 * torque
+    data["gear"]["face_width"] = face
+    data.setdefault("options", {})["method"] = method
+    return data
+
+
+@settings(max_examples=20, deadline=None)
+@given(torque=st.floats(300.0, 2500.0), face=st.floats(20.0, 63.0),
+       method=st.sampled_from(("GOST 21354-87", "ISO 6336:2019")))
+def test_spur_face_width_fix_passes_when_followed(torque, face, method):
+    """The face width advised (rounded up to 0.1 mm as printed) passes the check when
+    written into the spec, and it is never beyond b_w/d_w1 = 1.6."""
+    data = _spur(torque, method, round(face, 1))
+    try:
+        doc = run_data(data).document()
+    except InputError:
+        return
+    for c in doc["checks"]:
+        if "fix" in c:
+            d_w1 = doc["results"]["geometry"]["d_w1"]
+            assert c["fix"]["gear.face_width"] <= 1.6 * d_w1 + 0.1
+            assert f"face width to at least {c['fix']['gear.face_width']:g} mm" in c["message"]
+    _property(data)

@@ -444,8 +444,22 @@ def _face_advice(b_w: float | None, b_pass: float | None, limit: float = ADVICE_
         return ""
     if b_pass is None:
         return "; " + face_width_beyond(b_w, limit)
-    return f"; or the face width to at least {b_pass:.1f} mm (+{100 * (b_pass / b_w - 1):.0f} %, " \
+    b = face_width_up(b_pass)
+    return f"; or the face width to at least {b:g} mm (+{100 * (b / b_w - 1):.0f} %, " \
            f"found by re-rating)"
+
+
+def face_width_up(b: float) -> float:
+    """An advised face width as printed: rounded up to 0.1 mm, so that the value written
+    into the spec is not below the one that passes."""
+    return math.ceil(b * 10.0 - 1e-9) / 10.0
+
+
+def face_width_fix(b_w: float | None, b_pass: float | None) -> tuple:
+    """The face-width advice as a check's ``fix`` (``gear.face_width``), or none."""
+    if b_w is None or b_pass is None:
+        return ()
+    return (("gear.face_width", face_width_up(b_pass)),)
 
 
 def _scale_advice(a_w: float | None, k: float | None) -> str:
@@ -487,7 +501,8 @@ def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool,
            f"increase the centre distance by {_pct(r ** (2 / 3) - 1)}")
         + f", or use a harder {who} material" + _face_advice(b_w, b_contact, face_limit),
         f"σ_H = {sH:.0f} MPa <= σ_HP = {sHP:.0f} MPa ({100 * (1 - r):.1f} % reserve; S_H1 = "
-        f"{v['S_H1']:.2f}, S_H2 = {v['S_H2']:.2f})", sH, sHP, src))
+        f"{v['S_H1']:.2f}, S_H2 = {v['S_H2']:.2f})", sH, sHP, src,
+        face_width_fix(b_w, b_contact)))
     for k in (1, 2):
         who = ("pinion", "wheel")[k - 1]
         S, Smin = v[f"S_F{k}"], v[f"S_F{k}_min"]
@@ -499,7 +514,7 @@ def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool,
             f"(same centre distance, fewer teeth), or use a material with a higher σ_Flim"
             + _face_advice(b_w, b_bending, face_limit),
             f"{who}: σ_F{k} = {sF:.0f} MPa <= σ_FP{k} = {sFP:.0f} MPa (S_F{k} = {S:.2f} >= "
-            f"{Smin:.2f})", S, Smin, src))
+            f"{Smin:.2f})", S, Smin, src, face_width_fix(b_w, b_bending)))
     if peak_given:
         sHm = v["sigma_Hmax"]
         lim = min(v["sigma_HPmax1"], v["sigma_HPmax2"])
