@@ -257,3 +257,19 @@ def test_spur_face_width_fix_passes_when_followed(torque, face, method):
             assert c["fix"]["gear.face_width"] <= 1.6 * d_w1 + 0.1
             assert f"face width to at least {c['fix']['gear.face_width']:g} mm" in c["message"]
     _property(data)
+
+
+# ------------------------------------------------------------------------- novikov
+
+
+@settings(max_examples=15, deadline=None)
+@given(face=st.floats(1.0, 8.0))
+def test_novikov_face_width_fix_passes_when_followed(face):
+    """Contact continuity and axial overlap: the advised face width passes when followed."""
+    data = tomllib.loads((SPECS / "novikov_narrow_face.toml").read_text(encoding="utf-8"))
+    data["gear"]["face_width"] = round(face, 3)
+    try:
+        run_data(data)
+    except InputError:
+        return
+    _property(data)
