@@ -106,16 +106,26 @@ def test_advice_leads_to_a_passing_design():
     pair passes pitting."""
     import re
 
-    doc = _run(load={"torque1": 300.0})
+    doc = _run(load={"torque1": 250.0})
     msg = next(c["message"] for c in doc["checks"] if c["code"] == "ISO_PITTING_PINION")
     a_w = float(re.search(r"centre distance to at least ([0-9.]+) mm", msg).group(1))
     b = float(re.search(r"face width to at least ([0-9.]+) mm", msg).group(1))
-    wider = _run(load={"torque1": 300.0}, gear={"face_width": b + 0.1})["results"]
+    wider = _run(load={"torque1": 250.0}, gear={"face_width": b + 0.1})["results"]
     assert min(wider["iso6336_contact"]["S_H1"], wider["iso6336_contact"]["S_H2"]) >= 1.0
     k = (a_w + 0.1) / 120.0
-    bigger = _run(load={"torque1": 300.0}, gear={"module": 3.0 * k, "face_width": 30.0 * k})
+    bigger = _run(load={"torque1": 250.0}, gear={"module": 3.0 * k, "face_width": 30.0 * k})
     c = bigger["results"]["iso6336_contact"]
     assert min(c["S_H1"], c["S_H2"]) >= 1.0
+
+
+def test_face_width_advice_stays_within_the_face_width_ratio():
+    """Beyond b_w/d_w1 = 1.6 the ISO advice offers no face width, only the centre distance
+    (module and face width in proportion) and the material."""
+    doc = _run(load={"torque1": 300.0})
+    msg = next(c["message"] for c in doc["checks"] if c["code"] == "ISO_PITTING_PINION")
+    assert "face width to at least" not in msg
+    assert "no face width within b_w/d_w1 <= 1.6 (up to 96.0 mm) passes" in msg
+    assert "centre distance to at least" in msg
 
 
 def test_peak_torque_gives_static_checks():

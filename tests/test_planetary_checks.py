@@ -62,7 +62,9 @@ def test_coaxiality_beyond_any_shift(tmp_path):
     assert code == 1
     assert checks["PLANET_RING_COAXIALITY"]["message"].endswith(
         "no reasonable ring shift makes them coaxial; change the tooth numbers (with equal "
-        "modules the ring needs about z_sun + 2·z_planet teeth)")
+        "modules the ring needs about z_sun + 2·z_planet teeth); no change of the planet "
+        "teeth (±2) and the centre distance (±1.5·m) passes the failed geometry checks "
+        "together")
 
 
 def test_neighbour_clearance(tmp_path):

@@ -160,18 +160,28 @@ def test_overload_fails_with_advice():
 
 def test_advised_face_width_passes_when_rerun():
     """The face-width advice is found by re-rating (K_Hβ grows with b_w): the advised width
-    passes the check, and 1 % less does not."""
+    passes the check, and 1 % less does not (at 450 N·m it is within b_w/d_w1 <= 1.6)."""
     import re
 
-    doc = run_data(spec(load__torque1=600.0, load__peak_torque1=1200.0)).document()
+    doc = run_data(spec(load__torque1=450.0, load__peak_torque1=900.0)).document()
     c = {c["code"]: c for c in doc["checks"]}["CONTACT_FATIGUE"]
     b = float(re.search(r"face width to at least ([0-9.]+) mm", c["message"]).group(1))
-    ok = run_data(spec(load__torque1=600.0, load__peak_torque1=1200.0,
+    ok = run_data(spec(load__torque1=450.0, load__peak_torque1=900.0,
                        gear__face_width=b + 0.05)).document()
     assert {c["code"]: c for c in ok["checks"]}["CONTACT_FATIGUE"]["passed"]
-    short = run_data(spec(load__torque1=600.0, load__peak_torque1=1200.0,
+    short = run_data(spec(load__torque1=450.0, load__peak_torque1=900.0,
                           gear__face_width=0.99 * b)).document()
     assert not {c["code"]: c for c in short["checks"]}["CONTACT_FATIGUE"]["passed"]
+
+
+def test_face_width_advice_stays_within_the_face_width_ratio():
+    """Beyond b_w/d_w1 = 1.6 (the FACE_WIDTH_RATIO bound) the advice proposes no face width
+    and names the bound; it still names the centre distance and the material."""
+    doc = run_data(spec(load__torque1=600.0, load__peak_torque1=1200.0)).document()
+    msg = {c["code"]: c for c in doc["checks"]}["CONTACT_FATIGUE"]["message"]
+    assert "face width to at least" not in msg
+    assert "no face width within b_w/d_w1 <= 1.6 (up to 160.0 mm) passes" in msg
+    assert "increase the centre distance to at least" in msg and "harder" in msg
 
 
 def test_advised_centre_distance_passes_when_rerun():

@@ -54,9 +54,10 @@ ERRORS = {
                         "drive the worm backwards; use z1 = 1 and a larger q so that "
                         "γ_w < ρ', or fit a brake"}),
     "contact stress above allowable": (spec(load__torque2=700.0), {
-        "CONTACT_STRESS": "σ_H = 196.4 MPa > [σ]_H = 181.2 MPa: increase the centre distance "
-                          "to at least 168.8 mm (GOST 2144-76: 200 mm), use a stronger wheel "
-                          "material, or harden and grind the worm"}),
+        "CONTACT_STRESS": "σ_H = 196.4 MPa > [σ]_H = 181.2 MPa: set gear.center_distance = "
+                          "200, gear.module = 8, gear.diameter_factor = 10 (a standard pair, "
+                          "x = 0; it passes when re-rated), use a stronger wheel material, or "
+                          "harden and grind the worm"}),
     "sliding speed beyond the material": (spec(wheel__material="BrA9Zh3L_sand"), {
         "SLIDING_SPEED": "v_s = 5.25 m/s > 5 m/s allowed for BrA9Zh3L_sand (group II): "
                          "scuffing and wear; use a tin bronze for high sliding speeds (group "
@@ -64,11 +65,15 @@ ERRORS = {
     "oil too hot": (spec(thermal__heat_transfer=9.0, thermal__base_share=0.0), {
         "OIL_TEMPERATURE": "oil temperature 108.2 °C > t_lim = 90 °C: add cooling fins (a "
                            "larger thermal.housing_area), a fan on the worm shaft (thermal.fan "
-                           "= true), a water coil, or a larger centre distance"}),
+                           "= true), a water coil, or set gear.center_distance = "
+                           "200, gear.module = 8, gear.diameter_factor = 10 (a standard pair, "
+                           "x = 0; it passes when re-rated)"}),
     "worm deflection too large": (spec(worm__bearing_span=1500.0), {
         "WORM_DEFLECTION": "worm deflection f = 1.6077 mm > f_lim = 0.01·m = 0.0630 mm: the "
-                           "worm bends out of mesh; increase q, shorten the bearing span "
-                           "(l = 1500 mm) or increase the module"}),
+                           "worm bends out of mesh; set gear.center_distance = 315, "
+                           "gear.module = 12.5, gear.diameter_factor = 10 (a standard pair, "
+                           "x = 0.2; it passes when re-rated), or shorten the bearing span "
+                           "(l = 1500 mm)"}),
     "face width above 0.75 d_a1": (spec(gear__face_width=60.0), {
         "FACE_WIDTH": "b2 = 60 mm > 0.75·d_a1 = 56.7 mm: the rim ends overhang the worm "
                       "threads and carry nothing; reduce face_width to at most 56.7 mm"}),
@@ -77,15 +82,20 @@ ERRORS = {
                        "x = 0.3968 (grinding allowance included); increase worm_length to at "
                        "least 118 mm"}),
     "bending stress above a given allowable": (spec(wheel__sigma_FP=8.0), {
-        "BENDING_STRESS": "σ_F = 10.7 MPa > [σ]_F = 8.0 MPa: the wheel teeth break; increase "
-                          "the module (a larger a_w or a smaller q) or use a stronger wheel "
-                          "material"}),
+        "BENDING_STRESS": "σ_F = 10.7 MPa > [σ]_F = 8.0 MPa: the wheel teeth break; set "
+                          "gear.center_distance = 200, gear.module = 8, gear.diameter_factor "
+                          "= 10 (a standard pair, x = 0; it passes when re-rated), or use a "
+                          "stronger wheel material"}),
     "peak torque": (spec(load__peak_torque=8000.0), {
         "CONTACT_STRESS_PEAK": "σ_Hmax = 664.1 MPa > [σ]_Hmax = 660.0 MPa at the peak torque "
                                "8000 N·m: the flanks yield; limit the peak torque (a torque "
-                               "limiter) or increase the centre distance",
+                               "limiter), or set gear.center_distance = 200, gear.module = 8, "
+                               "gear.diameter_factor = 10 (a standard pair, x = 0; it passes "
+                               "when re-rated)",
         "BENDING_STRESS_PEAK": "σ_Fmax = 170.5 MPa > [σ]_Fmax = 132.0 MPa at the peak torque "
-                               "8000 N·m: limit the peak torque or increase the module"}),
+                               "8000 N·m: limit the peak torque, or set gear.center_distance = "
+                               "200, gear.module = 8, gear.diameter_factor = 10 (a standard "
+                               "pair, x = 0; it passes when re-rated)"}),
 }
 
 
@@ -110,16 +120,17 @@ def test_undercut_in_the_mid_plane_for_a_negative_shift():
     doc = run_data(spec(gear__z1=1, gear__z2=26, gear__module=5.0, gear__center_distance=None,
                         gear__x=-1.0)).document()
     assert failed(doc)["UNDERCUT_WHEEL"] == (
-        "wheel undercut in the mid-plane: x = -1 < x_min = -0.5181; increase x to at least "
-        "-0.518 (a larger a_w or a smaller q) or use more wheel teeth")
+        "wheel undercut in the mid-plane: x = -1 < x_min = -0.5181; set gear.center_distance "
+        "= 160, gear.module = 8, gear.diameter_factor = 12.5, gear.x = 0.75 (a standard pair; "
+        "it passes when re-rated), or use more wheel teeth")
 
 
 def test_contact_ratio_below_one():
     doc = run_data(spec(gear__z1=1, gear__z2=26, gear__x=1.0, gear__center_distance=None,
                         basic_worm__addendum_coef=0.5)).document()
     assert failed(doc)["CONTACT_RATIO"] == (
-        "ε_α ≈ 0.645 < 1 in the wheel mid-plane: the mesh is not continuous; reduce x or use "
-        "more wheel teeth")
+        "ε_α ≈ 0.645 < 1 in the wheel mid-plane: the mesh is not continuous; reduce x (no "
+        "standard pair up to a_w = 500 mm passes when re-rated), or use more wheel teeth")
 
 
 WARNINGS = {

@@ -55,13 +55,41 @@ def compute(spec: ValidatedSpec) -> Result:
 # --------------------------------------------------------------------------- key
 
 
-def _key_advice(r: solve.KeySolution, k: I.KeyInput) -> str:
-    if math.isfinite(r.l_std) and (k.hub_length is None or r.l_std <= k.hub_length):
+KEY_LENGTH_RATIO = 1.5
+"""A parallel key longer than 1.5·d carries little more: the torsion of the shaft loads
+its end near the torque input ([Ivanov] ch. 6, [Dunaev] ch. 6: hub length (0.8 ... 1.5)·d,
+the key 5 ... 10 mm shorter than the hub); the same bound as ``SPLINE_LENGTH``."""
+
+
+def key_length_limit(k: I.KeyInput) -> float:
+    """The longest key the advice proposes: 1.5·d, and not longer than the hub."""
+    limit = KEY_LENGTH_RATIO * k.d
+    return limit if k.hub_length is None else min(limit, k.hub_length)
+
+
+def _key_advice(r: solve.KeySolution, k: I.KeyInput, ld: I.Load) -> tuple[str, tuple]:
+    """What the failed pressure and shear checks advise, and its fix: the standard key length
+    that passes, within :func:`key_length_limit`; beyond it two keys, re-rated; beyond
+    them a spline or an interference fit."""
+    from dataclasses import replace
+
+    limit = key_length_limit(k)
+    bound = (f"the {_f(limit)} mm a key may have ({KEY_LENGTH_RATIO:g}·d = "
+             f"{_f(KEY_LENGTH_RATIO * k.d)} mm"
+             + (f", hub {_f(k.hub_length)} mm)" if k.hub_length is not None else ")"))
+    if math.isfinite(r.l_std) and r.l_std <= limit:
         return (f"use a key of at least {_f(r.l_min, 1)} mm, i.e. the standard length "
-                f"{_f(r.l_std)} mm")
-    more = "two keys (key.count = 2), " if k.count == 1 else ""
-    return (f"a single key would need {_f(r.l_min, 1)} mm; use {more}a longer hub, a spline or "
-            f"an interference fit")
+                f"{_f(r.l_std)} mm (key.length = {_f(r.l_std)})"), (("key.length", r.l_std),)
+    single = f"a single key would need {_f(r.l_min, 1)} mm, beyond {bound}"
+    if k.count == 1:
+        r2 = solve.key(replace(k, count=2), ld)
+        if math.isfinite(r2.l_std) and r2.l_std <= limit:
+            fix = (("key.count", 2), ("key.length", r2.l_std))
+            return (f"{single}; use two keys of the standard length {_f(r2.l_std)} mm "
+                    f"(key.count = 2, key.length = {_f(r2.l_std)}; re-rated, they pass)"), fix
+    return (f"{single}{'' if k.count == 1 else ' with two keys'}; use a spline or an "
+            f"interference fit (kind = \"connection\" with [spline] or [fit]), or a larger "
+            f"shaft"), ()
 
 
 def _key_report(res: Result, k: I.KeyInput, ld: I.Load, r: solve.KeySolution) -> None:
@@ -105,7 +133,7 @@ def _key_report(res: Result, k: I.KeyInput, ld: I.Load, r: solve.KeySolution) ->
     ds.add("l_std", r.l_std, "mm", "l_std", "shortest standard length that passes",
            S.KEY_LENGTHS)
 
-    advice = _key_advice(r, k)
+    advice, fix = _key_advice(r, k, ld)
     for fl in r.flanks:
         where = "on the key" if fl.side == "key" else f"on the {fl.side} side"
         res.checks.append(check(
@@ -113,13 +141,21 @@ def _key_report(res: Result, k: I.KeyInput, ld: I.Load, r: solve.KeySolution) ->
             f"bearing pressure {where} p = {fl.p:.1f} MPa exceeds {fl.p_allow:.1f} MPa: "
             f"{advice}",
             f"bearing pressure {where} p = {fl.p:.1f} MPa <= {fl.p_allow:.1f} MPa",
-            fl.p, fl.p_allow, method))
+            fl.p, fl.p_allow, method, fix))
     res.checks.append(check(
         "KEY_SHEAR", r.tau <= r.tau_allow, "error",
         f"key shear τ = {r.tau:.1f} MPa exceeds {r.tau_allow:.1f} MPa: {advice}",
         f"key shear τ = {r.tau:.1f} MPa <= {r.tau_allow:.1f} MPa", r.tau, r.tau_allow,
-        S.KEY_GOST))
+        S.KEY_GOST, fix))
     L_hub = k.hub_length
+    l_ratio = KEY_LENGTH_RATIO * k.d
+    res.checks.append(check(
+        "KEY_LENGTH_RATIO", k.l <= l_ratio + 1e-9, "warning",
+        f"key length {_f(k.l)} mm > {KEY_LENGTH_RATIO:g}·d = {_f(l_ratio)} mm: the part beyond "
+        f"carries little (shaft torsion loads the key's end), so the pressure is understated; "
+        f"use two keys, a spline or an interference fit",
+        f"key length {_f(k.l)} mm <= {KEY_LENGTH_RATIO:g}·d = {_f(l_ratio)} mm", k.l, l_ratio,
+        S.KEY_PRACTICE))
     if L_hub is not None:
         shortest = (f"the shortest standard key that passes ({_f(r.l_std)} mm) is longer "
                     f"than the hub ({_f(L_hub)} mm)" if math.isfinite(r.l_std) else

@@ -4,6 +4,8 @@ corrected once.  Keys are entries of ``docs/references.md``."""
 KEY_TABLE = "[GOST23360] table 1; [DIN6885-1] table 1"
 KEY_LENGTHS = "[GOST23360] length series"
 KEY_GOST = "[Ivanov] ch. 6; [Dunaev] ch. 6"
+KEY_PRACTICE = ("[Ivanov] ch. 6; [Dunaev] ch. 6 (hub length (0.8 ... 1.5)·d, the key shorter than "
+                "the hub)")
 KEY_DIN = "[DIN6892] method C"
 KEY_SHARE = "[DIN6892] load share φ; [Ivanov] ch. 6"
 KEY_ALLOW_GOST = "[Dunaev] ch. 6 (lower end; unverified)"

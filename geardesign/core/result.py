@@ -69,7 +69,10 @@ class DataTable:
 @dataclass(frozen=True)
 class Check:
     """A design check.  ``severity`` is ``error`` (fails the design), ``warning`` or
-    ``info``; ``message`` says what is wrong and what to change."""
+    ``info``; ``message`` says what is wrong and what to change.  ``fix`` is that advice in
+    machine-readable form where the calculator found it by re-rating: ``((key, value), ...)``,
+    spec keys (``"gear.module"``) and the values that, written into the spec as printed,
+    make the check pass on the next run (JSON: ``checks[].fix``, an object)."""
 
     code: str
     severity: str
@@ -78,6 +81,7 @@ class Check:
     value: float | None = None
     limit: float | None = None
     source: str = ""
+    fix: tuple = ()
 
     def __post_init__(self) -> None:
         if self.severity not in SEVERITIES:
@@ -108,11 +112,23 @@ def not_rated(message: str) -> str:
 
 
 def check(code: str, ok: bool, severity: str, fail_message: str, pass_message: str,
-          value: float | None = None, limit: float | None = None, source: str = "") -> Check:
-    """Build a :class:`Check` from a condition, with one message for each outcome.  A
-    non-finite value or limit is judged by :func:`guard` when the result is finished."""
+          value: float | None = None, limit: float | None = None, source: str = "",
+          fix: tuple = ()) -> Check:
+    """Build a :class:`Check` from a condition, with one message for each outcome (and the
+    machine-readable ``fix`` of a failed one).  A non-finite value or limit is judged by
+    :func:`guard` when the result is finished."""
     return Check(code, severity, bool(ok), pass_message if ok else fail_message,
-                 value, limit, source)
+                 value, limit, source, () if ok else tuple(fix))
+
+
+def fix_text(fix) -> str:
+    """A machine-readable fix as the message writes it: ``gear.module = 8, gear.x = 0.25``
+    (numbers to at most four decimals, as they are to be typed into the spec)."""
+    def show(v):
+        if isinstance(v, bool) or not isinstance(v, float):
+            return f'"{v}"' if isinstance(v, str) else str(v)
+        return f"{v:.4f}".rstrip("0").rstrip(".")
+    return ", ".join(f"{k} = {show(v)}" for k, v in fix)
 
 
 def clean_value(v: Any) -> Any:
@@ -229,6 +245,7 @@ class Result:
                     "value": _clean(c.value),
                     "limit": _clean(c.limit),
                     "source": c.source,
+                    **({"fix": dict(c.fix)} if c.fix else {}),
                 }
                 for c in self.checks
             ],

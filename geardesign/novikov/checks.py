@@ -52,14 +52,16 @@ def continuity_checks(c: ContinuityData) -> list[Check]:
         f"either line of action is in the face; increase the face width to at least "
         f"{math.ceil(c.b_min_1 * 10) / 10:.1f} mm (or the helix angle)",
         f"contact continuous: b_w = {_mm(c.b_w)} mm >= (1 − δ)·p_x = {_mm(c.b_min_1)} mm",
-        c.b_w, c.b_min_1, S.CYCLOGRAM))
+        c.b_w, c.b_min_1, S.CYCLOGRAM,
+        (("gear.face_width", math.ceil(c.b_min_1 * 10) / 10),)))
     limit = 1.0 + EPS_BETA_MARGIN
     out.append(check(
         "OVERLAP_RATIO", c.eps_beta >= limit, "warning",
         f"ε_β = {c.eps_beta:.3f} < {limit:g}: little axial overlap; Novikov gears carry the "
         f"load only through the axial overlap; increase the face width to at least "
         f"{math.ceil(limit * c.p_x * 10) / 10:.1f} mm or the helix angle",
-        f"ε_β = {c.eps_beta:.3f} >= {limit:g}", c.eps_beta, limit, S.PRACTICE))
+        f"ε_β = {c.eps_beta:.3f} >= {limit:g}", c.eps_beta, limit, S.PRACTICE,
+        (("gear.face_width", math.ceil(limit * c.p_x * 10) / 10),)))
     out.append(check(
         "CONTACT_POINTS", c.n_min >= POINTS_MIN, "warning",
         f"at times only {c.n_min} point(s) of contact carry the whole load (n = "

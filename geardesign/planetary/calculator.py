@@ -422,7 +422,7 @@ def compute(spec: ValidatedSpec) -> Result:
     from geardesign.planetary import CALCULATOR
 
     d = spec.data
-    tr, op = d["train"], d["operation"]
+    op = d["operation"]
     notes = None
     if d["synthesis"] is not None:
         train, conv, lay, shifts, how, _, notes = _synthesis(spec)
@@ -457,17 +457,11 @@ def compute(spec: ValidatedSpec) -> Result:
     for mesh in meshes:
         _mesh_rows(res, mesh)
 
-    lim = d["limits"]
-    checks = _assembly(res, d, train, meshes, lay, shifts, conv, gears)
+    checks = geometry_checks(res, d, train, meshes, lay, shifts, conv, gears)
+    if d["synthesis"] is None:
+        from geardesign.planetary.advice import reconcile
 
-    # -- geometry checks
-    alpha_t = {x: meshes[0].geom.alpha_t for x in gears}
-    second = {mesh.spec.pinion: mesh.spec.second for mesh in meshes} | \
-        {mesh.spec.wheel: mesh.spec.second for mesh in meshes[1:]}
-    modules = {x: lay.m2 if second.get(x, False) else lay.m for x in gears}
-    checks += C.gear_checks(gears, lay.rack.h_straight, alpha_t, lay.beta, modules,
-                            lim["tip_thickness"], tr["allow_undercut"])
-    checks += C.mesh_checks(meshes, lim["specific_sliding"])
+        checks = reconcile(spec, meshes, checks)
     if lay.cutter is None:
         checks.append(check("RING_FORM_CIRCLE", True, "info", "",
                             "the rings' form circles are those of the basic rack; give [cutter] "
@@ -478,6 +472,22 @@ def compute(spec: ValidatedSpec) -> Result:
     checks += _kinematics_and_power(res, d, train, meshes, lay, strength)
     res.checks.extend(checks)
     return res
+
+
+def geometry_checks(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh],
+                    lay: PG.Layout, shifts: dict, conv: dict, gears: dict) -> list:
+    """The assembly checks (with their rows in ``res``) and the geometry checks of every
+    gear and mesh."""
+    lim, tr = d["limits"], d["train"]
+    checks = _assembly(res, d, train, meshes, lay, shifts, conv, gears)
+    alpha_t = {x: meshes[0].geom.alpha_t for x in gears}
+    second = {mesh.spec.pinion: mesh.spec.second for mesh in meshes} | \
+        {mesh.spec.wheel: mesh.spec.second for mesh in meshes[1:]}
+    modules = {x: lay.m2 if second.get(x, False) else lay.m for x in gears}
+    checks += C.gear_checks(gears, lay.rack.h_straight, alpha_t, lay.beta, modules,
+                            lim["tip_thickness"], tr["allow_undercut"])
+    checks += C.mesh_checks(meshes, lim["specific_sliding"])
+    return checks
 
 
 def _assembly(res: Result, d: dict, train: K.Train, meshes: list[PG.Mesh], lay: PG.Layout,

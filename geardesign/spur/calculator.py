@@ -13,7 +13,7 @@ from geardesign.core.result import Result, Section, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.spur import internal as I
 from geardesign.spur import sources as S
-from geardesign.spur.checks import LOAD_INPUTS, geometry_checks
+from geardesign.spur.checks import ADVICE_FACE_MAX, LOAD_INPUTS, geometry_checks
 from geardesign.spur.geometry import (
     BasicRack,
     GeometryError,
@@ -557,16 +557,18 @@ def _add_gost_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inp
             row.key, row.value, row.unit, row.symbol, row.name, row.source)
     v = rating.v
     b_contact = b_bending = k_contact = None
+    face_limit = ADVICE_FACE_MAX
     contact_fails = v["sigma_H"] > v["sigma_HP"] * (1 + 1e-12)
     bending_fails = any(v[f"S_F{k}"] < v[f"S_F{k}_min"] * (1 - 1e-12) for k in (1, 2))
     if (contact_fails or bending_fails) and not getattr(geom, "internal", False):
         from dataclasses import replace
 
-        from geardesign.spur.checks import least_passing
+        from geardesign.spur.checks import face_advice_limit, least_passing
         from geardesign.spur.geometry import pair_geometry
 
         rate = method("GOST 21354-87").rate
         inp = geom.inp
+        face_limit = face_advice_limit(inp.b_w, geom.g1.d_w)
 
         def rerate(b: float) -> dict:
             return rate(pair_geometry(replace(inp, b_w=b)), mats, duty, setting).v
@@ -579,17 +581,18 @@ def _add_gost_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inp
             return x["sigma_H"] <= x["sigma_HP"] * (1 + 1e-12)
 
         if contact_fails:
-            b_contact = least_passing(rerate, inp.b_w, contact_ok)
+            b_contact = least_passing(rerate, inp.b_w, contact_ok, face_limit)
             k_contact = least_passing(rescale, 1.0, contact_ok, 4.0)
         if bending_fails:
             b_bending = least_passing(
                 rerate, inp.b_w,
-                lambda x: all(x[f"S_F{k}"] >= x[f"S_F{k}_min"] * (1 - 1e-12) for k in (1, 2)))
+                lambda x: all(x[f"S_F{k}"] >= x[f"S_F{k}_min"] * (1 - 1e-12) for k in (1, 2)),
+                face_limit)
     internal = getattr(geom, "internal", False)   # no re-rated advice for an internal pair
     res.checks.extend(strength_checks(v, mats, geom.inp.beta > 0, setting.grade,
                                       duty.T_peak is not None,
                                       None if internal else geom.inp.b_w, b_contact,
-                                      b_bending, geom.a_w, k_contact))
+                                      b_bending, geom.a_w, k_contact, face_limit))
     return v
 
 

@@ -396,7 +396,10 @@ def least_passing(rerate, start: float, passes, limit: float = ADVICE_FACE_MAX
     """The least value ``v >= start`` at which ``passes(rerate(v))`` holds, found by
     re-running the rating (the load factors change with the size, so a scaling law
     understates it): doubling up to ``limit``·start, then 40 bisections; ``None`` if no
-    value in that range passes."""
+    value in that range passes (also when ``limit`` <= 1: nothing above ``start`` may be
+    tried)."""
+    if limit <= 1.0:
+        return None
     lo, hi = start, start
     while True:
         hi = min(2.0 * hi, limit * start)
@@ -418,14 +421,45 @@ def least_passing(rerate, start: float, passes, limit: float = ADVICE_FACE_MAX
     return hi
 
 
-def _face_advice(b_w: float | None, b_pass: float | None) -> str:
+def face_advice_limit(b_w: float, d_w1: float) -> float:
+    """The largest face width the advice may propose, as a multiple of the present ``b_w``:
+    b_w/d_w1 <= :data:`PSI_BD_MAX` (the bound of the ``FACE_WIDTH_RATIO`` check, just above
+    the ψ_bd ranges of the handbook table, [Ivanov] ch. 8: wider faces concentrate the
+    load), and at most :data:`ADVICE_FACE_MAX`."""
+    return min(ADVICE_FACE_MAX, PSI_BD_MAX * d_w1 / b_w)
+
+
+def face_width_beyond(b_w: float, limit: float) -> str:
+    """The advice when no face width up to ``limit``·``b_w`` passes."""
+    if limit < ADVICE_FACE_MAX:
+        return (f"no face width within b_w/d_w1 <= {PSI_BD_MAX} (up to "
+                f"{max(limit, 1.0) * b_w:.1f} mm) passes")
+    return f"no face width up to {ADVICE_FACE_MAX:g}× the present {b_w:g} mm passes " \
+           f"(K_Hβ grows with it)"
+
+
+def _face_advice(b_w: float | None, b_pass: float | None, limit: float = ADVICE_FACE_MAX
+                 ) -> str:
     if b_w is None:
         return ""
     if b_pass is None:
-        return (f"; no face width up to {ADVICE_FACE_MAX:g}× the present {b_w:g} mm passes "
-                f"(K_Hβ grows with it)")
-    return f"; or the face width to at least {b_pass:.1f} mm (+{100 * (b_pass / b_w - 1):.0f} %, " \
+        return "; " + face_width_beyond(b_w, limit)
+    b = face_width_up(b_pass)
+    return f"; or the face width to at least {b:g} mm (+{100 * (b / b_w - 1):.0f} %, " \
            f"found by re-rating)"
+
+
+def face_width_up(b: float) -> float:
+    """An advised face width as printed: rounded up to 0.1 mm, so that the value written
+    into the spec is not below the one that passes."""
+    return math.ceil(b * 10.0 - 1e-9) / 10.0
+
+
+def face_width_fix(b_w: float | None, b_pass: float | None) -> tuple:
+    """The face-width advice as a check's ``fix`` (``gear.face_width``), or none."""
+    if b_w is None or b_pass is None:
+        return ()
+    return (("gear.face_width", face_width_up(b_pass)),)
 
 
 def _scale_advice(a_w: float | None, k: float | None) -> str:
@@ -445,7 +479,8 @@ def _pct(x: float) -> str:
 def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool,
                     b_w: float | None = None, b_contact: float | None = None,
                     b_bending: float | None = None, a_w: float | None = None,
-                    k_contact: float | None = None) -> list[Check]:
+                    k_contact: float | None = None, face_limit: float = ADVICE_FACE_MAX
+                    ) -> list[Check]:
     """Checks of a GOST 21354-87 rating ``v`` (the :class:`Rating` values by key).
 
     Contact: σ_H <= σ_HP of the pair; bending: S_F >= S_Fmin per gear (σ_F <= σ_FP); peak
@@ -464,9 +499,10 @@ def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool,
         f"(S_H{gov} = {v[f'S_H{gov}']:.2f} < {v[f'S_H{gov}_min']:.2f}, {who}): "
         + (_scale_advice(a_w, k_contact) if k_contact is not None else
            f"increase the centre distance by {_pct(r ** (2 / 3) - 1)}")
-        + f", or use a harder {who} material" + _face_advice(b_w, b_contact),
+        + f", or use a harder {who} material" + _face_advice(b_w, b_contact, face_limit),
         f"σ_H = {sH:.0f} MPa <= σ_HP = {sHP:.0f} MPa ({100 * (1 - r):.1f} % reserve; S_H1 = "
-        f"{v['S_H1']:.2f}, S_H2 = {v['S_H2']:.2f})", sH, sHP, src))
+        f"{v['S_H1']:.2f}, S_H2 = {v['S_H2']:.2f})", sH, sHP, src,
+        face_width_fix(b_w, b_contact)))
     for k in (1, 2):
         who = ("pinion", "wheel")[k - 1]
         S, Smin = v[f"S_F{k}"], v[f"S_F{k}_min"]
@@ -476,9 +512,9 @@ def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool,
             f"{who} root stress σ_F{k} = {sF:.0f} MPa exceeds σ_FP{k} = {sFP:.0f} MPa (S_F{k} = "
             f"{S:.2f} < {Smin:.2f}): increase the module by {_pct(sF / sFP - 1)} "
             f"(same centre distance, fewer teeth), or use a material with a higher σ_Flim"
-            + _face_advice(b_w, b_bending),
+            + _face_advice(b_w, b_bending, face_limit),
             f"{who}: σ_F{k} = {sF:.0f} MPa <= σ_FP{k} = {sFP:.0f} MPa (S_F{k} = {S:.2f} >= "
-            f"{Smin:.2f})", S, Smin, src))
+            f"{Smin:.2f})", S, Smin, src, face_width_fix(b_w, b_bending)))
     if peak_given:
         sHm = v["sigma_Hmax"]
         lim = min(v["sigma_HPmax1"], v["sigma_HPmax2"])

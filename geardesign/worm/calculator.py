@@ -15,6 +15,7 @@ from geardesign.core.result import Check, Result, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.materials import worm_wheel
 from geardesign.worm import design as D
+from geardesign.worm.advice import standard_pair_advice
 from geardesign.worm import sources as S
 from geardesign.worm.checks import pair_checks
 from geardesign.worm.geometry import (
@@ -468,7 +469,13 @@ def compute(spec: ValidatedSpec) -> Result:
     if dres is not None:
         add_design_rows(res, dres)
     add_rows(res, a, w, how)
-    checks = pair_checks(a, w, o, spec.data["load"]["self_locking"])
+    locking = spec.data["load"]["self_locking"]
+    checks = pair_checks(a, w, o, locking)
+    if dres is None:
+        x_given = spec.data["gear"]["x"] is not None and "gear.x" not in spec.assumed
+        advice = standard_pair_advice(a, checks, op, w, o, locking, x_given)
+        if advice is not None:
+            checks = pair_checks(a, w, o, locking, advice)
     if dres is not None:
         checks.insert(0, _design_check(dres))
     res.checks.extend(checks)

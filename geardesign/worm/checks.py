@@ -12,6 +12,7 @@ for γ_w below about 3.5°).
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 from geardesign.core.result import Check, check
 from geardesign.worm import sources as S
@@ -22,6 +23,9 @@ from geardesign.worm.design import (
     round_up_center_distance,
 )
 from geardesign.worm.pair import Analysis, Options, WheelProps
+
+if TYPE_CHECKING:
+    from geardesign.worm.advice import Advice
 from geardesign.worm import tables
 
 Z2_MIN = 26
@@ -45,7 +49,17 @@ def _series_text(values: list[float]) -> str:
     return ", ".join(_fmt(v) for v in values)
 
 
-def pair_checks(a: Analysis, w: WheelProps, o: Options, self_locking: str) -> list[Check]:
+def pair_checks(a: Analysis, w: WheelProps, o: Options, self_locking: str,
+                advice: Advice | None = None) -> list[Check]:
+    """The checks of the analysed pair ``a``.  ``advice``: the standard pair found by
+    re-rating (:func:`geardesign.worm.advice.standard_pair_advice`) that the failed checks
+    of :data:`geardesign.worm.advice.RERATED` then advise, with it as their ``fix``."""
+    def lever(default: str) -> str:
+        if advice is None:
+            return default
+        return advice.text if advice.fix else default + advice.text
+
+    fix = advice.fix if advice is not None and advice.fix else ()
     g = a.g
     p = g.inp
     out: list[Check] = []
@@ -99,15 +113,16 @@ def pair_checks(a: Analysis, w: WheelProps, o: Options, self_locking: str) -> li
                           f"power drive)")
     elif p.x < g.x_min - 1e-9:
         ok, msg = False, (f"wheel undercut in the mid-plane: x = {_fmt(p.x, 4)} < x_min = "
-                          f"{_fmt(g.x_min, 4)}; increase x to at least "
-                          f"{math.ceil(g.x_min * 1000) / 1000:.3f} (a larger a_w or a smaller "
-                          f"q) or use more wheel teeth")
+                          f"{_fmt(g.x_min, 4)}; "
+                          + lever(f"increase x to at least {math.ceil(g.x_min * 1000) / 1000:.3f}"
+                                  f" (a larger a_w or a smaller q)")
+                          + ", or use more wheel teeth")
     else:
         ok, msg = True, ""
     out.append(check(
         "UNDERCUT_WHEEL", ok, "error", msg,
         f"wheel not undercut (z2 = {p.z2} >= {Z2_MIN}, x = {_fmt(p.x, 4)} >= x_min = "
-        f"{_fmt(g.x_min, 4)})", p.x, g.x_min, S.G19650))
+        f"{_fmt(g.x_min, 4)})", p.x, g.x_min, S.G19650, fix))
     if p.z2 < Z2_POWER[0]:
         msg = (f"z2 = {p.z2} < {Z2_POWER[0]}: few wheel teeth for a power drive (undercut "
                f"risk off the mid-plane); use z2 >= {Z2_POWER[0]}")
@@ -123,8 +138,9 @@ def pair_checks(a: Analysis, w: WheelProps, o: Options, self_locking: str) -> li
     out.append(check(
         "CONTACT_RATIO", g.eps_alpha >= 1.0, "error",
         f"ε_α ≈ {g.eps_alpha:.3f} < 1 in the wheel mid-plane: the mesh is not continuous; "
-        f"reduce x or use more wheel teeth",
-        f"ε_α ≈ {g.eps_alpha:.3f} >= 1 in the wheel mid-plane", g.eps_alpha, 1.0, S.G19650))
+        + lever("reduce x") + ", or use more wheel teeth",
+        f"ε_α ≈ {g.eps_alpha:.3f} >= 1 in the wheel mid-plane", g.eps_alpha, 1.0, S.G19650,
+        fix))
 
     # -- proportions
     out.append(check(
@@ -191,41 +207,45 @@ def pair_checks(a: Analysis, w: WheelProps, o: Options, self_locking: str) -> li
                f"sliding speeds or lower the worm speed")
     else:
         nxt = round_up_center_distance(a.a_w_req) if a.a_w_req is not None else None
-        msg = (f"σ_H = {a.sigma_H:.1f} MPa > [σ]_H = {a.sigma_HP:.1f} MPa: increase the centre "
-               f"distance to at least {a.a_w_req:.1f} mm"
-               + (f" (GOST 2144-76: {_fmt(nxt)} mm)" if nxt else "")
+        msg = (f"σ_H = {a.sigma_H:.1f} MPa > [σ]_H = {a.sigma_HP:.1f} MPa: "
+               + lever(f"increase the centre distance to at least {a.a_w_req:.1f} mm"
+                       + (f" (GOST 2144-76: {_fmt(nxt)} mm)" if nxt else ""))
                + ", use a stronger wheel material, or harden and grind the worm")
     out.append(check(
         "CONTACT_STRESS", a.sigma_H <= a.sigma_HP, "error", msg,
         f"σ_H = {a.sigma_H:.1f} MPa <= [σ]_H = {a.sigma_HP:.1f} MPa", a.sigma_H, a.sigma_HP,
-        S.CHERNAVSKY))
+        S.CHERNAVSKY, fix))
     out.append(check(
         "CONTACT_STRESS_PEAK", a.sigma_Hmax <= a.allow.sigma_HP_max, "error",
         f"σ_Hmax = {a.sigma_Hmax:.1f} MPa > [σ]_Hmax = {a.allow.sigma_HP_max:.1f} MPa at the "
         f"peak torque {_fmt(a.T_peak)} N·m: the flanks yield; limit the peak torque (a "
-        f"torque limiter) or increase the centre distance",
+        f"torque limiter), or " + lever("increase the centre distance"),
         f"σ_Hmax = {a.sigma_Hmax:.1f} MPa <= [σ]_Hmax = {a.allow.sigma_HP_max:.1f} MPa",
-        a.sigma_Hmax, a.allow.sigma_HP_max, S.TEXTBOOK))
+        a.sigma_Hmax, a.allow.sigma_HP_max, S.TEXTBOOK, fix))
     out.append(check(
         "BENDING_STRESS", a.sigma_F <= a.sigma_FP, "error",
         f"σ_F = {a.sigma_F:.1f} MPa > [σ]_F = {a.sigma_FP:.1f} MPa: the wheel teeth break; "
-        f"increase the module (a larger a_w or a smaller q) or use a stronger wheel material",
+        + lever("increase the module (a larger a_w or a smaller q)")
+        + ", or use a stronger wheel material",
         f"σ_F = {a.sigma_F:.1f} MPa <= [σ]_F = {a.sigma_FP:.1f} MPa", a.sigma_F, a.sigma_FP,
-        S.DUNAEV))
+        S.DUNAEV, fix))
     out.append(check(
         "BENDING_STRESS_PEAK", a.sigma_Fmax <= a.allow.sigma_FP_max, "error",
         f"σ_Fmax = {a.sigma_Fmax:.1f} MPa > [σ]_Fmax = {a.allow.sigma_FP_max:.1f} MPa at the "
-        f"peak torque {_fmt(a.T_peak)} N·m: limit the peak torque or increase the module",
+        f"peak torque {_fmt(a.T_peak)} N·m: limit the peak torque, or "
+        + lever("increase the module"),
         f"σ_Fmax = {a.sigma_Fmax:.1f} MPa <= [σ]_Fmax = {a.allow.sigma_FP_max:.1f} MPa",
-        a.sigma_Fmax, a.allow.sigma_FP_max, S.TEXTBOOK))
+        a.sigma_Fmax, a.allow.sigma_FP_max, S.TEXTBOOK, fix))
 
     # -- worm stiffness
     out.append(check(
         "WORM_DEFLECTION", a.f <= a.f_lim, "error",
         f"worm deflection f = {a.f:.4f} mm > f_lim = {_fmt(o.deflection_limit, 4)}·m = "
-        f"{a.f_lim:.4f} mm: the worm bends out of mesh; increase q, shorten the bearing span "
-        f"(l = {_fmt(a.span, 1)} mm) or increase the module",
-        f"worm deflection f = {a.f:.4f} mm <= f_lim = {a.f_lim:.4f} mm", a.f, a.f_lim, S.DUNAEV))
+        f"{a.f_lim:.4f} mm: the worm bends out of mesh; "
+        + lever("increase q or the module")
+        + f", or shorten the bearing span (l = {_fmt(a.span, 1)} mm)",
+        f"worm deflection f = {a.f:.4f} mm <= f_lim = {a.f_lim:.4f} mm", a.f, a.f_lim, S.DUNAEV,
+        fix))
 
     # -- thermal balance
     out.append(check(
@@ -233,7 +253,7 @@ def pair_checks(a: Analysis, w: WheelProps, o: Options, self_locking: str) -> li
         f"oil temperature {a.th.t_oil:.1f} °C > t_lim = {_fmt(o.oil_limit)} °C: add cooling fins "
         f"(a larger thermal.housing_area)"
         + ("" if o.fan else ", a fan on the worm shaft (thermal.fan = true)")
-        + ", a water coil, or a larger centre distance",
+        + ", a water coil, or " + lever("a larger centre distance"),
         f"oil temperature {a.th.t_oil:.1f} °C <= t_lim = {_fmt(o.oil_limit)} °C", a.th.t_oil,
-        o.oil_limit, S.THERMAL))
+        o.oil_limit, S.THERMAL, fix))
     return out

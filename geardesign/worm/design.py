@@ -69,16 +69,13 @@ class Proposal:
     standard: bool   # m and q from the series with |x| <= 1
 
 
-def choose_module(a_w: float, z2: int, q0: float, q_fixed: bool) -> Proposal:
-    """Standard module and diameter factor for the centre distance ``a_w``.
-
-    Every (m, q) of the GOST 19672-74 rows (only q = q0 when ``q_fixed``) with
-    |x| <= 1, x = a_w/m − 0.5 (q + z2), is ranked: first-row m, first-row q, a recommended
-    pair, x within −0.5 ... +0.7, q closest to q0, smallest |x|.  Without any, the module
-    m = 2 a_w/(q0 + z2) with x = 0 is returned as not standard.
-    """
+def ranked_pairs(a_w: float, z2: int, q0: float, q_fixed: bool) -> list[Proposal]:
+    """Every standard (m, q) of the GOST 19672-74 rows (only q = q0 when ``q_fixed``) with
+    |x| <= 1 at the centre distance ``a_w``, x = a_w/m − 0.5 (q + z2), best first: first-row
+    m, first-row q, a recommended pair, x within −0.5 ... +0.7, q closest to q0, smallest
+    |x|."""
     s = tables.series()
-    best = None
+    ranked = []
     for m in s["module_1"] + s["module_2"]:
         for q in ([q0] if q_fixed else s["q_1"] + s["q_2"]):
             x = shift_for_center_distance(a_w, m, q, z2)
@@ -87,8 +84,25 @@ def choose_module(a_w: float, z2: int, q0: float, q_fixed: bool) -> Proposal:
             _, _, rec = is_standard_pair(m, q)
             score = (m not in s["module_1"], q not in s["q_1"], not rec,
                      not PREFERRED_SHIFT[0] <= x <= PREFERRED_SHIFT[1], abs(q - q0), abs(x))
-            if best is None or score < best[0]:
-                best = (score, Proposal(m, q, x, True))
-    if best is None:
+            ranked.append((score, Proposal(m, q, x, True)))
+    ranked.sort(key=lambda r: r[0])
+    return [p for _, p in ranked]
+
+
+def choose_module(a_w: float, z2: int, q0: float, q_fixed: bool) -> Proposal:
+    """Standard module and diameter factor for the centre distance ``a_w``: the best of
+    :func:`ranked_pairs`.  Without any, the module m = 2 a_w/(q0 + z2) with x = 0 is
+    returned as not standard.
+    """
+    ranked = ranked_pairs(a_w, z2, q0, q_fixed)
+    if not ranked:
         return Proposal(2.0 * a_w / (q0 + z2), q0, 0.0, False)
-    return best[1]
+    return ranked[0]
+
+
+def standard_center_distances(start: float) -> list[float]:
+    """The GOST 2144-76 centre distances >= ``start``: the first (preferred) row ascending,
+    then the second row ascending."""
+    s = tables.series()
+    return [v for row in ("center_distance_1", "center_distance_2")
+            for v in sorted(s[row]) if v >= start - 1e-9]

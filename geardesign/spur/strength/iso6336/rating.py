@@ -706,7 +706,8 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
 
     The advice names the face width and the scale of the pair (centre distance, module and
     face width in proportion) that pass, when ``found`` carries them (``{"b": (b_w,
-    b_pitting, b_bending), "k": (a_w, k_pitting, k_bending)}``, found by re-rating); else
+    b_pitting, b_bending), "k": (a_w, k_pitting, k_bending), "face_limit": the largest
+    face width tried as a multiple of b_w}``, found by re-rating); else
     it follows the scaling of the formulas at the present load factors: σ_H ∝ 1/√b and
     ∝ a^(-3/2) at a fixed ratio b/a; σ_F ∝ 1/(b m_n)."""
     found = found or {}
@@ -718,9 +719,24 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
             parts.append(f"increase the centre distance to at least {k * a_w:.1f} mm "
                          f"(+{100 * (k - 1):.0f} %, module and face width in proportion)")
         if "b" in found and found["b"][kind] is not None:
-            b_w, b = found["b"][0], found["b"][kind]
-            parts.append(f"the face width to at least {b:.1f} mm (+{100 * (b / b_w - 1):.0f} %)")
-        return (" or ".join(parts) + " (found by re-rating)") if parts else None
+            from geardesign.spur.checks import face_width_up
+
+            b_w, b = found["b"][0], face_width_up(found["b"][kind])
+            parts.append(f"the face width to at least {b:g} mm (+{100 * (b / b_w - 1):.0f} %)")
+        if not parts:
+            return None
+        text = " or ".join(parts) + " (found by re-rating)"
+        if "b" in found and found["b"][kind] is None:
+            from geardesign.spur.checks import face_width_beyond
+
+            text += "; " + face_width_beyond(found["b"][0], found["face_limit"])
+        return text
+
+    def face_fix(kind: int) -> tuple:
+        from geardesign.spur.checks import face_width_fix
+
+        b = found.get("b")
+        return face_width_fix(b[0], b[kind]) if b else ()
 
     out: list[Check] = []
     S_Hmin, S_Fmin = v["S_Hmin"], v["S_Fmin"]
@@ -737,7 +753,8 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
                f"(module and face width in proportion), or the face width by {_pct(r * r - 1)} "
                f"(at the present load factors)")
             + f", or use a {who} material with σ_Hlim at least {v[f'sigma_Hlim{k}'] * r:.0f} MPa",
-            f"ISO 6336 pitting, {who}: S_H{k} = {S:.2f} >= {S_Hmin:.2f}", S, S_Hmin, S2))
+            f"ISO 6336 pitting, {who}: S_H{k} = {S:.2f} >= {S_Hmin:.2f}", S, S_Hmin, S2,
+            face_fix(1)))
     for k in (1, 2):
         who, up = members[k - 1], members[k - 1].upper()
         key = f"S_Fspec{k}" if spectrum else f"S_F{k}"
@@ -751,7 +768,8 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
             + (by_rerating(2) or f"the face width by {_pct(r - 1)} (at the present load "
                                  f"factors)")
             + f", or use a {who} material with σ_Flim at least {v[f'sigma_Flim{k}'] * r:.0f} MPa",
-            f"ISO 6336 tooth bending, {who}: S_F{k} = {S:.2f} >= {S_Fmin:.2f}", S, S_Fmin, S3))
+            f"ISO 6336 tooth bending, {who}: S_F{k} = {S:.2f} >= {S_Fmin:.2f}", S, S_Fmin, S3,
+            face_fix(2)))
     if peak:
         for kind, sym, need, src in (("PITTING", "S_Hst", S_Hmin, S2), ("BENDING", "S_Fst", S_Fmin, S3)):
             for k in (1, 2):

@@ -38,10 +38,11 @@ def iso_rating(spec) -> "IR.Rating":
 
 def _advice(v: dict, geom, mats, duty, setting, iso) -> dict | None:
     """Face width and scale of the pair that pass pitting and bending, found by re-rating
-    (the load factors change with the size); ``None`` when the rating passes."""
+    (the load factors change with the size), the face width within the proportions of
+    :func:`geardesign.spur.checks.face_advice_limit`; ``None`` when the rating passes."""
     from dataclasses import replace
 
-    from geardesign.spur.checks import least_passing
+    from geardesign.spur.checks import face_advice_limit, least_passing
     from geardesign.spur.geometry import pair_geometry
 
     fails = [kind for kind in ("H", "F") if not IR.passes(v, kind)]
@@ -58,8 +59,10 @@ def _advice(v: dict, geom, mats, duty, setting, iso) -> dict | None:
 
     b = [inp.b_w, None, None]
     k = [geom.a_w, None, None]
+    limit = face_advice_limit(inp.b_w, geom.g1.d_w)
     for i, kind in ((1, "H"), (2, "F")):
         if kind in fails:
-            b[i] = least_passing(rerate, inp.b_w, lambda x, kind=kind: IR.passes(x, kind))
+            b[i] = least_passing(rerate, inp.b_w, lambda x, kind=kind: IR.passes(x, kind),
+                                 limit)
             k[i] = least_passing(rescale, 1.0, lambda x, kind=kind: IR.passes(x, kind), 4.0)
-    return {"b": tuple(b), "k": tuple(k)}
+    return {"b": tuple(b), "k": tuple(k), "face_limit": limit}

@@ -1,0 +1,275 @@
+"""Advice converges and stays practical: every advice that carries a fix is followed as a
+user would (run the command, write the printed values into the spec, run it again) and
+the check then passes; advice stays within the proportions of the standards and handbooks
+(face width within b_w/d_w1 <= 1.6, a key within 1.5·d and its hub) and beyond them names
+the next lever.  Properties over random failing specs for every calculator whose checks
+carry a fix (worm, connection key, planetary)."""
+
+from __future__ import annotations
+
+import copy
+import json
+import math
+import tomllib
+from pathlib import Path
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from geardesign.core.errors import InputError
+from geardesign.core.registry import run_data
+from geardesign.core.result import fix_text
+from geardesign.spur.sweep_io import toml_text
+from tests.helpers_cli import cli
+
+SPECS = Path(__file__).parent.parent / "specs"
+
+
+def _apply(data: dict, fix: dict) -> dict:
+    """The spec with the advised values written in (keys ``table.key``)."""
+    out = copy.deepcopy(data)
+    for key, value in fix.items():
+        table, name = key.split(".")
+        out.setdefault(table, {})[name] = value
+    return out
+
+
+def _run_cli(tmp_path: Path, kind: str, data: dict, name: str = "s.toml"):
+    """Run ``geardesign KIND s.toml -f json`` and return exit code, document, checks."""
+    path = tmp_path / name
+    path.write_text(toml_text(data), encoding="utf-8")
+    code, out, err = cli(kind, path, "-f", "json")
+    assert "Traceback" not in err, err
+    assert code in (0, 1), err
+    doc = json.loads(out)
+    return code, doc, {c["code"]: c for c in doc["checks"]}
+
+
+def _follow(tmp_path: Path, kind: str, data: dict, code: str):
+    """Run the spec, read the advice of check ``code`` as printed, write it into the spec
+    and run again: the printed text names the same values as the fix."""
+    _, _, checks = _run_cli(tmp_path, kind, data)
+    c = checks[code]
+    assert not c["passed"] and "fix" in c, c["message"]
+    assert fix_text(list(c["fix"].items())) in c["message"]
+    after = _apply(data, c["fix"])
+    return c, after, _run_cli(tmp_path, kind, after, "followed.toml")
+
+
+# ------------------------------------------------------------------------- worm
+
+WORM = {
+    "kind": "worm",
+    "gear": {"module": 6.3, "diameter_factor": 10.0, "z1": 2, "z2": 40, "center_distance": 160.0},
+    "load": {"torque2": 700.0, "speed1": 1450.0},
+    "wheel": {"material": "BrO10N1F1_centrifugal"},
+}
+
+
+def test_worm_contact_advice_passes_as_printed_in_one_step(tmp_path):
+    """The advice changes module, diameter factor and centre distance together (a GOST
+    2144-76 / 19672-74 pair): the advised spec is accepted and passes on the next run;
+    the old advice (a_w alone, 168.8 mm → 200 mm with m = 6.3) leaves the shift range."""
+    c, after, (code, _, checks) = _follow(tmp_path, "worm", WORM, "CONTACT_STRESS")
+    assert c["fix"] == {"gear.center_distance": 200.0, "gear.module": 8.0,
+                        "gear.diameter_factor": 10.0}
+    assert checks["CONTACT_STRESS"]["passed"]
+    assert code == 0
+    alone = _apply(WORM, {"gear.center_distance": 200.0})
+    path = tmp_path / "alone.toml"
+    path.write_text(toml_text(alone), encoding="utf-8")
+    assert cli("worm", path, "-f", "json")[0] == 2      # why the advice changes m and q too
+
+
+def test_worm_advice_reconciles_every_failed_check(tmp_path):
+    """Contact, bending and oil temperature fail together: one pair is advised to each and
+    passes all of them."""
+    data = _apply(WORM, {"load.torque2": 2400.0, "gear.module": 5.0, "gear.center_distance":
+                         125.0, "gear.z1": 1})
+    _, _, checks = _run_cli(tmp_path, "worm", data)
+    failed = [c for c in checks.values() if not c["passed"] and c["severity"] == "error"]
+    assert len(failed) >= 2 and len({json.dumps(c["fix"]) for c in failed}) == 1
+    after = _apply(data, failed[0]["fix"])
+    code, _, again = _run_cli(tmp_path, "worm", after, "followed.toml")
+    assert all(again[c["code"]]["passed"] for c in failed)
+
+
+_MODULES = (4.0, 5.0, 6.3, 8.0)
+
+
+@settings(max_examples=25, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(m=st.sampled_from(_MODULES), q=st.sampled_from((8.0, 10.0, 12.5, 16.0)),
+       z1=st.sampled_from((1, 2, 4)), z2=st.integers(30, 64),
+       torque=st.floats(100.0, 6000.0), speed=st.floats(300.0, 3000.0),
+       x=st.floats(-0.5, 0.7), material=st.sampled_from(("BrO10N1F1_centrifugal",
+                                                         "BrO10F1_chill")))
+def test_worm_every_fix_passes_when_followed(m, q, z1, z2, torque, speed, x, material):
+    """Over random failing pairs: each check that carries a fix passes once the fix is
+    written into the spec, and no error check that passed fails."""
+    data = {"kind": "worm", "gear": {"module": m, "diameter_factor": q, "z1": z1, "z2": z2,
+                                     "x": round(x, 4)},
+            "load": {"torque2": torque, "speed1": speed}, "wheel": {"material": material}}
+    _property(data)
+
+
+def _property(data: dict) -> None:
+    doc = run_data(data).document()
+    with_fix = [c for c in doc["checks"] if "fix" in c]
+    if not with_fix:
+        return
+    passed = {c["code"] for c in doc["checks"] if c["passed"] and c["severity"] == "error"}
+    for fix in {json.dumps(c["fix"], sort_keys=True) for c in with_fix}:
+        fix = json.loads(fix)
+        again = {c["code"]: c for c in run_data(_apply(data, fix)).document()["checks"]}
+        for c in with_fix:
+            if c["fix"] == fix:
+                assert again[c["code"]]["passed"], (data, fix, again[c["code"]]["message"])
+        assert all(again[k]["passed"] for k in passed if k in again), (data, fix)
+
+
+# ------------------------------------------------------------------------- spur, ISO 6336
+
+
+def test_iso_face_width_advice_stays_within_the_face_width_ratio(tmp_path):
+    """The ISO-rated template (pinion d = 100 mm) no longer advises a 368.6 mm face: no
+    face width within b_w/d_w1 <= 1.6 passes, and the advice names the centre distance
+    and the material instead."""
+    code, out, _ = cli("template", "spur")
+    assert code == 0
+    text = out.replace('# method = "GOST 21354-87"', 'method = "ISO 6336:2019"')
+    path = tmp_path / "iso.toml"
+    path.write_text(text, encoding="utf-8")
+    code, out, err = cli("spur", path, "-f", "json")
+    assert code == 1, err
+    checks = {c["code"]: c for c in json.loads(out)["checks"]}
+    msg = checks["ISO_PITTING_PINION"]["message"]
+    assert "face width to at least" not in msg
+    assert "no face width within b_w/d_w1 <= 1.6 (up to 160.0 mm) passes" in msg
+    assert "centre distance to at least" in msg and "σ_Hlim at least" in msg
+
+
+# ------------------------------------------------------------------------- connection key
+
+KEY = {"kind": "connection", "load": {"torque": 250.0},
+       "key": {"shaft_diameter": 40.0, "length": 56.0}}
+
+
+def test_key_advice_stays_within_one_and_a_half_diameters(tmp_path):
+    """900 N·m on a 40 mm shaft: a single key would need 156 mm; no key of 140 mm is
+    advised, nor two keys that do not fit, but a spline or an interference fit."""
+    data = _apply(KEY, {"load.torque": 900.0, "key.hub_length": 60.0})
+    code, _, checks = _run_cli(tmp_path, "connection", data)
+    assert code == 1
+    msg = checks["KEY_PRESSURE"]["message"]
+    assert "beyond the 60 mm a key may have (1.5·d = 60 mm, hub 60 mm)" in msg
+    assert "use a spline or an interference fit" in msg
+    assert "use a key of" not in msg and "fix" not in checks["KEY_PRESSURE"]
+
+
+def test_key_advice_passes_as_printed(tmp_path):
+    data = _apply(KEY, {"load.torque": 400.0, "key.hub_length": 80.0})
+    c, _, (code, _, checks) = _follow(tmp_path, "connection", data, "KEY_PRESSURE")
+    assert c["fix"] == {"key.count": 2, "key.length": 50.0}
+    assert code == 0 and checks["KEY_PRESSURE"]["passed"]
+
+
+@settings(max_examples=30, deadline=None)
+@given(torque=st.floats(50.0, 3000.0), d=st.sampled_from((25.0, 32.0, 40.0, 50.0, 63.0)),
+       hub=st.sampled_from((None, 1.0, 1.2, 1.5)), count=st.sampled_from((1, 2)))
+def test_key_every_fix_passes_when_followed(torque, d, hub, count):
+    data = {"kind": "connection", "load": {"torque": torque},
+            "key": {"shaft_diameter": d, "length": math.floor(d), "count": count}}
+    if hub is not None:
+        data["key"]["hub_length"] = hub * d
+    _property(data)
+
+
+# ------------------------------------------------------------------------- planetary
+
+
+def _planetary() -> dict:
+    return tomllib.loads((SPECS / "planetary_2kh_reducer.toml").read_text(encoding="utf-8"))
+
+
+def test_planetary_shift_advice_reconciled_into_one_change(tmp_path):
+    """At a_w = 67.5 mm the planet–ring mesh interferes at both roots: one check advises
+    "increase shift.planet", the other "reduce shift.planet".  Both now carry one change
+    that passes both, and the train passes when it is followed."""
+    data = _planetary()
+    data["train"]["center_distance"] = 67.5
+    code, _, checks = _run_cli(tmp_path, "planetary", data)
+    a, b = checks["PLANET_RING_INTERFERENCE_PLANET"], checks["PLANET_RING_INTERFERENCE_RING"]
+    assert "increase shift.planet" in a["message"] and "reduce shift.planet" in b["message"]
+    assert a["fix"] == b["fix"]
+    assert "one change passes this and the other failed geometry checks together" in \
+        a["message"]
+    after = _apply(data, a["fix"])
+    code, _, again = _run_cli(tmp_path, "planetary", after, "followed.toml")
+    assert again["PLANET_RING_INTERFERENCE_PLANET"]["passed"]
+    assert again["PLANET_RING_INTERFERENCE_RING"]["passed"]
+    assert code == 0
+
+
+@settings(max_examples=12, deadline=None)
+@given(sun=st.sampled_from((12, 15, 18, 21)), planet=st.sampled_from((21, 24, 27, 30)),
+       extra=st.sampled_from((0, -3, 3)), offset=st.floats(-1.5, 2.0))
+def test_planetary_every_fix_passes_when_followed(sun, planet, extra, offset):
+    data = _planetary()
+    ring = sun + 2 * planet + extra
+    data["teeth"] = {"sun": sun, "planet": planet, "ring": ring}
+    data["train"]["center_distance"] = round(1.5 * (sun + planet) + offset, 2)
+    data["efficiency"] = {"model": "given", "external": 0.98, "internal": 0.98}
+    try:
+        run_data(data)
+    except InputError:           # refused input: nothing to advise
+        return
+    _property(data)
+
+
+# ------------------------------------------------------------------------- spur face width
+
+
+def _spur(torque: float, method: str, face: float) -> dict:
+    data = tomllib.loads((SPECS / "spur_reducer_through_hardened.toml").read_text(
+        encoding="utf-8"))
+    data["load"]["torque1"] = torque
+    data["load"]["peak_torque1"] = 2.0 * torque
+    data["gear"]["face_width"] = face
+    data.setdefault("options", {})["method"] = method
+    return data
+
+
+@settings(max_examples=20, deadline=None)
+@given(torque=st.floats(300.0, 2500.0), face=st.floats(20.0, 63.0),
+       method=st.sampled_from(("GOST 21354-87", "ISO 6336:2019")))
+def test_spur_face_width_fix_passes_when_followed(torque, face, method):
+    """The face width advised (rounded up to 0.1 mm as printed) passes the check when
+    written into the spec, and it is never beyond b_w/d_w1 = 1.6."""
+    data = _spur(torque, method, round(face, 1))
+    try:
+        doc = run_data(data).document()
+    except InputError:
+        return
+    for c in doc["checks"]:
+        if "fix" in c:
+            d_w1 = doc["results"]["geometry"]["d_w1"]
+            assert c["fix"]["gear.face_width"] <= 1.6 * d_w1 + 0.1
+            assert f"face width to at least {c['fix']['gear.face_width']:g} mm" in c["message"]
+    _property(data)
+
+
+# ------------------------------------------------------------------------- novikov
+
+
+@settings(max_examples=15, deadline=None)
+@given(face=st.floats(1.0, 8.0))
+def test_novikov_face_width_fix_passes_when_followed(face):
+    """Contact continuity and axial overlap: the advised face width passes when followed."""
+    data = tomllib.loads((SPECS / "novikov_narrow_face.toml").read_text(encoding="utf-8"))
+    data["gear"]["face_width"] = round(face, 3)
+    try:
+        run_data(data)
+    except InputError:
+        return
+    _property(data)
