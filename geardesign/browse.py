@@ -72,6 +72,7 @@ def material_rows(filter_: Optional[str], family: Optional[str]) -> list[dict]:
 MATERIAL_COLUMNS = (("name", "material", ""), ("family", "family", ""),
                     ("treatment", "treatment", ""), ("hardness", "hardness", ""),
                     ("sigma_T", "σ_T", "MPa"), ("sigma_B", "σ_B", "MPa"),
+                    ("sigma_Hlim", "σ_Hlim", "MPa"), ("sigma_Flim", "σ_Flim", "MPa"),
                     ("equivalents", "equivalents", ""), ("source", "source", ""))
 
 
@@ -115,13 +116,12 @@ def _render(rows: list[dict], columns, fmt: str) -> str:
         lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
         lines += ["| " + " | ".join(c.replace("|", "\\|") for c in row) + " |" for row in body]
         return "\n".join(lines) + "\n"
-    widths = [max(len(h), *(len(row[i]) for row in body)) if body else len(h)
-              for i, h in enumerate(head)]
-    fmt_row = "  ".join("{:<%d}" % w for w in widths)
-    lines = [fmt_row.format(*head).rstrip(), "  ".join("─" * w for w in widths)]
-    lines += [fmt_row.format(*row).rstrip() for row in body]
-    lines.append(f"{len(rows)} rows")
-    return "\n".join(lines) + "\n"
+    from geardesign.core.render import grid_text
+
+    numbers = {i for i, (key, _, _) in enumerate(columns)
+               if all(isinstance(r.get(key), (int, float, type(None))) for r in rows)}
+    text = grid_text(head, body, right=numbers, whole={0})
+    return text.strip("\n") + f"\n{len(rows)} rows\n"
 
 
 def _fail(line: str) -> None:
