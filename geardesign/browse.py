@@ -28,6 +28,14 @@ def bearing_rows(filter_: Optional[str], bore: Optional[float], kind: Optional[s
 
     out = []
     k = _key(filter_) if filter_ else ""
+    if k and not any(k in _key(x) for b in CAT.bearings()
+                     for x in (b.designation, b.maker_designation, b.gost) if x):
+        try:      # a written designation: "6208-2RS", "SKF 6208 (GOST 208)"
+            row = CAT.read(filter_).row
+        except ValueError:
+            row = None
+        if row is not None:
+            k = _key(row.designation)
     for b in CAT.bearings():
         if k and not any(k in _key(x) for x in (b.designation, b.maker_designation, b.gost)
                          if x):
