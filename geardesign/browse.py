@@ -12,6 +12,8 @@ from typing import Callable, Optional
 
 import typer
 
+from geardesign import completion as _complete
+
 FORMATS = ("table", "json", "jsonl", "csv", "markdown")
 
 
@@ -161,8 +163,10 @@ def register(app: typer.Typer, choose_format: Callable, finite: Callable) -> Non
             bore: Optional[float] = typer.Option(None, "--bore", min=0.0, callback=finite,
                                                  help="Bore diameter d (mm)."),
             type_: Optional[str] = typer.Option(None, "--type", help="Bearing type, e.g. "
-                                                "tapered_roller."),
-            maker: Optional[str] = typer.Option(None, "--maker", help="SKF, NTN."),
+                                                "tapered_roller.",
+                                                autocompletion=_complete.bearing_types),
+            maker: Optional[str] = typer.Option(None, "--maker", help="SKF, NTN.",
+                                                autocompletion=_complete.bearing_makers),
             format: Optional[str] = typer.Option(None, "--format", "-f",
                                                  help="table, json, jsonl, csv, markdown.")
     ) -> None:
@@ -196,7 +200,8 @@ def register(app: typer.Typer, choose_format: Callable, finite: Callable) -> Non
                                                     help="Part of a name: 42CrMo4, 40Kh, "
                                                          "4140, VG 220, bronze."),
             family: Optional[str] = typer.Option(None, "--family", help="gear_steel, "
-                                                 "worm_wheel, oil."),
+                                                 "worm_wheel, oil.",
+                                                 autocompletion=_complete.material_families),
             format: Optional[str] = typer.Option(None, "--format", "-f",
                                                  help="table, json, jsonl, csv, markdown.")
     ) -> None:
