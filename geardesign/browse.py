@@ -102,7 +102,7 @@ def _cell(v, unit: str = "") -> str:
 
 
 def _render(rows: list[dict], columns, fmt: str) -> str:
-    from geardesign.core.render import csv_cell
+    from geardesign.core.render import BOM, csv_cell
     from geardesign.core.result import clean_value
     from geardesign.core.text import json_text
 
@@ -119,7 +119,7 @@ def _render(rows: list[dict], columns, fmt: str) -> str:
         for r in rows:
             w.writerow({k: csv_cell(_cell(v) if isinstance(v, (list, tuple)) else v)
                         for k, v in r.items()})
-        return buf.getvalue()
+        return BOM + buf.getvalue()
     head = [title + (f" ({unit})" if unit else "") for _, title, unit in columns]
     body = [[_cell(r.get(k), unit) for k, _, unit in columns] for r in rows]
     if fmt == "markdown":

@@ -27,8 +27,11 @@ def test_html_and_csv_reports(tmp_path):
         assert code in (0, 1), err
     html = (tmp_path / "r.html").read_text()
     assert html.startswith("<!DOCTYPE html>") and "</html>" in html
-    rows = list(csv.reader(io.StringIO((tmp_path / "r.csv").read_text())))
-    assert rows[0] == ["spec", "key", "symbol", "name", "value", "unit", "source"]
+    raw = (tmp_path / "r.csv").read_bytes()
+    assert raw.startswith(b"\xef\xbb\xbf")          # UTF-8 with BOM, for spreadsheets
+    rows = list(csv.reader(io.StringIO(raw.decode("utf-8-sig"))))
+    assert rows[0] == ["spec", "key", "symbol", "name", "value", "unit", "source", "status",
+                       "severity", "limit", "message"]
     keys = {r[1]: r for r in rows[1:]}
     assert keys["results.geometry.a_w"][5] == "mm"
     assert any(k.startswith("checks.") for k in keys)

@@ -331,22 +331,40 @@ def to_jsonl(results: list[Result]) -> str:
     return "".join(json_text(r.document()) + "\n" for r in results)
 
 
+CSV_COLUMNS = ("spec", "key", "symbol", "name", "value", "unit", "source", "status",
+               "severity", "limit", "message")
+"""Columns of the CSV report: a quantity fills the first seven, a check all of them."""
+
+BOM = "\ufeff"
+"""The UTF-8 byte order mark that CSV files begin with, so that spreadsheet programs read
+them as UTF-8 (σ_H, min⁻¹, ψ_bd) instead of a local code page."""
+
+
+def _csv_value(value: Any) -> Any:
+    if isinstance(value, dict):
+        return json.dumps(value, allow_nan=False, default=str, ensure_ascii=False)
+    if isinstance(value, (list, tuple)):
+        return json.dumps(value, allow_nan=False, default=str) if all(
+            v is None or isinstance(v, (int, float)) for v in value) else fmt(value)
+    return "" if value is None else value
+
+
 def _csv_rows(r: Result):
+    """The rows of one result: its inputs (``inputs.KEY``; source "assumed" for a default
+    the calculator took), its quantities (``results.SECTION.KEY``), then its checks
+    (``checks.CODE``) with value, limit, status, severity and message in their columns."""
     doc_units = r.document()["units"]
+    for row in r.input_rows:
+        yield (r.source, f"inputs.{row.key}", row.symbol, row.name, _csv_value(row.value),
+               row.unit or "", "assumed" if row.assumed else "given")
     for sec in r.sections:
         for row in sec.rows:
-            value = row.value
-            if isinstance(value, (list, tuple)):
-                value = json.dumps(value, allow_nan=False, default=str) if all(
-                    v is None or isinstance(v, (int, float)) for v in value) else fmt(value)
-            elif value is None:
-                value = ""
             key = f"results.{sec.key}.{row.key}"
-            yield (r.source, key, row.symbol, row.name, value, doc_units.get(key, ""),
-                   row.source)
+            yield (r.source, key, row.symbol, row.name, _csv_value(row.value),
+                   doc_units.get(key, ""), row.source)
     for c in r.checks:
-        yield (r.source, f"checks.{c.code}", c.code, c.severity,
-               "pass" if c.passed else "fail", "", c.message)
+        yield (r.source, f"checks.{c.code}", c.code, "", _csv_value(c.value), "", c.source,
+               "pass" if c.passed else "fail", c.severity, _csv_value(c.limit), c.message)
 
 
 _FORMULA = ("=", "+", "-", "@", "\t", "\r")
@@ -371,19 +389,25 @@ def csv_cell(x: Any) -> Any:
 
 
 def to_csv(results: list[Result]) -> str:
-    """The results flattened for a spreadsheet: one row per quantity (spec, key, symbol,
-    name, value, unit, source), then one row per check (spec, code, code, severity,
-    pass/fail, -, message); numbers at full precision, text cells through
-    :func:`csv_cell`."""
+    """The results flattened for a spreadsheet (:data:`CSV_COLUMNS`): one row per input,
+    per quantity and per check (:func:`_csv_rows`), the results of a drive's stages after
+    it; numbers at full precision, text cells through :func:`csv_cell`; UTF-8 with a byte
+    order mark (:data:`BOM`)."""
     import csv
 
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(("spec", "key", "symbol", "name", "value", "unit", "source"))
-    for r in results:
+    w.writerow(CSV_COLUMNS)
+
+    def write(r: Result) -> None:
         for row in _csv_rows(r):
             w.writerow([csv_cell(x) for x in row])
-    return buf.getvalue()
+        for _, _, part in r.parts:
+            write(part)
+
+    for r in results:
+        write(r)
+    return BOM + buf.getvalue()
 
 
 def to_html(results: list[Result]) -> str:
