@@ -221,9 +221,9 @@ def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quie
     color = to_terminal and not os.environ.get("NO_COLOR")
     width = None
     if to_terminal:
-        import shutil
+        from geardesign.core.render import terminal_width
 
-        width = shutil.get_terminal_size((120, 40)).columns
+        width = terminal_width()
     text = render(results, fmt_name, color=color, width=width)
     code = 2 if problems else max(r.exit_code for r in results)
     if output is not None:
@@ -483,7 +483,10 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
                  f"it with `pip install matplotlib` (the plot extra of geardesign)")
             raise typer.Exit(2)
     to_terminal = output is None and sys.stdout.isatty()
-    text = render([res], fmt_name, color=to_terminal and not os.environ.get("NO_COLOR"))
+    from geardesign.core.render import terminal_width
+
+    text = render([res], fmt_name, color=to_terminal and not os.environ.get("NO_COLOR"),
+                  width=terminal_width() if to_terminal else None)
     if output is not None:
         _write(output, text)
     elif not quiet:

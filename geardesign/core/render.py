@@ -237,13 +237,24 @@ def default_width() -> int:
         return 120
 
 
+def terminal_width() -> int:
+    """The width of a table printed to standard output: the terminal's when it is one (or
+    ``COLUMNS``), else :func:`default_width`."""
+    import shutil
+    import sys
+
+    if sys.stdout.isatty():
+        return max(20, shutil.get_terminal_size((120, 40)).columns)
+    return default_width()
+
+
 def grid_text(heads: list[str], body: list[list[str]], width: int | None = None,
               right: set = frozenset(), whole: set = frozenset()) -> str:
     """Plain cells as :func:`grid` tables, as text without colour or trailing blanks."""
     from rich.console import Console
     from rich.text import Text
 
-    width = default_width() if width is None else width
+    width = terminal_width() if width is None else width
     buf = io.StringIO()
     console = Console(file=buf, force_terminal=False, no_color=True, width=width,
                       highlight=False, emoji=False, soft_wrap=False)
