@@ -203,3 +203,27 @@ def test_csv_is_utf8_with_bom_with_inputs_and_checks_in_their_columns(tmp_path):
 def test_catalogue_csv_lists_begin_with_a_bom():
     code, out, _ = cli("materials", "45", "--format", "csv")
     assert code == 0 and out.startswith("\ufeff")
+
+
+TABLE_SPECS = ("spur_design", "drive_two_stage_reducer", "planetary_3k_high_ratio",
+               "bearing_select", "shaft_reducer_output", "worm_design", "spur_gost_vs_iso")
+
+
+@pytest.mark.parametrize("name", TABLE_SPECS)
+def test_reports_fit_the_width_and_print_data_numbers_whole(name):
+    """The class of the defect: every report, at 60, 80 and 120 columns, stays within the
+    width, cuts no cell, and prints every number of its data tables whole."""
+    from rich.cells import cell_len
+
+    from geardesign.core.registry import load
+    from geardesign.core.render import render
+
+    calc, spec = load(SPECS / f"{name}.toml", None)
+    res = calc.compute(spec)
+    doc = json.loads(render([res], "json"))
+    rows = [r for t in res.tables for r in doc["results"][t.key]]
+    for width in (60, 80, 120):
+        text = render([res], "table", width=width)
+        assert max(cell_len(line) for line in text.splitlines()) <= width
+        assert not CUT.search(text)
+        _numbers_whole(rows, text)
