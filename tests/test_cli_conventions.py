@@ -6,6 +6,7 @@ import csv
 import io
 import json
 import re
+from pathlib import Path
 
 from tests.conftest import SPECS
 from tests.helpers_cli import cli, cli_process, write_spec
@@ -93,17 +94,21 @@ def test_table_to_a_pipe_follows_columns_without_trailing_blanks(monkeypatch):
 
 def test_every_template_runs_as_printed_from_an_empty_folder(tmp_path):
     """A template is a sensible design that passes (or its first comment says why not)."""
+    import os
     import subprocess
     import sys
 
     from geardesign.core import registry
 
+    # this tree's package, not whichever one the interpreter finds from an empty folder
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(
+        [str(Path(__file__).resolve().parent.parent), os.environ.get("PYTHONPATH", "")])}
     for kind in registry.known_kinds():
         text = cli("template", kind)[1]
         path = tmp_path / f"{kind}.toml"
         path.write_text(text)
         r = subprocess.run([sys.executable, "-m", "geardesign", "run", path.name, "--format",
-                            "json"], cwd=tmp_path, capture_output=True, text=True)
+                            "json"], cwd=tmp_path, capture_output=True, text=True, env=env)
         first = text.splitlines()[0]
         assert r.returncode == 0 or "does not pass" in first, (kind, r.returncode, r.stderr)
 
