@@ -12,6 +12,8 @@ from typing import Callable, Optional
 
 import typer
 
+from geardesign import completion as _complete
+
 FORMATS = ("table", "json", "jsonl", "csv", "markdown")
 
 
@@ -28,6 +30,14 @@ def bearing_rows(filter_: Optional[str], bore: Optional[float], kind: Optional[s
 
     out = []
     k = _key(filter_) if filter_ else ""
+    if k and not any(k in _key(x) for b in CAT.bearings()
+                     for x in (b.designation, b.maker_designation, b.gost) if x):
+        try:      # a written designation: "6208-2RS", "SKF 6208 (GOST 208)"
+            row = CAT.read(filter_).row
+        except ValueError:
+            row = None
+        if row is not None:
+            k = _key(row.designation)
     for b in CAT.bearings():
         if k and not any(k in _key(x) for x in (b.designation, b.maker_designation, b.gost)
                          if x):
@@ -72,6 +82,7 @@ def material_rows(filter_: Optional[str], family: Optional[str]) -> list[dict]:
 MATERIAL_COLUMNS = (("name", "material", ""), ("family", "family", ""),
                     ("treatment", "treatment", ""), ("hardness", "hardness", ""),
                     ("sigma_T", "σ_T", "MPa"), ("sigma_B", "σ_B", "MPa"),
+                    ("sigma_Hlim", "σ_Hlim", "MPa"), ("sigma_Flim", "σ_Flim", "MPa"),
                     ("equivalents", "equivalents", ""), ("source", "source", ""))
 
 
@@ -91,7 +102,7 @@ def _cell(v, unit: str = "") -> str:
 
 
 def _render(rows: list[dict], columns, fmt: str) -> str:
-    from geardesign.core.render import csv_cell
+    from geardesign.core.render import BOM, csv_cell
     from geardesign.core.result import clean_value
     from geardesign.core.text import json_text
 
@@ -108,20 +119,19 @@ def _render(rows: list[dict], columns, fmt: str) -> str:
         for r in rows:
             w.writerow({k: csv_cell(_cell(v) if isinstance(v, (list, tuple)) else v)
                         for k, v in r.items()})
-        return buf.getvalue()
+        return BOM + buf.getvalue()
     head = [title + (f" ({unit})" if unit else "") for _, title, unit in columns]
     body = [[_cell(r.get(k), unit) for k, _, unit in columns] for r in rows]
     if fmt == "markdown":
         lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
         lines += ["| " + " | ".join(c.replace("|", "\\|") for c in row) + " |" for row in body]
         return "\n".join(lines) + "\n"
-    widths = [max(len(h), *(len(row[i]) for row in body)) if body else len(h)
-              for i, h in enumerate(head)]
-    fmt_row = "  ".join("{:<%d}" % w for w in widths)
-    lines = [fmt_row.format(*head).rstrip(), "  ".join("─" * w for w in widths)]
-    lines += [fmt_row.format(*row).rstrip() for row in body]
-    lines.append(f"{len(rows)} rows")
-    return "\n".join(lines) + "\n"
+    from geardesign.core.render import grid_text
+
+    numbers = {i for i, (key, _, _) in enumerate(columns)
+               if all(isinstance(r.get(key), (int, float, type(None))) for r in rows)}
+    text = grid_text(head, body, right=numbers, whole={0})
+    return text.strip("\n") + f"\n{len(rows)} rows\n"
 
 
 def _fail(line: str) -> None:
@@ -153,8 +163,10 @@ def register(app: typer.Typer, choose_format: Callable, finite: Callable) -> Non
             bore: Optional[float] = typer.Option(None, "--bore", min=0.0, callback=finite,
                                                  help="Bore diameter d (mm)."),
             type_: Optional[str] = typer.Option(None, "--type", help="Bearing type, e.g. "
-                                                "tapered_roller."),
-            maker: Optional[str] = typer.Option(None, "--maker", help="SKF, NTN."),
+                                                "tapered_roller.",
+                                                autocompletion=_complete.bearing_types),
+            maker: Optional[str] = typer.Option(None, "--maker", help="SKF, NTN.",
+                                                autocompletion=_complete.bearing_makers),
             format: Optional[str] = typer.Option(None, "--format", "-f",
                                                  help="table, json, jsonl, csv, markdown.")
     ) -> None:
@@ -188,7 +200,8 @@ def register(app: typer.Typer, choose_format: Callable, finite: Callable) -> Non
                                                     help="Part of a name: 42CrMo4, 40Kh, "
                                                          "4140, VG 220, bronze."),
             family: Optional[str] = typer.Option(None, "--family", help="gear_steel, "
-                                                 "worm_wheel, oil."),
+                                                 "worm_wheel, oil.",
+                                                 autocompletion=_complete.material_families),
             format: Optional[str] = typer.Option(None, "--format", "-f",
                                                  help="table, json, jsonl, csv, markdown.")
     ) -> None:

@@ -22,6 +22,7 @@ from typing import List, Optional
 import typer
 
 from geardesign import __version__
+from geardesign import completion as _complete
 from geardesign.core import registry
 from geardesign.core.errors import InputError, Problem
 from geardesign.testing import ATOL, RTOL
@@ -220,9 +221,9 @@ def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quie
     color = to_terminal and not os.environ.get("NO_COLOR")
     width = None
     if to_terminal:
-        import shutil
+        from geardesign.core.render import terminal_width
 
-        width = shutil.get_terminal_size((120, 40)).columns
+        width = terminal_width()
     text = render(results, fmt_name, color=color, width=width)
     code = 2 if problems else max(r.exit_code for r in results)
     if output is not None:
@@ -235,7 +236,8 @@ def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quie
     raise typer.Exit(code)
 
 
-OPT_FORMAT = typer.Option(None, "--format", "-f", help=FORMAT_HELP, case_sensitive=False)
+OPT_FORMAT = typer.Option(None, "--format", "-f", help=FORMAT_HELP, case_sensitive=False,
+                          autocompletion=_complete.formats)
 OPT_OUTPUT = typer.Option(None, "--output", "-o", help="Write the report to FILE (atomically).")
 OPT_QUIET = typer.Option(False, "--quiet", "-q",
                          help="No report on stdout and no notes on stderr; the exit code tells "
@@ -343,7 +345,8 @@ def _calculator(kind: str) -> registry.Calculator:
 
 
 @app.command("template")
-def template_cmd(kind: str = typer.Argument(..., help="Calculator kind, e.g. spur.")) -> None:
+def template_cmd(kind: str = typer.Argument(..., help="Calculator kind, e.g. spur.",
+                                            autocompletion=_complete.kinds)) -> None:
     """Print a complete commented example spec."""
     from geardesign.core.spec import template
 
@@ -351,7 +354,8 @@ def template_cmd(kind: str = typer.Argument(..., help="Calculator kind, e.g. spu
 
 
 @app.command("schema")
-def schema_cmd(kind: str = typer.Argument(..., help="Calculator kind, e.g. spur.")) -> None:
+def schema_cmd(kind: str = typer.Argument(..., help="Calculator kind, e.g. spur.",
+                                          autocompletion=_complete.kinds)) -> None:
     """Print the JSON Schema of a calculator's spec (units in the descriptions)."""
     from geardesign.core.spec import json_schema
 
@@ -364,7 +368,8 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
                                                     "table.", show_default=False),
               vary: List[str] = typer.Option([], "--vary", help="Vary a key: "
                                              "KEY=FROM:TO:STEP or KEY=V1,V2,... (repeatable; "
-                                             "adds to or replaces [sweep])."),
+                                             "adds to or replaces [sweep]).",
+                                             autocompletion=_complete.vary_keys),
               samples: Optional[int] = typer.Option(None, "--samples", help="Evaluate a "
                                                     "scrambled Sobol sample of N candidates "
                                                     "instead of the full grid."),
@@ -478,7 +483,10 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
                  f"it with `pip install matplotlib` (the plot extra of geardesign)")
             raise typer.Exit(2)
     to_terminal = output is None and sys.stdout.isatty()
-    text = render([res], fmt_name, color=to_terminal and not os.environ.get("NO_COLOR"))
+    from geardesign.core.render import terminal_width
+
+    text = render([res], fmt_name, color=to_terminal and not os.environ.get("NO_COLOR"),
+                  width=terminal_width() if to_terminal else None)
     if output is not None:
         _write(output, text)
     elif not quiet:

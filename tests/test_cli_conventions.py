@@ -6,6 +6,7 @@ import csv
 import io
 import json
 import re
+from pathlib import Path
 
 from tests.conftest import SPECS
 from tests.helpers_cli import cli, cli_process, write_spec
@@ -27,8 +28,11 @@ def test_html_and_csv_reports(tmp_path):
         assert code in (0, 1), err
     html = (tmp_path / "r.html").read_text()
     assert html.startswith("<!DOCTYPE html>") and "</html>" in html
-    rows = list(csv.reader(io.StringIO((tmp_path / "r.csv").read_text())))
-    assert rows[0] == ["spec", "key", "symbol", "name", "value", "unit", "source"]
+    raw = (tmp_path / "r.csv").read_bytes()
+    assert raw.startswith(b"\xef\xbb\xbf")          # UTF-8 with BOM, for spreadsheets
+    rows = list(csv.reader(io.StringIO(raw.decode("utf-8-sig"))))
+    assert rows[0] == ["spec", "key", "symbol", "name", "value", "unit", "source", "status",
+                       "severity", "limit", "message"]
     keys = {r[1]: r for r in rows[1:]}
     assert keys["results.geometry.a_w"][5] == "mm"
     assert any(k.startswith("checks.") for k in keys)
@@ -90,17 +94,21 @@ def test_table_to_a_pipe_follows_columns_without_trailing_blanks(monkeypatch):
 
 def test_every_template_runs_as_printed_from_an_empty_folder(tmp_path):
     """A template is a sensible design that passes (or its first comment says why not)."""
+    import os
     import subprocess
     import sys
 
     from geardesign.core import registry
 
+    # this tree's package, not whichever one the interpreter finds from an empty folder
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(
+        [str(Path(__file__).resolve().parent.parent), os.environ.get("PYTHONPATH", "")])}
     for kind in registry.known_kinds():
         text = cli("template", kind)[1]
         path = tmp_path / f"{kind}.toml"
         path.write_text(text)
         r = subprocess.run([sys.executable, "-m", "geardesign", "run", path.name, "--format",
-                            "json"], cwd=tmp_path, capture_output=True, text=True)
+                            "json"], cwd=tmp_path, capture_output=True, text=True, env=env)
         first = text.splitlines()[0]
         assert r.returncode == 0 or "does not pass" in first, (kind, r.returncode, r.stderr)
 

@@ -78,7 +78,7 @@ def test_dataset_holds_every_candidate_and_the_front_is_right(tmp_path):
     spec = write_spec(tmp_path, SMALL)
     code, doc, err = _json(spec, "--data", tmp_path / "c.csv")
     assert code == 0, err
-    with open(tmp_path / "c.csv", newline="") as fh:
+    with open(tmp_path / "c.csv", newline="", encoding="utf-8-sig") as fh:   # BOM
         rows = list(csv.DictReader(fh))
     assert len(rows) == 2 * 4 * 3
     feas = [(float(r["mass"]), float(r["margin"]), int(float(r["index"]))) for r in rows

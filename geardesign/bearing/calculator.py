@@ -54,11 +54,13 @@ def resolve_bearing(spec: ValidatedSpec) -> tuple[Bearing, dict]:
                             + ", ".join(f'"{m}"' for m in CAT.makers()))
     if b["designation"] is not None:
         try:
-            row = CAT.find(b["designation"], b["maker"])
-        except CAT.AmbiguousDesignation as exc:
+            reading = CAT.read(b["designation"], b["maker"])
+        except ValueError as exc:    # an ambiguous designation, or two makers named
             raise InputError.at("bearing.designation", b["designation"], str(exc)) from None
+        row = reading.row
+        info["reading"] = reading.note
         if row is None:
-            other = CAT.find(b["designation"]) if b["maker"] is not None else None
+            other = CAT.read(b["designation"]).row if b["maker"] is not None else None
             if other is not None:
                 raise InputError.at("bearing.designation", b["designation"],
                                     f"not in the {b['maker']} tables of the built-in catalogue; "
@@ -639,6 +641,9 @@ def _common_checks(spec: ValidatedSpec, info: dict) -> list[Check]:
                          f"t = {t:g} °C > {T.HOT:g} °C: the bearing steel needs dimensional "
                          f"stabilisation for this temperature (ask the manufacturer)", "", t,
                          T.HOT, S.RU_PRACTICE))
+    if info.get("reading"):
+        out.append(check("DESIGNATION_READ", True, "info", "", info["reading"], None, None,
+                         S.CATALOGUE))
     if info.get("note"):
         out.append(check("CATALOGUE_DATA", False, "warning",
                          f"catalogue row {info['catalogue'].designation}: {info['note']}; check "

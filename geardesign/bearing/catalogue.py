@@ -119,6 +119,109 @@ def _pick(rows: list, maker: str | None) -> CatalogueBearing | None:
     return next((b for b in rows if b.maker == DEFAULT_MAKER), rows[0])
 
 
+SUFFIXES = {
+    # suffix (spaces, hyphens and "/" removed, upper case): what it means.  Seals and shields
+    # of deep groove and other ball bearings ([SKF6000] designation system; NTN LLU/LLB/ZZ,
+    # NSK DDU/VV), the radial internal clearance groups (ISO 5753-1) and the snap ring groove.
+    "2RS1": "contact seals on both sides", "2RSH": "contact seals on both sides",
+    "2RSL": "low-friction seals on both sides", "2RS2": "contact seals on both sides",
+    "2RS": "contact seals on both sides", "RS1": "a contact seal on one side",
+    "RSH": "a contact seal on one side", "RSL": "a low-friction seal on one side",
+    "RS": "a contact seal on one side", "2RZ": "non-contact seals on both sides",
+    "RZ": "a non-contact seal on one side", "2Z": "shields on both sides",
+    "ZZ": "shields on both sides", "Z": "a shield on one side",
+    "2RSR": "contact seals on both sides", "RSR": "a contact seal on one side",
+    "2ZR": "shields on both sides", "ZR": "a shield on one side",
+    "LLU": "contact seals on both sides", "LLB": "non-contact seals on both sides",
+    "LLH": "low-friction seals on both sides", "LU": "a contact seal on one side",
+    "DDU": "contact seals on both sides", "DU": "a contact seal on one side",
+    "VV": "non-contact seals on both sides", "2RU": "contact seals on both sides",
+    "NR": "a snap ring groove with its snap ring", "N": "a snap ring groove",
+    "C2": "radial internal clearance C2", "CN": "normal radial internal clearance",
+    "C3": "radial internal clearance C3", "C4": "radial internal clearance C4",
+    "C5": "radial internal clearance C5",
+}
+"""Suffixes of a designation that name a variant of the same catalogue row: the same
+dimensions and load ratings (a sealed or shielded bearing has a lower limiting speed, and
+its grease fill replaces the oil of the lubrication factors)."""
+
+MAKER_PREFIXES = ("SKF", "NTN", "FAG", "INA", "NSK", "KOYO", "TIMKEN", "NACHI", "ZKL", "SNR",
+                  "GPZ")
+"""Makers' names a designation may start with (``SKF 6208``, as the report prints it)."""
+
+
+@dataclass(frozen=True)
+class Reading:
+    """How a written designation was read: the catalogue row, the maker named in it (or
+    None) and a sentence saying which variant was read as which row ("" when the text is
+    the row's own designation)."""
+    row: CatalogueBearing | None
+    maker: str | None
+    note: str
+
+
+def _suffixes(rest: str) -> list[str] | None:
+    """``rest`` split into known :data:`SUFFIXES` (longest first), or None."""
+    out = []
+    while rest:
+        hit = next((x for x in sorted(SUFFIXES, key=len, reverse=True) if rest.startswith(x)),
+                   None)
+        if hit is None:
+            return None
+        out.append(hit)
+        rest = rest[len(hit):]
+    return out
+
+
+def read(designation: str, maker: str | None = None) -> Reading:
+    """A designation as written on a drawing, a catalogue page or this tool's report,
+    read as a catalogue row: a maker's name in front (``SKF 6208``), a GOST name in
+    brackets behind (``SKF 6208 (GOST 208)``) and suffixes of seals, shields, clearance or
+    snap ring (``6208-2RS1``, ``6208-2Z``, ``6208 ZZ``, ``6208-2RS1/C3``,
+    :data:`SUFFIXES`) are read off; the rest is looked up by :func:`find`.  A maker named
+    in the text and another in ``maker`` is an ambiguity (ValueError)."""
+    import re
+
+    text = re.sub(r"\(\s*GOST[^)]*\)\s*$", "", designation.strip(), flags=re.I).strip()
+    named = None
+    head = text.split(None, 1)
+    if len(head) == 2 and head[0].upper() in MAKER_PREFIXES:
+        named, text = head[0].upper(), head[1]
+    notes = []
+    use_maker = maker
+    if named is not None:
+        known = {m.upper(): m for m in makers()}
+        if maker is not None and maker.upper() != named:
+            raise ValueError(f"names the maker {named}, while bearing.maker = \"{maker}\"; "
+                             f"give one")
+        if named in known:
+            use_maker = known[named]
+        else:
+            notes.append(f"{named} is not in the built-in catalogue: the ISO dimensions are "
+                         f"those of {named}'s bearing, the ratings those of the catalogue row")
+    row = find(text, use_maker)
+    if row is None:
+        iso, _ = _index()
+        k = "".join(text.split()).replace("-", "").replace("/", "").upper()
+        for n in range(len(k) - 1, 2, -1):
+            if k[:n] in iso:
+                parts = _suffixes(k[n:])
+                if parts is not None:
+                    row = _pick(iso[k[:n]], use_maker)
+                    if row is not None:
+                        sealed = any(not x.startswith("C") and x not in ("N", "NR")
+                                     for x in parts)
+                        notes.insert(0, f"\"{designation.strip()}\" read as the catalogue "
+                                        f"row {row.maker} {row.designation}: "
+                                        + ", ".join(f"{x} = {SUFFIXES[x]}" for x in parts)
+                                        + "; the same dimensions and load ratings"
+                                        + (" (a sealed or shielded bearing has a lower "
+                                           "limiting speed: see the maker's table)"
+                                           if sealed else ""))
+                    break
+    return Reading(row, named, "; ".join(notes))
+
+
 def find(designation: str, maker: str | None = None) -> CatalogueBearing | None:
     """The bearing with this ISO, maker's or GOST designation (case, spaces and hyphens
     ignored), of ``maker`` (default SKF, else the first maker listing it), or None.

@@ -7,6 +7,7 @@ import io
 import json
 import math
 import os
+import textwrap
 from typing import Any
 
 from geardesign import __version__
@@ -134,18 +135,145 @@ def to_markdown(results: list[Result], level: int = 1) -> str:
 # --------------------------------------------------------------------------- table
 
 
+GAP = 3
+"""Characters between two columns of a rich table without edges (padding and divider)."""
+
+
+def _longest_word(text: str) -> int:
+    from rich.cells import cell_len
+
+    return max((cell_len(w) for w in text.split()), default=0)
+
+
+def fit_widths(mins: list[int], maxs: list[int], room: int) -> list[int]:
+    """Widths of columns that together take at most ``room`` characters: each column its
+    natural width ``maxs[i]`` when that fits, else the widest columns narrowed first, never
+    below ``mins[i]`` (the longest word of the column: a number is never cut or folded)."""
+    widths = list(maxs)
+    while sum(widths) > room:
+        wide = [i for i, w in enumerate(widths) if w > mins[i]]
+        if not wide:
+            break
+        top = max(widths[i] for i in wide)
+        tops = [i for i in wide if widths[i] == top]
+        rest = [widths[i] for i in wide if widths[i] < top]
+        floor = max([max(mins[i] for i in tops), *rest, 1])
+        over = sum(widths) - room
+        cut = min(top - floor, -(-over // len(tops)))
+        for i in tops:
+            widths[i] = max(mins[i], widths[i] - max(cut, 1))
+    return widths
+
+
+def column_groups(mins: list[int], width: int, keep: int = 1) -> list[list[int]]:
+    """The columns split into groups that each fit ``width`` characters at their least
+    widths ``mins`` (wrapping text, never cutting a word or a number); the first ``keep``
+    columns (the row's name, e.g. the rank) repeat in every group."""
+    n = len(mins)
+    keep = min(keep, n)
+    head = list(range(keep))
+    groups: list[list[int]] = []
+    cur = list(head)
+    used = sum(mins[i] for i in head) + GAP * max(0, keep - 1)
+    for i in range(keep, n):
+        need = mins[i] + (GAP if cur else 0)
+        if len(cur) > keep and used + need > width:
+            groups.append(cur)
+            cur = list(head)
+            used = sum(mins[j] for j in head) + GAP * max(0, keep - 1)
+            need = mins[i] + (GAP if cur else 0)
+        cur.append(i)
+        used += need
+    groups.append(cur)
+    return groups
+
+
+def grid(title, heads: list[str], body: list[list], width: int, right: set = frozenset(),
+         whole: set = frozenset(), keep: int = 1) -> list:
+    """A table as one or more rich tables of at most ``width`` characters.  Every column
+    gets a fixed width (:func:`fit_widths`): text wraps at spaces, a word or a number is
+    never cut (no ellipsis, no fold); when even the least widths do not fit, the columns
+    are split into groups (:func:`column_groups`) that repeat the first column.  Columns
+    in ``whole`` are never wrapped; ``right`` are right-aligned.  Cells are rich ``Text``."""
+    from rich import box
+    from rich.table import Table
+    from rich.text import Text
+
+    n = len(heads)
+    mins, maxs = [], []
+    for i in range(n):
+        cells = [row[i] for row in body]
+        longest = max((c.cell_len for c in cells), default=0)
+        word = max((_longest_word(c.plain) for c in cells), default=0)
+        least = longest if i in whole else word
+        mins.append(max(least, _longest_word(heads[i]), 1))
+        maxs.append(max(longest, len(heads[i]), mins[-1]))
+    tables = []
+    groups = column_groups(mins, width, keep)
+    for g, cols in enumerate(groups):
+        room = width - GAP * (len(cols) - 1)
+        widths = fit_widths([mins[i] for i in cols], [maxs[i] for i in cols], room)
+        name = title.copy() if isinstance(title, Text) else Text(str(title))
+        if g:
+            name.append(f"{' ' if name.plain else ''}(continued, {g + 1} of {len(groups)})")
+        tab = Table(title=name, title_justify="left", title_style="bold", box=box.SIMPLE_HEAD,
+                    show_edge=False, pad_edge=False)
+        for i, w in zip(cols, widths):
+            head = "\n".join(textwrap.wrap(heads[i], w, break_long_words=False)) or heads[i]
+            tab.add_column(Text(head), width=w, no_wrap=i in whole,
+                           justify="right" if i in right else "left", overflow="fold")
+        for row in body:
+            tab.add_row(*(row[i] for i in cols))
+        tables.append(tab)
+    return tables
+
+
+def default_width() -> int:
+    """The width of a table written to a pipe or a file: the ``COLUMNS`` of the
+    environment (60 to 1000), else 120."""
+    try:
+        return max(60, min(int(os.environ.get("COLUMNS", "120")), 1000))
+    except ValueError:
+        return 120
+
+
+def terminal_width() -> int:
+    """The width of a table printed to standard output: the terminal's when it is one (or
+    ``COLUMNS``), else :func:`default_width`."""
+    import shutil
+    import sys
+
+    if sys.stdout.isatty():
+        return max(20, shutil.get_terminal_size((120, 40)).columns)
+    return default_width()
+
+
+def grid_text(heads: list[str], body: list[list[str]], width: int | None = None,
+              right: set = frozenset(), whole: set = frozenset()) -> str:
+    """Plain cells as :func:`grid` tables, as text without colour or trailing blanks."""
+    from rich.console import Console
+    from rich.text import Text
+
+    width = terminal_width() if width is None else width
+    buf = io.StringIO()
+    console = Console(file=buf, force_terminal=False, no_color=True, width=width,
+                      highlight=False, emoji=False, soft_wrap=False)
+    cells = [[Text(escape_controls(c)) for c in row] for row in body]
+    for i, tab in enumerate(grid(Text(""), heads, cells, width, right=right, whole=whole)):
+        if i:
+            console.print()
+        console.print(tab)
+    return "\n".join(line.rstrip() for line in buf.getvalue().split("\n"))
+
+
 def to_table(results: list[Result], color: bool, width: int | None = None) -> str:
     """Rich tables; ``color`` only on a terminal."""
-    from rich import box
     from rich.console import Console
     from rich.table import Table
     from rich.text import Text
 
-    if width is None:   # a pipe or a file: the COLUMNS of the environment, else 120
-        try:
-            width = max(60, min(int(os.environ.get("COLUMNS", "120")), 1000))
-        except ValueError:
-            width = 120
+    if width is None:
+        width = default_width()
 
     def _t(text: Any, style: str = "") -> Text:
         """Text as it is (no markup), control characters escaped."""
@@ -155,51 +283,43 @@ def to_table(results: list[Result], color: bool, width: int | None = None) -> st
     console = Console(file=buf, force_terminal=color, no_color=not color, width=width,
                       highlight=False, emoji=False, soft_wrap=False)
 
-    def rows_table(title: str, rows: list[Row], with_source: bool) -> Table:
-        t = Table(title=_t(title), title_justify="left", title_style="bold",
-                  box=box.SIMPLE_HEAD, show_edge=False, pad_edge=False)
-        t.add_column("symbol", no_wrap=True)
-        t.add_column("name")
-        t.add_column("value", justify="right", overflow="fold", max_width=40)
-        t.add_column("unit", no_wrap=True)
-        t.add_column("source" if with_source else "", style="dim")
+    def rows_table(title: str, rows: list[Row], with_source: bool) -> list[Table]:
+        body = []
         for row in rows:
             note = row.source if with_source else ("assumed" if row.assumed else "")
             value = fmt(row.value) + ("*" if row.assumed else "")
-            t.add_row(_t(row.symbol), _t(row.name), _t(value), _t(row.unit or ""), _t(note))
-        return t
+            body.append([_t(row.symbol), _t(row.name), _t(value), _t(row.unit or ""),
+                         _t(note, "dim")])
+        heads = ["symbol", "name", "value", "unit", "source" if with_source else ""]
+        return grid(_t(title), heads, body, width, right={2}, whole={0, 3})
 
-    def data_table(t) -> Table:
-        tab = Table(title=_t(t.title), title_justify="left", title_style="bold",
-                    box=box.SIMPLE_HEAD, show_edge=False, pad_edge=False)
-        for _, head, unit in t.columns:
-            tab.add_column(_t(head + (f" [{unit}]" if unit not in (None, "-") else "")))
-        for row in t.rows:
-            tab.add_row(*(_t(fmt(row.get(k))) for k, _, _ in t.columns))
-        return tab
+    def data_table(t) -> list[Table]:
+        heads = [head + (f" [{unit}]" if unit not in (None, "-") else "")
+                 for _, head, unit in t.columns]
+        body = [[_t(fmt(row.get(k))) for k, _, _ in t.columns] for row in t.rows]
+        return grid(_t(t.title), heads, body, width)
 
     def one(r: Result) -> None:
         console.print(Text(_header(r), style="bold"))
         console.print(_t("Methods: " + ", ".join(r.methods)))
         console.print()
+        def show(tables: list[Table]) -> None:
+            for tab in tables:
+                console.print(tab)
+                console.print()
+
         for t in r.tables:
-            console.print(data_table(t))
-            console.print()
+            show(data_table(t))
         for sec in r.sections:
-            console.print(rows_table(sec.title, sec.rows, with_source=True))
-            console.print()
-        console.print(rows_table("Inputs  (* assumed default)", r.input_rows, with_source=False))
-        console.print()
-        t = Table(title="Checks", title_justify="left", title_style="bold", box=box.SIMPLE_HEAD,
-                  show_edge=False, pad_edge=False)
-        t.add_column("", no_wrap=True)
-        t.add_column("code", no_wrap=True)
-        t.add_column("message")
+            show(rows_table(sec.title, sec.rows, with_source=True))
+        show(rows_table("Inputs  (* assumed default)", r.input_rows, with_source=False))
+        body = []
         for c in r.checks:
             mark, word, style = _status(c)
-            t.add_row(Text(f"{mark} {word}", style=style), _t(c.code, style),
-                      _t(c.message))
-        console.print(t)
+            body.append([Text(f"{mark} {word}", style=style), _t(c.code, style),
+                         _t(c.message)])
+        for tab in grid(Text("Checks"), ["", "code", "message"], body, width, whole={0, 1}):
+            console.print(tab)
         style = "bold red" if r.failed else "bold green"
         console.print(Text(verdict_line(r), style=style))
         for _, title, part in r.parts:
@@ -222,22 +342,40 @@ def to_jsonl(results: list[Result]) -> str:
     return "".join(json_text(r.document()) + "\n" for r in results)
 
 
+CSV_COLUMNS = ("spec", "key", "symbol", "name", "value", "unit", "source", "status",
+               "severity", "limit", "message")
+"""Columns of the CSV report: a quantity fills the first seven, a check all of them."""
+
+BOM = "\ufeff"
+"""The UTF-8 byte order mark that CSV files begin with, so that spreadsheet programs read
+them as UTF-8 (σ_H, min⁻¹, ψ_bd) instead of a local code page."""
+
+
+def _csv_value(value: Any) -> Any:
+    if isinstance(value, dict):
+        return json.dumps(value, allow_nan=False, default=str, ensure_ascii=False)
+    if isinstance(value, (list, tuple)):
+        return json.dumps(value, allow_nan=False, default=str) if all(
+            v is None or isinstance(v, (int, float)) for v in value) else fmt(value)
+    return "" if value is None else value
+
+
 def _csv_rows(r: Result):
+    """The rows of one result: its inputs (``inputs.KEY``; source "assumed" for a default
+    the calculator took), its quantities (``results.SECTION.KEY``), then its checks
+    (``checks.CODE``) with value, limit, status, severity and message in their columns."""
     doc_units = r.document()["units"]
+    for row in r.input_rows:
+        yield (r.source, f"inputs.{row.key}", row.symbol, row.name, _csv_value(row.value),
+               row.unit or "", "assumed" if row.assumed else "given")
     for sec in r.sections:
         for row in sec.rows:
-            value = row.value
-            if isinstance(value, (list, tuple)):
-                value = json.dumps(value, allow_nan=False, default=str) if all(
-                    v is None or isinstance(v, (int, float)) for v in value) else fmt(value)
-            elif value is None:
-                value = ""
             key = f"results.{sec.key}.{row.key}"
-            yield (r.source, key, row.symbol, row.name, value, doc_units.get(key, ""),
-                   row.source)
+            yield (r.source, key, row.symbol, row.name, _csv_value(row.value),
+                   doc_units.get(key, ""), row.source)
     for c in r.checks:
-        yield (r.source, f"checks.{c.code}", c.code, c.severity,
-               "pass" if c.passed else "fail", "", c.message)
+        yield (r.source, f"checks.{c.code}", c.code, "", _csv_value(c.value), "", c.source,
+               "pass" if c.passed else "fail", c.severity, _csv_value(c.limit), c.message)
 
 
 _FORMULA = ("=", "+", "-", "@", "\t", "\r")
@@ -262,19 +400,25 @@ def csv_cell(x: Any) -> Any:
 
 
 def to_csv(results: list[Result]) -> str:
-    """The results flattened for a spreadsheet: one row per quantity (spec, key, symbol,
-    name, value, unit, source), then one row per check (spec, code, code, severity,
-    pass/fail, -, message); numbers at full precision, text cells through
-    :func:`csv_cell`."""
+    """The results flattened for a spreadsheet (:data:`CSV_COLUMNS`): one row per input,
+    per quantity and per check (:func:`_csv_rows`), the results of a drive's stages after
+    it; numbers at full precision, text cells through :func:`csv_cell`; UTF-8 with a byte
+    order mark (:data:`BOM`)."""
     import csv
 
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(("spec", "key", "symbol", "name", "value", "unit", "source"))
-    for r in results:
+    w.writerow(CSV_COLUMNS)
+
+    def write(r: Result) -> None:
         for row in _csv_rows(r):
             w.writerow([csv_cell(x) for x in row])
-    return buf.getvalue()
+        for _, _, part in r.parts:
+            write(part)
+
+    for r in results:
+        write(r)
+    return BOM + buf.getvalue()
 
 
 def to_html(results: list[Result]) -> str:

@@ -631,6 +631,8 @@ def template(schema: SpecSchema) -> str:
     """A complete, commented example spec that validates as it is."""
     lines = [
         f"# geardesign {schema.kind} spec: {schema.description}",
+        *([f"# This example: {schema.title_example} (geardesign run FILE computes it)"]
+          if schema.title_example else []),
         "# Units are fixed per quantity (mm, deg, N, N·m, MPa, min^-1, kW, h).",
         "# Keys shown commented out take the default given; uncomment to change them.",
     ]

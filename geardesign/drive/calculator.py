@@ -244,6 +244,17 @@ def compute(spec: ValidatedSpec) -> Result:
             f"output speed {out.n_out:.2f} min⁻¹ within ±{load['speed_tolerance']:g} % of "
             f"{load['speed']:g} min⁻¹ ({dev:+.2f} %)", dev, load["speed_tolerance"], "drive"))
 
+    if split is not None and split["ratio"] is not None:
+        want, tol = split["ratio"], load["speed_tolerance"]
+        dev = (u - want) / want * 100.0
+        res.checks.append(check(
+            "OVERALL_RATIO", abs(dev) <= tol, "error",
+            f"the stages give u = {u:.4g}, {dev:+.1f} % off split.ratio = {want:g} (tolerance "
+            f"±{tol:g} %, load.speed_tolerance): give the stages the proposed ratios of the "
+            f"split table, or correct split.ratio",
+            f"the stages give u = {u:.4g} within ±{tol:g} % of split.ratio = {want:g} "
+            f"({dev:+.2f} %)", dev, tol, "drive"))
+
     if thermal is not None:
         LUB.report(res, thermal, stages)
         LUB.scuffing_checks(res, thermal, stages, scuff)

@@ -152,7 +152,8 @@ def _scuffing_table() -> Table:
                                           if getattr(f, "key", None) not in ("meshes",
                                                                              "driving")),
                    description="scuffing of every mesh by the integral temperature method "
-                               "(ISO/TS 6336-21; needs method = \"ISO 6336:2019\")")
+                               "(ISO/TS 6336-21; needs method = \"ISO 6336:2019\")",
+                   in_template=False)
 
 
 STRENGTH = Table("strength", "strength to GOST 21354-87 or ISO 6336:2019 (with [material] and a torque)", (
@@ -190,8 +191,17 @@ def _optional(table: Table) -> Table:
     return replace(table, required=False)
 
 
+def _hardness(table: Table, hb: float) -> Table:
+    """``table`` with ``hb`` as the template's hardness: the sun harder than the planet and
+    the planet harder than the ring, as soft pairs run in best (the template passes without
+    warnings)."""
+    return replace(table, fields=tuple(replace(f, example=hb) if getattr(f, "key", "") ==
+                                       "hardness_HB" else f for f in table.fields))
+
+
 MATERIAL = Table("material", "materials (for the strength calculation)", (
-    _material("sun"), _material("planet"), _material("ring"),
+    _hardness(_material("sun"), 290.0), _hardness(_material("planet"), 260.0),
+    _hardness(_material("ring"), 230.0),
     _optional(_material("planet2")), _optional(_material("ring2")),
 ), required=False, hint="planet2 and ring2 default to the planet's and the ring's material; "
                            "they are used only by trains that have those gears")

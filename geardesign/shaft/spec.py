@@ -166,7 +166,7 @@ SCHEMA = SpecSchema(
                       {"length": 40.0, "diameter": 45.0, "fillet": 1.5, "Rz": 3.2},
                       {"length": 80.0, "diameter": 55.0, "fillet": 2.0, "keyway": True,
                        "press_fit": True},
-                      {"length": 10.0, "diameter": 62.0, "fillet": 1.5},
+                      {"length": 10.0, "diameter": 62.0, "fillet": 2.0},
                       {"length": 30.0, "diameter": 45.0, "fillet": 1.0, "Rz": 3.2},
                       {"length": 70.0, "diameter": 40.0, "keyway": True},
                   )),

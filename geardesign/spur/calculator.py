@@ -673,6 +673,10 @@ def compute(spec: ValidatedSpec) -> Result:
         k.add("v_s_E", v.v_s_E, "m/s", "v_s(E)", "sliding velocity at E (recess)", S.SLIDING)
 
     res.checks.extend(geometry_checks(geom, sl, gear["allow_undercut"]))
+    if notes is not None:
+        from geardesign.spur.design import first_estimate_check
+
+        res.checks.append(first_estimate_check(notes, spec.data["design"]["psi_ba"]))
     m_n = geom.inp.m_n
     if m_n < 0.1:
         res.checks.append(check(

@@ -3,7 +3,7 @@ rules of design practice).  Each check says what is wrong and what to change.
 
 Limits used here (design practice): ε_α >= 1 (spur) / ε_γ >= 1
 (helical), warning below 1.2; s_an >= 0.25·m_n (0.4·m_n for case-hardened teeth is named
-in the message); radial clearance >= 0.1·m_n; ψ_bd <= 1.6; u <= 8 for one stage;
+in the message); radial clearance >= 0.1·m_n; 0.2 <= ψ_bd <= 1.6 (:func:`face_width_ratio_ok`); u <= 8 for one stage;
 |ϑ| <= 4 at the roots.
 """
 
@@ -22,7 +22,27 @@ EPS_WARN = 1.2
 TIP_THICKNESS_MIN = 0.25     # × m_n, through-hardened teeth
 TIP_THICKNESS_HARD = 0.4     # × m_n, case-hardened teeth (named in the advice)
 CLEARANCE_WARN = 0.1         # × m_n
+PSI_BD_MIN = 0.2
 PSI_BD_MAX = 1.6
+"""Window of the face width ratio ψ_bd = b_w/d_w1 of a cylindrical pair: the smallest and
+the largest ψ_bd of the handbook tables of ψ_bd by the arrangement of the gears between the
+bearings and the hardness ([Ivanov] table of ψ_bd: 0.2…0.25 for a hardened overhung pinion,
+up to 1.4 for a soft pair between symmetric bearings; [Dunaev] table of ψ_ba with
+ψ_bd = 0.5·ψ_ba·(u + 1); the upper 1.6 of the GOST 21354-87 K_Hβ charts).  Below the window
+the wheel is a narrow disc of a large diameter for its load (heavy, a long centre
+distance); above it the load concentrates along the face."""
+
+PSI_BA_WINDOW = (0.1, 1.25)
+"""Window of ψ_ba = b_w/a_w: the ends of the GOST 2185-66 series of ψ_ba ([GOST2185];
+:data:`geardesign.spur.strength.tables.PSI_BA`)."""
+
+
+def face_width_ratio_ok(psi_bd, low: float = PSI_BD_MIN, high: float = PSI_BD_MAX):
+    """True where the face width ratio ψ_bd = b_w/d_w1 [-] lies in the window
+    [``low``, ``high``] (default :data:`PSI_BD_MIN` … :data:`PSI_BD_MAX`, design practice
+    after [Ivanov] and [Dunaev]); a number or a numpy array.  The one rule of the spur
+    check ``FACE_WIDTH_RATIO`` and of the sweep's ψ_bd window."""
+    return (psi_bd >= low * (1 - 1e-12)) & (psi_bd <= high * (1 + 1e-12))
 RATIO_MAX = 8.0
 SLIDING_MAX = 4.0
 
@@ -291,11 +311,18 @@ def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = Fa
 
     # -- proportions
     psi = p.b_w / g.g1.d_w
+    if psi < PSI_BD_MIN:
+        low = (f"face width ratio b_w/d_w1 = {psi:.3f} < {PSI_BD_MIN}: a narrow wheel of a "
+               f"large diameter for its load (heavy, a long centre distance); widen the face "
+               f"to at least {PSI_BD_MIN * g.g1.d_w:.1f} mm and take a smaller module or "
+               f"centre distance")
+    else:
+        low = (f"face width ratio b_w/d_w1 = {psi:.2f} > {PSI_BD_MAX}: load will concentrate "
+               f"along the face; reduce the face width or increase the pinion diameter")
     out.append(check(
-        "FACE_WIDTH_RATIO", psi <= PSI_BD_MAX, "warning",
-        f"face width ratio b_w/d_w1 = {psi:.2f} > {PSI_BD_MAX}: load will concentrate along the face; "
-        f"reduce the face width or increase the pinion diameter",
-        f"face width ratio b_w/d_w1 = {psi:.2f} <= {PSI_BD_MAX}", psi, PSI_BD_MAX, S.PRACTICE))
+        "FACE_WIDTH_RATIO", bool(face_width_ratio_ok(psi)), "warning", low,
+        f"face width ratio b_w/d_w1 = {psi:.2f} within {PSI_BD_MIN} … {PSI_BD_MAX}", psi,
+        PSI_BD_MIN if psi < PSI_BD_MIN else PSI_BD_MAX, S.PRACTICE))
     out.append(check(
         "GEAR_RATIO", g.u <= RATIO_MAX, "warning",
         f"u = {g.u:.3f} > {RATIO_MAX:g}: large for one stage (bulky wheel); consider two stages",

@@ -215,3 +215,23 @@ def _result(g: PairGeometry, how: str, des: dict, a_est: float, a_w: float, sigm
         ("proposal_passes", ok, None, "", "the proposal passes every error check", "design"),
     ]
     return g, how, gear, rows
+
+
+def first_estimate_check(rows: list, psi_ba: float):
+    """An ``info`` check of a design-mode report saying what the proposal is: the
+    handbook's first estimate ([GOST21354] design formula as applied in [Dunaev]: a_w from
+    the formula at a fixed ψ_ba, rounded up to the GOST 2185-66 series, the first GOST 9563
+    module that passes), not the lightest pair, and where to find that (``geardesign
+    sweep``, which varies the data over ranges, does not round a_w to the series and ranks
+    the passing pairs by mass).  ``rows`` are the proposal rows of :func:`design_pair`."""
+    from geardesign.core.result import check
+
+    v = {r[0]: r[1] for r in rows}
+    return check(
+        "DESIGN_FIRST_ESTIMATE", True, "info", "",
+        f"the proposal is the handbook's first estimate: the design formula gives a_w' = "
+        f"{v['a_w_estimate']:.1f} mm at ψ_ba = {psi_ba:g}, rounded up to {v['a_w_proposed']:g} "
+        f"mm of the GOST 2185-66 series, with the first standard module that passes; it is "
+        f"not the lightest pair: geardesign sweep varies module, teeth, helix angle and face "
+        f"width over ranges (any a_w, ψ_ba within its window) and ranks the passing pairs by "
+        f"mass (docs/sweep.md)", v["a_w_proposed"], v["a_w_estimate"], "GOST 21354-87")

@@ -11,6 +11,8 @@ A sweep spec is a spur spec (the base design: materials, load, every key not var
     "gear.face_width" = {from = 30.0, to = 60.0, step = 5.0}
     ratio = [3.9, 4.1]               # window of u = z2/z1 (constraint)
     center_distance_range = [0.0, 160.0]
+    psi_bd = [0.2, 1.6]              # window of b_w/d_w1 (default: that of the spur check)
+    psi_ba = [0.1, 1.25]             # window of b_w/a_w (default: the GOST 2185-66 series)
     min_margin = 1.0                 # the smallest reserve of the rating (1 = just passes)
     objectives = ["mass", "margin"]  # ranked by the first, then the second
     top = 20
@@ -29,6 +31,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.spur.checks import PSI_BA_WINDOW, PSI_BD_MAX, PSI_BD_MIN, face_width_ratio_ok
 from geardesign.spur.geometry import disc_mass, disc_volume
 
 CHUNK = 50_000
@@ -83,7 +86,8 @@ OBJECTIVES = {
                 "|ϑ2(E)|)"),
 }
 
-COLUMNS = ("m_n", "z1", "z2", "x1", "x2", "helix_angle", "b_w", "u", "a_w", "eps_alpha",
+COLUMNS = ("m_n", "z1", "z2", "x1", "x2", "helix_angle", "b_w", "psi_bd", "u", "a_w",
+           "eps_alpha",
            "eps_beta", "sigma_H", "sigma_HP", "S_H1", "S_H2", "S_F1", "S_F2", "margin",
            "volume", "mass", "H_V", "eta", "sliding")
 """Result columns of a ranked variant (and of the candidate dataset)."""
@@ -115,6 +119,8 @@ class Sweep:
     objectives: tuple = ("mass", "margin")
     ratio: tuple | None = None
     center_distance_range: tuple | None = None
+    psi_bd: tuple = (PSI_BD_MIN, PSI_BD_MAX)
+    psi_ba: tuple = PSI_BA_WINDOW
     min_margin: float = 1.0
     friction: float = 0.05
     top: int = 20
@@ -231,7 +237,8 @@ def parse_sweep(table: dict | None, vary: list[str], samples: int | None, seed: 
     """The :class:`Sweep` of a ``[sweep]`` table and the command-line options.  Raises
     :class:`InputError` with one problem per bad key."""
     table = dict(table or {})
-    opts = {k: table.pop(k) for k in ("ratio", "center_distance_range", "min_margin",
+    opts = {k: table.pop(k) for k in ("ratio", "center_distance_range", "psi_bd", "psi_ba",
+                                      "min_margin",
                                       "objectives", "top", "samples", "seed", "friction")
             if k in table}
     ranges = dict(table)
@@ -279,6 +286,17 @@ def parse_sweep(table: dict | None, vary: list[str], samples: int | None, seed: 
                     for x in v) and v[0] <= v[1] and v[0] >= 0):
                 raise InputError(Problem(f"sweep.{name}", "must be [low, high] with 0 <= low "
                                          "<= high", v))
+            setattr(sw, name, (float(v[0]), float(v[1])))
+    for name in ("psi_bd", "psi_ba"):
+        if name in opts:
+            v = opts[name]
+            if not (isinstance(v, list) and len(v) == 2 and all(
+                    isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
+                    for x in v) and 0 < v[0] <= v[1] <= 10):
+                raise InputError(Problem(f"sweep.{name}", "must be [low, high] with 0 < low "
+                                         "<= high <= 10 (a window of the face width ratio "
+                                         + ("b_w/d_w1" if name == "psi_bd" else "b_w/a_w")
+                                         + ")", v))
             setattr(sw, name, (float(v[0]), float(v[1])))
     if "min_margin" in opts:
         v = opts["min_margin"]
@@ -495,7 +513,13 @@ def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int, rows: bool
     for d in sw.dims:
         if d.key in FIXED_KEYS:
             r[d.key.split(".", 1)[1]] = varied[d.key].astype(float)
-    feasible = r["passed"] & (r["margin"] >= sw.min_margin * (1 - 1e-12))
+    with np.errstate(all="ignore"):
+        r["psi_bd"] = r["b_w"] / r["d_w1"]
+        r["psi_ba"] = r["b_w"] / r["a_w"]
+    r["ok_FACE_WIDTH_RATIO"] = (face_width_ratio_ok(r["psi_bd"], *sw.psi_bd)
+                                & face_width_ratio_ok(r["psi_ba"], *sw.psi_ba))
+    feasible = (r["passed"] & r["ok_FACE_WIDTH_RATIO"]
+                & (r["margin"] >= sw.min_margin * (1 - 1e-12)))
     if sw.ratio is not None:
         feasible &= (r["u"] >= sw.ratio[0] - 1e-12) & (r["u"] <= sw.ratio[1] + 1e-12)
     if sw.center_distance_range is not None:
@@ -762,6 +786,7 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
               "ratio": list(sw.ratio) if sw.ratio else None,
               "center_distance_range": list(sw.center_distance_range)
               if sw.center_distance_range else None,
+              "psi_bd": list(sw.psi_bd), "psi_ba": list(sw.psi_ba),
               "min_margin": sw.min_margin, "friction": sw.friction, "top": sw.top,
               "base": {k: v for k, v in data.items() if k not in ("kind", "title")}}
     rows = [Row(f"sweep.{d.key}", "; ".join(_material_label(t) for t in d.choices)
@@ -776,14 +801,15 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
     sec.add("valid", c["valid"], "-", "N_valid", "candidates that form a gear pair")
     sec.add("passed", c["passed"], "-", "N_pass", "candidates that pass every error check")
     sec.add("feasible", c["feasible"], "-", "N_feas", "passing candidates within the "
-            "constraints (ratio, centre distance, margin)")
+            "constraints (ratio, centre distance, ψ_bd and ψ_ba windows, margin)")
     fails = res.section("rejections", "Candidates rejected, by check")
     for code, n in sorted(summary["fails"].items(), key=lambda kv: (-kv[1], kv[0])):
         if n:
             fails.add(code, n, "-", code, f"valid candidates failing {code}")
     cols = [("rank", "rank", "-"), ("index", "candidate", "-"), ("m_n", "m_n", "mm"),
             ("z1", "z1", "-"), ("z2", "z2", "-"), ("x1", "x1", "-"), ("x2", "x2", "-"),
-            ("helix_angle", "β", "deg"), ("b_w", "b_w", "mm"), ("u", "u", "-"),
+            ("helix_angle", "β", "deg"), ("b_w", "b_w", "mm"), ("psi_bd", "ψ_bd", "-"),
+            ("u", "u", "-"),
             ("a_w", "a_w", "mm"), ("S_H1", "S_H1", "-"), ("S_F1", "S_F1", "-"),
             ("S_F2", "S_F2", "-"), ("margin", "margin", "-"), ("mass", "mass", "kg")]
     for name in sw.objectives:
@@ -831,6 +857,14 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
             f"{', '.join(map(str, failing[:10]))}; take a variant that passes, or rate one with "
             f"--emit-spec and geardesign run for its full report", "", len(failing), 0,
             "sweep"))
+    edge = range_edges(sw, summary["head"])
+    if edge:
+        res.checks.append(check(
+            "SWEEP_RANGE_EDGE", False, "warning",
+            f"the first ranked variant sits on the boundary of a varied range: "
+            f"{'; '.join(edge)}: a better variant may lie beyond it; widen that range (or "
+            f"fix the key if the boundary is a limit of the design)", "", len(edge), 0,
+            "sweep"))
     top = sorted(((n, k) for k, n in summary["fails"].items() if n), reverse=True)[:3]
     why = ", ".join(f"{k} ({n})" for n, k in top)
     res.checks.append(check(
@@ -838,11 +872,41 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
         f"no variant of the {c['evaluated']} candidates is feasible"
         + (f"; the checks that rejected the most: {why}" if why else "")
         + ": widen the ranges (larger modules or face widths, other tooth counts), relax the "
-          "constraints (ratio window, centre distance range, min_margin) or use stronger "
+          "constraints (ratio window, centre distance range, psi_bd and psi_ba windows, "
+          "min_margin) or use stronger "
           "materials",
         f"{c['feasible']} of {c['evaluated']} candidates are feasible", c["feasible"], 1,
         "sweep"))
     return res
+
+
+RANGE_COLUMNS = {"gear.module": "m_n", "gear.z1": "z1", "gear.z2": "z2", "gear.x1": "x1",
+                 "gear.x2": "x2", "gear.helix_angle": "helix_angle", "gear.face_width": "b_w",
+                 "gear.center_distance": "a_w", "gear.accuracy_grade": "accuracy_grade",
+                 "gear.bearing_scheme": "bearing_scheme"}
+"""The column of the ranked variants that holds each varied key's value."""
+
+EDGE_SAMPLE = 0.02
+"""In a sample (not a grid), a value within this part of its range of an end is at it."""
+
+
+def range_edges(sw: Sweep, head: dict | None) -> list[str]:
+    """The varied keys (of more than one value) whose value in the first ranked variant is
+    an end of their range, as "gear.helix_angle = 15 at the top of 0 … 15"."""
+    if head is None or not len(head["index"]):
+        return []
+    out = []
+    for d in sw.dims:
+        col = RANGE_COLUMNS.get(d.key)
+        if col is None or col not in head or d.high <= d.low:
+            continue
+        v = float(head[col][0])
+        tol = (EDGE_SAMPLE if sw.samples else 1e-9) * (d.high - d.low)
+        for end, word in ((d.high, "top"), (d.low, "bottom")):
+            if abs(v - end) <= tol:
+                out.append(f"{d.key} = {v:.6g} at the {word} of {d.low:g} … {d.high:g}")
+                break
+    return out
 
 
 def full_check(data: dict, sw: Sweep, index: int) -> str:

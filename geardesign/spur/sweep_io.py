@@ -25,7 +25,7 @@ class DatasetWriter:
         self.file = AtomicFile(self.path)
         self.tmp = self.file.tmp
         if self.kind != ".parquet":
-            self.fh = open(self.tmp, "w", newline="", encoding="utf-8")
+            self.fh = open(self.tmp, "w", newline="", encoding="utf-8-sig")   # with BOM
 
     def write(self, cols: dict) -> None:
         if self.kind == ".parquet":
