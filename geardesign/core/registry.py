@@ -15,9 +15,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
-from geardesign.core.errors import InputError, Problem
+from geardesign.core.errors import InputError, Problem, Problems
 from geardesign.core.result import Result, Row, guard
-from geardesign.core.spec import SpecSchema, ValidatedSpec, iter_fields, load_toml, validate
+from geardesign.core.spec import (SpecSchema, ValidatedSpec, iter_fields, load_toml,
+                                  validate_partial)
 
 NOT_CALCULATORS = {"core", "materials"}
 """Subpackages of ``geardesign`` that are shared code, not calculators."""
@@ -49,6 +50,11 @@ class Calculator:
     methods: tuple[str, ...]
     schema: SpecSchema
     compute: Callable[[ValidatedSpec], Result]
+    precheck: Callable[[ValidatedSpec, Problems], None] | None = None
+    """The calculator's own input checks (rules of several keys, keys required by a
+    mode), run on a partially validated spec when the schema already found problems, so
+    that one run reports every problem (:func:`load_data`); ``None``: the schema's
+    problems alone."""
 
     def __post_init__(self) -> None:
         # every result passes the one guard of :mod:`geardesign.core.result` (no NaN, no
@@ -94,10 +100,10 @@ def lazy_calculator(kind: str, summary: str, methods: tuple[str, ...]):
 
     @lru_cache(maxsize=1)
     def build() -> Calculator:
-        compute = importlib.import_module(f"geardesign.{kind}.calculator").compute
+        module = importlib.import_module(f"geardesign.{kind}.calculator")
         schema = importlib.import_module(f"geardesign.{kind}.spec").SCHEMA
         return Calculator(kind=kind, summary=summary, methods=methods, schema=schema,
-                          compute=compute)
+                          compute=module.compute, precheck=getattr(module, "precheck", None))
 
     def __getattr__(name: str):
         if name == "CALCULATOR":
@@ -153,7 +159,13 @@ def load_data(data: dict, source: str = "",
         raise InputError(Problem("sweep", "this spec describes a design sweep: run it with "
                                  "`geardesign sweep SPEC.toml` (or remove [sweep])"))
     calc = get(kind)
-    return calc, validate(calc.schema, data, source=source)
+    spec, found = validate_partial(calc.schema, data, source=source)
+    if found:
+        problems = Problems(found)
+        if calc.precheck is not None:   # the calculator's checks of the usable keys too
+            problems.stage(calc.precheck, spec, problems)
+        problems.raise_all()
+    return calc, spec
 
 
 def run(path: Path, expect_kind: str | None = None) -> Result:
