@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
-from geardesign.core.errors import InputError, Problem, Problems
+from geardesign.core.errors import InputError, Problem, Problems, Unusable
 from geardesign.core.result import Result, Row, guard
 from geardesign.core.spec import (SpecSchema, ValidatedSpec, iter_fields, load_toml,
                                   validate_partial)
@@ -162,10 +162,26 @@ def load_data(data: dict, source: str = "",
     spec, found = validate_partial(calc.schema, data, source=source)
     if found:
         problems = Problems(found)
-        if calc.precheck is not None:   # the calculator's checks of the usable keys too
-            problems.stage(calc.precheck, spec, problems)
+        problems.stage(_precheck, calc, spec, problems)
         problems.raise_all()
     return calc, spec
+
+
+def _precheck(calc: Calculator, spec: ValidatedSpec, problems: Problems) -> None:
+    """The calculator's own input checks on a spec whose schema problems are reported:
+    its ``precheck`` when it has one, else its calculation, which stops at its first
+    input error.  The wrong keys hold :data:`~geardesign.core.errors.REPORTED`, so a check
+    that needs one is left out; a calculation that trips over one in another way is left
+    out too (the problems already found are the answer, never an internal error)."""
+    try:
+        if calc.precheck is not None:
+            calc.precheck(spec, problems)
+        else:
+            calc.compute(spec)
+    except (InputError, Unusable):
+        raise
+    except Exception:   # noqa: BLE001 - a partial spec: see the docstring
+        pass
 
 
 def run(path: Path, expect_kind: str | None = None) -> Result:

@@ -249,14 +249,35 @@ def tests_of(g: PairGeometry, spec: ValidatedSpec, acc: Accuracy | None) -> tupl
             try:
                 M_l = tuple(over_balls(t, D, gi.s_n + e).M for e in lim)
             except MeasurementError:
-                raise InputError.at(f"drawing.ball_diameter{n}", D, "the ball sinks below the "
-                                    "base circle of the thinnest tooth the allowances permit: "
-                                    "choose a larger ball") from None
+                raise _thin_tooth(spec, n, D, chosen, gi.s_n, acc.upper[i],
+                                  acc.lower[i]) from None
             s_l = tuple(chordal(t, gi.s_n + e).s_c for e in lim)
             c_l = tuple(constant_chord(t, gi.s_n + e).s_c for e in lim)
         out.append(GearTests(k, W, d_W, W_l, D, chosen, res.M, res.d_c, M_l, ch.s_c, ch.h_c,
                              s_l, cc.s_c, cc.h_c, c_l))
     return tuple(out)
+
+
+def _thin_tooth(spec: ValidatedSpec, n: int, D: float, chosen: bool, s_n: float,
+                upper: float, lower: float) -> InputError:
+    """The ball sinks below the base circle of the thinnest tooth the allowances permit.
+    A ball the user gave is his to change; a ball chosen here (at mid-height of the
+    nominal tooth, from the module and the teeth) is not: the error then names the inputs
+    it follows from, the module and the allowances of [accuracy]."""
+    allowances = (f"the thickness allowances {upper:.1f}…{lower:.1f} µm (from [accuracy]) "
+                  f"on s_n{n} = {s_n:.4f} mm")
+    if not chosen:
+        return InputError.at(f"drawing.ball_diameter{n}", D, f"the ball sinks below the base "
+                             f"circle of the thinnest tooth {allowances} permit: choose a "
+                             f"larger ball")
+    gear = spec.data.get("gear")
+    where = ("gear.module", gear["module"]) if gear is not None else ("accuracy", Problem.NO_VALUE)
+    return InputError(Problem(where[0], f"{allowances} leave the {who(n - 1)}'s tooth too "
+                              f"thin for a measuring ball: the ball chosen for it (D{n} = "
+                              f"{D:.4g} mm, derived from the module and z{n}) sinks below the "
+                              f"base circle; check the unit of the module (mm), give smaller "
+                              f"allowances in [accuracy], or give drawing.ball_diameter{n}",
+                              where[1]))
 
 
 def who(i: int) -> str:
