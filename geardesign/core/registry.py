@@ -62,7 +62,10 @@ class Calculator:
         compute = self.compute
 
         def guarded(spec: ValidatedSpec) -> Result:
-            return guard(compute(spec))
+            try:
+                return guard(compute(spec))
+            except InputError as exc:
+                raise InputError([_say_default(p, spec) for p in exc.problems]) from exc
 
         guarded.__doc__ = compute.__doc__
         object.__setattr__(self, "compute", guarded)
@@ -78,6 +81,17 @@ class Calculator:
         ]
         return Result(self.kind, spec.data.get("title"), list(self.methods), spec.data, rows,
                       source=spec.source)
+
+
+DEFAULT_NOTE = "the default (not in the spec): "
+"""How a problem about a value the user did not write, the schema's default or one
+the calculator assumed (``spec.assumed``), begins: the user then knows to give it."""
+
+
+def _say_default(p: Problem, spec: ValidatedSpec) -> Problem:
+    if p.key in spec.assumed and "default" not in p.message:
+        return Problem(p.key, DEFAULT_NOTE + p.message, p.value)
+    return p
 
 
 def _symbol(key: str, symbol: str) -> str:
