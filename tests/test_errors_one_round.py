@@ -227,17 +227,28 @@ def _leaves(node, path=()):
         yield path, node
 
 
+SIZES = ("module", "diameter", "center_distance")
+"""Sizes whose unit slips (inches, metres) are tried on every spec that has them."""
+
+
 def _perturbed(data: dict, rng: random.Random, n: int):
-    """``n`` copies of a spec, each with one value removed or slipped in its unit
-    (inches, metres, kilo-, milli-, the sign)."""
+    """Copies of a spec, each with one value removed or slipped in its unit (inches,
+    metres, kilo-, milli-, the sign): the first of each :data:`SIZES` in inches and in
+    metres, and ``n`` random ones."""
     leaves = list(_leaves(data))
-    for _ in range(n):
-        path, value = rng.choice(leaves)
+    sizes = {}
+    for path, value in leaves:
+        if path[-1] in SIZES and isinstance(value, float):
+            sizes.setdefault(path[-1], path)
+    chosen = [(path, f) for path in sizes.values() for f in (1 / 25.4, 1e-3)]
+    chosen += [(rng.choice(leaves)[0], rng.choice([None, 1 / 25.4, 25.4, 1e-3, 1e3, -1.0, 0.5]))
+               for _ in range(n)]
+    for path, factor in chosen:
         new = copy.deepcopy(data)
         node = new
         for part in path[:-1]:
             node = node[part]
-        factor = rng.choice([None, 1 / 25.4, 25.4, 1e-3, 1e3, -1.0, 0.5])
+        value = node[path[-1]]
         if factor is None or isinstance(value, bool) or not isinstance(value, (int, float)):
             del node[path[-1]]
         else:
