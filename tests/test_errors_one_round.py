@@ -133,6 +133,27 @@ def test_select_reports_every_missing_input_at_once(tmp_path):
     ]
 
 
+def test_planetary_schema_geometry_and_strength_problems_in_one_run(tmp_path):
+    """A wrong planet count (schema), an impossible centre distance (geometry), a missing
+    speed and a missing hardness (strength inputs): four lines, one run."""
+    text = edit(template("planetary"), ("planets = 3", "planets = 30"),
+                ("center_distance = 68.0", "center_distance = 66.0"),
+                ("speed = 1450.0", "# speed = 1450.0"))
+    ring = text.index("[material.ring]")
+    hb = text.index("hardness_HB = 250.0", ring)
+    text = text[:hb] + "# " + text[hb:]
+    assert refused(tmp_path, "planetary", text) == [
+        "s.toml: train.planets = 30: must be an integer >= 1 and <= 24",
+        "s.toml: train.center_distance = 66.0: gives shift.ring = -0.9803 (derived from "
+        "train.center_distance by coaxiality and the teeth): too negative for the planet–ring "
+        "mesh: inv α_tw = -0.00491723 <= 0, no working pressure angle exists; x_ring − "
+        "x_planet (GOST sign) must be > -0.7371",
+        "s.toml: operation.speed: missing; required with [strength]: the input speed",
+        "s.toml: material.ring.hardness_HB: missing; required: the surface hardness in HB for "
+        'treatment "improved"',
+    ]
+
+
 # --------------------------------------------------------------- errors name the user's input
 
 
@@ -274,3 +295,16 @@ def test_every_error_names_an_input_the_user_gave(path):
         except InputError as exc:
             for problem in exc.problems:
                 assert names_the_users_input(spec, problem), (changed, problem.line(""))
+
+
+def test_readme_input_error_example_is_a_real_run(tmp_path):
+    """The README's example of input errors is what the command prints for the spur
+    template with `modul = 2.0`, `z1 = 3` and no bearing_scheme."""
+    text = edit(template("spur"), ("module = 4.0", "modul = 2.0"), ("z1 = 25", "z1 = 3"),
+                ("bearing_scheme = 5  #", "# bearing_scheme = 5  #"))
+    path = write_spec(tmp_path, text, "bad.toml")
+    code, out, err = cli("run", path)
+    assert code == 2
+    shown = "$ geardesign run bad.toml\n" + err.replace(str(path), "bad.toml")
+    readme = (SPECS.parent / "README.md").read_text(encoding="utf-8")
+    assert shown in readme

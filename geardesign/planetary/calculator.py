@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from geardesign.core.errors import InputError, Problem
+from geardesign.core.errors import InputError, Problem, Problems
 from geardesign.core.result import Result, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.planetary import assembly as A
@@ -450,30 +450,56 @@ def _members_gears(meshes: list[PG.Mesh]) -> dict:
 # ----------------------------------------------------------------------------- compute
 
 
-def compute(spec: ValidatedSpec) -> Result:
-    from geardesign.planetary import CALCULATOR
-
+def _train_and_meshes(spec: ValidatedSpec) -> tuple:
+    """The train, its layout, shifts and meshes (synthesised or as given)."""
     d = spec.data
-    tr, op = d["train"], d["operation"]
     notes = None
     if d["synthesis"] is not None:
         train, conv, lay, shifts, how, _, notes = _synthesis(spec)
     else:
         train, conv = train_from_teeth(d)
         lay = _layout(d, train)
-        _check_operation(train, op)
+        _check_operation(train, d["operation"])
         shifts, how, _ = resolve_shifts(d, spec, lay, conv)
     meshes = _geometry(lay, shifts, conv, {g for g, v in d["shift"].items() if v is not None
                                            and f"shift.{g}" not in spec.assumed},
                        shift_origin(d))
+    return train, conv, lay, shifts, how, notes, meshes
+
+
+def _efficiency_inputs(d: dict) -> None:
     eff = d["efficiency"]
     if eff["model"] == "given":
-        for key in ("external", "internal"):
-            if eff[key] is None:
-                raise InputError(Problem(f"efficiency.{key}", "missing; required with "
-                                         "efficiency.model = \"given\": the efficiency of one "
-                                         f"{key} mesh"))
-    strength = _strength_inputs(spec, train)
+        missing = [Problem(f"efficiency.{key}", "missing; required with efficiency.model "
+                                 f"= \"given\": the efficiency of one {key} mesh")
+                         for key in ("external", "internal") if eff[key] is None]
+        if missing:
+            raise InputError(missing)
+
+
+def _input_stages(spec: ValidatedSpec, problems: Problems) -> tuple:
+    """The independent stages of input checks: the train and its meshes, the efficiency
+    model's inputs, the strength inputs; each stage's problems are collected."""
+    geo = problems.stage(_train_and_meshes, spec)
+    problems.stage(_efficiency_inputs, spec.data)
+    strength = problems.stage(_strength_inputs, spec)
+    return geo, strength
+
+
+def precheck(spec: ValidatedSpec, problems: Problems) -> None:
+    """:func:`compute`'s input stages on a spec whose schema problems are reported."""
+    _input_stages(spec, problems)
+
+
+def compute(spec: ValidatedSpec) -> Result:
+    from geardesign.planetary import CALCULATOR
+
+    d = spec.data
+    tr, op = d["train"], d["operation"]
+    problems = Problems()
+    geo, strength = _input_stages(spec, problems)
+    problems.raise_all()
+    train, conv, lay, shifts, how, notes, meshes = geo
     from geardesign.planetary.iso_inputs import prepare
 
     prepare(spec, train, meshes)
@@ -819,30 +845,34 @@ def _frequencies(res: Result, d: dict, train: K.Train, s: K.Speeds) -> None:
 # ----------------------------------------------------------------------------- strength
 
 
-def _strength_inputs(spec: ValidatedSpec, train: K.Train):
+def _strength_inputs(spec: ValidatedSpec):
+    """The materials of the strength calculation (``None`` without [strength] and
+    [material]); every missing piece is reported in one round."""
     d = spec.data
     st, mat, op = d["strength"], d["material"], d["operation"]
     torque = op["torque"] is not None or op["power"] is not None
     if st is None and mat is None:
         return None
+    problems = Problems()
     if st is None:
-        raise InputError(Problem("strength", "missing table [strength] (life_hours, ...): "
-                                 "required with [material]"))
+        problems.add(Problem("strength", "missing table [strength] (life_hours, ...): "
+                             "required with [material]"))
     if mat is None:
-        raise InputError(Problem("material", "missing table [material.sun], [material.planet], "
-                                 "[material.ring]: required with [strength]"))
+        problems.add(Problem("material", "missing table [material.sun], [material.planet], "
+                             "[material.ring]: required with [strength]"))
     if not torque:
-        raise InputError(Problem("operation.torque", "missing; required with [strength]: the "
-                                 "input torque in N·m (or operation.power in kW)"))
+        problems.add(Problem("operation.torque", "missing; required with [strength]: the "
+                             "input torque in N·m (or operation.power in kW)"))
     if op["speed"] is None:
-        raise InputError(Problem("operation.speed", "missing; required with [strength]: the "
-                                 "input speed"))
+        problems.add(Problem("operation.speed", "missing; required with [strength]: the "
+                             "input speed"))
     from geardesign.materials.gear_steel import resolve
 
     mats = {}
     for key in ("sun", "planet", "ring", "planet2", "ring2"):
-        if mat[key] is not None:
-            mats[key] = resolve(mat[key], f"material.{key}")
+        if mat is not None and mat[key] is not None:
+            mats[key] = problems.stage(lambda key=key: resolve(mat[key], f"material.{key}"))
+    problems.raise_all()
     mats.setdefault("planet2", mats["planet"])
     mats.setdefault("ring2", mats["ring"])
     return mats
