@@ -154,6 +154,20 @@ def test_planetary_schema_geometry_and_strength_problems_in_one_run(tmp_path):
     ]
 
 
+def test_worm_wheel_duty_and_geometry_problems_in_one_run(tmp_path):
+    text = edit(template("worm"), ("center_distance = 160.0", "center_distance = 100.0"),
+                ('material = "BrO10N1F1_centrifugal"', 'material = "custom"'),
+                ("time_share = 0.4", "time_share = 0.5"))
+    assert refused(tmp_path, "worm", text) == [
+        's.toml: wheel.group: missing; required with material = "custom": one of "I", "II", '
+        '"III" (material group)',
+        "s.toml: load.spectrum: the time shares add up to 1.1; they must add up to 1",
+        "s.toml: gear.center_distance = 100.0: needs the wheel shift x = -9.1270, outside ±1 "
+        "(GOST 19650-97); with m = 6.3 mm, q = 10, z2 = 40 the centre distance must be "
+        "151.2 ... 163.8 mm",
+    ]
+
+
 # --------------------------------------------------------------- errors name the user's input
 
 
