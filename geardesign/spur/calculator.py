@@ -607,11 +607,11 @@ def precheck(spec: ValidatedSpec, problems: Problems) -> None:
     schema problems are already reported (:func:`geardesign.core.registry.load_data`):
     the pair's own rules and the strength inputs, each left out when it reads a wrong key."""
     d = spec.data
-    if d["design"] is None and d["gear"] is not None:
+    if (d["design"] is None) == (d["gear"] is None):
+        return   # both or neither: the schema's problem says to give one
+    if d["gear"] is not None:
         problems.stage(solve_geometry, spec)
-    gear = d["design"] if d["design"] is not None else d["gear"]
-    if gear is not None:
-        problems.stage(_strength_inputs, spec, gear)
+    problems.stage(_strength_inputs, spec, d["gear"] if d["gear"] is not None else d["design"])
 
 
 def compute(spec: ValidatedSpec) -> Result:
