@@ -102,11 +102,12 @@ CASES = [
      + "[requirements]\nlife = 1000.0\n",
      ["s.toml: bearing.d = 42.0: no catalogue deep groove ball bearing has this bore; "
       "nearest catalogue bores: 40, 45 mm (of 10…200 mm)"]),
-    ("select with a designation",
-     rep('method = "gost18855_94"', 'method = "gost18855_94"\nmode = "select"')
-     + "[requirements]\nlife = 1000.0\n",
-     ['s.toml: bearing.designation = "6208": mode = "select" chooses the bearing from the '
-      'catalogue; remove it']),
+    ("select with a designation of another bore",
+     rep('designation = "6208"', 'designation = "6208"\nd = 45.0',
+         rep('method = "gost18855_94"', 'method = "gost18855_94"\nmode = "select"')),
+     ['s.toml: requirements.life: missing; required in mode = "select": a number > 0 (h)',
+      's.toml: bearing.d = 45.0: contradicts bearing.designation = "6208" (deep groove ball, '
+      'd = 40 mm), which names the type and bore to select in; remove one of them']),
     ("bare 72xx is ambiguous", rep('"6208"', '"7208"'),
      ['s.toml: bearing.designation = "7208": ambiguous: ISO 7208 B (angular contact ball, '
       'α = 40°) or GOST 7208 = ISO 30208 (tapered roller); write "7208 B" or "30208"']),

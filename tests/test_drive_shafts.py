@@ -482,4 +482,4 @@ def test_a_bearing_load_beyond_the_bearing_calculator_says_where_it_comes_from()
         run_data(_with_load(_fast(), position=284.0, force=1e8))
     msg = str(e.value)
     assert "shaft[2].support_b: load.F_r" in msg
-    assert "the bearing load the drive computes from the forces on the shaft" in msg
+    assert "the bearing load the drive derived from the forces on the shaft" in msg

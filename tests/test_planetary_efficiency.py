@@ -115,8 +115,9 @@ def test_a_mesh_outside_the_loss_factor_is_refused_or_given(monkeypatch):
     with pytest.raises(InputError) as info:
         run_data(data, "p.toml")
     line = info.value.problems[0].line("p.toml")
-    assert line.startswith('p.toml: efficiency.model = "niemann": the loss factor H_V '
-                           "(Ohlendorf, ISO/TR 14179-2) holds for 1 <= ε_α <= 1.5")
+    assert line.startswith('p.toml: efficiency.model = "niemann": the default (not in the '
+                           "spec): the loss factor H_V (Ohlendorf, ISO/TR 14179-2) holds for 1 "
+                           "<= ε_α <= 1.5")
     assert 'give model = "given"' in line
     data["efficiency"] = {"model": "given", "external": 0.99, "internal": 0.995}
     eff = run_data(data, "p.toml").document()["results"]["efficiency"]

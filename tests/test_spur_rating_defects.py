@@ -190,6 +190,9 @@ Y_eps = 1.5
     assert lines == [
         "s.toml: factors.K_Halpha = 0.8: must be a number >= 1 and <= 10",
         "s.toml: factors.Y_eps = 1.5: must be a number >= 0.1 and <= 1",
+        # the other mistake of the spec, in the same round
+        "s.toml: material: missing table [material.pinion] and [material.wheel]: required "
+        "with load.torque1 or load.power for the strength calculation",
     ]
 
 

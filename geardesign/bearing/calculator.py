@@ -16,7 +16,7 @@ from geardesign.bearing import pair as PR
 from geardesign.bearing import sources as S
 from geardesign.bearing import tables as T
 from geardesign.bearing.assess import Assessment, Bearing, Block, Conditions, assess
-from geardesign.core.errors import InputError, Problem
+from geardesign.core.errors import InputError, Problem, Problems
 from geardesign.core.result import Check, Result, check
 from geardesign.core.spec import ValidatedSpec
 
@@ -43,6 +43,36 @@ def _type_words(kind: str) -> str:
 # ----------------------------------------------------------------------------- bearing
 
 
+def _catalogue_row(b: dict, info: dict | None = None):
+    """The catalogue row of ``bearing.designation`` (with ``bearing.maker``), read as
+    :func:`.catalogue.read` reads a written designation (maker's prefix, seal and shield
+    suffixes; ``info["reading"]`` says which variant was read as which row); an input
+    error naming the designation when the catalogue has none or several."""
+    try:
+        reading = CAT.read(b["designation"], b["maker"])
+    except ValueError as exc:    # an ambiguous designation, or two makers named
+        raise InputError.at("bearing.designation", b["designation"], str(exc)) from None
+    row = reading.row
+    if info is not None:
+        info["reading"] = reading.note
+    if row is None:
+        other = CAT.read(b["designation"]).row if b["maker"] is not None else None
+        if other is not None:
+            raise InputError.at("bearing.designation", b["designation"],
+                                f"not in the {b['maker']} tables of the built-in catalogue; "
+                                f"{other.maker} lists it: remove bearing.maker or set it to "
+                                f"\"{other.maker}\"")
+        close = CAT.close_matches(b["designation"])
+        hint = (" (did you mean " + ", ".join(f'"{c}"' for c in close) + "?)") if close else ""
+        raise InputError.at(
+            "bearing.designation", b["designation"],
+            f"not in the built-in catalogue{hint}; it holds deep groove 60/62/63/64, angular "
+            f"contact 72 B/73 B, cylindrical roller NU/NJ/NUP 2/3/22/23, tapered roller "
+            f"302/303/313/322/323, spherical roller 222/223/230/231 and thrust ball 511/512 "
+            f"(`geardesign bearings` lists them); or give bearing.type, C_r and C_0r instead")
+    return row
+
+
 def resolve_bearing(spec: ValidatedSpec) -> tuple[Bearing, dict]:
     """The bearing of a spec: catalogue row and/or given values (given values override);
     returns the :class:`Bearing` and facts for the report (source, d, D, geometry, ...)."""
@@ -53,27 +83,7 @@ def resolve_bearing(spec: ValidatedSpec) -> tuple[Bearing, dict]:
         raise InputError.at("bearing.maker", b["maker"], "not in the built-in catalogue; known: "
                             + ", ".join(f'"{m}"' for m in CAT.makers()))
     if b["designation"] is not None:
-        try:
-            reading = CAT.read(b["designation"], b["maker"])
-        except ValueError as exc:    # an ambiguous designation, or two makers named
-            raise InputError.at("bearing.designation", b["designation"], str(exc)) from None
-        row = reading.row
-        info["reading"] = reading.note
-        if row is None:
-            other = CAT.read(b["designation"]).row if b["maker"] is not None else None
-            if other is not None:
-                raise InputError.at("bearing.designation", b["designation"],
-                                    f"not in the {b['maker']} tables of the built-in catalogue; "
-                                    f"{other.maker} lists it: remove bearing.maker or set it to "
-                                    f"\"{other.maker}\"")
-            close = CAT.close_matches(b["designation"])
-            hint = (" (did you mean " + ", ".join(f'"{c}"' for c in close) + "?)") if close else ""
-            raise InputError.at(
-                "bearing.designation", b["designation"],
-                f"not in the built-in catalogue{hint}; it holds deep groove 60/62/63/64, angular "
-                f"contact 72 B/73 B, cylindrical roller NU/NJ/NUP 2/3/22/23, tapered roller "
-                f"302/303/313/322/323, spherical roller 222/223/230/231 and thrust ball 511/512 "
-                f"(`geardesign bearings` lists them); or give bearing.type, C_r and C_0r instead")
+        row = _catalogue_row(b, info)
         if b["type"] is not None and b["type"] != row.type:
             raise InputError.at("bearing.type", b["type"],
                                 f"contradicts the catalogue: {row.designation} is a "
@@ -658,20 +668,35 @@ def _common_checks(spec: ValidatedSpec, info: dict) -> list[Check]:
 def _select(spec: ValidatedSpec, blocks: list, checks: list, new_result) -> Result:
     b = spec.data["bearing"]
     req = spec.data["requirements"]
+    problems = Problems()
     if req["life"] is None:
-        raise InputError(Problem("requirements.life", "missing; required in mode = \"select\": "
-                                                      "a number > 0 (h)"))
-    for key in ("designation", "C_r", "C_0r"):
-        if b[key] is not None:
-            raise InputError.at(f"bearing.{key}", b[key], "mode = \"select\" chooses the bearing "
-                                                          "from the catalogue; remove it")
-    if b["type"] is None:
-        raise InputError(Problem("bearing.type", "missing; required in mode = \"select\": one of "
-                                 + ", ".join(f'"{k}"' for k in sorted({r.type for r in
-                                                                        CAT.bearings()}))))
-    if b["d"] is None:
-        raise InputError(Problem("bearing.d", "missing; required in mode = \"select\": the bore "
-                                              "diameter of the shaft seat (mm)"))
+        problems.add(Problem("requirements.life", "missing; required in mode = \"select\": "
+                                                  "a number > 0 (h)"))
+    # the selection replaces the designation and its ratings: a designation names the type
+    # and bore to select in (`--select` on a check spec runs as written)
+    row = problems.stage(_catalogue_row, b) if b["designation"] is not None else None
+    if row is Problems.FAILED:
+        row = None
+    replaced = [k for k in ("designation", "C_r", "C_0r") if b[k] is not None]
+    if row is not None:
+        for key, value in (("type", row.type), ("d", row.d)):
+            if b[key] is None:
+                b[key] = value
+            elif b[key] != value:
+                problems.add(Problem(f"bearing.{key}", f"contradicts bearing.designation = "
+                                     f"\"{b['designation']}\" ({_type_words(row.type)}, d = "
+                                     f"{_f(row.d)} mm), which names the type and bore to select "
+                                     f"in; remove one of them", b[key]))
+    if b["type"] is None and b["designation"] is None:
+        problems.add(Problem("bearing.type", "missing; required in mode = \"select\" (or a "
+                             "bearing.designation naming type and bore): one of "
+                             + ", ".join(f'"{k}"' for k in sorted({r.type for r in
+                                                                   CAT.bearings()}))))
+    if b["d"] is None and b["designation"] is None:
+        problems.add(Problem("bearing.d", "missing; required in mode = \"select\" (or a "
+                             "bearing.designation naming type and bore): the bore diameter of "
+                             "the shaft seat (mm)"))
+    problems.raise_all()
     kind, d = b["type"], b["d"]
     if not CAT.bores(kind):
         raise InputError.at("bearing.type", kind, "the catalogue holds no bearing of this type; "
@@ -716,6 +741,14 @@ def _select(spec: ValidatedSpec, blocks: list, checks: list, new_result) -> Resu
             "static safety of each candidate", S.ISO76)
     sel.add("selected", pick[0].name if chosen else "none", None, "", "smallest bearing that "
             "meets the required life and static safety", S.CATALOGUE)
+    if replaced:
+        given = ", ".join(f"{k} = {b[k] if k == 'designation' else _kn(b[k])}"
+                          for k in replaced)
+        checks.append(check(
+            "SELECTION_REPLACES", False, "info",
+            f"mode = \"select\" chooses the bearing: the given {given} "
+            f"{'is' if len(replaced) == 1 else 'are'} replaced by the selection (of "
+            f"{_type_words(kind)} bearings with d = {_f(d)} mm)", "", None, None, S.CATALOGUE))
     checks.append(check(
         "SELECTION", chosen is not None, "error",
         f"no catalogue {_type_words(kind)} bearing with d = {_f(d)} mm reaches the requirements "

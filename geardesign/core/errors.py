@@ -71,3 +71,73 @@ class InputError(Exception):
     @classmethod
     def at(cls, key: str, value: Any, message: str) -> "InputError":
         return cls(Problem(key, message, value))
+
+
+class Unusable(Exception):
+    """A stage of input checks read a value that is already reported as a problem: its own
+    checks depend on that value and are left out of the report (they would follow from the
+    first mistake, not from another one)."""
+
+
+class _Reported:
+    """Stands, in a partially validated spec, for a value that is missing or wrong and is
+    already reported: any use of it (a comparison, arithmetic, formatting, a key of it)
+    raises :class:`Unusable`; ``value is None`` is false (it was given, or is required)."""
+
+    __slots__ = ()
+
+    def _unusable(self, *args, **kwargs):
+        raise Unusable()
+
+    __bool__ = __float__ = __int__ = __index__ = __len__ = __iter__ = _unusable
+    __eq__ = __ne__ = __lt__ = __le__ = __gt__ = __ge__ = _unusable
+    __add__ = __radd__ = __sub__ = __rsub__ = __mul__ = __rmul__ = _unusable
+    __truediv__ = __rtruediv__ = __floordiv__ = __rfloordiv__ = __mod__ = __rmod__ = _unusable
+    __pow__ = __rpow__ = __neg__ = __pos__ = __abs__ = __round__ = _unusable
+    __getitem__ = __contains__ = __format__ = __str__ = _unusable
+    get = items = keys = values = _unusable
+    __hash__ = _unusable
+
+    def __getattr__(self, name: str):
+        if name.startswith("__"):
+            raise AttributeError(name)
+        raise Unusable()
+
+    def __repr__(self) -> str:  # pragma: no cover - debugging aid
+        return "REPORTED"
+
+
+REPORTED: Any = _Reported()
+"""The value of a key that failed validation, in a partially validated spec."""
+
+
+class Problems:
+    """Input problems of independent stages, collected so that one run reports them all.
+
+    ``stage(fn, *args)`` runs one stage of checks: its :class:`InputError` lines are kept and
+    :data:`FAILED` is returned (stages that need its result are then skipped by the caller);
+    a stage that reads a value already reported (:class:`Unusable`) is skipped silently.
+    ``raise_all()`` raises one :class:`InputError` with every line, in order, once each.
+    """
+
+    FAILED: Any = object()
+
+    def __init__(self, problems: list[Problem] | None = None):
+        self.found: list[Problem] = list(problems or ())
+
+    def add(self, problem: Problem) -> None:
+        self.found.append(problem)
+
+    def stage(self, fn, *args, **kwargs):
+        try:
+            return fn(*args, **kwargs)
+        except InputError as exc:
+            self.found.extend(exc.problems)
+        except Unusable:
+            pass
+        return self.FAILED
+
+    def raise_all(self) -> None:
+        if self.found:
+            lines = {p.line(""): p for p in self.found}
+            raise InputError(list(lines.values()))

@@ -15,9 +15,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
-from geardesign.core.errors import InputError, Problem
+from geardesign.core.errors import InputError, Problem, Problems, Unusable
 from geardesign.core.result import Result, Row, guard
-from geardesign.core.spec import SpecSchema, ValidatedSpec, iter_fields, load_toml, validate
+from geardesign.core.spec import (SpecSchema, ValidatedSpec, iter_fields, load_toml,
+                                  validate_partial)
 
 NOT_CALCULATORS = {"core", "materials"}
 """Subpackages of ``geardesign`` that are shared code, not calculators."""
@@ -49,6 +50,11 @@ class Calculator:
     methods: tuple[str, ...]
     schema: SpecSchema
     compute: Callable[[ValidatedSpec], Result]
+    precheck: Callable[[ValidatedSpec, Problems], None] | None = None
+    """The calculator's own input checks (rules of several keys, keys required by a
+    mode), run on a partially validated spec when the schema already found problems, so
+    that one run reports every problem (:func:`load_data`); ``None``: the schema's
+    problems alone."""
 
     def __post_init__(self) -> None:
         # every result passes the one guard of :mod:`geardesign.core.result` (no NaN, no
@@ -56,7 +62,10 @@ class Calculator:
         compute = self.compute
 
         def guarded(spec: ValidatedSpec) -> Result:
-            return guard(compute(spec))
+            try:
+                return guard(compute(spec))
+            except InputError as exc:
+                raise InputError([_say_default(p, spec) for p in exc.problems]) from exc
 
         guarded.__doc__ = compute.__doc__
         object.__setattr__(self, "compute", guarded)
@@ -72,6 +81,17 @@ class Calculator:
         ]
         return Result(self.kind, spec.data.get("title"), list(self.methods), spec.data, rows,
                       source=spec.source)
+
+
+DEFAULT_NOTE = "the default (not in the spec): "
+"""How a problem about a value the user did not write, the schema's default or one
+the calculator assumed (``spec.assumed``), begins: the user then knows to give it."""
+
+
+def _say_default(p: Problem, spec: ValidatedSpec) -> Problem:
+    if p.key in spec.assumed and "default" not in p.message:
+        return Problem(p.key, DEFAULT_NOTE + p.message, p.value)
+    return p
 
 
 def _symbol(key: str, symbol: str) -> str:
@@ -94,10 +114,10 @@ def lazy_calculator(kind: str, summary: str, methods: tuple[str, ...]):
 
     @lru_cache(maxsize=1)
     def build() -> Calculator:
-        compute = importlib.import_module(f"geardesign.{kind}.calculator").compute
+        module = importlib.import_module(f"geardesign.{kind}.calculator")
         schema = importlib.import_module(f"geardesign.{kind}.spec").SCHEMA
         return Calculator(kind=kind, summary=summary, methods=methods, schema=schema,
-                          compute=compute)
+                          compute=module.compute, precheck=getattr(module, "precheck", None))
 
     def __getattr__(name: str):
         if name == "CALCULATOR":
@@ -153,7 +173,29 @@ def load_data(data: dict, source: str = "",
         raise InputError(Problem("sweep", "this spec describes a design sweep: run it with "
                                  "`geardesign sweep SPEC.toml` (or remove [sweep])"))
     calc = get(kind)
-    return calc, validate(calc.schema, data, source=source)
+    spec, found = validate_partial(calc.schema, data, source=source)
+    if found:
+        problems = Problems(found)
+        problems.stage(_precheck, calc, spec, problems)
+        problems.raise_all()
+    return calc, spec
+
+
+def _precheck(calc: Calculator, spec: ValidatedSpec, problems: Problems) -> None:
+    """The calculator's own input checks on a spec whose schema problems are reported:
+    its ``precheck`` when it has one, else its calculation, which stops at its first
+    input error.  The wrong keys hold :data:`~geardesign.core.errors.REPORTED`, so a check
+    that needs one is left out; a calculation that trips over one in another way is left
+    out too (the problems already found are the answer, never an internal error)."""
+    try:
+        if calc.precheck is not None:
+            calc.precheck(spec, problems)
+        else:
+            calc.compute(spec)
+    except (InputError, Unusable):
+        raise
+    except Exception:   # noqa: BLE001 - a partial spec: see the docstring
+        pass
 
 
 def run(path: Path, expect_kind: str | None = None) -> Result:

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Iterator
 
-from geardesign.core.errors import InputError, Problem, format_value
+from geardesign.core.errors import REPORTED, InputError, Problem, format_value
 from geardesign.core.io import MAX_SPEC_BYTES, parse_toml, read_toml  # noqa: F401 (API)
 
 
@@ -341,6 +341,7 @@ def _validate_table(table: Table, data: Any, path: str, problems: list, assumed:
                 if member.required:
                     problems.append(Problem(
                         key, f"missing; required: {member.rule()} ({member.description})"))
+                    out[member.key] = REPORTED
                 else:
                     out[member.key] = None
                 continue
@@ -351,6 +352,7 @@ def _validate_table(table: Table, data: Any, path: str, problems: list, assumed:
                     or (member.max_items is not None and n > member.max_items)):
                 problems.append(Problem(
                     key, f"must be {member.rule()} ({member.description})", value))
+                out[member.key] = REPORTED
                 continue
             out[member.key] = [
                 _validate_table(member.item, v, f"{key}[{i}]", problems, assumed)
@@ -361,12 +363,14 @@ def _validate_table(table: Table, data: Any, path: str, problems: list, assumed:
             if member.key not in data and not member.implicit:
                 if member.required:
                     problems.append(Problem(key, f"missing table [{key}] ({member.description})"))
+                    out[member.key] = REPORTED
                 else:
                     out[member.key] = None
                 continue
             value = data.get(member.key, {})
             if not isinstance(value, dict):
                 problems.append(Problem(key, f"must be a table [{key}] ({member.description})", value))
+                out[member.key] = REPORTED
                 continue
             out[member.key] = _validate_table(member, value, key, problems, assumed)
             continue
@@ -375,6 +379,7 @@ def _validate_table(table: Table, data: Any, path: str, problems: list, assumed:
                 problems.append(
                     Problem(key, f"missing; required: {member.rule()} ({member.description})")
                 )
+                out[member.key] = REPORTED
             else:
                 out[member.key] = member.default
                 if member.default is not None:
@@ -383,6 +388,7 @@ def _validate_table(table: Table, data: Any, path: str, problems: list, assumed:
         value, message = member.check(data[member.key])
         if message:
             problems.append(Problem(key, message, data[member.key]))
+            out[member.key] = REPORTED
         else:
             out[member.key] = value
     return out
@@ -390,6 +396,19 @@ def _validate_table(table: Table, data: Any, path: str, problems: list, assumed:
 
 def validate(schema: SpecSchema, data: dict, source: str = "") -> ValidatedSpec:
     """Check ``data`` against ``schema``; raise :class:`InputError` with every problem."""
+    spec, problems = validate_partial(schema, data, source)
+    if problems:
+        raise InputError(problems)
+    return spec
+
+
+def validate_partial(schema: SpecSchema, data: dict,
+                     source: str = "") -> tuple[ValidatedSpec, list[Problem]]:
+    """Check ``data`` against ``schema`` and return the spec with every usable value and
+    the problems found.  A key that is missing or wrong holds
+    :data:`~geardesign.core.errors.REPORTED` (so that a calculator's own checks of the
+    other keys can still run and be reported in the same round, while a check that needs
+    the wrong value is left out: :class:`~geardesign.core.errors.Problems`)."""
     problems: list[Problem] = []
     assumed: list[str] = []
     out = _validate_table(schema.root, data, "", problems, assumed)
@@ -399,9 +418,7 @@ def validate(schema: SpecSchema, data: dict, source: str = "") -> ValidatedSpec:
             names = " or ".join(f"[{k}] ({schema.root.member(k).description})" for k in group)
             what = "both" if len(present) > 1 else "neither"
             problems.append(Problem("", f"give exactly one of {names}; the spec has {what}"))
-    if problems:
-        raise InputError(problems)
-    return ValidatedSpec(out, assumed, source)
+    return ValidatedSpec(out, assumed, source), problems
 
 
 def load_toml(path: Path) -> dict:

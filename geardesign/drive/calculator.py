@@ -389,7 +389,7 @@ def _bearing_problem(where: str, p: Problem) -> Problem:
     designer never wrote."""
     if p.key.startswith("load."):
         return Problem(f"{where}: {p.key}", f"{p.message} — this is the bearing load the drive "
-                       f"computes from the forces on the shaft: reduce them (torque, external "
+                       f"derived from the forces on the shaft: reduce them (torque, external "
                        f"loads) or move the bearings", p.value)
     return Problem(f"{where}: {p.key}", p.message, p.value)
 

@@ -212,6 +212,26 @@ def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed:
 OWN_KEYS = ("type", "position", "hub_length", "name", "application_factor")
 
 
+def _connection_problem(p: Problem, key: str, typ: str, filled: dict) -> Problem:
+    """A problem of the connection spec the drive built, on the drive's own key: a value
+    the drive filled in is named by the drive key it comes from (the step's diameter, the
+    hub length, the shaft's material), the load by the shaft's loads it is derived from."""
+    own = ", ".join(OWN_KEYS)
+    sub = p.key.split(".", 1)[1] if p.key.startswith(typ + ".") else None
+    if sub in filled:
+        source = filled[sub]
+        if source.endswith(("diameter", "hub_length")):
+            return Problem(source, p.message, p.value)
+        return Problem(f"{key}.{sub}", f"derived from {source}: {p.message}", p.value)
+    if sub is not None:
+        return Problem(f"{key}.{sub}", p.message + (f"; or the drive's {own}" if
+                       p.message.startswith("unknown key") else ""), p.value)
+    if p.key.startswith("load."):
+        return Problem(f"{key}: {p.key}", f"derived from the shaft's loads (the torque "
+                       f"through the connection): {p.message}", p.value)
+    return Problem(f"{key}: {p.key}", p.message, p.value)
+
+
 def _connection(run: ShaftRun, sh: dict, j: int, c: dict, material, steps, span,
                 K_A: float) -> dict:
     key = f"{run.key}.key[{j}]"
@@ -232,9 +252,17 @@ def _connection(run: ShaftRun, sh: dict, j: int, c: dict, material, steps, span,
     if T <= 0.0:
         raise InputError.at(f"{key}.position", z, "no torque passes the shaft here: put the "
                             "connection at a gear or at the coupling")
-    d = steps[_steps_at(span, z)[0]]["diameter"]
+    n_step = _steps_at(span, z)[0]
+    d = steps[n_step]["diameter"]
     typ = c["type"]
     table = dict(extra)
+    # keys of the connection spec the drive fills in, by the drive key they come from
+    step_d, hub = f"{run.key}.step[{n_step}].diameter", f"{key}.hub_length"
+    filled = {"key": {"shaft_diameter": step_d, "hub_length": hub},
+              "spline": {"length": hub},
+              "fit": {"diameter": step_d, "length": hub,
+                      "shaft_yield": f"{run.key}.material"}}[typ]
+    filled = {k: v for k, v in filled.items() if k not in extra}
     if typ == "key":
         table.setdefault("shaft_diameter", d)
         table["hub_length"] = L_hub
@@ -252,12 +280,8 @@ def _connection(run: ShaftRun, sh: dict, j: int, c: dict, material, steps, span,
         calc, spec = load_data(data, key)
         res = calc.compute(spec)
     except InputError as exc:
-        own = ", ".join(OWN_KEYS)
-        raise InputError([Problem(f"{key}.{p.key.split('.', 1)[1]}"
-                                  if p.key.startswith(typ + ".") else f"{key}: {p.key}",
-                                  p.message + (f"; or the drive's {own}"
-                                               if p.message.startswith("unknown key") else ""),
-                                  p.value) for p in exc.problems]) from None
+        raise InputError([_connection_problem(p, key, typ, filled)
+                          for p in exc.problems]) from None
     return dict(j=j, name=c["name"] or f"{typ} at z = {_fmt(z)} mm", type=typ, z=z, d=d, T=T,
                 K_A=c["application_factor"] or K_A, result=res)
 

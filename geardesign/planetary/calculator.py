@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from geardesign.core.errors import InputError, Problem
+from geardesign.core.errors import InputError, Problem, Problems
 from geardesign.core.result import Result, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.planetary import assembly as A
@@ -250,7 +250,37 @@ def _mesh_for_limit(lay: PG.Layout, a_w: float) -> str:
     return "sun–planet"
 
 
-def _geometry(lay: PG.Layout, shifts: dict, conv: dict):
+def shift_origin(d: dict) -> tuple[str, object] | None:
+    """The input the shifts were derived from (key, value), or ``None`` when they are the
+    spec's own (given, or 0 by default): an error about a derived shift names that input."""
+    if d.get("synthesis") is not None:
+        return "synthesis", Problem.NO_VALUE
+    tr = d["train"]
+    for key in ("center_distance", "working_angle"):
+        if tr[key] is not None:
+            return f"train.{key}", tr[key]
+    return None
+
+
+def _shift_error(key: str, value: float, message: str, given: set,
+                 origin: tuple[str, object] | None) -> InputError:
+    """An error about ``key`` (``shift.ring``, or ``shift.sun + shift.planet``): on that key
+    when the user gave the shifts it reads; else on the input they were derived from,
+    saying so."""
+    members = [k.strip().removeprefix("shift.") for k in key.split("+")]
+    if origin is None or all(m in given for m in members):
+        return InputError.at(key, value, message)
+    where, what = origin
+    source = "the synthesis" if where == "synthesis" else f"{where} by coaxiality"
+    return InputError(Problem(where, f"gives {key} = {value:.4f} (derived from {source} and "
+                              f"the teeth): {message}", what))
+
+
+def _geometry(lay: PG.Layout, shifts: dict, conv: dict, given: set = frozenset(),
+              origin: tuple[str, object] | None = None):
+    """The meshes of the train; an impossible one is an input error on the shift the user
+    gave, or on the input a derived shift follows from (``origin``: :func:`shift_origin`;
+    ``given``: the shifts the spec states)."""
     try:
         return PG.mesh_geometry(lay, shifts)
     except G.GeometryError as exc:
@@ -258,33 +288,35 @@ def _geometry(lay: PG.Layout, shifts: dict, conv: dict):
         mn = C.MESH_NAMES.get(mesh.name, mesh.name) if mesh else "a"
         if exc.code == "INV_ALPHA_TW" and mesh is not None and mesh.internal:
             ring, crown = mesh.wheel, mesh.pinion
-            raise InputError.at(
+            raise _shift_error(
                 f"shift.{ring}", _gost_to_user(shifts[ring], conv.get(ring, 1)),
                 f"too negative for the {mn} mesh: {exc}, no working pressure angle exists; "
-                f"x_{ring} − x_{crown} (GOST sign) must be > {exc.limit:.4f}") from None
+                f"x_{ring} − x_{crown} (GOST sign) must be > {exc.limit:.4f}", given,
+                origin) from None
         if exc.code == "INV_ALPHA_TW":
-            raise InputError(Problem(
-                "shift.sun + shift.planet", f"too negative for the {mn} mesh: {exc}, no working "
-                f"pressure angle exists; x_sun + x_planet must be > {exc.limit:.4f}",
-                shifts["sun"] + shifts["planet"])) from None
+            raise _shift_error(
+                "shift.sun + shift.planet", shifts["sun"] + shifts["planet"],
+                f"too negative for the {mn} mesh: {exc}, no working pressure angle exists; "
+                f"x_sun + x_planet must be > {exc.limit:.4f}", given, origin) from None
         if exc.code == "RING_TIP_INSIDE_BASE":
             ring = mesh.wheel
             iso = conv.get(ring, 1) < 0
-            raise InputError.at(f"shift.{ring}", _gost_to_user(shifts[ring], conv.get(ring, 1)),
-                                f"the tip circle of the {ring} (d_a = {exc.value:.4f} mm) lies "
-                                f"inside its base circle (d_b = {exc.limit:.4f} mm): no involute "
-                                f"at the ring's tips; {'reduce' if iso else 'increase'} "
-                                f"shift.{ring} ({'ISO' if iso else 'GOST'} sign) or increase "
-                                f"ring.tip_shortening") from None
+            raise _shift_error(f"shift.{ring}", _gost_to_user(shifts[ring], conv.get(ring, 1)),
+                               f"the tip circle of the {ring} (d_a = {exc.value:.4f} mm) lies "
+                               f"inside its base circle (d_b = {exc.limit:.4f} mm): no involute "
+                               f"at the ring's tips; {'reduce' if iso else 'increase'} "
+                               f"shift.{ring} ({'ISO' if iso else 'GOST'} sign) or increase "
+                               f"ring.tip_shortening", given, origin) from None
         if exc.code == "CUTTER_TIP":
             raise InputError.at("cutter.teeth", lay.cutter.z0, f"{exc}; use another cutter") \
                 from None
         i = 1 if exc.code.endswith("_1") else 2
         member = (mesh.pinion if i == 1 else mesh.wheel) if mesh else "sun"
-        raise InputError.at(f"shift.{member}", shifts.get(member),
-                            f"the tip circle of the {member} (d_a = {exc.value:.4f} mm) lies "
-                            f"inside its base circle (d_b = {exc.limit:.4f} mm): no involute "
-                            f"flank; increase shift.{member} or teeth.{member}") from None
+        raise _shift_error(f"shift.{member}", shifts.get(member),
+                           f"the tip circle of the {member} (d_a = {exc.value:.4f} mm) lies "
+                           f"inside its base circle (d_b = {exc.limit:.4f} mm): no involute "
+                           f"flank; increase shift.{member} or teeth.{member}", given,
+                           origin) from None
 
 
 # ----------------------------------------------------------------------------- rows
@@ -418,28 +450,56 @@ def _members_gears(meshes: list[PG.Mesh]) -> dict:
 # ----------------------------------------------------------------------------- compute
 
 
-def compute(spec: ValidatedSpec) -> Result:
-    from geardesign.planetary import CALCULATOR
-
+def _train_and_meshes(spec: ValidatedSpec) -> tuple:
+    """The train, its layout, shifts and meshes (synthesised or as given)."""
     d = spec.data
-    op = d["operation"]
     notes = None
     if d["synthesis"] is not None:
         train, conv, lay, shifts, how, _, notes = _synthesis(spec)
     else:
         train, conv = train_from_teeth(d)
         lay = _layout(d, train)
-        _check_operation(train, op)
+        _check_operation(train, d["operation"])
         shifts, how, _ = resolve_shifts(d, spec, lay, conv)
-    meshes = _geometry(lay, shifts, conv)
+    meshes = _geometry(lay, shifts, conv, {g for g, v in d["shift"].items() if v is not None
+                                           and f"shift.{g}" not in spec.assumed},
+                       shift_origin(d))
+    return train, conv, lay, shifts, how, notes, meshes
+
+
+def _efficiency_inputs(d: dict) -> None:
     eff = d["efficiency"]
     if eff["model"] == "given":
-        for key in ("external", "internal"):
-            if eff[key] is None:
-                raise InputError(Problem(f"efficiency.{key}", "missing; required with "
-                                         "efficiency.model = \"given\": the efficiency of one "
-                                         f"{key} mesh"))
-    strength = _strength_inputs(spec, train)
+        missing = [Problem(f"efficiency.{key}", "missing; required with efficiency.model "
+                                 f"= \"given\": the efficiency of one {key} mesh")
+                         for key in ("external", "internal") if eff[key] is None]
+        if missing:
+            raise InputError(missing)
+
+
+def _input_stages(spec: ValidatedSpec, problems: Problems) -> tuple:
+    """The independent stages of input checks: the train and its meshes, the efficiency
+    model's inputs, the strength inputs; each stage's problems are collected."""
+    geo = problems.stage(_train_and_meshes, spec)
+    problems.stage(_efficiency_inputs, spec.data)
+    strength = problems.stage(_strength_inputs, spec)
+    return geo, strength
+
+
+def precheck(spec: ValidatedSpec, problems: Problems) -> None:
+    """:func:`compute`'s input stages on a spec whose schema problems are reported."""
+    _input_stages(spec, problems)
+
+
+def compute(spec: ValidatedSpec) -> Result:
+    from geardesign.planetary import CALCULATOR
+
+    d = spec.data
+    tr, op = d["train"], d["operation"]
+    problems = Problems()
+    geo, strength = _input_stages(spec, problems)
+    problems.raise_all()
+    train, conv, lay, shifts, how, notes, meshes = geo
     from geardesign.planetary.iso_inputs import prepare
 
     prepare(spec, train, meshes)
@@ -796,30 +856,34 @@ def _frequencies(res: Result, d: dict, train: K.Train, s: K.Speeds) -> None:
 # ----------------------------------------------------------------------------- strength
 
 
-def _strength_inputs(spec: ValidatedSpec, train: K.Train):
+def _strength_inputs(spec: ValidatedSpec):
+    """The materials of the strength calculation (``None`` without [strength] and
+    [material]); every missing piece is reported in one round."""
     d = spec.data
     st, mat, op = d["strength"], d["material"], d["operation"]
     torque = op["torque"] is not None or op["power"] is not None
     if st is None and mat is None:
         return None
+    problems = Problems()
     if st is None:
-        raise InputError(Problem("strength", "missing table [strength] (life_hours, ...): "
-                                 "required with [material]"))
+        problems.add(Problem("strength", "missing table [strength] (life_hours, ...): "
+                             "required with [material]"))
     if mat is None:
-        raise InputError(Problem("material", "missing table [material.sun], [material.planet], "
-                                 "[material.ring]: required with [strength]"))
+        problems.add(Problem("material", "missing table [material.sun], [material.planet], "
+                             "[material.ring]: required with [strength]"))
     if not torque:
-        raise InputError(Problem("operation.torque", "missing; required with [strength]: the "
-                                 "input torque in N·m (or operation.power in kW)"))
+        problems.add(Problem("operation.torque", "missing; required with [strength]: the "
+                             "input torque in N·m (or operation.power in kW)"))
     if op["speed"] is None:
-        raise InputError(Problem("operation.speed", "missing; required with [strength]: the "
-                                 "input speed"))
+        problems.add(Problem("operation.speed", "missing; required with [strength]: the "
+                             "input speed"))
     from geardesign.materials.gear_steel import resolve
 
     mats = {}
     for key in ("sun", "planet", "ring", "planet2", "ring2"):
-        if mat[key] is not None:
-            mats[key] = resolve(mat[key], f"material.{key}")
+        if mat is not None and mat[key] is not None:
+            mats[key] = problems.stage(lambda key=key: resolve(mat[key], f"material.{key}"))
+    problems.raise_all()
     mats.setdefault("planet2", mats["planet"])
     mats.setdefault("ring2", mats["ring"])
     return mats

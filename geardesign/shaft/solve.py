@@ -227,6 +227,29 @@ def _step_at(bounds: list[float], xm: float) -> int:
     return len(bounds) - 2
 
 
+def _singular(steps: list[Step], supports: list[Support], EI: np.ndarray,
+              el_step: list[int]) -> InputError:
+    """The beam model cannot be solved (its stiffness matrix is singular): the error names
+    what the user gave that causes it.  Springs given as support stiffness that are soft
+    against the shaft; else the slenderest step, whose bending stiffness is negligible
+    against the others' (a diameter in metres among millimetres)."""
+    springs = [(k, s.stiffness) for k, s in enumerate(supports) if s.stiffness is not None]
+    weakest = int(np.argmin(EI))
+    k = el_step[weakest]
+    if springs:
+        k_s, value = min(springs, key=lambda t: t[1])
+        return InputError(Problem(
+            f"support[{k_s}].stiffness", f"the supports are too soft for this shaft (its "
+            f"stiffness matrix is singular): give stiffer supports or leave out stiffness "
+            f"(rigid); check also step[{k}].diameter = {steps[k].diameter:g} mm", value))
+    return InputError(Problem(
+        f"step[{k}].diameter", f"the shaft cannot be solved as a beam (its stiffness matrix is "
+        f"singular): this step's bending stiffness EI = {EI[weakest]:.3g} N·mm² is "
+        f"{EI[weakest] / float(EI.max()):.1e} of the stiffest step's; diameters are in mm "
+        f"(in metres {steps[k].diameter:g} would be {steps[k].diameter * 1e3:g} mm)",
+        steps[k].diameter))
+
+
 def analyse(steps: list[Step], loads: list[Load], supports: list[Support],
             material: Material, options: Options = Options()) -> ShaftResult:
     """Beam model, diagrams, critical speed, static and fatigue safety of every section."""
@@ -260,10 +283,7 @@ def analyse(steps: list[Step], loads: list[Load], supports: list[Support],
         pz = beam.solve_plane(x, EI, Fz, Cz, sup)
         omega = beam.first_bending_frequency(x, EI, el_mass, mpt, sup)
     except np.linalg.LinAlgError:
-        raise InputError(Problem(
-            "support", "the supports are too soft for this shaft (its stiffness matrix "
-                       "is singular): give stiffer supports or leave out stiffness (rigid)")
-        ) from None
+        raise _singular(steps, supports, EI, el_step) from None
 
     # axial reaction at the support that takes it; internal torque and axial force
     axial_idx = next((k for k, s in enumerate(supports) if s.axial), 0)

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 
-from geardesign.core.errors import InputError, Problem
+from geardesign.core.errors import InputError, Problem, Problems
 from geardesign.core.result import Result, Section, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.spur import internal as I
@@ -392,10 +392,10 @@ def internal_rows(sec: Section, g) -> None:
 
 def _strength_inputs(spec: ValidatedSpec, gear: dict):
     """Materials, duty and setting of the strength calculation, or ``None`` for a
-    geometry-only spec.  Missing pieces are input errors naming the key."""
+    geometry-only spec.  Missing pieces are input errors naming the key; every
+    independent one is reported in the same round (:class:`Problems`)."""
     from geardesign.materials.gear_steel import resolve
-    from geardesign.spur.loads import Block, torque_from_power
-    from geardesign.spur.strength.rating import Duty, Life, Setting
+    from geardesign.spur.strength.rating import Setting
 
     d = spec.data
     load, mat = d["load"], d["material"]
@@ -406,19 +406,9 @@ def _strength_inputs(spec: ValidatedSpec, gear: dict):
                                      "[material.wheel]: required with load.torque1 or load.power "
                                      "for the strength calculation"))
         return None
-    if load is None:
-        raise InputError(Problem("load", "missing table [load] (speed1, torque1, life_hours): "
-                                 "required with [material]"))
-    if load["torque1"] is not None and load["power"] is not None:
-        raise InputError.at("load.power", load["power"], "give torque1 or power, not both")
-    if not torque_given:
-        raise InputError(Problem("load.torque1", "missing; required with [material]: the nominal "
-                                 "pinion torque in N·m (or load.power in kW)"))
-    if load["life_hours"] is None:
-        raise InputError(Problem("load.life_hours", "missing; required with [material]: the "
-                                 "required life in hours"))
     from geardesign.spur.strength.iso6336.spec import ISO_NAME, chosen
 
+    problems = Problems()
     # the GOST 21354-87 chart of K_Hβ: the GOST rating and the design mode's sizing read it,
     # the ISO 6336 rating does not (K_Hβ by method C from f_sh and f_ma)
     if gear["bearing_scheme"] is None and (d["design"] is not None
@@ -426,40 +416,13 @@ def _strength_inputs(spec: ValidatedSpec, gear: dict):
         where = "design" if d["design"] is not None else "gear"
         why = ("the design mode sizes the pair with the GOST 21354-87 K_Hβ" if d["design"]
                is not None else "the GOST 21354-87 rating")
-        raise InputError(Problem(f"{where}.bearing_scheme", f"missing; required for {why}: "
-                                 "1…7 as in the GOST 21354-87 chart (see geardesign template "
-                                 "spur)"))
-    T1 = load["torque1"] if load["torque1"] is not None else torque_from_power(load["power"],
-                                                                               load["speed1"])
-    if load["peak_torque1"] is not None and load["peak_torque1"] < T1:
-        raise InputError.at("load.peak_torque1", load["peak_torque1"],
-                            f"smaller than the nominal torque T1 = {_fmt(T1)} N·m; give the "
-                            f"largest short-time torque")
-    blocks = ()
-    if load["spectrum"]:
-        if load["regime"] is not None:
-            raise InputError.at("load.regime", load["regime"], "give a regime or a spectrum, "
-                                "not both")
-        total = sum(b["time_share"] for b in load["spectrum"])
-        if abs(total - 1.0) > 1e-6:
-            raise InputError.at("load.spectrum", load["spectrum"],
-                                f"the time shares add up to {total:.6g}; they must add up to 1")
-        if max(b["torque_ratio"] for b in load["spectrum"]) < 1.0 - 1e-9:
-            raise InputError.at("load.spectrum", load["spectrum"],
-                                "no block has torque_ratio = 1: torque1 must be the torque of the "
-                                "largest long-acting block")
-        blocks = tuple(Block(b["torque_ratio"], b["time_share"], b["speed_ratio"])
-                       for b in load["spectrum"])
-    regime = load["regime"]
-    if regime is None and not blocks:
-        regime = "0"
-        load["regime"] = "0"
-        spec.assumed.append("load.regime")
-    mats = (resolve(mat["pinion"], "material.pinion"), resolve(mat["wheel"], "material.wheel"))
-    life = Life(load["life_hours"], (load["meshes_pinion"], load["meshes_wheel"]),
-                regime if not blocks else None, blocks)
-    duty = Duty(T1, load["speed1"], load["application_factor"], load["peak_torque1"],
-                load["reverse_torque_ratio"], life)
+        problems.add(Problem(f"{where}.bearing_scheme", f"missing; required for {why}: "
+                             "1…7 as in the GOST 21354-87 chart (see geardesign template "
+                             "spur)"))
+    duty = problems.stage(_duty, spec, load, torque_given)
+    mats = tuple(problems.stage(lambda who=who: resolve(mat[who], f"material.{who}"))
+                 for who in ("pinion", "wheel"))
+    problems.raise_all()
     setting = Setting(gear["accuracy_grade"], gear["tip_relief"], gear["bearing_scheme"],
                       (mat["pinion"]["roughness_Ra"], mat["wheel"]["roughness_Ra"]),
                       dict(d["factors"] or {}), d["options"]["contact_model"],
@@ -468,6 +431,70 @@ def _strength_inputs(spec: ValidatedSpec, gear: dict):
 
     prepare(spec)
     return mats, duty, setting
+
+
+def _duty(spec: ValidatedSpec, load: dict | None, torque_given: bool):
+    """The duty of the strength calculation from [load] (torque or power, life, regime or
+    spectrum, peak torque); input errors name the key."""
+    from geardesign.spur.loads import torque_from_power
+    from geardesign.spur.strength.rating import Duty, Life
+
+    if load is None:
+        raise InputError(Problem("load", "missing table [load] (speed1, torque1, life_hours): "
+                                 "required with [material]"))
+    problems = Problems()
+    if load["torque1"] is not None and load["power"] is not None:
+        problems.add(Problem("load.power", "give torque1 or power, not both", load["power"]))
+    if not torque_given:
+        problems.add(Problem("load.torque1", "missing; required with [material]: the nominal "
+                             "pinion torque in N·m (or load.power in kW)"))
+    if load["life_hours"] is None:
+        problems.add(Problem("load.life_hours", "missing; required with [material]: the "
+                             "required life in hours"))
+    blocks = problems.stage(_blocks, load)
+    problems.raise_all()
+    T1 = load["torque1"] if load["torque1"] is not None else torque_from_power(load["power"],
+                                                                               load["speed1"])
+    if load["peak_torque1"] is not None and load["peak_torque1"] < T1:
+        raise InputError.at("load.peak_torque1", load["peak_torque1"],
+                            f"smaller than the nominal torque T1 = {_fmt(T1)} N·m; give the "
+                            f"largest short-time torque")
+    regime = load["regime"]
+    if regime is None and not blocks:
+        regime = "0"
+        load["regime"] = "0"
+        spec.assumed.append("load.regime")
+    life = Life(load["life_hours"], (load["meshes_pinion"], load["meshes_wheel"]),
+                regime if not blocks else None, blocks)
+    return Duty(T1, load["speed1"], load["application_factor"], load["peak_torque1"],
+                load["reverse_torque_ratio"], life)
+
+
+def _blocks(load: dict) -> tuple:
+    """The load spectrum of [[load.spectrum]] as blocks (empty without one)."""
+    from geardesign.spur.loads import Block
+
+    if not load["spectrum"]:
+        return ()
+    problems = Problems()
+    if load["regime"] is not None:
+        problems.add(Problem("load.regime", "give a regime or a spectrum, not both",
+                             load["regime"]))
+    total = sum(b["time_share"] for b in load["spectrum"])
+    if abs(total - 1.0) > 1e-6:
+        problems.add(Problem("load.spectrum", f"the time shares add up to {total:.6g}; they "
+                             "must add up to 1", load["spectrum"]))
+
+    def largest_block() -> None:
+        if max(b["torque_ratio"] for b in load["spectrum"]) < 1.0 - 1e-9:
+            raise InputError.at("load.spectrum", load["spectrum"], "no block has torque_ratio "
+                                "= 1: torque1 must be the torque of the largest long-acting "
+                                "block")
+
+    problems.stage(largest_block)
+    problems.raise_all()
+    return tuple(Block(b["torque_ratio"], b["time_share"], b["speed_ratio"])
+                 for b in load["spectrum"])
 
 
 _SECTIONS = {"forces": "Loads and forces", "life": "Life and load cycles",
@@ -604,21 +631,40 @@ def ratable(g) -> bool:
             and g.g1.s_an > 0.0 and g.g2.s_an > 0.0)
 
 
+def precheck(spec: ValidatedSpec, problems: Problems) -> None:
+    """The checks of :func:`compute` that need no computed geometry, run on a spec whose
+    schema problems are already reported (:func:`geardesign.core.registry.load_data`):
+    the pair's own rules and the strength inputs, each left out when it reads a wrong key."""
+    d = spec.data
+    if (d["design"] is None) == (d["gear"] is None):
+        return   # both or neither: the schema's problem says to give one
+    from geardesign.spur.strength.iso6336.spec import unused_tables
+
+    problems.stage(unused_tables, spec)
+    if d["gear"] is not None:
+        problems.stage(solve_geometry, spec)
+    problems.stage(_strength_inputs, spec, d["gear"] if d["gear"] is not None else d["design"])
+
+
 def compute(spec: ValidatedSpec) -> Result:
     from geardesign.spur import CALCULATOR
+    from geardesign.spur.strength.iso6336.spec import unused_tables
 
     if spec.data["design"] is not None:
         from geardesign.spur.design import design_pair
 
+        unused_tables(spec)
         geom, how, gear, notes, variants = design_pair(spec)
-    else:
+        strength = _strength_inputs(spec, gear)
+    else:   # the geometry and the strength inputs are checked independently: one report
         gear = spec.data["gear"]
-        geom, how = solve_geometry(spec)
+        problems = Problems()
+        problems.stage(unused_tables, spec)
+        solved = problems.stage(solve_geometry, spec)
+        strength = problems.stage(_strength_inputs, spec, gear)
+        problems.raise_all()
+        geom, how = solved
         notes = variants = None
-    from geardesign.spur.strength.iso6336.spec import unused_tables
-
-    unused_tables(spec)
-    strength = _strength_inputs(spec, gear)
     if strength is None:
         _drop_unused_defaults(spec, STRENGTH_ONLY)
     if spec.data.get("accuracy") is not None:

@@ -284,11 +284,8 @@ def tests_of(g: PairGeometry, spec: ValidatedSpec, acc: Accuracy | None) -> tupl
             try:
                 balls = tuple(over_balls(t, D, _width(g, i, gi.s_n + e)) for e in lim)
             except MeasurementError:
-                raise InputError.at(f"drawing.ball_diameter{n}", D, (
-                    "the ball's centre falls inside the base circle with the narrowest space the "
-                    "allowances permit: choose a smaller ball") if t.internal else (
-                    "the ball sinks below the base circle of the thinnest tooth the allowances "
-                    "permit: choose a larger ball")) from None
+                raise _thin_tooth(spec, g, t.internal, n, D, chosen, gi.s_n, acc.upper[i],
+                                  acc.lower[i]) from None
             M_l = _max_min(b.M for b in balls)
             Mr_l = _max_min(b.M_r for b in balls)
             s_l = _max_min(chordal(t, _width(g, i, gi.s_n + e)).s_c for e in lim)
@@ -306,6 +303,32 @@ def _max_min(values) -> tuple[float, float]:
     balls (and span over spaces) of an internal gear."""
     a, b = values
     return (a, b) if a >= b else (b, a)
+
+
+def _thin_tooth(spec: ValidatedSpec, g, internal: bool, n: int, D: float, chosen: bool,
+                s_n: float, upper: float, lower: float) -> InputError:
+    """The ball sinks below the base circle of the thinnest tooth (an internal gear: its
+    centre falls inside the base circle with the narrowest space) the allowances permit.
+    A ball the user gave is his to change; a ball chosen here (at mid-height of the
+    nominal tooth, from the module and the teeth) is not: the error then names the inputs
+    it follows from, the module and the allowances of [accuracy]."""
+    allowances = (f"the thickness allowances {upper:.1f}…{lower:.1f} µm (from [accuracy]) "
+                  f"on s_n{n} = {s_n:.4f} mm")
+    if not chosen:
+        return InputError.at(f"drawing.ball_diameter{n}", D, (
+            f"the ball's centre falls inside the base circle with the narrowest space "
+            f"{allowances} permit: choose a smaller ball") if internal else (
+            f"the ball sinks below the base circle of the thinnest tooth {allowances} "
+            f"permit: choose a larger ball"))
+    gear = spec.data.get("gear")
+    where = ("gear.module", gear["module"]) if gear is not None else ("accuracy", Problem.NO_VALUE)
+    part, miss = (("space too narrow", "has its centre inside the base circle") if internal
+                  else ("tooth too thin", "sinks below the base circle"))
+    return InputError(Problem(where[0], f"{allowances} leave the {who(n - 1, g)}'s {part} "
+                              f"for a measuring ball: the ball chosen for it (D{n} = "
+                              f"{D:.4g} mm, derived from the module and z{n}) {miss}; check "
+                              f"the unit of the module (mm), give smaller allowances in "
+                              f"[accuracy], or give drawing.ball_diameter{n}", where[1]))
 
 
 def who(i: int, g=None) -> str:

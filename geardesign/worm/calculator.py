@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from geardesign.core.errors import InputError, Problem
+from geardesign.core.errors import InputError, Problem, Problems
 from geardesign.core.result import Check, Result, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.materials import worm_wheel
@@ -446,22 +446,30 @@ def add_design_rows(res: Result, d: DesignResult) -> None:
             S.G19672)
 
 
+def _check_mode_inputs(spec: ValidatedSpec, o) -> None:
+    """The pair of the check mode and how its shift was found (no [design] keys); ``None``
+    when the options could not be read (their problem is reported)."""
+    given = [k for k in spec.data["design"] or {} if f"design.{k}" not in spec.assumed]
+    if given:
+        raise InputError.at(f"design.{given[0]}", spec.data["design"][given[0]],
+                            'applies only with mode = "design"; remove it or set mode = '
+                            '"design"')
+    return check_mode_input(spec, o.hardened) if o is not Problems.FAILED else None
+
+
 def compute(spec: ValidatedSpec) -> Result:
     from geardesign.worm import CALCULATOR
 
-    w = wheel_props(spec)
-    op = operation(spec)
-    o = options(spec)
+    problems = Problems()
+    w, op, o = (problems.stage(f, spec) for f in (wheel_props, operation, options))
     if spec.data["mode"] == "design":
+        problems.raise_all()    # the design needs the wheel, the duty and the options
         p, dres = design_mode_input(spec, w, op, o)
         how = "design"
     else:
-        given = [k for k in spec.data["design"] or {} if f"design.{k}" not in spec.assumed]
-        if given:
-            raise InputError.at(f"design.{given[0]}", spec.data["design"][given[0]],
-                                'applies only with mode = "design"; remove it or set mode = '
-                                '"design"')
-        p, how = check_mode_input(spec, o.hardened)
+        checked = problems.stage(_check_mode_inputs, spec, o)
+        problems.raise_all()
+        p, how = checked
         dres = None
     g = _solve(p)
     a = analyse(g, op, w, o)
