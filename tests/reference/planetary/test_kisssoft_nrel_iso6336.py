@@ -393,3 +393,29 @@ def test_planetary_calculator_rates_with_the_shared_sun():
     assert pr["m_red"] == pytest.approx(mass["planet"], rel=1e-9)
     assert (sp["z_n1"], sp["z_n2"]) == pytest.approx((18.0, 36.0), abs=1e-9)
     assert (pr["z_n1"], pr["z_n2"]) == pytest.approx((36.0, -93.0), abs=1e-9)
+
+
+@pytest.mark.parametrize("stage", [1, 2])
+def test_ring_tooth_root_through_a_spur_internal_pair(stage):
+    """The same ring as a spur internal pair (``kind = "spur"``, gear.cutter_teeth, the
+    drawing test's spec of the report): its fillet (s_Fn2, ρ_F2) is the planetary
+    calculator's, and its Y_F·Y_S carries the same named difference to the report."""
+    from geardesign.core.registry import run_data
+    from tests.reference.spur.test_internal_drawing_kisssoft import _spec
+
+    spec = _spec(stage)
+    spec.pop("drawing")
+    spec.pop("accuracy")
+    spec["load"] = {"speed1": 100.0, "torque1": 1.0e5, "life_hours": 20000.0}
+    spec["options"] = {"method": "ISO 6336:2019"}
+    spec["material"] = {"pinion": {"grade": "20KhN3A", "treatment": "carburized",
+                                   "hardness_HRC": 59.0},
+                        "wheel": {"grade": "40KhN", "treatment": "improved", "hardness_HB": 240.0}}
+    bend = run_data(spec).document()["results"]["iso6336_bending"]
+    ring = _results(stage)["strength_planet_ring"]
+    assert bend["form_internal"] == ring["form_internal"]
+    for key in ("s_Fn2", "rho_F2"):
+        assert bend[key] == pytest.approx(ring[key], rel=1e-9), key
+    p = PRINTED[(stage, "planet_ring")]
+    ratio = bend["Y_F2"] * bend["Y_S2"] / (float(p["Y_F2"]) * float(p["Y_S2"]))
+    assert 1.0 < ratio < (1.18 if stage == 1 else 1.035), ratio
