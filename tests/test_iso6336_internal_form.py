@@ -25,17 +25,18 @@ def _form(z, x, z0, x0, rho, eps=1.6, m=1.0, h_a=1.0, h_f=1.25):
 
 @settings(max_examples=150, deadline=None)
 @given(z=st.integers(40, 400), x=st.floats(-0.6, 0.6), dz=st.integers(8, 200),
-       x0=st.floats(-0.2, 0.3), rho=st.floats(0.15, 0.38), eps=st.floats(1.05, 1.9))
+       x0=st.floats(-0.2, 0.3), rho=st.floats(0.0, 0.38), eps=st.floats(1.05, 1.9))
 def test_internal_form_finite_and_positive(z, x, dz, x0, rho, eps):
     z0 = z - dz
     assume(z0 >= 12)
     tf = _form(z, x, z0, x0, rho, eps)
     if tf is None:        # no such cutter (its rounding inside its base circle): rack used
         return
-    for value in (tf.Y_F, tf.Y_S, tf.s_Fn, tf.h_Fe, tf.rho_F, tf.q_s):
+    assert tf.rho_F > 0.0
+    for value in (tf.Y_F, tf.Y_S, tf.s_Fn, tf.h_Fe, tf.q_s):
         assert math.isfinite(value) and value > 0.0
     assert tf.rho_F >= rho * (1.0 - 1e-9)        # the rounding plus its path's curvature
-    assert 0.5 < tf.Y_F * tf.Y_S < 10.0
+    assert tf.Y_F * tf.Y_S > 0.5          # a sharp cutter (ρ_a0 → 0) gives a large Y_S
 
 
 def _rack_60(x, rho, m=1.0, h_f=1.25):

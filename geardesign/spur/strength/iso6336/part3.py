@@ -231,12 +231,16 @@ def internal_tooth_form(z: int, x: float, m_n: float, alpha_n: float, beta: floa
     (x1, y1), (x2, y2), (x3, y3) = centre(psi - h), centre(psi), centre(psi + h)
     a_, b_, c_ = math.dist((x2, y2), (x3, y3)), math.dist((x1, y1), (x3, y3)), math.dist((x1, y1), (x2, y2))
     area = 0.5 * abs((x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1))
+    if not area > 0.0:
+        return None
     rho_F = rho + a_ * b_ * c_ / (4.0 * area)
     # outer point of single contact on the virtual internal gear
     d_n = m_n * z_n
     d_bn = d_n * math.cos(alpha_n)
     d_an = d_n - (d - d_a)
     eps_an = eps_alpha / (cb * cb)
+    if d_an <= d_bn:
+        return None
     root = math.sqrt(d_an * d_an / 4.0 - d_bn * d_bn / 4.0) + (
         math.pi * d * math.cos(beta) * math.cos(alpha_n) / z * (eps_an - 1.0))
     d_en = 2.0 * math.sqrt(root * root + d_bn * d_bn / 4.0)
@@ -244,6 +248,8 @@ def internal_tooth_form(z: int, x: float, m_n: float, alpha_n: float, beta: floa
     gamma_e = (0.5 * math.pi + 2.0 * x * math.tan(alpha_n)) / z_n - inv(alpha_n) + inv(alpha_en)
     alpha_Fen = alpha_en + gamma_e
     h_Fe = along - 0.5 * d_en * (math.cos(gamma_e) + math.sin(gamma_e) * math.tan(alpha_Fen))
+    if not (h_Fe > 0.0 and s_Fn > 0.0 and rho_F > 0.0):
+        return None
     Y_F = 6.0 * (h_Fe / m_n) * math.cos(alpha_Fen) / ((s_Fn / m_n) ** 2 * math.cos(alpha_n))
     L_ = s_Fn / h_Fe
     q_s = s_Fn / (2.0 * rho_F)
