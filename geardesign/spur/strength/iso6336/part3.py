@@ -16,6 +16,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from scipy.optimize import brentq
+
 from geardesign.core import xp
 from geardesign.involute import inv
 from geardesign.spur.geometry import GeometryError
@@ -205,13 +207,8 @@ def internal_tooth_form(z: int, x: float, m_n: float, alpha_n: float, beta: floa
         lo, hi = hi, hi - step
     else:
         return None
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if cos_tangent(mid) < target:
-            lo = mid
-        else:
-            hi = mid
-    psi = 0.5 * (lo + hi)
+    psi = brentq(lambda p: cos_tangent(p) - target, hi, lo, xtol=1e-15, rtol=1e-15) \
+        if hi != lo else lo
 
     def fillet(p):
         cx, cy = centre(p)
@@ -226,14 +223,15 @@ def internal_tooth_form(z: int, x: float, m_n: float, alpha_n: float, beta: floa
     half = abs(Fx * u[1] - Fy * u[0])
     along = Fx * u[0] + Fy * u[1]
     s_Fn = 2.0 * half
-    # radius of curvature of the fillet: that of the centre path plus ρ_a0
-    h = 1e-4 * abs(step)
-    (x1, y1), (x2, y2), (x3, y3) = centre(psi - h), centre(psi), centre(psi + h)
-    a_, b_, c_ = math.dist((x2, y2), (x3, y3)), math.dist((x1, y1), (x3, y3)), math.dist((x1, y1), (x2, y2))
-    area = 0.5 * abs((x2 - x1) * (y3 - y1) - (y2 - y1) * (x3 - x1))
-    if not area > 0.0:
+    # radius of curvature of the fillet: that of the centre path, |C'|³/|C' × C''|, plus ρ_a0
+    vx, vy = velocity(psi)
+    px, py = _cw(-psi * ratio, *C0)
+    ax = -a_w0 * math.sin(psi) - ratio * ratio * px
+    ay = -a_w0 * math.cos(psi) - ratio * ratio * py
+    cross = abs(vx * ay - vy * ax)
+    if not cross > 0.0:
         return None
-    rho_F = rho + a_ * b_ * c_ / (4.0 * area)
+    rho_F = rho + math.hypot(vx, vy) ** 3 / cross
     # outer point of single contact on the virtual internal gear
     d_n = m_n * z_n
     d_bn = d_n * math.cos(alpha_n)
