@@ -157,7 +157,13 @@ def test_planetary_meshes_rated_by_iso():
     doc = run_data(spec).document()
     codes = {c["code"] for c in doc["checks"]}
     assert "SUN_PLANET_ISO_PITTING_SUN" in codes and "PLANET_RING_ISO_BENDING_RING" in codes
-    assert "PLANET_RING_ISO_INTERNAL_FORM_FACTOR" in codes
+    # a ring with a shaper: the internal-gear method, no rack note; without: the rack, named
+    cut = "cutter" in spec
+    assert ("PLANET_RING_ISO_INTERNAL_FORM_FACTOR" in codes) is not cut
+    spec.pop("cutter", None)
+    doc = run_data(spec).document()
+    assert "PLANET_RING_ISO_INTERNAL_FORM_FACTOR" in {c["code"] for c in doc["checks"]}
+    assert doc["results"]["strength_planet_ring"]["form_internal"] == "rack"
 
 
 # ----------------------------------------------------------------------------- input errors

@@ -151,18 +151,31 @@ def test_contact_stress_uses_u_minus_1(both):
     assert v["sigma_H"] == pytest.approx(ext, rel=1e-9)
 
 
-def test_iso6336_internal_pair_runs_and_names_the_rack_limit(both):
+def test_iso6336_internal_pair_uses_the_shaper_or_names_the_rack(both):
+    """With the shaper (cutter_teeth) the internal gear's Y_F, Y_S come from the fillet it
+    generates (ISO 6336-3, internal gears); without it from the rack, and the note says so.
+    The shaper's fillet gives a thicker root chord than the rack's: Y_F below the rack's."""
     _, _, st, _ = both
     d1 = Z1 * M
-    s = run_data({"kind": "spur", "gear": {
-        "internal": True, "module": M, "z1": Z1, "z2": Z2, "x1": X1, "x2": X2, "face_width": B,
-        "internal_tip_shortening": K2, "cutter_teeth": Z0, "bearing_scheme": 5},
-        "load": {"speed1": st["n1_rel"], "torque1": st["F_t_planet"] * d1 / 2000.0,
-                 "life_hours": LIFE, "meshes_wheel": PLANETS},
-        "material": MATS, "options": {"method": "ISO 6336:2019"}}).document()
-    assert "ISO 6336:2019" in s["methods"]
-    assert any("rack" in c["message"] for c in s["checks"]
-               if c["severity"] == "info"), "the internal gear's Y_F, Y_S approximation is named"
+    gear = {"internal": True, "module": M, "z1": Z1, "z2": Z2, "x1": X1, "x2": X2,
+            "face_width": B, "internal_tip_shortening": K2, "cutter_teeth": Z0,
+            "bearing_scheme": 5}
+    spec = {"kind": "spur", "gear": gear,
+            "load": {"speed1": st["n1_rel"], "torque1": st["F_t_planet"] * d1 / 2000.0,
+                     "life_hours": LIFE, "meshes_wheel": PLANETS},
+            "material": MATS, "options": {"method": "ISO 6336:2019"}}
+    docs = {}
+    for cut in (True, False):
+        if not cut:
+            gear.pop("cutter_teeth")
+        docs[cut] = run_data(spec).document()
+        assert "ISO 6336:2019" in docs[cut]["methods"]
+    bend = {cut: docs[cut]["results"]["iso6336_bending"] for cut in docs}
+    assert bend[True]["form_internal"] == f"shaper z0 = {Z0}" and bend[False]["form_internal"] == "rack"
+    assert bend[True]["s_Fn2"] > bend[False]["s_Fn2"] and bend[True]["Y_F2"] < bend[False]["Y_F2"]
+    notes = {cut: [c for c in docs[cut]["checks"] if c["code"] == "ISO_INTERNAL_FORM_FACTOR"]
+             for cut in docs}
+    assert not notes[True] and "rack" in notes[False][0]["message"]
 
 
 def test_internal_velocities_relative_speed():

@@ -86,8 +86,8 @@ RING = Table("ring", "internal gears (rings)", (
           hint="default: rack.root_radius_coef"),
 ), required=False, implicit=True)
 
-CUTTER = Table("cutter", "shaper cutter of the rings (for their form circle and the cutting "
-               "interference)", (
+CUTTER = Table("cutter", "shaper cutter of the rings (for their form circle, the cutting "
+               "interference and the ISO 6336-3 Y_F, Y_S of their fillet)", (
     Field("teeth", "integer", "teeth of the shaper cutter", symbol="z_0", minimum=8,
           maximum=300, example=36),
     Field("shift", "number", "profile shift of the cutter", symbol="x_0", default=0.0,

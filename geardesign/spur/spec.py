@@ -62,7 +62,8 @@ GEAR = Table("gear", "gear pair (external or internal, spur or helical)", (
           "teeth; x2_ISO = −x2)", default=False,
           hint="geometry GOST 19274-73 / ISO 21771, a_w = m_t(z2 − z1)/2 without shifts"),
     Field("cutter_teeth", "integer", "teeth of the shaper cutter that generates the internal "
-          "gear (its form circle and the cutting interference; internal pairs only)",
+          "gear (its form circle, the cutting interference and the ISO 6336-3 Y_F, Y_S of "
+          "its fillet; internal pairs only)",
           symbol="z_0", default=None, minimum=8, maximum=300,
           hint="leave out: the form circle of the basic rack, as for a planetary ring without "
                "[cutter]; at most z2 − 4"),

@@ -417,19 +417,34 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
     forms = []
     for i in range(2):
         k, who, gr = i + 1, WHO[i], gears[i]
-        if internal and i == 1:
-            # the internal gear as the rack it tends to: z → ∞ with its own addendum
+        tf = None
+        if internal and i == 1 and getattr(p, "cutter", None) is not None:
+            # the internal gear's fillet as its shaper cutter generates it
+            c = p.cutter
+            rho_a0 = c.rho_a0 if c.rho_a0 is not None else racks[1].rho_f
+            tf = P3.internal_tooth_form(p.z2, x2, m_n, a_n, p.beta, g.beta_b, gr.d, gr.d_a,
+                                        gr.d_f, g.eps_alpha, c.z0, c.x0, rho_a0 * m_n)
+            how = f" (internal gear cut by the shaper z0 = {c.z0}, 60° tangent)"
+            if tf is not None:
+                R.put(B, "form_internal", f"shaper z0 = {c.z0}", None, "",
+                      "internal gear's Y_F, Y_S: fillet of the shaper cutter", S3)
+        if internal and i == 1 and tf is None:
+            # no shaper given: the internal gear as the rack it tends to (z → ∞, own addendum)
             d_rack = Z_BIG * g.m_t
             tf = P3.tooth_form(Z_BIG, x2, m_n, a_n, p.beta, g.beta_b, d_rack,
                                d_rack + (gr.d - gr.d_a), g.eps_alpha, h_fPs[1] * m_n,
                                racks[1].rho_f * m_n, iso.protuberance * m_n)
-            how = " (internal gear: rack approximation, conservative)"
-        else:
+            how = " (internal gear without a shaper: rack approximation, conservative)"
+            R.put(B, "form_internal", "rack", None, "",
+                  "internal gear's Y_F, Y_S: the rack it tends to (no shaper given)", S3)
+        elif not (internal and i == 1):
             tf = P3.tooth_form(gr.z, gr.x, m_n, a_n, p.beta, g.beta_b, gr.d, gr.d_a, g.eps_alpha,
                                h_fP * m_n, p.rack.rho_f * m_n, iso.protuberance * m_n)
             how = ""
         forms.append(tf)
-        R.put(B, f"s_Fn{k}", tf.s_Fn, "mm", f"s_Fn{k}", f"root chord at the 30° tangents, {who}", S3)
+        tangent = "60°" if internal and i == 1 and how.startswith(" (internal gear cut") else "30°"
+        R.put(B, f"s_Fn{k}", tf.s_Fn, "mm", f"s_Fn{k}", f"root chord at the {tangent} tangents, "
+              f"{who}", S3)
         R.put(B, f"h_Fe{k}", tf.h_Fe, "mm", f"h_Fe{k}", f"bending moment arm, {who}", S3)
         R.put(B, f"rho_F{k}", tf.rho_F, "mm", f"ρ_F{k}", f"root fillet radius, {who}", S3)
         R.put(B, f"alpha_Fen{k}", math.degrees(tf.alpha_Fen), "deg", f"α_Fen{k}",
@@ -786,11 +801,11 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
                     S, need, src))
     if "S_intS" in v:
         out.extend(scuffing_checks(v))
-    if internal:
+    if internal and v.get("form_internal", "rack") == "rack":
         out.append(check("ISO_INTERNAL_FORM_FACTOR", False, "info",
                          "ISO 6336: the internal gear's Y_F and Y_S are those of the rack it "
-                         "tends to (conservative); give Y_F2 and Y_S2 under [iso_factors] from "
-                         "the standard's internal-gear method for a closer rating", "",
+                         "tends to (conservative); give the shaper cutter that cuts it "
+                         "(cutter teeth) for the standard's internal-gear method", "",
                          None, None, S3))
     for k in (1, 2):
         if f"tolerance_range{k}" in v:
