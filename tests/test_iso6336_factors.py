@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from geardesign.spur.geometry import BasicRack, PairInput, pair_geometry
@@ -70,8 +70,13 @@ def test_reduced_mass_of_a_shared_sun(m_s, m_p, n_p):
 def test_sum_of_velocities_is_the_kinematic_sum_at_the_pitch_point(z1, z2, x1, x2, beta, n1):
     """v_ΣC = ω1 ρ_C1 + ω2 ρ_C2 with ρ_Ci = ½ d_bi tan α_wt, from the base circles (not
     from the operating pitch circle the function uses) on shifted pairs."""
-    g = pair_geometry(PairInput(3.0, z1, z2, x1, x2, math.radians(beta), 30.0,
-                                BasicRack(math.radians(20.0))))
+    from geardesign.spur.geometry import GeometryError
+
+    try:    # a pair that cannot mesh (inv α_tw <= 0) is refused by the geometry
+        g = pair_geometry(PairInput(3.0, z1, z2, x1, x2, math.radians(beta), 30.0,
+                                    BasicRack(math.radians(20.0))))
+    except GeometryError:
+        assume(False)
     w1 = math.pi * n1 / 30.0
     w2 = w1 * z1 / z2
     t = math.tan(g.alpha_tw)
