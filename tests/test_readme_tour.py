@@ -57,8 +57,8 @@ def commands(section: str) -> list[tuple[list[str], list[str], int | None, str]]
     return out
 
 
-def matches(shown: list[str], actual: list[str]) -> bool:
-    """The shown lines are the actual ones with runs of lines left out at the ``...``."""
+def runs(shown: list[str]) -> list[list[str]]:
+    """The shown lines split at the ``...`` (an empty run where a gap begins or ends)."""
     segments, cur = [], []
     for line in shown:
         if line == GAP:
@@ -67,6 +67,12 @@ def matches(shown: list[str], actual: list[str]) -> bool:
         else:
             cur.append(line)
     segments.append(cur)
+    return segments
+
+
+def matches(shown: list[str], actual: list[str]) -> bool:
+    """The shown lines are the actual ones with runs of lines left out at the ``...``."""
+    segments = runs(shown)
     pos = 0
     for k, seg in enumerate(segments):
         if not seg:
@@ -89,14 +95,7 @@ def regenerate(shown: list[str], actual: list[str]) -> list[str]:
     of lines between ``...`` is replaced by as many actual lines, from the line most like the
     run's first line onwards (the first run from the start, a last run without ``...`` after
     it to the end of the output)."""
-    segments, cur = [], []
-    for line in shown:
-        if line == GAP:
-            segments.append(cur)
-            cur = []
-        else:
-            cur.append(line)
-    segments.append(cur)
+    segments = runs(shown)
     out: list[str] = []
     pos = 0
     for k, seg in enumerate(segments):
