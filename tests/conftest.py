@@ -51,11 +51,18 @@ def bounded_work(measured_s: float, what: str = "the block"):
 def pytest_addoption(parser):
     parser.addoption("--update-golden", action="store_true", default=False,
                      help="rewrite specs/*.expected.json from the current code (review the diff!)")
+    parser.addoption("--update-readme", action="store_true", default=False,
+                     help="rewrite the README tour's outputs from real runs (review the diff!)")
 
 
 @pytest.fixture
 def update_golden(request) -> bool:
     return request.config.getoption("--update-golden")
+
+
+@pytest.fixture
+def update_readme(request) -> bool:
+    return request.config.getoption("--update-readme")
 
 
 def spur(gear: dict, rack: dict | None = None, load: dict | None = None) -> dict:

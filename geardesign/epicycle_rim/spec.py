@@ -22,7 +22,7 @@ RING = Table("ring", "ring gear (internal, spur)", (
     Field("face_width", "number", "working face width of the ring", "mm", "b", gt=0,
           maximum=2000, example=60.0),
     Field("rim_thickness", "number", "rim thickness from the root circle to the outer surface",
-          "mm", "δ", gt=0, maximum=500, example=8.0),
+          "mm", "δ", gt=0, maximum=500, example=12.0),
     Field("tooth_height", "number", "tooth height", "mm", "h", default=None, gt=0,
           maximum=200, example=7.3, hint="default 2.25·m"),
 ))
@@ -212,7 +212,9 @@ SCHEMA = SpecSchema(
     description="ring gear (epicycle) rim: probabilistic fatigue (GOST 25.504-82, "
                 "Serensen-Kogaev) and parametric resonance (Mathieu)",
     tables=(RING, PLANETS, FILLET, MATERIAL, LOAD, STAGE, FATIGUE, VEHICLE, RESONANCE),
-    title_example="Raba 118/77 ring gear, MAZ-103T trolleybus",
+    title_example="Ring gear m = 3.25, z = 64 of a three-planet wheel hub (Raba 118/77 "
+                  "layout) with a 12 mm rim (3.7·m): fillet fatigue, reliability and "
+                  "resonance, all checks passing",
 )
 
 FATIGUE_TABLES = ("fillet", "material", "load", "stage")

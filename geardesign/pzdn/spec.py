@@ -100,10 +100,10 @@ SPRING = Table("spring", "cylindrical torsion spring of the coupling", (
 
 SPRINGS = TableList("spring", "torsion springs of the coupling", SPRING, required=False,
                     examples=({"name": "knitting", "torque": 30.0, "wire_diameter": 6.5,
-                               "index": 8.0, "coil_diameter": 60.0, "coils": 4.0,
+                               "index": 9.0, "coil_diameter": 58.5, "coils": 4.0,
                                "pitch": 8.0, "E": 215000.0, "sigma_allow": 1500.0},
                               {"name": "take_down", "torque": 7.5, "wire_diameter": 4.5,
-                               "index": 12.0, "coil_diameter": 55.0, "coils": 3.0,
+                               "index": 11.0, "coil_diameter": 49.5, "coils": 3.0,
                                "pitch": 6.0, "E": 215000.0, "sigma_allow": 1500.0}))
 
 
@@ -152,9 +152,9 @@ COUPLING_GEAR = Table("coupling_gear", "open spur gear of the coupling (rated by
     Field("psi_bd", "number", "face width ratio b/d1 (module estimate; default face width)",
           symbol="ψ_bd", default=0.4, gt=0, maximum=2.0),
     Field("x1", "number", "profile shift, pinion", symbol="x1", default=0.0, minimum=-1.0,
-          maximum=2.0),
+          maximum=2.0, example=0.3),
     Field("x2", "number", "profile shift, wheel", symbol="x2", default=0.0, minimum=-1.0,
-          maximum=2.0),
+          maximum=2.0, example=-0.3),
     Field("planets", "integer", "number of planet meshes sharing the torque", symbol="n_w",
           default=2, minimum=1, maximum=20),
     Field("torque", "number", "working torque of the coupling", "N·m", "T", gt=0,
@@ -169,7 +169,7 @@ COUPLING_GEAR = Table("coupling_gear", "open spur gear of the coupling (rated by
     Field("life_hours", "number", "required life", "h", "L_h", default=10000.0, gt=0,
           maximum=1e7),
     Field("accuracy_grade", "integer", "accuracy grade (GOST 1643-81)", symbol="n_st",
-          default=9, minimum=6, maximum=11),
+          default=9, minimum=6, maximum=11, example=8),
     Field("bearing_scheme", "integer", "arrangement of the gears on their shafts, GOST "
           "21354-87 chart 1…7 (1: overhung gear on ball bearings)", default=1, minimum=1,
           maximum=7),
@@ -185,7 +185,7 @@ COUPLING_GEAR = Table("coupling_gear", "open spur gear of the coupling (rated by
 STARTUP = Table("startup", "three-mass start-up model, driving mass in the middle "
                 "(all values reduced to the motor shaft)", (
     Field("T1", "number", "motor starting torque", "N·m", "T1", gt=0, maximum=1e7,
-          example=26.5),
+          example=44.0),
     Field("T2", "number", "resisting moment of mass 2 (take-down mechanism)", "N·m", "T2",
           gt=0, maximum=1e7, example=4.4),
     Field("T3", "number", "resisting moment of mass 3 (knitting mechanism)", "N·m", "T3",
@@ -262,12 +262,16 @@ REGRESSION = Table("regression", "regression of the KO-2 drive (thesis §2.3): m
           gt=0, maximum=1e7),
     Field("sweep", "array", "link stiffnesses for a table of the regression", STIFFNESS,
           "C_i", default=None, gt=0, maximum=1e9, min_items=1, max_items=100),
-), required=False)
+), required=False, in_template=False,
+   hint="fitted to the KO-2 drive only (centre C0 = 1940 N·m/rad); for another drive "
+        "use [startup]")
 
 SCHEMA = SpecSchema(
     kind="pzdn",
     description="PZDN (torsion-spring device reducing start-up dynamic loads): spring sizing, "
                 "coupling gear, three-mass start-up, KO-2 regression",
     tables=(MOTOR, SPRINGS, COUPLING_GEAR, STARTUP, REGRESSION),
-    title_example="KO-2 knitting machine, two torsion springs",
+    title_example="Knitting-machine drive with a two-spring PZDN (KO-2 layout, "
+                  "starting torque 2·T_nom): springs, coupling gear and start-up, all "
+                  "checks passing",
 )
