@@ -92,7 +92,10 @@ def test_drive_slip_is_raised_to_the_drive_and_names_the_motor(tmp_path):
     code, out = run_table(tmp_path, with_value(template("drive"), "power", "0.0075"))
     head = out.split("Stage 1:")[0]          # the drive's own first screen
     assert "stage 1 carries" in head and "motor.power = 0.0075 kW" in head
-    assert "K_Hv = 1412" in out
+    # the stage's own warning names the absurd dynamic factor this light load gives
+    k_hv = [float(x) for x in re.findall(r"the dynamic factor K_Hv = ([0-9.]+) comes from this "
+                                         r"light load", out)]
+    assert k_hv and min(k_hv) > 10.0
 
 
 BEARING_SLIP = """kind = "bearing"
