@@ -156,9 +156,11 @@ FATIGUE = Table("fatigue", "fatigue method options", (
     Field("knee_cycles", "number", "cycles at the knee of the S-N curve", "-", "N_G",
           default=2e6, minimum=1e5, maximum=1e8),
     Field("slgn_alpha", "number", "coefficient α of lg S_lgN = α + β·lg σ̄", "-", "α",
-          default=-0.8, minimum=-5, maximum=5),
+          default=-0.8, minimum=-2, maximum=0,
+          hint="10^α is the scatter S_lgN of lg N at the endurance limit: 0.01...1 decade"),
     Field("slgn_beta", "number", "coefficient β of lg S_lgN = α + β·lg σ̄", "-", "β",
-          default=-2.3, minimum=-10, maximum=10),
+          default=-2.3, minimum=-10, maximum=0,
+          hint="β <= 0: the scatter of lg N falls as the stress rises"),
     Field("probabilities", "array", "probabilities of non-failure for the quantile and life "
           "tables", "%", "P", default=[50.0, 70.0, 90.0, 95.0], minimum=50, lt=100,
           max_items=20),

@@ -906,8 +906,9 @@ def _iso_rate(rate, st: dict, train: K.Train, meshes: list, pinion: str):
     central = pinion in ("sun", "ring", "ring2")
     n_p = train.planets if central else sum(
         1 for m in meshes if pinion in (m.spec.pinion, m.spec.wheel))
-    scuffing = scuffing_setting(st.get("scuffing"), meshes=n_p)
     oil = {} if st["lubricant_viscosity"] is None else {"nu40": st["lubricant_viscosity"]}
+    scuffing = scuffing_setting(st.get("scuffing"), meshes=n_p, nu40=oil.get("nu40"),
+                                where="strength.scuffing")
 
     def iso_rate(g, mats, duty, setting):
         iso = IsoSetting(grade=setting.grade, scuffing=scuffing, **oil)
