@@ -152,6 +152,18 @@ def bad_numbers(doc) -> str | None:
     return walk(doc, "")
 
 
+KNOWN_ELSEWHERE = ("render csv: ValueError at encoder.py", "non-finite in message of ")
+"""Signatures of two classes of issue 27 ("Renderers and messages") fixed in their own
+change: the CSV renderer's infinite list values and check messages that print nan/inf.
+:func:`known_elsewhere` lets the boundary and fuzz tests pass over them (and only them)
+until that change lands; ``benchmarks/fuzz_long.py`` counts them apart.  Empty this tuple
+then."""
+
+
+def known_elsewhere(signature: str | None) -> bool:
+    return bool(signature) and any(k in signature for k in KNOWN_ELSEWHERE)
+
+
 NONFINITE_WORD = re.compile(r"(?<![\w.])[-+]?(nan|inf|infinity)(?![\w])", re.IGNORECASE)
 """``nan``, ``inf``, ``-inf`` printed as a word in a message (not "information", not ∞)."""
 

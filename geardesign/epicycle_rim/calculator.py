@@ -690,8 +690,8 @@ def _geometry(spec: ValidatedSpec, res: Result, angles: list[float]) -> None:
     Y_B = rim.rim_factor_iso_internal(delta, m)
     K_B = rim.rim_factor_agma(m_B)
     g.add("delta_m", delta / m, "-", "δ/m", "rim thickness over module", S.ISO6336_3)
-    g.add("Y_B", Y_B, "-", "Y_B", "ISO 6336-3 rim thickness factor, internal gear (null: "
-          "outside δ/m > 1.75)", S.ISO6336_3)
+    g.add("Y_B", Y_B if Y_B == Y_B else None, "-", "Y_B", "ISO 6336-3 rim thickness factor, "
+          "internal gear (null: outside δ/m > 1.75)", S.ISO6336_3)
     g.add("m_B", m_B, "-", "m_B", "backup ratio δ/h", S.ISO6336_3)
     g.add("K_B", K_B, "-", "K_B", "AGMA rim thickness factor", S.ISO6336_3)
     g.add("failure_mode", rim.failure_mode(delta, h), None, "", "likely fatigue failure mode "
