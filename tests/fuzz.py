@@ -30,6 +30,7 @@ from pathlib import Path
 from geardesign.core.errors import InputError
 from geardesign.core.registry import get, load_data
 from geardesign.core.render import FORMATS, render
+from geardesign.core.result import ResultDomainError
 from geardesign.core.spec import Field, Table, TableList
 
 SPECS = Path(__file__).resolve().parent.parent / "specs"
@@ -173,10 +174,11 @@ def judge(calc, spec, formats=FORMATS) -> str | None:
     acceptable (a result or an input error naming keys), else a short signature."""
     try:
         res = calc.compute(spec)
-    except InputError as exc:
-        nameless = [p for p in exc.problems if not p.key]
-        if nameless:
-            return f"input error naming no key: {nameless[0].message[:120]}"
+    except ResultDomainError as exc:
+        # the result's guard caught a derived quantity outside its formula's domain: the
+        # calculator should have refused the input that leads there, naming it
+        return f"input error naming no key: {exc.problems[0].message[:120]}"
+    except InputError:
         return None
     doc = res.document()
     bad = bad_numbers(json.loads(json.dumps(doc, allow_nan=True)))
