@@ -52,7 +52,7 @@ def spec_dir(tmp_path_factory):
 COMMANDS = st.sampled_from(("run", "kind", "validate", "check"))
 
 
-@settings(max_examples=150, deadline=None, derandomize=True, database=None,
+@settings(max_examples=300, deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.too_slow,
                                  HealthCheck.function_scoped_fixture])
 @given(st.sampled_from(FILES), st.integers(0, 2 ** 32 - 1), COMMANDS, FORMATS)
