@@ -346,21 +346,16 @@ def combination(bases: dict, rng: random.Random, k: int = 4):
 
 
 def _toml_value(v) -> str:
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, int):
-        return str(v)
-    if isinstance(v, float):
-        return "nan" if v != v else ("inf" if v == math.inf else
-                                     "-inf" if v == -math.inf else repr(v))
-    if isinstance(v, str):
-        return json.dumps(v)
+    """A value as TOML: tables inline, lists element by element (an array of tables holds
+    tables), scalars as the sweep's spec writer writes them (``nan``, ``inf`` included)."""
+    from geardesign.spur.sweep_io import _toml_scalar
+
     if isinstance(v, list):
         return "[" + ", ".join(_toml_value(x) for x in v if x is not None) + "]"
     if isinstance(v, dict):
         return "{" + ", ".join(f"{json.dumps(str(k))} = {_toml_value(x)}"
                                for k, x in v.items() if x is not None) + "}"
-    raise TypeError(type(v))
+    return _toml_scalar(v)
 
 
 def toml_text(data: dict) -> str:
