@@ -61,17 +61,22 @@ def main() -> int:
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--table-every", type=int, default=10,
                     help="render the rich table every this many cases (1: every case)")
+    ap.add_argument("--progress", action="store_true", help="a line on stderr per chunk")
     a = ap.parse_args()
     chunks = [(a.seed * 100003 + i, min(CHUNK, a.n - i * CHUNK), a.table_every)
               for i in range((a.n + CHUNK - 1) // CHUNK)]
     counts, first, peak = collections.Counter(), {}, 0
     start = time.perf_counter()
     with ProcessPoolExecutor(a.workers) as ex:
-        for found, rss in ex.map(_chunk, chunks):
+        for done, (found, rss) in enumerate(ex.map(_chunk, chunks), 1):
             peak = max(peak, rss)
             for sig, case in found:
                 counts[sig] += 1
                 first.setdefault(sig, case)
+            if a.progress:
+                print(f"  {done * CHUNK} cases, {time.perf_counter() - start:.0f} s, "
+                      f"{sum(counts.values())} failures, peak {peak / 1024:.0f} MiB",
+                      file=sys.stderr, flush=True)
     wall = time.perf_counter() - start
     n = sum(c[1] for c in chunks)
     classes = collections.Counter()

@@ -100,3 +100,19 @@ def test_every_numeric_field_has_a_finite_range_and_a_resolution():
         element = f.element if f.type == "array" else f
         for v in (5e-324, -5e-324, 1e-300, 1e300, -1e300, math.nan, math.inf, -math.inf):
             assert element.check(v)[1] is not None, (kind, key, v)
+
+
+def test_epicycle_scatter_model_below_one_cycle_fails_a_check_naming_the_keys(tmp_path):
+    """S_lgN = 10^(α + β·lg σ̄) with α = 0, β = −10 at σ̄ ≈ 0.86 is about 5 decades: the
+    quantile life drops below one cycle; a failed check names the coefficients, the lives
+    stay finite."""
+    data = tomllib.loads((SPECS / "epicycle_rim_raba.toml").read_text(encoding="utf-8"))
+    data["load"]["bending_stress"] *= 0.5
+    data["fatigue"].update(slgn_alpha=0.0, slgn_beta=-10.0)
+    code, out, err = cli("run", write_spec(tmp_path, toml_text(data)), "--format", "json")
+    assert code == 1, err
+    doc = json.loads(out, parse_constant=lambda c: pytest.fail(c))
+    check = next(c for c in doc["checks"] if c["code"] == "SN_SCATTER_DOMAIN")
+    assert not check["passed"]
+    assert "fatigue.slgn_alpha" in check["message"] and "fatigue.slgn_beta" in check["message"]
+    assert all(x is None or x >= 0 for x in doc["results"]["life"]["N_P"])

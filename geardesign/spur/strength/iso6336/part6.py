@@ -24,14 +24,14 @@ def cycles_to_failure(sigma: float, sigma_G: Callable[[float], float]) -> float:
         return math.inf
     if sigma > sigma_G(N_MIN):
         return 0.0
-    lo, hi = 0.0, math.log10(N_MAX)
-    while hi - lo > 1e-13:                 # log10 N to 1e-13: N to 2.3e-13 relative
-        mid = 0.5 * (lo + hi)
-        if sigma_G(10.0 ** mid) >= sigma:
-            lo = mid
-        else:
-            hi = mid
-    return 10.0 ** lo
+    from scipy.optimize import brentq
+
+    # σ_G(10^x) − σ falls with x and changes sign on [0, log10 N_MAX]: Brent's bracketing
+    # method to log10 N within 1e-13 (N to 2.3e-13 relative) in about a tenth of the steps
+    # of a bisection
+    x = brentq(lambda x: float(sigma_G(10.0 ** x)) - sigma, 0.0, math.log10(N_MAX),
+               xtol=1e-13, rtol=4 * 2.3e-16)
+    return 10.0 ** x
 
 
 def damage(stresses: Sequence[float], cycles: Sequence[float],
@@ -58,10 +58,14 @@ def spectrum_safety(stresses: Sequence[float], cycles: Sequence[float],
     lo, hi = 1e-3, sigma_G(N_MIN) / peak * 1.000001
     if damage([hi * s for s in stresses], cycles, sigma_G) < 1.0:
         return hi
-    while hi / lo > 1.0 + 1e-13:           # S to 1e-13 relative
-        mid = math.sqrt(lo * hi)
-        if damage([mid * s for s in stresses], cycles, sigma_G) < 1.0:
-            lo = mid
-        else:
-            hi = mid
-    return lo
+    if damage([lo * s for s in stresses], cycles, sigma_G) >= 1.0:
+        return lo
+    from scipy.optimize import brentq
+
+    def excess(log_S: float) -> float:
+        # D − 1, bounded (a block above the static limit has D = ∞), rising with S
+        S = math.exp(log_S)
+        return min(damage([S * s for s in stresses], cycles, sigma_G), 1e6) - 1.0
+
+    # Brent's bracketing method on ln S to 1e-13 (S to 1e-13 relative)
+    return math.exp(brentq(excess, math.log(lo), math.log(hi), xtol=1e-13, rtol=4 * 2.3e-16))
