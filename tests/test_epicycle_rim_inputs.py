@@ -124,7 +124,7 @@ EXPECTED = {
         's.toml: planets.contact_ratio = 1.0: must be a number > 1 and <= 4',
     ],
     'mu_F': [
-        's.toml: stage[0].mu_F = 1.2: must be a number > 0 and <= 1',
+        's.toml: stage[0].mu_F = 1.2: must be a number >= 0.01 and <= 1',
     ],
     'grade': [
         's.toml: material.grade = "30HGSA": must be one of "30KhGSA" (did you mean "30KhGSA"?)',

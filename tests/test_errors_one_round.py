@@ -68,7 +68,7 @@ def test_spur_template_with_nine_mistakes_is_answered_in_one_run(tmp_path):
         's.toml: load.speed1 = "fast": must be a number >= 0.001 and <= 1000000 (min^-1), or '
         'a quantity in min^-1 like "4 min^-1" ("fast" is not understood)',
         "s.toml: load.life_hours = -1.0: must be a number >= 0.001 and <= 10000000 (h)",
-        "s.toml: load.spectrum[0].torque_ratio = 1.5: must be a number > 0 and <= 1",
+        "s.toml: load.spectrum[0].torque_ratio = 1.5: must be a number >= 0.001 and <= 1",
         's.toml: material.pinion.treatment = "imprved": must be one of "normalized", '
         '"improved", "through_hardened", "induction", "carburized", "nitrided" (did you mean '
         '"improved"?)',

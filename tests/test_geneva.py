@@ -118,7 +118,7 @@ BAD = [
      ['s.toml: spindles.direction = "oposite": must be one of "same", "opposite", '
       '"declutched" (did you mean "opposite"?)']),
     ("efficiency 0", GOOD + BARREL.replace("efficiency = 0.8", "efficiency = 0.0"),
-     ["s.toml: barrel.efficiency = 0.0: must be a number > 0 and <= 1"]),
+     ["s.toml: barrel.efficiency = 0.0: must be a number >= 0.1 and <= 1"]),
     ("too few points", GOOD + "points = 5\n",
      ["s.toml: geneva.points = 5: must be an integer >= 11 and <= 2001"]),
 ]

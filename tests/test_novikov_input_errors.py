@@ -67,7 +67,7 @@ CASES = [
     ("phases 2", GOOD + "[analysis]\nphases = 2\n",
      ["s.toml: analysis.phases = 2: must be an integer >= 4 and <= 60"]),
     ("stiffness 0", GOOD + "[analysis]\nmesh_stiffness = 0.0\n",
-     ["s.toml: analysis.mesh_stiffness = 0.0: must be a number > 0 and <= 1000 (N/(mm·µm))"]),
+     ["s.toml: analysis.mesh_stiffness = 0.0: must be a number >= 0.1 and <= 1000 (N/(mm·µm))"]),
     ("application factor below 1", replace("torque2 = 69500.0",
                                            "torque2 = 69500.0\napplication_factor = 0.5"),
      ["s.toml: load.application_factor = 0.5: must be a number >= 1 and <= 4"]),

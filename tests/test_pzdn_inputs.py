@@ -248,7 +248,7 @@ EXPECTED = {
         's.toml: startup.damping_ratio = -0.1: must be a number >= 0 and <= 2',
     ],
     'schema_sweep': [
-        's.toml: startup.sweep = []: must be a list of 1 to 50 numbers > 0 and <= 1000000',
+        's.toml: startup.sweep = []: must be a list of 1 to 50 numbers >= 0.001 and <= 1000',
     ],
     'schema_hist': [
         's.toml: startup.history_points = -1: must be an integer >= 0 and <= 100000',

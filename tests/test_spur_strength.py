@@ -95,7 +95,7 @@ RULES = [
       "the torque of the largest long-acting block"]),
     ("spectrum torque above nominal", spec(load__spectrum=[{"torque_ratio": 1.2,
                                                             "time_share": 1.0}]),
-     ["s.toml: load.spectrum[0].torque_ratio = 1.2: must be a number > 0 and <= 1"]),
+     ["s.toml: load.spectrum[0].torque_ratio = 1.2: must be a number >= 0.001 and <= 1"]),
     ("regime and spectrum", spec(load__regime="II", load__spectrum=[{"torque_ratio": 1.0,
                                                                      "time_share": 1.0}]),
      ['s.toml: load.regime = "II": give a regime or a spectrum, not both']),

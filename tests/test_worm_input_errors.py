@@ -70,15 +70,15 @@ CASES = [
       '"BrA10Zh4N4_centrifugal", "BrA10Zh4N4_chill", "BrA9Zh3L_sand", "BrA9Zh3L_chill", '
       '"LTs23A6Zh3Mts2_sand", "LTs23A6Zh3Mts2_chill", "SCh15", "SCh18", "SCh20", "CuSn12-C-GZ", "CuSn12Ni2-C-GS", "CuSn12Ni2-C-GZ", "CuZn25Al5Mn4Fe3-C-GZ", "custom"']),
     ("spectrum share above 1", replace("[wheel]", SPECTRUM.format(r1=1.0, s1=1.5) + "[wheel]"),
-     ["s.toml: load.spectrum[0].time_share = 1.5: must be a number > 0 and <= 1"]),
+     ["s.toml: load.spectrum[0].time_share = 1.5: must be a number >= 1e-06 and <= 1"]),
     ("torque ratio above 1", replace("[wheel]", SPECTRUM.format(r1=1.2, s1=1.0) + "[wheel]"),
-     ["s.toml: load.spectrum[0].torque_ratio = 1.2: must be a number > 0 and <= 1"]),
+     ["s.toml: load.spectrum[0].torque_ratio = 1.2: must be a number >= 0.001 and <= 1"]),
     ("friction level", GOOD + '[friction]\nlevel = "middle"\n',
      ['s.toml: friction.level = "middle": must be one of "low", "mean", "high"']),
     ("bearing efficiency", GOOD + "[friction]\nbearing_efficiency = 1.2\n",
      ["s.toml: friction.bearing_efficiency = 1.2: must be a number > 0.5 and <= 1"]),
     ("deflection limit", GOOD + "[worm]\ndeflection_limit = 0.5\n",
-     ["s.toml: worm.deflection_limit = 0.5: must be a number > 0 and <= 0.1"]),
+     ["s.toml: worm.deflection_limit = 0.5: must be a number >= 0.0001 and <= 0.1"]),
     ("base share", GOOD + "[thermal]\nbase_share = 1.5\n",
      ["s.toml: thermal.base_share = 1.5: must be a number >= 0 and <= 1"]),
     # ---- rules across keys (calculator)

@@ -133,6 +133,15 @@ def compute(spec: ValidatedSpec) -> Result:
     m = C.ball_mass(d_b / 1000.0, sa["ball_density"]) + sa["extra_mass"]
     F_c = C.centrifugal_force(m, r0, w)
     if design:
+        alpha_free = C.self_locking_angle(f, f_g)
+        if alpha >= alpha_free:
+            # cot(α2 + ρ) <= f_g: no spring force releases at the target torque (the formula
+            # of the required force leaves its domain and gives a force <= 0)
+            raise InputError.at(
+                "safety.socket_angle", sa["socket_angle"],
+                f"must be below {math.degrees(alpha_free):.1f}° with friction f = {_f(f)} and "
+                f"guide friction f_g = {_f(f_g)}: at a larger angle the balls self-lock "
+                "(cot(α2 + ρ) <= f_g) and no spring force gives safety.limit_torque")
         F_pre = C.required_spring_force(sa["limit_torque"], F_c, z3, r0, alpha, f, f_g)
         y0 = F_pre / sd.c
     else:

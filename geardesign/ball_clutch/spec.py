@@ -36,7 +36,8 @@ SAFETY = Table("safety", "torque-limiting (safety) part: balls held in sockets b
           "the min/max band", symbol="±Δf/f", default=0.5, minimum=0, lt=1,
           hint="0.5 gives f = 0.05...0.15 around 0.1"),
     Field("ball_density", "number", "density of the ball", "kg/m^3", "ρ", default=7850.0,
-          gt=0),
+          minimum=1000.0, maximum=20000.0,
+          hint="steel 7850; ceramic 3200; tungsten carbide 15600"),
     Field("extra_mass", "number", "mass moving radially with each ball (plunger, cup)", "kg",
           "m_p", default=0.0, minimum=0),
     Field("limit_torque", "number", "target limit torque at the operating speed (design "
@@ -61,7 +62,7 @@ SPRING = Table("spring", "spring pressing one safety ball", (
     Field("coil_diameter", "number", "mean coil diameter", "mm", "D", default=None, gt=0,
           example=16.0),
     Field("active_coils", "number", "number of active coils", symbol="n_a", default=None,
-          gt=0, example=4.5),
+          minimum=1.0, maximum=1000.0, example=4.5),
     Field("ends", "string", "end type", default="closed_ground", choices=END_TYPES),
     Field("free_length", "number", "free length (gives the solid-length check)", "mm", "L0",
           default=None, gt=0, example=40.0),
@@ -72,7 +73,7 @@ SPRING = Table("spring", "spring pressing one safety ball", (
     Field("tensile_strength", "number", "tensile strength of the wire (overrides the "
           "material)", "MPa", "R_m", default=None, gt=0),
     Field("allowable_share", "number", "allowable shear stress as a share of R_m (overrides "
-          "the material)", symbol="[τ]/R_m", default=None, gt=0, maximum=1),
+          "the material)", symbol="[τ]/R_m", default=None, minimum=0.1, maximum=1),
 ))
 
 FREEWHEEL = Table("freewheel", "overrunning (freewheel) part (optional)", (

@@ -46,11 +46,23 @@ UNIT_DOMAINS = {
     "N·m/rad": (1e-6, 1e10), "N/mm": (1e-6, 1e9), "min^-1": (1e-3, 2e5), "kW": (1e-6, 1e6),
     "h": (1e-3, 1e7), "s": (1e-6, 1e5), "kg": (1e-6, 1e7), "kg*m^2": (1e-9, 1e7),
     "m/s": (1e-6, 1e3), "mm^2/s": (1e-2, 1e5), "deg": (1e-4, 360.0),
+    "°C": (1e-3, 1000.0), "%": (1e-4, 100.0), "kg/m^3": (1.0, 25000.0),
+    "m/s^2": (1e-6, 1e6), "m²": (1e-4, 1e4), "m^2": (1e-4, 1e4), "l": (1e-3, 1e5),
+    "W/(m²·K)": (0.1, 1e4), "km/h": (1e-3, 1e3), "Hz": (1e-3, 1e7), "1/mm": (1e-6, 1e4),
+    "N/µm": (1e-6, 1e7), "N/(mm·µm)": (1e-3, 1e4), "1e-6/K": (1e-3, 1e3), "1/K": (1e-9, 1e-2),
+    "N/(mm·s^0.5·K)": (1e-3, 1e3), "HB": (1.0, 1000.0), "HV": (1.0, 2000.0),
+    "HRC": (1.0, 100.0),
 }
 """The physical validity domain of a quantity by its unit, for fields that state no domain of
 their own: a value "> 0" becomes ">= the smallest that means anything" (a µm, a mN·m, …),
 and a field without an upper bound gets the largest value any machine reaches.  Fields
 with a narrower physical domain state it themselves (a module 0.05–100 mm)."""
+
+OTHER_DOMAIN = (1e-9, 1e9)
+"""The domain of a number of any other unit (a dimensionless factor, a count): no value
+smaller in magnitude than 1e-9 other than 0 (a denormal or 1e-300 is never an input) and
+no magnitude above 1e9.  Every numeric field so has a finite range and a resolution; a
+field with a narrower physical domain states it (a friction coefficient 0–0.5)."""
 
 _TYPES = ("number", "integer", "string", "boolean", "array")
 _NOUNS = {"number": ("a number", "numbers"), "integer": ("an integer", "integers"),
@@ -100,14 +112,18 @@ class Field:
             raise ValueError(f"field {self.key}: unknown type {self.type!r}/{self.items!r}")
         if self.type == "array" and self.max_items is None:
             object.__setattr__(self, "max_items", MAX_ARRAY)
-        if self.numeric and self.unit in UNIT_DOMAINS and self.choices is None:
-            lo, hi = UNIT_DOMAINS[self.unit]
+        if self.numeric and self.choices is None:
+            known = self.unit in UNIT_DOMAINS
+            lo, hi = UNIT_DOMAINS[self.unit] if known else OTHER_DOMAIN
             object.__setattr__(self, "_tiny", lo)
-            if self.gt is not None and self.gt <= lo and self.minimum is None:
+            if known and self.gt is not None and self.gt <= lo and self.minimum is None:
                 object.__setattr__(self, "gt", None)
                 object.__setattr__(self, "minimum", lo)
             if self.maximum is None and self.lt is None:
                 object.__setattr__(self, "maximum", hi)
+            if self.minimum is None and self.gt is None:    # a signed quantity: ± its domain
+                object.__setattr__(self, "minimum", -(self.maximum if self.maximum is not None
+                                                      else self.lt))
         if self.numeric and self.unit is None:
             object.__setattr__(self, "unit", "-")
 
@@ -171,7 +187,9 @@ class Field:
             for v in value:
                 v, message = element.check(v)
                 if message:
-                    return None, bad
+                    tiny = getattr(element, "_tiny", None)
+                    return None, (f"{bad}, each 0 or at least {_num(tiny)} in magnitude"
+                                  if message.endswith("in magnitude") else bad)
                 out.append(v)
             return out, None
         if self.type == "boolean":

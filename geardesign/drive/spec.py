@@ -48,7 +48,7 @@ STAGE = Table("stage", "a stage, from the input", (
     Field("kind", "string", "calculator of an inline stage (its tables follow: [stage.gear], ...)",
           default=None, choices=STAGE_KINDS),
     Field("efficiency", "number", "efficiency of the stage (else the calculator's, or 0.98 for "
-          "a cylindrical stage)", symbol="η", default=None, gt=0, maximum=1.0),
+          "a cylindrical stage)", symbol="η", default=None, minimum=0.05, maximum=1.0),
 ), open=True)
 
 GEAR_ON_SHAFT = Table("gear", "a gear on the shaft", (
@@ -176,7 +176,7 @@ LUBRICATION = Table("lubrication", "the oil and the dip lubrication: with it the
           "of all parallel gears)", "mm", "h", default=None, minimum=0.0, maximum=2000.0,
           hint="default: one tooth depth, 2.25·m_n of the largest wheel"),
     Field("oil_volume", "number", "oil volume in the sump", "l", "V_0", default=None,
-          gt=0.0, maximum=1e5, hint="default: the housing floor times the oil depth"),
+          minimum=0.01, maximum=1e5, hint="default: the housing floor times the oil depth"),
     Field("seal_diameters", "array", "shaft diameters at the lip seals of the input and the "
                                      "output shaft", "mm", "d_s", default=None, min_items=2,
           max_items=2, gt=1.0, maximum=2000.0,

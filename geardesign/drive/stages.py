@@ -210,6 +210,15 @@ def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
     e, src = (eta, "spec") if eta is not None else (ETA_CYLINDRICAL, "assumed (handbook)")
     results = res.document()["results"]
     margins = _strength_margins(results)
+    if not margins:
+        # the spur calculator rates no strength for a pair that cannot mesh as computed
+        # (ε_α < 1, a pointed tooth, ...): the drive has no margin and no mesh forces
+        failed = [c for c in res.checks if not c.passed and c.severity == "error"
+                  and c.code != "STRENGTH_NOT_RATED"]
+        why = "; ".join(f"{c.code}: {c.message}" for c in failed[:2]) or "see its checks"
+        raise InputError(Problem(
+            f"{where}.gear", f"the stage's gears cannot mesh as given, so the drive cannot "
+            f"rate it ({why})"))
     worst = min(margins, key=margins.get)
     forces = results["forces"]     # the mesh forces (an ISO section also prints an F_t)
     F_t, F_r, F_a = forces["F_t"], forces["F_r"], forces["F_a"]

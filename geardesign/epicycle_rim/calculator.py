@@ -13,7 +13,7 @@ import re
 from dataclasses import dataclass
 
 from geardesign.core.errors import InputError, Problem
-from geardesign.core.result import Result
+from geardesign.core.result import Result, check
 from geardesign.core.spec import Field, ValidatedSpec
 from geardesign.epicycle_rim import checks as C
 from geardesign.epicycle_rim import endurance as E
@@ -458,7 +458,8 @@ def _fatigue(spec: ValidatedSpec, res: Result, pl_count: int, vehicle: dict | No
     lg_gov = [lgN(gov_eq, P) for P in probs]
     lf.add("lg_N_P", lg_gov, "-", "lg N_P", "life of the governing case at P (∞ shown as —)",
            S.A + " (21)")
-    lf.add("N_P", [10.0 ** x if math.isfinite(x) else math.inf for x in lg_gov], "cycles",
+    lf.add("N_P", [(10.0 ** x if x > -300.0 else 0.0) if math.isfinite(x) else math.inf
+                   for x in lg_gov], "cycles",
            "N_P", "cycles to failure of the governing case at P", S.A + " (21)")
 
     if vehicle is not None and all(s.share is not None for s in stages):
@@ -478,7 +479,9 @@ def _fatigue(spec: ValidatedSpec, res: Result, pl_count: int, vehicle: dict | No
                     if x != x:
                         dmg = math.nan
                     elif math.isfinite(x):
-                        dmg += share * per_km / 10.0 ** x
+                        # lg N_P < -300: no cycle at all (10**x underflows); the scatter
+                        # check below says which coefficients put the model there
+                        dmg += share * per_km * 10.0 ** -x if x > -300.0 else math.inf
                 lives.append(math.inf if dmg == 0.0 else (math.nan if dmg != dmg
                                                           else 1.0 / dmg))
             lf.add(f"life_km_{fillet}", lives, "km", "L_km", f"life of the {fillet} fillet at P "
@@ -496,6 +499,16 @@ def _fatigue(spec: ValidatedSpec, res: Result, pl_count: int, vehicle: dict | No
         advice = _advice(spec, mat, fo, pe, gov_eq, P_req) if fails else ""
         ck.append(C.endurance_check(gov_eq, pe.sigma_m1D, gov, advice))
         ck.append(C.probability_check(P_gov, P_req, gov, advice))
+    below_one = [x for x in lg_gov if x < 0.0]
+    if below_one:
+        sb = gov_eq / pe.sigma_m1D
+        s_lgn = 10.0 ** min(al + be * math.log10(sb), 300.0)
+        ck.append(check(
+            "SN_SCATTER_DOMAIN", False, "error",
+            f"the S-N scatter model gives less than one cycle (lg N_P = {min(below_one):.3g}): "
+            f"S_lgN = 10^(α + β·lg σ̄) = {s_lgn:.3g} decades at σ̄ = {sb:.3g}, where the scatter "
+            f"of steels is 0.05...1; check fatigue.slgn_alpha = {al:g} and fatigue.slgn_beta "
+            f"= {be:g}", "", s_lgn, 1.0, S.A + " (17)-(21)"))
     ck.append(C.range_warning("ENDURANCE_RATIO", mat.sigma_m1 / mat.sigma_u,
                               *C.ENDURANCE_RATIO, "σ_-1/σ_u",
                               "check the material data", S.PRACTICE))
@@ -677,8 +690,8 @@ def _geometry(spec: ValidatedSpec, res: Result, angles: list[float]) -> None:
     Y_B = rim.rim_factor_iso_internal(delta, m)
     K_B = rim.rim_factor_agma(m_B)
     g.add("delta_m", delta / m, "-", "δ/m", "rim thickness over module", S.ISO6336_3)
-    g.add("Y_B", Y_B, "-", "Y_B", "ISO 6336-3 rim thickness factor, internal gear (null: "
-          "outside δ/m > 1.75)", S.ISO6336_3)
+    g.add("Y_B", Y_B if Y_B == Y_B else None, "-", "Y_B", "ISO 6336-3 rim thickness factor, "
+          "internal gear (null: outside δ/m > 1.75)", S.ISO6336_3)
     g.add("m_B", m_B, "-", "m_B", "backup ratio δ/h", S.ISO6336_3)
     g.add("K_B", K_B, "-", "K_B", "AGMA rim thickness factor", S.ISO6336_3)
     g.add("failure_mode", rim.failure_mode(delta, h), None, "", "likely fatigue failure mode "

@@ -83,7 +83,7 @@ MATERIAL = Table("material", "ring material (fatigue analysis)", (
           "v_σ-1", default=0.06, minimum=0, maximum=0.5,
           hint="GOST 25.504-82 gives 0.04-0.10; 0.06 as taken in paper A"),
     Field("anisotropy_factor", "number", "anisotropy factor; default 1 − σ_u/6000", "-",
-          "K_A", default=None, gt=0, maximum=1),
+          "K_A", default=None, minimum=0.3, maximum=1),
 ), required=False)
 
 LOAD = Table("load", "loads at the rated ring torque (fatigue analysis)", (
@@ -91,7 +91,7 @@ LOAD = Table("load", "loads at the rated ring torque (fatigue analysis)", (
           "MPa", "σ_F", default=None, gt=0, maximum=5000, example=259.3,
           hint="with form_factor; or give nominal_bending_stress"),
     Field("form_factor", "number", "tooth form factor (includes the root concentration)", "-",
-          "Y_F", default=None, gt=0, maximum=10, example=3.3),
+          "Y_F", default=None, minimum=0.5, maximum=10, example=3.3),
     Field("nominal_bending_stress", "number", "nominal tooth bending stress without "
           "concentration, σ_F/Y_F", "MPa", "σ_Fn", default=None, gt=0, maximum=3000),
     Field("load_sharing", "number", "load-sharing non-uniformity factor between planets", "-",
@@ -124,16 +124,16 @@ STAGE = TableList("stage", "operating stages (e.g. traction, electrodynamic brak
         Field("tension_fillet", "string", "fillet on the tension side of the loaded tooth in "
               "this stage", choices=("left", "right"), example="right"),
         Field("mu_F", "number", "loading-mode factor of the stage", "-", "μ_F", default=None,
-              gt=0, maximum=1, example=0.606,
+              minimum=0.01, maximum=1, example=0.606,
               hint="or give mode, or torque_levels with time_fractions"),
         Field("mode", "string", "GOST 21354-87 typical loading mode (μ_F = K_FE^(1/q_F))",
               default=None, choices=_MODES),
         Field("torque_levels", "array", "torque spectrum: relative torques T_i/T_max", "-",
-              "T_i'", default=None, gt=0, maximum=1, max_items=100),
+              "T_i'", default=None, minimum=1e-3, maximum=1, max_items=100),
         Field("time_fractions", "array", "durations of the torque levels (any unit)", "-",
-              "t_i", default=None, gt=0, max_items=100),
+              "t_i", default=None, minimum=1e-9, maximum=1e9, max_items=100),
         Field("distance_share", "number", "share of the distance run in this stage (for the "
-              "life in km)", "-", default=None, gt=0, maximum=1, example=0.36),
+              "life in km)", "-", default=None, minimum=1e-4, maximum=1, example=0.36),
     )), required=False,
     examples=({"name": "acceleration", "tension_fillet": "right", "mu_F": 0.606,
                "distance_share": 0.36},
@@ -156,14 +156,16 @@ FATIGUE = Table("fatigue", "fatigue method options", (
     Field("knee_cycles", "number", "cycles at the knee of the S-N curve", "-", "N_G",
           default=2e6, minimum=1e5, maximum=1e8),
     Field("slgn_alpha", "number", "coefficient α of lg S_lgN = α + β·lg σ̄", "-", "α",
-          default=-0.8, minimum=-5, maximum=5),
+          default=-0.8, minimum=-2, maximum=0,
+          hint="10^α is the scatter S_lgN of lg N at the endurance limit: 0.01...1 decade"),
     Field("slgn_beta", "number", "coefficient β of lg S_lgN = α + β·lg σ̄", "-", "β",
-          default=-2.3, minimum=-10, maximum=10),
+          default=-2.3, minimum=-10, maximum=0,
+          hint="β <= 0: the scatter of lg N falls as the stress rises"),
     Field("probabilities", "array", "probabilities of non-failure for the quantile and life "
           "tables", "%", "P", default=[50.0, 70.0, 90.0, 95.0], minimum=50, lt=100,
           max_items=20),
     Field("scatter_total", "number", "coefficient of variation of the part endurance limit; "
-          "overrides eq. (14)", "-", "v_σ-1D", default=None, gt=0, maximum=0.5),
+          "overrides eq. (14)", "-", "v_σ-1D", default=None, minimum=0.01, maximum=0.5),
     Field("stress_scatter", "number", "coefficient of variation of the acting stress "
           "amplitude", "-", "v_σa", default=0.0, minimum=0, maximum=0.5),
     Field("required_probability", "number", "required probability of non-failure", "%",
@@ -174,14 +176,14 @@ VEHICLE = Table("vehicle", "vehicle drive kinematics (resonance speeds, life in 
     Field("wheel_radius", "number", "rolling radius of the wheel", "mm", "R", gt=0,
           maximum=5000, example=500.0),
     Field("carrier_ratio", "number", "carrier speed over wheel speed (1: the carrier is the "
-          "wheel hub)", "-", "i_HW", default=1.0, gt=0, maximum=1000),
+          "wheel hub)", "-", "i_HW", default=1.0, minimum=1e-3, maximum=1000),
     Field("speed_range", "array", "operating speed range", "km/h", "[V]", default=None,
           minimum=0, maximum=1000, min_items=2, max_items=2, example=[5.0, 55.0]),
 ), required=False)
 
 RESONANCE = Table("resonance", "parametric resonance of the ring (Mathieu)", (
     Field("natural_frequencies", "array", "natural frequencies of the ring (e.g. FE modal "
-          "analysis)", "Hz", "k0", gt=0, maximum=1e6, max_items=50,
+          "analysis)", "Hz", "k0", minimum=1.0, maximum=1e6, max_items=50,
           example=[2233.0, 2442.0, 2654.0, 3284.0, 3346.0, 3770.0]),
     Field("orders", "array", "orders n of the resonances (a = n²)", "-", "n", items="integer",
           default=[1, 2, 3, 4], minimum=1, maximum=30, max_items=30),
@@ -202,7 +204,7 @@ RESONANCE = Table("resonance", "parametric resonance of the ring (Mathieu)", (
     Field("floquet_check", "boolean", "check the Mathieu bands by numerical integration "
           "(scipy; slower)", default=False),
     Field("chart_b_max", "number", "largest b of the Ince-Strutt chart data; default "
-          "covers the working line", "-", "b_max", default=None, gt=0, maximum=100),
+          "covers the working line", "-", "b_max", default=None, minimum=0.01, maximum=100),
     Field("chart_points", "integer", "points of the Ince-Strutt chart data", default=21,
           minimum=2, maximum=401),
 ), required=False)

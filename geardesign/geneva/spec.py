@@ -42,7 +42,7 @@ BARREL = Table("barrel", "indexed spindle block (barrel) of a multi-spindle auto
     Field("friction_torque", "number", "friction moments resisting the barrel rotation",
           "N·m", "ΣM_tr", default=0.0, minimum=0),
     Field("efficiency", "number", "efficiency from the motor to the barrel", symbol="η_b",
-          gt=0, maximum=1, example=0.8),
+          minimum=0.1, maximum=1, example=0.8),
 ), required=False, hint="the [RotaryDevices] spindle-block model; needs [geneva]")
 
 SPINDLES = Table("spindles", "spindles carried by the barrel (optional, with [barrel])", (
@@ -64,7 +64,7 @@ SPINDLES = Table("spindles", "spindles carried by the barrel (optional, with [ba
           default="same", choices=("same", "opposite", "declutched"),
           hint='"declutched": spindle drive disengaged while indexing (u_p = 0)'),
     Field("efficiency", "number", "efficiency from the motor to the spindles' planetary "
-          "motion", symbol="η_sh", gt=0, maximum=1, example=0.85),
+          "motion", symbol="η_sh", minimum=0.1, maximum=1, example=0.85),
 ), required=False)
 
 DRIVE = Table("drive", "motor and distributing shaft (optional, with [barrel])", (

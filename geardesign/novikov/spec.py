@@ -42,13 +42,13 @@ RACK = Table("rack", "basic rack (GOST 15023-76, or a custom DLZ rack)", (
     Field("profile_angle", "number", "profile angle at the nominal contact point", "deg",
           "α_k", default=None, gt=10, lt=40),
     Field("lk_star", "number", "active addendum path along the chord, in modules", "-",
-          "l_k*", default=None, gt=0, maximum=3),
+          "l_k*", default=None, minimum=0.1, maximum=3),
     Field("eps_q", "number", "phase coefficient of axial overlap q/p_x", "-", "ε_q",
-          default=None, gt=0, lt=1),
+          default=None, minimum=0.05, lt=1),
     Field("addendum_coef", "number", "addendum coefficient", "-", "h_a*", default=None,
-          gt=0, maximum=2),
+          minimum=0.3, maximum=2),
     Field("dedendum_coef", "number", "dedendum coefficient", "-", "h_f*", default=None,
-          gt=0, maximum=3),
+          minimum=0.3, maximum=3),
 ), required=False, implicit=True)
 
 
@@ -110,10 +110,10 @@ ANALYSIS = Table("analysis", "phase analysis (Korotkin's NOVGOST-17 algorithm)",
     Field("phases", "integer", "engagement phases per axial pitch", symbol="f_z", default=21,
           minimum=4, maximum=60, hint="18…25 usually suffice (Korotkin 2017)"),
     Field("mesh_stiffness", "number", "tooth-pair stiffness per unit length of the effective "
-          "patch length 2a + 2h", "N/(mm·µm)", "c'", default=14.0, gt=0, maximum=1000,
+          "patch length 2a + 2h", "N/(mm·µm)", "c'", default=14.0, minimum=0.1, maximum=1000,
           hint="assumption (ISO 6336 single stiffness); see docs/novikov.md"),
     Field("point_stiffness", "number", "stiffness of one contact point (overrides "
-          "mesh_stiffness)", "N/µm", "c_p", default=None, gt=0, maximum=1e6),
+          "mesh_stiffness)", "N/µm", "c_p", default=None, minimum=1e-3, maximum=1e6),
 ), required=False, implicit=True)
 
 SCHEMA = SpecSchema(

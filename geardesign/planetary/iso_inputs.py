@@ -183,7 +183,9 @@ def mesh_rate_function(rate, d: dict, train, meshes: list, mesh, md):
     pinion = md.members[0]
     n_p = train.planets if pinion in ("sun", "ring", "ring2") else sum(
         1 for m in meshes if pinion in (m.spec.pinion, m.spec.wheel))
-    scuffing = ISPEC.scuffing_setting(d["strength"].get("scuffing"), meshes=n_p)
+    scuffing = ISPEC.scuffing_setting(d["strength"].get("scuffing"), meshes=n_p,
+                                      nu40=d["strength"]["lubricant_viscosity"],
+                                      where="strength.scuffing")
     iso = mesh_setting(d, train, mesh, md.members, md.geom, scuffing)
 
     def iso_rate(g, mats, duty, setting):

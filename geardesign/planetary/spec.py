@@ -137,9 +137,9 @@ LIMITS = Table("limits", "design limits", (
           "(0.4 for case-hardened teeth)", symbol="s_a/m", default=0.25, minimum=0.0,
           maximum=1.0),
     Field("coaxiality", "number", "largest difference of the meshes' centre distances, in "
-          "modules", symbol="Δa_w/m", default=0.001, gt=0.0, maximum=0.5),
+          "modules", symbol="Δa_w/m", default=0.001, minimum=1e-6, maximum=0.5),
     Field("specific_sliding", "number", "largest specific sliding at the roots",
-          symbol="|ϑ|max", default=4.0, gt=0.0, maximum=100.0),
+          symbol="|ϑ|max", default=4.0, minimum=0.1, maximum=100.0),
 ), required=False, implicit=True)
 
 def _scuffing_table() -> Table:
@@ -213,9 +213,9 @@ FREQUENCIES = Table("frequencies", "diagnostic frequencies (with operation.speed
     Field("speed_fluctuation", "number", "admissible fluctuation of the speeds (±)",
           symbol="δ", default=0.15, minimum=0.0, maximum=1.0),
     Field("amplitudes", "array", "measured amplitudes of the first mesh harmonics "
-          "(discriminant S_fz)", "m/s^2", "S_nfz", default=None, minimum=0.0, max_items=20),
+          "(discriminant S_fz)", "m/s^2", "S_nfz", default=None, minimum=0.0, maximum=1e4, max_items=20),
     Field("baseline", "array", "amplitudes of the same harmonics at the start of monitoring "
-          "(relative growth P_fz)", "m/s^2", "S_nfz0", default=None, minimum=0.0,
+          "(relative growth P_fz)", "m/s^2", "S_nfz0", default=None, minimum=0.0, maximum=1e4,
           max_items=20),
 ), required=False, implicit=True)
 

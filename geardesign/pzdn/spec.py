@@ -33,7 +33,7 @@ MOTOR = Table("motor", "drive motor, for the wind-up angle of the spring during 
     Field("breakaway_time", "number", "break-away time of the driving mass (rotor with the "
           "coupling)", "s", "t1", default=1.5e-3, gt=0, maximum=10.0),
     Field("windup_factor", "number", "wind-up time of the spring over t1 (t = factor·t1)",
-          symbol="t/t1", default=10.0, gt=0, maximum=1000.0),
+          symbol="t/t1", default=10.0, minimum=1.0, maximum=1000.0),
 ), required=False)
 
 SPRING = Table("spring", "cylindrical torsion spring of the coupling", (
@@ -150,7 +150,7 @@ COUPLING_GEAR = Table("coupling_gear", "open spur gear of the coupling (rated by
     Field("face_width", "number", "working face width", "mm", "b_w", default=None, gt=0,
           maximum=5000, example=20.0, hint="default ψ_bd·m·z1"),
     Field("psi_bd", "number", "face width ratio b/d1 (module estimate; default face width)",
-          symbol="ψ_bd", default=0.4, gt=0, maximum=2.0),
+          symbol="ψ_bd", default=0.4, minimum=0.05, maximum=2.0),
     Field("x1", "number", "profile shift, pinion", symbol="x1", default=0.0, minimum=-1.0,
           maximum=2.0, example=0.3),
     Field("x2", "number", "profile shift, wheel", symbol="x2", default=0.0, minimum=-1.0,
@@ -178,8 +178,9 @@ COUPLING_GEAR = Table("coupling_gear", "open spur gear of the coupling (rated by
     _gear_material("pinion"),
     _gear_material("wheel"),
     Table("factors", "load factors given instead of computed (e.g. the thesis' values)",
-          tuple(Field(k, "number", n, symbol=k.replace("beta", "β"), default=None, gt=0,
-                      maximum=100) for k, n in _FACTORS), required=False),
+          tuple(Field(k, "number", n, symbol=k.replace("beta", "β"), default=None,
+                      minimum=1.0 if k.startswith("K") else 1.5, maximum=10.0 if k.startswith("K")
+                      else 20.0) for k, n in _FACTORS), required=False),
 ), required=False)
 
 STARTUP = Table("startup", "three-mass start-up model, driving mass in the middle "
@@ -227,7 +228,7 @@ STARTUP = Table("startup", "three-mass start-up model, driving mass in the middl
     Field("kloss_max_torque", "number", "breakdown torque of the motor (Kloss)", "N·m",
           "T_k", default=None, gt=0, maximum=1e7),
     Field("kloss_critical_slip", "number", "critical slip (Kloss)", symbol="s_k",
-          default=None, gt=0, lt=1),
+          default=None, minimum=0.01, maximum=0.9),
     Field("synchronous_speed", "number", "synchronous speed (Kloss)", "min^-1", "n0",
           default=None, gt=0, maximum=1e5),
     Field("curve_speed", "array", "motor characteristic: speeds", "min^-1", "n_i",
@@ -241,7 +242,7 @@ STARTUP = Table("startup", "three-mass start-up model, driving mass in the middl
     Field("history_points", "integer", "points of the time histories in the output (0: none)",
           default=101, minimum=0, maximum=100000),
     Field("sweep", "array", "factors on both link stiffnesses for a stiffness sweep",
-          symbol="λ", default=None, gt=0, maximum=1e6, min_items=1, max_items=50,
+          symbol="λ", default=None, minimum=1e-3, maximum=1e3, min_items=1, max_items=50,
           example=[0.5, 1.0, 2.0]),
     Field("plot", "string", "write the start-up transient to this .png or .svg file "
           "(relative to the spec file; needs matplotlib)", default=None),

@@ -646,6 +646,23 @@ def precheck(spec: ValidatedSpec, problems: Problems) -> None:
     problems.stage(_strength_inputs, spec, d["gear"] if d["gear"] is not None else d["design"])
 
 
+def _contact_ratio_domain(geom, spec: ValidatedSpec, gear: dict) -> None:
+    """Refuse a pair whose tip circles do not overlap on the line of action: ε_α <= 0 is
+    outside the domain of every formula that uses it (Z_ε, Y_ε, K_Hα of GOST 21354-87 and
+    ISO 6336 take ε_α > 0; ε_α = g_α/p_bt of GOST 16532-70 table 1 item 4 is a length ratio).
+    The input to change is the tooth height (``rack.addendum_coef``) or the shifts."""
+    if geom.eps_alpha > 0.0:
+        return
+    rack = spec.data.get("rack") or {}
+    shifts = ", ".join(f"gear.{k} = {gear[k]:.3g}" for k in ("x1", "x2")
+                       if isinstance(gear.get(k), (int, float)))
+    raise InputError.at(
+        "rack.addendum_coef", rack.get("addendum_coef", 1.0),
+        f"gives with {shifts or 'the shifts'} a transverse contact ratio ε_α = "
+        f"{geom.eps_alpha:.3f} <= 0: the tip circles do not overlap on the line of action; "
+        "increase rack.addendum_coef (tooth height) or reduce the profile shifts")
+
+
 def compute(spec: ValidatedSpec) -> Result:
     from geardesign.spur import CALCULATOR
     from geardesign.spur.strength.iso6336.spec import unused_tables
@@ -665,6 +682,7 @@ def compute(spec: ValidatedSpec) -> Result:
         problems.raise_all()
         geom, how = solved
         notes = variants = None
+    _contact_ratio_domain(geom, spec, gear)
     if strength is None:
         _drop_unused_defaults(spec, STRENGTH_ONLY)
     if spec.data.get("accuracy") is not None:

@@ -416,13 +416,17 @@ HB_DIFFERENCE_MIN = 20.0   # HB, pinion harder than the wheel for running-in (so
 
 ADVICE_FACE_MAX = 20.0
 """Face widths up to this multiple of the given one are tried when the advice is sought."""
+ADVICE_RTOL = 1e-6
+"""Relative width of the bracket at which the search for the advice stops (each step
+re-rates the pair; a failing design with a load spectrum takes seconds at 40 steps)."""
 
 
 def least_passing(rerate, start: float, passes, limit: float = ADVICE_FACE_MAX
                   ) -> float | None:
     """The least value ``v >= start`` at which ``passes(rerate(v))`` holds, found by
     re-running the rating (the load factors change with the size, so a scaling law
-    understates it): doubling up to ``limit``·start, then 40 bisections; ``None`` if no
+    understates it): doubling up to ``limit``·start, then bisections until the bracket is
+    within ``ADVICE_RTOL`` of the value (the advice prints 3 to 4 digits); ``None`` if no
     value in that range passes (also when ``limit`` <= 1: nothing above ``start`` may be
     tried)."""
     if limit <= 1.0:
@@ -439,7 +443,7 @@ def least_passing(rerate, start: float, passes, limit: float = ADVICE_FACE_MAX
         if hi >= limit * start:
             return None
         lo = hi
-    for _ in range(40):
+    while hi - lo > ADVICE_RTOL * hi:
         mid = 0.5 * (lo + hi)
         if passes(rerate(mid)):
             hi = mid

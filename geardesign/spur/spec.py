@@ -103,7 +103,8 @@ DESIGN = Table("design", "design mode: propose a pair for the load, then check i
 
 RACK = Table("rack", "basic rack (GOST 13755-81)", (
     Field("addendum_coef", "number", "addendum coefficient", symbol="h_a*", default=1.0,
-          gt=0, maximum=2.0),
+          minimum=0.5, maximum=2.0,
+          hint="1 for GOST 13755 / ISO 53; 0.8 stub, up to 1.4 high-contact-ratio teeth"),
     Field("clearance_coef", "number", "bottom clearance coefficient", symbol="c*", default=0.25,
           minimum=0, maximum=1.0),
     Field("root_radius_coef", "number", "root fillet radius coefficient of the rack",
@@ -112,11 +113,11 @@ RACK = Table("rack", "basic rack (GOST 13755-81)", (
 
 BLOCK = Table("spectrum", "load block", (
     Field("torque_ratio", "number", "torque of the block over the nominal torque T1",
-          symbol="T_i/T1", gt=0, maximum=1.0, example=1.0),
+          symbol="T_i/T1", minimum=1e-3, maximum=1.0, example=1.0),
     Field("time_share", "number", "share of the life spent in the block", symbol="t_i/L_h",
-          gt=0, maximum=1.0, example=1.0),
+          minimum=1e-6, maximum=1.0, example=1.0),
     Field("speed_ratio", "number", "speed of the block over the nominal speed", symbol="n_i/n1",
-          default=1.0, gt=0, maximum=10.0),
+          default=1.0, minimum=1e-3, maximum=10.0),
 ))
 
 LOAD = Table("load", "operating data", (

@@ -23,7 +23,7 @@ GEAR = Table("gear", "wave gear and its flexible wheel", (
           default=None, choices=("eq7", "eq8"),
           hint='"eq7": x = 2.15 + 0.009·z_g (used when neither is given); "eq8": x = 0.022·z_g'),
     Field("effective_tooth_height", "number", "tooth height taking part in bending, × m",
-          symbol="h/m", default=0.45, gt=0, maximum=2.25,
+          symbol="h/m", default=0.45, minimum=0.1, maximum=2.25,
           hint="0.45 calibrated on steel racks by Tkachenko et al.; 0.35 from photoelasticity"),
     Field("shell_thickness", "number", "wall thickness of the smooth cylindrical shell (cup)",
           "mm", "δ", default=None, gt=0, hint="gives the torsional shear stress"),
@@ -32,7 +32,7 @@ GEAR = Table("gear", "wave gear and its flexible wheel", (
 RACK = Table("rack", "basic rack of the flexible-wheel teeth (GOST 13755-81)", (
     Field("pressure_angle", "number", "profile angle", "deg", "α", default=20.0, gt=10, lt=35),
     Field("addendum_coef", "number", "addendum coefficient", symbol="h_a*", default=1.0,
-          gt=0, maximum=2.0),
+          minimum=0.3, maximum=2.0),
     Field("clearance_coef", "number", "bottom clearance coefficient", symbol="c*",
           default=0.25, minimum=0, maximum=1.0),
     Field("root_radius_coef", "number", "root fillet radius coefficient", symbol="ρ_f*",
@@ -41,7 +41,7 @@ RACK = Table("rack", "basic rack of the flexible-wheel teeth (GOST 13755-81)", (
 
 GENERATOR = Table("generator", "wave generator", (
     Field("shape_factor", "number", "ring-bending factor of the deformation shape",
-          symbol="C_gen", default=1.5, gt=0, maximum=5,
+          symbol="C_gen", default=1.5, minimum=0.1, maximum=5,
           hint="1.5 for the cos 2φ shape of a cam generator; disc and roller generators "
                "roughly 2...3 (uncertain)"),
 ), required=False, implicit=True)

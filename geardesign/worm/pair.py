@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from geardesign.core.errors import InputError
 from geardesign.worm import tables
 from geardesign.worm.geometry import WormPairGeometry
 from geardesign.worm.kinematics import (
@@ -149,6 +150,13 @@ def analyse(g: WormPairGeometry, op: Operation, w: WheelProps, o: Options) -> An
     al = allowables(w.group, o.hardened, s.v_s, sf.K_HE * N, sf.K_FE * N, op.reversing,
                     w.sigma_B, w.sigma_T, w.sigma_bu, o.cv_law, o.K_HL_max, o.sigma_H0)
     sigma_HP = w.sigma_HP if w.sigma_HP is not None else al.sigma_HP
+    if sigma_HP <= 0.0:
+        # [σ]_H = σ_H0 − k·v_s of groups II and III leaves its domain (no allowable stress)
+        raise InputError.at(
+            "load.speed1", op.n1,
+            f"gives the sliding speed v_s = {s.v_s:.2f} m/s, at which [σ]_H = σ_H0 − k·v_s = "
+            f"{sigma_HP:.1f} MPa: a group {w.group} wheel cannot run this fast; lower the speed "
+            "or choose a group I bronze (wheel.material)")
     sigma_FP = w.sigma_FP if w.sigma_FP is not None else al.sigma_FP
     sigma_H = contact_stress(op.T2, K, p.q, p.z2, g.a_w)
     a_w_req = (required_center_distance(op.T2, K, p.q, p.z2, sigma_HP) if sigma_HP > 0

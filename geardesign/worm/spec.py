@@ -45,7 +45,7 @@ GEAR = Table("gear", "worm pair (orthogonal cylindrical worm, GOST 19650-97)", (
 ))
 
 BASIC_WORM = Table("basic_worm", "basic worm (GOST 19036-94)", (
-    Field("addendum_coef", "number", "addendum coefficient", symbol="h_a*", default=1.0, gt=0,
+    Field("addendum_coef", "number", "addendum coefficient", symbol="h_a*", default=1.0, minimum=0.5,
           maximum=2.0),
     Field("clearance_coef", "number", "radial clearance coefficient", symbol="c*", default=0.2,
           minimum=0, maximum=1.0),
@@ -56,9 +56,9 @@ BASIC_WORM = Table("basic_worm", "basic worm (GOST 19036-94)", (
 SPECTRUM = TableList("spectrum", "load spectrum: torque ratios T_i/T2 with their time shares",
                      Table("spectrum", "one load level", (
                          Field("torque_ratio", "number", "torque of this level over torque2",
-                               symbol="T_i/T2", gt=0, maximum=1.0, example=1.0),
+                               symbol="T_i/T2", minimum=1e-3, maximum=1.0, example=1.0),
                          Field("time_share", "number", "share of the running time",
-                               symbol="t_i/t", gt=0, maximum=1.0, example=1.0),
+                               symbol="t_i/t", minimum=1e-6, maximum=1.0, example=1.0),
                      )), required=False, examples=({"torque_ratio": 1.0, "time_share": 0.6},
                                                    {"torque_ratio": 0.5, "time_share": 0.4}),
                      hint="without it the load is constant; the shares must add up to 1")
@@ -111,7 +111,7 @@ WORM = Table("worm", "worm (steel) and its shaft", (
     Field("bearing_span", "number", "distance between the worm bearings", "mm", "l",
           default=None, gt=0, hint="default 0.9·d2"),
     Field("deflection_limit", "number", "allowed deflection as a share of the module",
-          symbol="f_lim/m", default=0.01, gt=0, maximum=0.1,
+          symbol="f_lim/m", default=0.01, minimum=1e-4, maximum=0.1,
           hint="textbooks: 0.005 ... 0.01"),
 ), required=False, implicit=True)
 
@@ -119,9 +119,9 @@ FRICTION = Table("friction", "friction and losses", (
     Field("level", "string", "where in the tabulated range of f' to read", default="mean",
           choices=FRICTION_LEVELS, hint='"low": good running-in, ground worm'),
     Field("coefficient", "number", "reduced friction coefficient, given instead of the table",
-          symbol="f'", default=None, gt=0, maximum=0.5),
+          symbol="f'", default=None, minimum=0.005, maximum=0.5),
     Field("material_factor", "number", "multiplier of the table's f' for the wheel material",
-          symbol="k_f", default=None, gt=0, maximum=3.0,
+          symbol="k_f", default=None, minimum=0.5, maximum=3.0,
           hint="default 1.0 for group I, 1.4 for groups II and III"),
     Field("bearing_efficiency", "number", "efficiency of bearings and oil churning",
           symbol="η_b", default=0.96, gt=0.5, maximum=1.0),
@@ -148,19 +148,19 @@ THERMAL = Table("thermal", "thermal balance of the housing", (
     Field("ambient", "number", "ambient air temperature", "°C", "t_0", default=20.0,
           minimum=-60, maximum=80),
     Field("oil_limit", "number", "highest allowed oil temperature", "°C", "t_lim", default=90.0,
-          gt=0, maximum=150, hint="textbooks: 80 ... 95"),
+          minimum=30, maximum=150, hint="textbooks: 80 ... 95"),
     Field("heat_transfer", "number", "heat-transfer coefficient of the housing (natural "
-          "cooling)", "W/(m²·K)", "K_T", default=13.0, gt=0, maximum=100,
+          "cooling)", "W/(m²·K)", "K_T", default=13.0, minimum=4, maximum=100,
           hint="9 (closed room) ... 17 (good air flow)"),
     Field("housing_area", "number", "cooling surface of the housing", "m²", "A", default=None,
-          gt=0, maximum=100, hint="default 20·a_w^1.7 (a_w in m)"),
+          minimum=0.01, maximum=100, hint="default 20·a_w^1.7 (a_w in m)"),
     Field("base_share", "number", "share of heat taken by the base or frame", symbol="ψ",
           default=0.3, minimum=0, maximum=1.0, hint="0 on a light frame"),
     Field("fan", "boolean", "a fan on the worm shaft blows on the housing", default=False),
     Field("fan_speed", "number", "fan speed", "min^-1", "n_fan", default=None, gt=0,
           maximum=1e5, hint="default the worm speed"),
     Field("fan_share", "number", "share of the surface blown by the fan", symbol="s",
-          default=0.35, gt=0, maximum=1.0),
+          default=0.35, minimum=0.01, maximum=1.0),
 ), required=False, implicit=True)
 
 DESIGN = Table("design", "design mode settings", (

@@ -24,14 +24,44 @@ def cycles_to_failure(sigma: float, sigma_G: Callable[[float], float]) -> float:
         return math.inf
     if sigma > sigma_G(N_MIN):
         return 0.0
-    lo, hi = 0.0, math.log10(N_MAX)
-    while hi - lo > 1e-13:                 # log10 N to 1e-13: N to 2.3e-13 relative
-        mid = 0.5 * (lo + hi)
-        if sigma_G(10.0 ** mid) >= sigma:
-            lo = mid
+    # σ_G(10^x) − σ falls with x, >= 0 at x = 0 and < 0 at log10 N_MAX: log10 N to 1e-13
+    # (N to 2.3e-13 relative), the last x with σ_G(10^x) >= σ
+    return 10.0 ** _bracket(lambda x: float(sigma_G(10.0 ** x)) - sigma, 0.0,
+                            math.log10(N_MAX), 1e-13, closed=True)
+
+
+def _bracket(f: Callable[[float], float], a: float, b: float, tol: float,
+             closed: bool) -> float:
+    """Where ``f`` changes sign on [a, b]: the end on a's side of the bracket once it is
+    narrower than ``tol``; a's side holds f > 0 (``closed``: f >= 0), b's side the rest.
+    Regula falsi in its Illinois form (the end kept twice in a row has its value halved in
+    the interpolation), with a bisection whenever two steps have not halved the bracket: a
+    bisection's certainty in a fraction of its steps ([Dowell1971])."""
+    fa, fb = f(a), f(b)
+    widths = [abs(b - a)] * 2
+    kept = 0          # +1: a kept by the last step, −1: b kept
+    bisect = False
+    while abs(b - a) > tol:
+        c = 0.5 * (a + b)
+        if not bisect and fa != fb:
+            c2 = b - fb * (b - a) / (fb - fa)
+            if min(a, b) < c2 < max(a, b):
+                c = c2
+        fc = f(c)
+        if fc > 0 or (closed and fc == 0):
+            a, fa = c, fc
+            if kept == -1:
+                fb *= 0.5
+            kept = -1
         else:
-            hi = mid
-    return 10.0 ** lo
+            b, fb = c, fc
+            if kept == 1:
+                fa *= 0.5
+            kept = 1
+        w = abs(b - a)
+        bisect = w > 0.5 * widths[0]
+        widths = [widths[1], w]
+    return a
 
 
 def damage(stresses: Sequence[float], cycles: Sequence[float],
@@ -58,10 +88,13 @@ def spectrum_safety(stresses: Sequence[float], cycles: Sequence[float],
     lo, hi = 1e-3, sigma_G(N_MIN) / peak * 1.000001
     if damage([hi * s for s in stresses], cycles, sigma_G) < 1.0:
         return hi
-    while hi / lo > 1.0 + 1e-13:           # S to 1e-13 relative
-        mid = math.sqrt(lo * hi)
-        if damage([mid * s for s in stresses], cycles, sigma_G) < 1.0:
-            lo = mid
-        else:
-            hi = mid
-    return lo
+    if damage([lo * s for s in stresses], cycles, sigma_G) >= 1.0:
+        return lo
+
+    def margin(log_S: float) -> float:
+        # 1 − D, bounded (a block above the static limit has D = ∞), falling with S
+        S = math.exp(log_S)
+        return 1.0 - min(damage([S * s for s in stresses], cycles, sigma_G), 1e6)
+
+    # ln S to 1e-13 (S to 1e-13 relative), the last S with D < 1
+    return math.exp(_bracket(margin, math.log(lo), math.log(hi), 1e-13, closed=False))

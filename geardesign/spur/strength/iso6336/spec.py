@@ -50,7 +50,7 @@ SCUFFING = Table("scuffing", "scuffing by the integral temperature method (ISO/T
     Field("oil_temperature", "number", "oil temperature before the mesh (sump or injection)",
           "°C", "Θ_oil", minimum=0, maximum=150, example=70.0),
     Field("oil_viscosity_100", "number", "kinematic viscosity of the oil at 100 °C", "mm^2/s",
-          "ν100", default=None, minimum=1.5, maximum=300,
+          "ν100", default=None, minimum=2.0, maximum=300,
           hint="from iso.lubricant_viscosity with viscosity index 95 when not given"),
     Field("oil_density", "number", "density of the oil at 15 °C", "kg/m^3", "ρ15", default=890.0,
           minimum=700, maximum=1300),
@@ -338,7 +338,8 @@ def iso_setting(spec, overrides: dict | None = None):
     if overrides:
         o.update(overrides)
     return setting_from(iso, (iso["pinion"], iso["wheel"]), o,
-                        scuffing_setting(iso.get("scuffing")), accuracy=spec.data.get("accuracy"))
+                        scuffing_setting(iso.get("scuffing"), nu40=iso["lubricant_viscosity"]),
+                        accuracy=spec.data.get("accuracy"))
 
 
 def setting_from(iso: dict, gears: tuple[dict, dict], overrides: dict, scuffing,
@@ -369,14 +370,41 @@ def setting_from(iso: dict, gears: tuple[dict, dict], overrides: dict, scuffing,
     return IsoSetting(**values)
 
 
-def scuffing_setting(t: dict | None, meshes: int | None = None):
+def scuffing_oil_domain(t: dict, nu40: float, where: str) -> None:
+    """Refuse a scuffing oil outside the domain of its viscosity formulas: ν100 (given, or from
+    ν40 with VI 95 by ASTM D2270) and ν at the oil temperature by ASTM D341 (Ubbelohde–Walther,
+    Z = ν + 0.7), which hold for ν >= 2 mm²/s.  ``where`` is the key of the table
+    (``iso.scuffing``, ``strength.scuffing``).  Raises :class:`InputError` naming the key."""
+    from geardesign.materials.lubricants import OilError, nu100_from_vi, viscosity_at
+
+    nu100 = t["oil_viscosity_100"]
+    key = f"{where}.oil_viscosity_100"
+    try:
+        if nu100 is None:
+            nu100 = nu100_from_vi(nu40, 95.0)
+    except OilError as exc:
+        raise InputError(Problem(key, f"missing, and the one from ν40 = {nu40:g} mm²/s with "
+                            f"viscosity index 95 cannot be used ({exc}); give it")) from None
+    try:
+        viscosity_at(t["oil_temperature"], nu40, nu100)
+    except OilError as exc:
+        raise InputError.at(f"{where}.oil_temperature", t["oil_temperature"],
+                            f"the oil (ν40 = {nu40:g}, ν100 = {nu100:g} mm²/s) is outside the "
+                            f"viscosity-temperature relation there ({exc})") from None
+
+
+def scuffing_setting(t: dict | None, meshes: int | None = None, nu40: float | None = None,
+                     where: str = "iso.scuffing"):
     """The :class:`~.rating.ScuffingSetting` of a validated scuffing table (``[iso.scuffing]``
     or the planetary ``[strength.scuffing]``, which has no ``meshes`` and ``driving``:
-    ``meshes`` then comes from the train); None without a table."""
-    from geardesign.spur.strength.iso6336.rating import ScuffingSetting
+    ``meshes`` then comes from the train); None without a table.  The oil is checked by
+    :func:`scuffing_oil_domain` with ν40 (default that of
+    :class:`~.rating.IsoSetting`)."""
+    from geardesign.spur.strength.iso6336.rating import IsoSetting, ScuffingSetting
 
     if t is None:
         return None
+    scuffing_oil_domain(t, IsoSetting.nu40 if nu40 is None else nu40, where)
     return ScuffingSetting(
         fzg_load_stage=t["fzg_load_stage"], oil_temperature=t["oil_temperature"],
         nu100=t["oil_viscosity_100"], density15=t["oil_density"], lubricant=t["lubricant"],
