@@ -1,0 +1,139 @@
+"""ISO 6336 factors at stated inputs against two independent public implementations.
+
+* [Drivetrain]: G. F. de Souza Rebouças, GitHub ``gfsReboucas/Drivetrain`` at commit
+  4a88df348fc70d04254c84bd375bb2bab0d15d0d, file ``MATISO_6336.m``: the getters
+  ``Z_L``, ``Z_v``, ``Z_R``, ``Z_NT``, ``K_Falpha``, ``K_Hbeta``, ``K_Fbeta``, ``Z_BD``,
+  ``Z_H``, evaluated at the inputs below in double precision.
+* [DIN3990py]: GitHub ``hanslhansl/din3990`` at commit
+  22b8478bae2b660e418d6891ecb5d466d77de63a, ``tests/test_1.py``: its printed output for
+  the pair z = 19/104, m_n = 4, x = 0.5/0.15, α_wt = 21.5319°, d_a = 88/425.2 mm:
+  M_1 = 1.00554704549864, M_2 = 0.8835590102280203, Z_B = 1.00554704549864, Z_D = 1.0,
+  Z_H = 2.3959406670899934 (DIN 3990-2 = ISO 6336-2 method B for these factors).
+
+Tolerance 1e-12 relative unless stated; the branches of every factor are covered (C_ZL,
+C_ZR below 850, between, above 1200 MPa; the four Z_NT curves before the static point,
+between the points, beyond 10¹⁰; ε_γ ≤ 2 and > 2; K_Hβ ≤ 2 and > 2; b/h below 3).
+"""
+
+import math
+
+import pytest
+
+from geardesign.spur.strength.iso6336 import part1 as P1
+from geardesign.spur.strength.iso6336 import part2 as P2
+
+Z_L = [(700.0, 100.0, 0.9354002108004216), (700.0, 320.0, 1.0895071629820665),
+       (850.0, 100.0, 0.9353947822467074), (1000.0, 100.0, 0.9484233111609081),
+       (1000.0, 320.0, 1.0714628197892953), (1200.0, 100.0, 0.9658001116002232),
+       (1500.0, 320.0, 1.0473861451081528)]
+Z_V = [(700.0, 2.0, 0.92319250547114), (700.0, 25.0, 1.058012573584461),
+       (1000.0, 2.0, 0.9407411892211148), (1000.0, 25.0, 1.0447580817721636),
+       (1500.0, 2.0, 0.9641565025531986), (1500.0, 25.0, 1.0270725343394151)]
+
+
+@pytest.mark.parametrize("sigma_Hlim, nu40, expected", Z_L)
+def test_lubricant_factor(sigma_Hlim, nu40, expected):
+    # Drivetrain writes C_ZL = σ/4375 + 0.6357, the same line as 0.08(σ − 850)/350 + 0.83
+    # to 5·10⁻⁵
+    assert P2.z_l(sigma_Hlim, nu40) == pytest.approx(expected, abs=6e-5)
+
+
+@pytest.mark.parametrize("sigma_Hlim, v, expected", Z_V)
+def test_velocity_factor(sigma_Hlim, v, expected):
+    assert float(P2.z_v(sigma_Hlim, v)) == pytest.approx(expected, abs=6e-5)
+
+
+GEAR = {"d_b": (71.41663917972905, 390.9121302469379), "d_a": (88.0, 425.2), "z": (19, 104),
+        "alpha_wt": math.radians(21.531902292465457), "eps_alpha": 1.5363235945832296}
+
+
+@pytest.mark.parametrize("sigma_Hlim, expected", [(700.0, 0.9661829821815024),
+                                                  (1000.0, 0.9728536374316795),
+                                                  (1500.0, 0.981819540573381)])
+def test_roughness_factor(sigma_Hlim, expected):
+    """R_z = 4 µm on both gears of the [DIN3990py] pair; ρ_red = 11.9125 mm."""
+    rho = P2.rho_red(*GEAR["d_b"], GEAR["alpha_wt"])
+    assert float(rho) == pytest.approx(11.912526662298541, rel=1e-12)
+    assert float(P2.z_r(sigma_Hlim, 4.0, 4.0, rho)) == pytest.approx(expected, rel=1e-12)
+
+
+def test_relative_curvature_of_an_internal_pair():
+    """ρ_red = ρ1ρ2/(ρ2 − ρ1) for an internal pair ([ISO6336-2], Z_R)."""
+    r1, r2 = (0.5 * d * math.tan(0.4) for d in (60.0, 180.0))
+    assert float(P2.rho_red(60.0, 180.0, 0.4, internal=True)) == pytest.approx(
+        r1 * r2 / (r2 - r1), rel=1e-12)
+
+
+Z_NT = {  # material: [(N_L, Z_NT)], Drivetrain rows 2 (St…IF), 3 (nitrided), 4 (NV nitrocar.)
+    "St": [(1e4, 1.6), (1e5, 1.6), (6e5, 1.3972345072002734), (1e7, 1.1294377353395042),
+           (2e8, 0.958368653207998), (3e9, 0.8819775786580923), (1e10, 0.85), (1e11, 0.85)],
+    "NT": [(1e4, 1.3), (6e5, 1.1112029277861797), (1e7, 0.9697566338180248),
+           (3e9, 0.8697533703004233), (1e11, 0.85)],
+    "NV_nitrocar": [(1e4, 1.1), (6e5, 1.039047865210566), (3e6, 0.9922930595699065),
+                    (1e11, 0.85)],
+}
+
+
+@pytest.mark.parametrize("material, N_L, expected",
+                         [(m, n, z) for m, pts in Z_NT.items() for n, z in pts])
+def test_contact_life_factor(material, N_L, expected):
+    assert float(P2.z_nt(material, N_L)) == pytest.approx(expected, rel=1e-12)
+
+
+@pytest.mark.parametrize("N_L, expected", [
+    (1e5, 1.6), (3e6, 1.4208021247500424), (1e7, 1.3), (2e8, 1.0960276053110507),
+    (1e9, 1.0), (3e9, 0.9253888646839725), (1e11, 0.85)])
+def test_contact_life_factor_with_limited_pitting(N_L, expected):
+    """Drivetrain row 1 (limited pitting permitted: 6·10⁵, 10⁷, 10⁹)."""
+    assert float(P2.z_nt("Eh", N_L, limited_pitting=True)) == pytest.approx(expected, rel=1e-12)
+
+
+@pytest.mark.parametrize("eps_gamma, expected", [(1.6, 0.8496000000000001), (2.0, 1.062),
+                                                 (2.6, 1.0797228635769742)])
+def test_transverse_load_factor(eps_gamma, expected):
+    """``K_Falpha`` before its limits: c_γα = 18, f_pb − y_α = 9 µm, F_tH/b = 400 N/mm."""
+    assert float(P1.transverse_load_factor(eps_gamma, 18.0, 9.0, 400.0)) == pytest.approx(
+        expected, rel=1e-12)
+
+
+def test_transverse_load_factor_limits():
+    """``K_Halpha``/``K_Falpha``: capped at ε_γ/(ε_α Z_ε²) and ε_γ/(0.25ε_α + 0.75),
+    floored at 1."""
+    assert float(P1.transverse_limit_contact(2.6, 1.5, 0.8)) == pytest.approx(2.6 / (1.5 * 0.64))
+    assert float(P1.transverse_limit_bending(2.6, 1.5)) == pytest.approx(2.6 / 1.125)
+    assert [float(v) for v in P1.limited(1.3, 1.2)] == [1.2, 1.0]
+    assert [float(v) for v in P1.limited(0.85, 1.2)] == [1.0, 0.0]
+    assert [float(v) for v in P1.limited(1.3, 0.9)] == [1.0, 0.0]
+
+
+@pytest.mark.parametrize("F_beta_y, c_gamma_beta, F_m_b, expected", [
+    (20.0, 15.0, 500.0, 1.3), (40.0, 15.0, 200.0, 2.449489742783178), (30.0, 15.0, 225.0, 2.0)])
+def test_face_load_factor(F_beta_y, c_gamma_beta, F_m_b, expected):
+    assert float(P1.face_load_factor(F_beta_y, c_gamma_beta, F_m_b)) == pytest.approx(
+        expected, rel=1e-12)
+
+
+@pytest.mark.parametrize("K_Hbeta, b_h, expected", [
+    (1.3, 10.0, 1.266635537650243), (1.3, 2.0, 1.1991785712924135),
+    (1.8, 6.0, 1.6357484441919237)])
+def test_face_load_factor_for_bending(K_Hbeta, b_h, expected):
+    assert float(P1.face_load_factor_bending(K_Hbeta, b_h)) == pytest.approx(expected, rel=1e-12)
+
+
+@pytest.mark.parametrize("eps_beta, helical, expected", [
+    (0.0, False, 1.00554704549864), (0.4, True, 1.003328227299184), (1.2, True, 1.0)])
+def test_single_pair_contact_factors(eps_beta, helical, expected):
+    """M_1, M_2, Z_B, Z_D of the [DIN3990py] pair (printed for the spur case) and
+    ``Z_BD`` of [Drivetrain] for a helical ε_β = 0.4 and 1.2."""
+    Z_B, Z_D, M1, M2 = P2.single_pair_factors(GEAR["alpha_wt"], GEAR["d_a"], GEAR["d_b"],
+                                              GEAR["z"], GEAR["eps_alpha"], eps_beta, helical)
+    assert float(M1) == pytest.approx(1.00554704549864, rel=1e-12)
+    assert float(M2) == pytest.approx(0.8835590102280203, rel=1e-12)
+    assert float(Z_B) == pytest.approx(expected, rel=1e-12)
+    assert float(Z_D) == 1.0
+
+
+def test_zone_factor():
+    """Z_H = 2.3959406670899934 printed by [DIN3990py] (β = 0, α_t = 20°)."""
+    assert float(P2.z_h(0.0, math.radians(20.0), GEAR["alpha_wt"])) == pytest.approx(
+        2.3959406670899934, rel=1e-12)
