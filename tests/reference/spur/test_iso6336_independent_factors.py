@@ -137,3 +137,29 @@ def test_zone_factor():
     """Z_H = 2.3959406670899934 printed by [DIN3990py] (β = 0, α_t = 20°)."""
     assert float(P2.z_h(0.0, math.radians(20.0), GEAR["alpha_wt"])) == pytest.approx(
         2.3959406670899934, rel=1e-12)
+
+
+# --------------------------------------------------------------------------------------
+# ISO 6336-3 method B root geometry of the [DIN3990py] pair (h_fP = 1.25m, ρ_fP = 0.25m,
+# s_pr = 0): printed s_Fn, ρ_F, ϑ [°] and q_s; the program stops its ϑ iteration earlier
+# (relative tolerance 10⁻⁴)
+
+ROOT = [  # z, x, d, d_a, s_Fn, ρ_F, ϑ°, q_s
+    (19, 0.5, 76.0, 88.0, 8.748743355951145, 1.3161477577049423, 48.10260415904784,
+     3.32361746799878),
+    (104, 0.15, 416.0, 425.2, 9.239504610725831, 1.325999192893118, 56.99835389167487,
+     3.48397821817927),
+]
+
+
+@pytest.mark.parametrize("z, x, d, d_a, s_Fn, rho_F, theta, q_s", ROOT)
+def test_root_chord_and_fillet_of_din3990(z, x, d, d_a, s_Fn, rho_F, theta, q_s):
+    from geardesign.spur.strength.iso6336 import part3 as P3
+
+    t = P3.tooth_form(z, x, 4.0, math.radians(20.0), 0.0, 0.0, d, d_a, GEAR["eps_alpha"],
+                      5.0, 1.0)
+    assert float(t.s_Fn) == pytest.approx(s_Fn, rel=1e-4)
+    assert float(t.rho_F) == pytest.approx(rho_F, rel=1e-4)
+    assert math.degrees(float(t.theta)) == pytest.approx(theta, rel=1e-4)
+    assert float(t.q_s) == pytest.approx(q_s, rel=1e-4)
+    assert float(t.z_n) == z
