@@ -163,3 +163,84 @@ def test_root_chord_and_fillet_of_din3990(z, x, d, d_a, s_Fn, rho_F, theta, q_s)
     assert math.degrees(float(t.theta)) == pytest.approx(theta, rel=1e-4)
     assert float(t.q_s) == pytest.approx(q_s, rel=1e-4)
     assert float(t.z_n) == z
+
+
+# --------------------------------------------------------------------------------------
+# ISO 6336-1 stiffness, masses and misalignment: [Drivetrain] ``ISO_6336.m``
+# (``dynamic_factor``: m_red, n_E1) and ``MATISO_6336.m`` (``C_ay``, ``K_Hbeta``: f_sh,
+# F_βx, y_β); ISO/TR 6336-30 example 1 as transcribed there (c'_th 17.85584, c' 12.37047,
+# c_γα 17.46485, c_γβ 14.84512 at ε_α = 1.5491); KISSsoft NREL stage 1 (C_R = 0.862 at
+# b_s/b = 0.25 and s_R/m_n = 3.4875, C_B = 0.975 for h_fP = 1.25m_n)
+
+def test_stiffness_chain_of_tr30():
+    c_th = P1.theoretical_single_stiffness(18.905, 114.543, 0.145, 0.0)
+    assert c_th == pytest.approx(17.85584, abs=6e-4)
+    C_B = P1.basic_rack_factor(1.4, 1.4, math.radians(20.0))
+    assert C_B == pytest.approx(0.9, rel=1e-12)
+    c = float(P1.single_stiffness(17.85584, 1.0, C_B, math.radians(15.8), 1273.5))
+    assert c == pytest.approx(12.37047, abs=6e-5)
+    c_ga = P1.mesh_stiffness_alpha(12.37047, 1.5491)
+    assert c_ga == pytest.approx(17.46485, abs=5e-4)   # ε_α printed to 4 decimals
+    assert P1.mesh_stiffness_beta(17.46485) == pytest.approx(14.84512, abs=6e-6)
+    # below 100 N/mm the single stiffness falls with (K_A F_t/b / 100)^0.25
+    assert float(P1.single_stiffness(17.85584, 1.0, C_B, math.radians(15.8), 50.0)) == \
+        pytest.approx(c * 0.5 ** 0.25, rel=1e-12)
+    # an internal gear (z_n2 = ∞) loses the C_3/z_n2 and C_7 x2/z_n2 terms
+    q = (0.04723 + 0.15551 / 19.0 - 0.00635 * 0.2 - 0.11654 * 0.2 / 19.0 - 0.00193 * -0.3
+         + 0.00529 * 0.04 + 0.00182 * 0.09)
+    assert P1.theoretical_single_stiffness(19.0, None, 0.2, -0.3) == pytest.approx(1.0 / q,
+                                                                                  rel=1e-12)
+
+
+def test_basic_rack_and_blank_factors():
+    assert P1.basic_rack_factor(1.25, 1.25, math.radians(20.0)) == pytest.approx(0.975, rel=1e-12)
+    assert P1.basic_rack_factor(1.25, 1.4, math.radians(25.0)) == pytest.approx(
+        0.5 * (0.975 + 0.9) * 1.1, rel=1e-12)
+    assert abs(float(P1.blank_factor(0.25, 3.4875)) - 0.862) <= 5e-4
+    assert P1.blank_factor(None, None) == 1.0
+    assert float(P1.blank_factor(0.1, 5.0)) == pytest.approx(float(P1.blank_factor(0.2, 5.0)))
+    assert float(P1.blank_factor(1.5, 5.0)) == pytest.approx(1.0 + math.log(1.2) / (5.0 * math.e))
+    assert float(P1.blank_factor(0.5, 0.5)) == pytest.approx(1.0 + math.log(0.5) / (5.0 * math.exp(0.2)))
+    assert float(P1.blank_factor(0.5, None)) == pytest.approx(float(P1.blank_factor(0.5, 1.0)))
+
+
+def test_masses_and_resonance_speed():
+    m_S = P1.gear_mass(105.0, 95.0, 94.0, 0.0)
+    assert m_S == pytest.approx(0.03479893401653474, rel=1e-12)
+    m_P = P1.gear_mass(85.0, 75.0, 75.0, 0.0)
+    assert P1.reduced_mass(m_P, m_S, 1, 3) == pytest.approx(0.0076410642745451, rel=1e-12)
+    # a pair scaled by u (d_m2 = u d_m1, d_b2 = u d_b1): π ρ u² d_m1⁴/(8(u² + 1) d_b1²)
+    m_W = P1.gear_mass(2.5 * 105.0, 2.5 * 95.0, 2.5 * 94.0, 0.0)
+    assert P1.reduced_mass(m_S, m_W) == pytest.approx(0.029999081048736848, rel=1e-12)
+    assert P1.reduced_mass(m_P, None, 1) == m_P
+    # a bore d_i takes (1 − (d_i/d_m)⁴) of the solid mass
+    assert P1.gear_mass(105.0, 95.0, 94.0, 50.0) == pytest.approx(m_S * (1.0 - 0.5 ** 4))
+    assert float(P1.resonance_speed(17, 17.46485, 0.0348)) == pytest.approx(12583.9002962239,
+                                                                            rel=1e-12)
+
+
+@pytest.mark.parametrize("sigma_Hlim, expected", [(1000.0, 5.181741609688122),
+                                                  (1500.0, 1.9953715857158036)])
+def test_tip_relief_from_running_in(sigma_Hlim, expected):
+    assert P1.tip_relief_running_in(sigma_Hlim) == pytest.approx(expected, rel=1e-12)
+
+
+def test_misalignment_chain():
+    """F_m = 150 kN, b = 100, d1 = 140 mm, f_ma = 10 µm, no helix modification."""
+    f_sh = P1.shaft_deflection(1500.0, 100.0, 140.0)
+    assert f_sh == pytest.approx(17.602040816326532, rel=1e-12)
+    F_bx = float(P1.initial_misalignment(f_sh, 10.0, "none", 1500.0, 0.0))
+    assert F_bx == pytest.approx(33.41071428571429, rel=1e-12)
+    y_b = float(P1.running_in_beta(F_bx, "Eh", 1500.0, 3.0))
+    assert F_bx - y_b == pytest.approx(28.399107142857147, rel=1e-12)
+    # the minimum F_βx = max(0.005 F_m/b, 0.5 f_Hβ)
+    assert float(P1.initial_misalignment(0.0, 0.0, "none", 1500.0, 4.0)) == 7.5
+    assert float(P1.initial_misalignment(0.0, 0.0, "none", 100.0, 4.0)) == 2.0
+
+
+def test_elasticity_and_helix_factors_of_tr30():
+    """Z_E = 189.81170, Z_β = 1.01944 printed (ISO/TR 6336-30 ex. 1, as transcribed)."""
+    assert float(P2.z_e(206000.0, 0.3, 206000.0, 0.3)) == pytest.approx(189.81170, abs=6e-6)
+    assert float(P2.z_e(206000.0, 0.3, 170000.0, 0.3)) == pytest.approx(180.49638818673876,
+                                                                        rel=1e-12)
+    assert float(P2.z_beta(math.radians(15.8))) == pytest.approx(1.01944, abs=6e-6)
