@@ -214,3 +214,26 @@ def test_scuffing_temperature_terms():
     T1 = P21.fzg_torque(10)
     assert thM == pytest.approx(80.0 + 0.23 * T1 * 1.1) and thf == pytest.approx(0.2 * T1 * 1.1)
     assert th == pytest.approx(thM + 1.5 * thf)
+
+
+@pytest.mark.parametrize("material, sigma_Hlim, v, f_pb, expected", [
+    ("St", 600.0, 3.0, 20.0, 160.0 / 600.0 * 20.0), ("St", 600.0, 8.0, 100.0, 12800.0 / 600.0),
+    ("St", 600.0, 8.0, 20.0, 160.0 / 600.0 * 20.0), ("St", 600.0, 12.0, 100.0, 6400.0 / 600.0),
+    ("GG", 300.0, 3.0, 100.0, 27.5), ("GG", 300.0, 8.0, 100.0, 22.0),
+    ("GG", 300.0, 12.0, 100.0, 11.0), ("GG", 300.0, 12.0, 20.0, 5.5),
+    ("Eh", 1500.0, 3.0, 20.0, 1.5), ("Eh", 1500.0, 3.0, 60.0, 3.0)])
+def test_running_in_allowance_of_the_pitch(material, sigma_Hlim, v, f_pb, expected):
+    """[ISO6336-1] eqs. (75)–(77): y_α = 160/σ_Hlim·f_pb (≤ 12800/σ_Hlim for 5 < v ≤ 10,
+    ≤ 6400/σ_Hlim above), 0.275f_pb (≤ 22, ≤ 11 µm), 0.075f_pb ≤ 3 µm; KISSsoft's helical
+    pair prints y_α = 1.2 µm (``test_iso6336_kisssoft``)."""
+    from geardesign.spur.strength.iso6336 import part1 as P1
+
+    assert float(P1.running_in_alpha(f_pb, material, sigma_Hlim, v)) == pytest.approx(
+        expected, rel=1e-12)
+    assert P1.pair_mean(2.0, 3.0) == 2.5
+    assert float(P1.running_in_beta(100.0, "Eh", 1500.0, 3.0)) == 6.0
+
+
+def test_size_factor_for_bending_of_cast_iron_beyond_its_table():
+    assert float(P3.y_x("GG", 40.0)) == 0.7
+    assert float(P3.y_x("V", 60.0)) == 0.85
