@@ -364,3 +364,17 @@ def test_design_estimates_follow_the_textbook_forms():
                               rel=1e-12)
     assert G.center_distance_estimate(200.0, 4.0, 1.1, 0.315, 500.0, True) == \
         pytest.approx(a * 430.0 / 495.0, rel=1e-12)
+
+
+def test_branch_edges():
+    """The branch edges of the program statements: AKHA.h with ε_γ < 2 above the floor
+    (ε_γ = 1.8: K_α = ε_γ(0.9 + 0.4C)/2 = 1.5814), CONTAU.h K_Hα,max at ε_β = 1 (the wide
+    branch 0.95ε_α) and ε_β > ε_α (0.95ε_α²/ε_β), the cap flag at K_max = 1."""
+    C = 15.0 * 60.0 * 0.4 * 30.0 / (4000.0 * 1.0 * 1.2 * 1.05)
+    k = float(G.k_alpha(1.5, 0.3, 15.0, 60.0, 30.0, 0.4, 4000.0, 1.0, 1.2, 1.05))
+    assert k == pytest.approx(1.8 * (0.9 + 0.4 * C) / 2.0, rel=1e-12)
+    assert float(G.k_h_alpha_max(1.6, 1.0, G.z_eps(1.6, 1.0))) == pytest.approx(0.95 * 1.6)
+    assert float(G.k_h_alpha_max(1.1, 1.2, G.z_eps(1.1, 1.2))) == pytest.approx(
+        0.95 * 1.21 / 1.2)
+    value, flag = G.limited(1.2, 1.0)
+    assert float(value) == 1.0 and bool(flag)

@@ -237,3 +237,123 @@ def test_running_in_allowance_of_the_pitch(material, sigma_Hlim, v, f_pb, expect
 def test_size_factor_for_bending_of_cast_iron_beyond_its_table():
     assert float(P3.y_x("GG", 40.0)) == 0.7
     assert float(P3.y_x("V", 60.0)) == 0.85
+
+
+@pytest.mark.parametrize("material, sigma_Hlim, v, f, y_alpha, y_beta", [
+    ("St", 600.0, 3.0, 100.0, 160.0 / 6.0, 320.0 / 6.0), ("St", 600.0, 5.0, 100.0, 160.0 / 6.0, 320.0 / 6.0),
+    ("St", 600.0, 5.5, 100.0, 12800.0 / 600.0, 25600.0 / 600.0),
+    ("St", 600.0, 10.0, 100.0, 12800.0 / 600.0, 25600.0 / 600.0),
+    ("St", 600.0, 10.5, 100.0, 6400.0 / 600.0, 12800.0 / 600.0),
+    ("GG", 300.0, 3.0, 100.0, 27.5, 55.0), ("GG", 300.0, 5.0, 100.0, 27.5, 55.0),
+    ("GG", 300.0, 5.5, 100.0, 22.0, 45.0), ("GG", 300.0, 10.0, 100.0, 22.0, 45.0),
+    ("GG", 300.0, 10.5, 100.0, 11.0, 22.0)])
+def test_running_in_velocity_bands(material, sigma_Hlim, v, f, y_alpha, y_beta):
+    """[ISO6336-1] eqs. (61)–(63), (75)–(77): no limit up to 5 m/s, the middle limit up to
+    10 m/s inclusive, the low one above."""
+    from geardesign.spur.strength.iso6336 import part1 as P1
+
+    assert float(P1.running_in_alpha(f, material, sigma_Hlim, v)) == pytest.approx(y_alpha)
+    assert float(P1.running_in_beta(f, material, sigma_Hlim, v)) == pytest.approx(y_beta)
+
+
+def test_shaft_deflection_with_the_pinion_offset():
+    """[ISO6336-1] eq. (57): f_sh = F_m/b·0.023·[|1 + K' l s/d1²·(d1/d_sh)⁴ − 0.3| + 0.3]
+    (b/d1)²; K' = 0.48 and −0.48 (the two arrangements of the table), l = 300, s = 30,
+    d1 = 100, d_sh = 80 mm; without s (or l, d_sh) the pinion sits midway."""
+    from geardesign.spur.strength.iso6336 import part1 as P1
+
+    term = 0.48 * 300.0 * 30.0 / 100.0 ** 2 * (100.0 / 80.0) ** 4
+    base = 1500.0 * 0.023 * (80.0 / 100.0) ** 2
+    f = P1.shaft_deflection(1500.0, 80.0, 100.0, 0.48, 300.0, 30.0, 80.0)
+    assert f == pytest.approx(base * (abs(1.0 + term - 0.3) + 0.3), rel=1e-12)
+    f_neg = P1.shaft_deflection(1500.0, 80.0, 100.0, -0.48, 300.0, 30.0, 80.0)
+    assert f_neg == pytest.approx(base * (abs(1.0 - term - 0.3) + 0.3), rel=1e-12)
+    assert P1.shaft_deflection(1500.0, 80.0, 100.0, 0.48, 300.0, d_shaft=80.0) == \
+        pytest.approx(base, rel=1e-12)
+    assert P1.shaft_deflection(1500.0, 80.0, 100.0, span=300.0, offset=30.0, d_shaft=80.0) == \
+        pytest.approx(base, rel=1e-12)
+    assert P1.shaft_deflection(1500.0, 80.0, 100.0, 0.48, offset=30.0) == pytest.approx(base)
+    # helix correction: B1 = 0.1 on the deflection part ([ISO6336-1] Table 9)
+    assert float(P1.initial_misalignment(20.0, 10.0, "helix_correction", 100.0, 0.0)) == \
+        pytest.approx(1.33 * 0.1 * 20.0 + 10.0)
+
+
+def test_stiffness_and_mass_edges():
+    from geardesign.spur.strength.iso6336 import part1 as P1
+
+    assert float(P1.single_stiffness(17.0, 1.0, 1.0, 0.0, 300.0, E_ratio=0.5)) == pytest.approx(
+        17.0 * 0.8 * 0.5)
+    assert P1.reduced_mass(0.06, None, 3) == pytest.approx(0.02)
+    # effective deviations below zero count as zero ([ISO6336-1] 6.5.9, 8.3.2)
+    K, _ = P1.dynamic_factor(1.0, 0.85, 14.0, 0.5, 0.5, 10.0, 320.0, 2.3)
+    assert float(K) == pytest.approx(1.3108361191860465, rel=1e-12)   # [Drivetrain]
+    t = P1.transverse_load_factor(2.6, 18.0, 0.5, 400.0)
+    assert float(t) == pytest.approx(0.9 + 0.4 * math.sqrt(3.2 / 2.6) * 18.0 * 0.5 / 400.0)
+    assert [float(x) for x in P1.limited(1.2, 1.0)] == [1.0, 1.0]
+
+
+@pytest.mark.parametrize("material, Rz, expected", [
+    ("V", 1.0, 1.674 - 0.529 * 2.0 ** 0.1), ("V", 1.5, 1.674 - 0.529 * 2.5 ** 0.1),
+    ("V", 50.0, 1.674 - 0.529 * 41.0 ** 0.1), ("St_cast", 1.0, 5.306 - 4.203 * 2.0 ** 0.01),
+    ("St", 1.5, 5.306 - 4.203 * 2.5 ** 0.01), ("St", 50.0, 5.306 - 4.203 * 41.0 ** 0.01),
+    ("NV", 1.0, 4.299 - 3.259 * 2.0 ** 0.0058), ("NT", 1.5, 4.299 - 3.259 * 2.5 ** 0.0058),
+    ("GG", 50.0, 4.299 - 3.259 * 41.0 ** 0.0058), ("IF", 0.5, 1.12)])
+def test_relative_surface_factor_edges(material, Rz, expected):
+    """[ISO6336-3] Y_RrelT: the formula from R_z = 1 µm, R_z above 40 µm taken at 40."""
+    assert P3.y_r_rel(material, Rz) == pytest.approx(expected, rel=1e-12)
+
+
+def test_static_notch_sensitivity_groups_and_life_edges():
+    assert P3.y_delta_rel_static("IF", 2.0, None) == pytest.approx(1.0)
+    for m in ("NV", "NV_nitrocar"):
+        assert P3.y_delta_rel_static(m, 2.2, None) == pytest.approx(1.24 / 1.2)
+    assert float(P3.y_nt("Eh", 1e10, optimum=True)) == 1.0
+    assert float(P3.y_x("St", 5.5)) == pytest.approx(0.997)
+
+
+def test_type_from_treatment():
+    """The ISO 6336-5 type of a GOST row: 38Kh2MYuA nitrided NT, steel 45 through-hardened
+    V, otherwise by the treatment (carburized Eh, induction IF, normalized St, nitrided NV)."""
+    cases = [("nitrided", "38Kh2MYuA, nitrided", "NT"), ("improved", "45, improved", "V"),
+             ("through_hardened", "45, through", "V"), ("carburized", "45, x", "Eh"),
+             ("nitrided", "40Kh, x", "NV"), ("induction", "45, x", "IF"),
+             ("normalized", "45, x", "St"), ("carburized", "38Kh2MYuA, x", "Eh")]
+    for treatment, label, expected in cases:
+        assert P5.type_from_treatment(treatment, label) == expected
+    assert P5.limits("St", "MQ", 110.0).clamped is False
+    assert P5.limits("St", "MQ", 210.0).clamped is False
+
+
+def test_miner_rule_edges():
+    assert P6.cycles_to_failure(1000.0, _sigma_G) == pytest.approx(1.0, rel=1e-9)
+    assert P6.cycles_to_failure(_sigma_G(2.0), _sigma_G) == pytest.approx(2.0, rel=1e-9)
+    assert P6.damage([500.0, 400.0], [0.0, 1000.0], _sigma_G) == pytest.approx(1000.0 / 2.5 ** 10)
+    S = P6.spectrum_safety([900.0], [1e6], _sigma_G)
+    assert S == pytest.approx((1e6 * 0.9 ** 10) ** -0.1, rel=1e-9)
+    assert P6.spectrum_safety([0.5], [1.0], _sigma_G) == pytest.approx(2000.0, rel=1e-6)
+    assert P6.spectrum_safety([500.0], [1e-6], _sigma_G) == pytest.approx(2.0, rel=1e-9)
+    S2 = P6.spectrum_safety([500.0, 100.0], [0.0, 1.5e7], _sigma_G)
+    assert S2 == pytest.approx(10.0 * 1.5e7 ** -0.1, rel=1e-9)
+    assert P6.spectrum_safety([500.0, 100.0], [0.0, 1.0], _sigma_G) == pytest.approx(
+        2.0 * 1.000001, rel=1e-12)
+
+
+def test_scuffing_factor_edges():
+    a = [math.radians(x) for x in (21.0, 20.0, 20.6, 15.0)]
+    expected = 1.22 * (math.sin(a[0]) * math.cos(a[1]) * math.cos(a[3])) ** 0.25 / \
+        math.sqrt(math.cos(a[2]) * math.cos(a[0]))
+    assert P21.angle_factor(*a) == pytest.approx(expected, rel=1e-12)
+    assert P21.mean_friction(500.0, 10.0, 20.0, 50.0, 0.8, 1.2) == pytest.approx(
+        0.045 * 2.5 ** 0.2 * 50.0 ** -0.05 * 0.96, rel=1e-12)
+    th = P21.integral_scuffing_temperature(10, 100.0, 1.0, 0.8)
+    assert th[0] == pytest.approx(th[1] + 1.5 * 0.8 * th[2])
+    assert P21.approach_factor(3.0, 1.5) == pytest.approx(1.4 - 8 / 15)
+    names = {(0.5, 0.5): "1 ≤ ε_α < 2, ε_1 < 1, ε_2 < 1", (1.0, 0.5): "1 ≤ ε_α < 2, ε_1 ≥ 1, ε_2 < 1",
+             (0.5, 1.0): "1 ≤ ε_α < 2, ε_1 < 1, ε_2 ≥ 1", (1.0, 1.0): "2 ≤ ε_α < 3, ε_1 ≥ 1, ε_2 ≥ 1",
+             (1.5, 1.5): "2 ≤ ε_α < 3, ε_1 ≥ 1, ε_2 ≥ 1 (nearest)",
+             (1.5, 0.5): "1 ≤ ε_α < 2, ε_1 ≥ 1, ε_2 < 1 (nearest)",
+             (0.5, 1.5): "1 ≤ ε_α < 2, ε_1 < 1, ε_2 ≥ 1 (nearest)",
+             (1.2, 0.9): "1 ≤ ε_α < 2, ε_1 ≥ 1, ε_2 < 1 (nearest)",
+             (1.0, 1.2): "2 ≤ ε_α < 3, ε_1 ≥ 1, ε_2 ≥ 1"}
+    for (e1, e2), name in names.items():
+        assert P21.contact_ratio_factor(e1, e2)[1] == name, (e1, e2)
