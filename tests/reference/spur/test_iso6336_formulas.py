@@ -273,6 +273,7 @@ def test_shaft_deflection_with_the_pinion_offset():
     assert P1.shaft_deflection(1500.0, 80.0, 100.0, span=300.0, offset=30.0, d_shaft=80.0) == \
         pytest.approx(base, rel=1e-12)
     assert P1.shaft_deflection(1500.0, 80.0, 100.0, 0.48, offset=30.0) == pytest.approx(base)
+    assert P1.shaft_deflection(1500.0, 80.0, 100.0, 0.48, d_shaft=80.0) == pytest.approx(base)
     # helix correction: B1 = 0.1 on the deflection part ([ISO6336-1] Table 9)
     assert float(P1.initial_misalignment(20.0, 10.0, "helix_correction", 100.0, 0.0)) == \
         pytest.approx(1.33 * 0.1 * 20.0 + 10.0)
@@ -304,7 +305,7 @@ def test_relative_surface_factor_edges(material, Rz, expected):
 
 
 def test_static_notch_sensitivity_groups_and_life_edges():
-    assert P3.y_delta_rel_static("IF", 2.0, None) == pytest.approx(1.0)
+    assert P3.y_delta_rel_static("IF", 2.2, None) == pytest.approx(0.44 * 2.2 + 0.12)
     for m in ("NV", "NV_nitrocar"):
         assert P3.y_delta_rel_static(m, 2.2, None) == pytest.approx(1.24 / 1.2)
     assert float(P3.y_nt("Eh", 1e10, optimum=True)) == 1.0
@@ -348,6 +349,7 @@ def test_scuffing_factor_edges():
     th = P21.integral_scuffing_temperature(10, 100.0, 1.0, 0.8)
     assert th[0] == pytest.approx(th[1] + 1.5 * 0.8 * th[2])
     assert P21.approach_factor(3.0, 1.5) == pytest.approx(1.4 - 8 / 15)
+    assert P21.approach_factor(3.5, 1.0) == 0.6
     names = {(0.5, 0.5): "1 ≤ ε_α < 2, ε_1 < 1, ε_2 < 1", (1.0, 0.5): "1 ≤ ε_α < 2, ε_1 ≥ 1, ε_2 < 1",
              (0.5, 1.0): "1 ≤ ε_α < 2, ε_1 < 1, ε_2 ≥ 1", (1.0, 1.0): "2 ≤ ε_α < 3, ε_1 ≥ 1, ε_2 ≥ 1",
              (1.5, 1.5): "2 ≤ ε_α < 3, ε_1 ≥ 1, ε_2 ≥ 1 (nearest)",
@@ -357,3 +359,19 @@ def test_scuffing_factor_edges():
              (1.0, 1.2): "2 ≤ ε_α < 3, ε_1 ≥ 1, ε_2 ≥ 1"}
     for (e1, e2), name in names.items():
         assert P21.contact_ratio_factor(e1, e2)[1] == name, (e1, e2)
+
+
+def test_single_pair_factor_of_an_internal_pair():
+    """[ISO6336-2] (Z_B, Z_D): for an internal pair z2, d_a2, d_b2 enter M1 with a negative
+    sign; Z_D = 1 (the internal gear's contact is not at its inner point of single
+    contact).  Pinion z1 = 17, d_a1 = 95, d_b1 = 79.9; ring z2 = 56, d_a2 = 268,
+    d_b2 = 263.2; α_wt = 20°, ε_α = 1.6."""
+    a = math.radians(20.0)
+    s1 = math.sqrt((95.0 / 79.9) ** 2 - 1.0) - 2.0 * math.pi / 17
+    s2 = math.sqrt((268.0 / 263.2) ** 2 - 1.0) - 0.6 * 2.0 * math.pi / -56
+    M1 = math.tan(a) / math.sqrt(s1 * s2)
+    Z_B, Z_D, m1, m2 = P2.single_pair_factors(a, (95.0, 268.0), (79.9, 263.2), (17, 56), 1.6,
+                                              0.0, False, internal=True)
+    assert float(m1) == pytest.approx(M1, rel=1e-12)
+    assert float(Z_B) == pytest.approx(max(M1, 1.0), rel=1e-12)
+    assert m2 == 1.0 and Z_D == 1.0
