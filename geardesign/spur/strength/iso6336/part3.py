@@ -291,12 +291,13 @@ def y_b_domain(s_R: float, h_t: float, m_n: float, internal: bool = False) -> fl
 
 
 def y_dt(eps_alpha_n: float, grade: int) -> float:
-    """Deep tooth factor Y_DT: 1 unless ISO accuracy grade ≤ 4 and ε_αn > 2 (0.7 above
-    2.05, 2.366 − 0.666ε_αn between 2 and 2.05).  [ISO6336-3] (Y_DT)."""
+    """Deep tooth factor Y_DT: 1 unless ISO accuracy grade ≤ 4 and ε_αn > 2.05;
+    2.366 − 0.666ε_αn for 2.05 < ε_αn ≤ 2.5 (1.0 at 2.05), 0.7 above 2.5 (the line's value
+    there).  [ISO6336-3] (Y_DT); transcribed alike in [PythonGearbox2020] (``__ydt``)."""
     if grade > 4:
         return 1.0
-    return xp.where(eps_alpha_n <= 2.0, 1.0,
-                    xp.where(eps_alpha_n > 2.05, 0.7, 2.366 - 0.666 * eps_alpha_n))
+    return xp.where(eps_alpha_n <= 2.05, 1.0,
+                    xp.where(eps_alpha_n > 2.5, 0.7, 2.366 - 0.666 * eps_alpha_n))
 
 
 def nominal_root_stress(F_t: float, b: float, m_n: float, Y_F: float, Y_S: float,
