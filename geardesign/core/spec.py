@@ -308,6 +308,8 @@ class ValidatedSpec:
     assumed: list = field(default_factory=list)
     source: str = ""
     base_dir: Path | None = None
+    raw: dict | None = None
+    """The spec as written (before defaults): advice re-rates it with its fix written in."""
 
 
 def _num(x: float) -> str:
@@ -401,7 +403,7 @@ def validate(schema: SpecSchema, data: dict, source: str = "") -> ValidatedSpec:
             problems.append(Problem("", f"give exactly one of {names}; the spec has {what}"))
     if problems:
         raise InputError(problems)
-    return ValidatedSpec(out, assumed, source)
+    return ValidatedSpec(out, assumed, source, raw=data)
 
 
 def load_toml(path: Path) -> dict:
