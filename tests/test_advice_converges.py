@@ -7,7 +7,6 @@ carry a fix (worm, connection key, planetary)."""
 
 from __future__ import annotations
 
-import copy
 import json
 import math
 import tomllib
@@ -16,6 +15,7 @@ from pathlib import Path
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from geardesign.core.advice import apply_fix
 from geardesign.core.errors import InputError
 from geardesign.core.registry import run_data
 from geardesign.core.result import fix_text
@@ -26,12 +26,8 @@ SPECS = Path(__file__).parent.parent / "specs"
 
 
 def _apply(data: dict, fix: dict) -> dict:
-    """The spec with the advised values written in (keys ``table.key``)."""
-    out = copy.deepcopy(data)
-    for key, value in fix.items():
-        table, name = key.split(".")
-        out.setdefault(table, {})[name] = value
-    return out
+    """The spec with the advised values written in (keys ``table.key``, ``step[2].d``)."""
+    return apply_fix(data, fix)
 
 
 def _run_cli(tmp_path: Path, kind: str, data: dict, name: str = "s.toml"):
@@ -273,3 +269,104 @@ def test_novikov_face_width_fix_passes_when_followed(face):
     except InputError:
         return
     _property(data)
+
+
+# ------------------------------------------------------------------------- shaft, bearing,
+# Geneva, wave gear, drive: advice found by re-rating (geardesign.core.advice)
+
+
+def _spec(name: str) -> dict:
+    return tomllib.loads((SPECS / name).read_text(encoding="utf-8"))
+
+
+def _property_refused_ok(data: dict) -> None:
+    try:
+        run_data(data)
+    except InputError:           # refused input: nothing to advise
+        return
+    _property(data)
+
+
+def test_shaft_advice_passes_as_printed(tmp_path):
+    """A shaft of 0.6 times the reducer's diameters fails fatigue and static strength: one
+    set of step diameters is advised to both and passes when written into the spec."""
+    data = _spec("shaft_reducer_output.toml")
+    for s in data["step"]:
+        s["diameter"] = round(0.6 * s["diameter"])
+    c, after, (_, _, checks) = _follow(tmp_path, "shaft", data, "FATIGUE")
+    assert set(c["fix"]) == {f"step[{i}].diameter" for i in range(len(data["step"]))}
+    assert checks["FATIGUE"]["passed"] and checks["STATIC_STRENGTH"]["passed"]
+
+
+@settings(max_examples=10, deadline=None)
+@given(scale=st.floats(0.5, 0.9), speed=st.sampled_from((120.0, 400.0, 1500.0)))
+def test_shaft_every_fix_passes_when_followed(scale, speed):
+    data = _spec("shaft_reducer_output.toml")
+    for s in data["step"]:
+        s["diameter"] = round(scale * s["diameter"])
+    data["shaft"]["speed"] = speed
+    _property_refused_ok(data)
+
+
+def test_bearing_advice_names_a_catalogue_bearing_that_passes(tmp_path):
+    data = _spec("bearing_gost_single.toml")
+    data["requirements"]["life"] = 5000.0
+    c, _, (code, _, checks) = _follow(tmp_path, "bearing", data, "LIFE")
+    assert c["fix"] == {"bearing.designation": "6408"}
+    assert code == 0 and checks["LIFE"]["passed"]
+
+
+@settings(max_examples=15, deadline=None)
+@given(life=st.floats(1000.0, 40000.0), F_r=st.floats(1000.0, 12000.0),
+       designation=st.sampled_from(("6008", "208", "6306", "7210", "NU 210")))
+def test_bearing_every_fix_passes_when_followed(life, F_r, designation):
+    data = _spec("bearing_gost_single.toml")
+    data["bearing"]["designation"] = designation
+    data["requirements"]["life"] = round(life)
+    data["load"]["F_r"] = round(F_r)
+    _property_refused_ok(data)
+
+
+def test_geneva_roller_advice_passes_as_printed(tmp_path):
+    data = _spec("geneva_six_slot_table.toml")
+    data["geneva"]["roller_diameter"] = 40.0
+    c, _, (_, _, checks) = _follow(tmp_path, "geneva", data, "ROLLER_FIT")
+    assert c["fix"]["geneva.roller_diameter"] < 40.0
+    assert checks["ROLLER_FIT"]["passed"]
+
+
+@settings(max_examples=10, deadline=None)
+@given(d_r=st.floats(10.0, 60.0), a=st.sampled_from((80.0, 120.0, 160.0)))
+def test_geneva_every_fix_passes_when_followed(d_r, a):
+    data = _spec("geneva_six_slot_table.toml")
+    data["geneva"].update(roller_diameter=round(d_r, 1), center_distance=a)
+    _property_refused_ok(data)
+
+
+@settings(max_examples=10, deadline=None)
+@given(rim=st.floats(0.6, 3.0), safety=st.floats(1.2, 3.0), w0=st.floats(0.6, 1.2))
+def test_wave_gear_every_fix_passes_when_followed(rim, safety, w0):
+    data = _spec("wave_gear_thin_rim.toml")
+    data["gear"].update(rim_thickness=round(rim, 2), radial_deflection=round(w0, 3))
+    data["material"]["required_safety"] = round(safety, 2)
+    _property_refused_ok(data)
+
+
+def test_drive_stage_fix_names_the_drives_key_path(tmp_path):
+    """A drive whose low-speed stage is too narrow: the stage's advice (gear.face_width) is
+    carried by STAGE_2 at the drive's path stage[1].gear.face_width and, written into the
+    drive spec as printed, the drive passes that stage."""
+    text = (SPECS / "drive_two_stage_reducer.toml").read_text(encoding="utf-8")
+    assert text.count("face_width = 80.0") == 1          # the low-speed stage's
+    path = tmp_path / "drive.toml"
+    path.write_text(text.replace("face_width = 80.0", "face_width = 40.0"), encoding="utf-8")
+    code, out, err = cli("drive", path, "-f", "json")
+    c = {c["code"]: c for c in json.loads(out)["checks"]}["STAGE_2"]
+    assert code == 1 and not c["passed"], err
+    assert list(c["fix"]) == ["stage[1].gear.face_width"]
+    assert fix_text(list(c["fix"].items())) in c["message"]
+    width = c["fix"]["stage[1].gear.face_width"]
+    path.write_text(text.replace("face_width = 80.0", f"face_width = {width}"),
+                    encoding="utf-8")
+    code, out, err = cli("drive", path, "-f", "json")
+    assert {c["code"]: c for c in json.loads(out)["checks"]}["STAGE_2"]["passed"], err
