@@ -370,3 +370,35 @@ def test_drive_stage_fix_names_the_drives_key_path(tmp_path):
                     encoding="utf-8")
     code, out, err = cli("drive", path, "-f", "json")
     assert {c["code"]: c for c in json.loads(out)["checks"]}["STAGE_2"]["passed"], err
+
+
+@settings(max_examples=12, deadline=None)
+@given(preload=st.floats(0.5, 8.0), angle=st.floats(30.0, 75.0), speed=st.floats(0.0, 6000.0),
+       torque=st.floats(5.0, 60.0), balls=st.integers(2, 8))
+def test_ball_clutch_every_fix_passes_when_followed(preload, angle, speed, torque, balls):
+    data = _spec("ball_clutch_check.toml")
+    data["spring"]["preload"] = round(preload, 2)
+    data["safety"].update(socket_angle=round(angle, 1), balls=balls)
+    data["operation"].update(speed=round(speed), torque=round(torque, 1))
+    _property_refused_ok(data)
+
+
+def test_pzdn_spring_advice_passes_as_printed(tmp_path):
+    """An overstressed coupling spring (wire 4.5 mm against d_min = 5.88 mm): the advised
+    wire passes its stress check when written into the spec."""
+    data = _spec("pzdn_ko2_one_spring.toml")
+    data["spring"][0]["wire_diameter"] = 4.5
+    doc = run_data(data).document()
+    c = {c["code"]: c for c in doc["checks"]}["SPRING_STRESS_1"]
+    assert c["fix"] == {"spring[0].wire_diameter": 5.9}
+    assert "set spring[0].wire_diameter = 5.9" in c["message"]
+    again = {c["code"]: c for c in run_data(_apply(data, c["fix"])).document()["checks"]}
+    assert again["SPRING_STRESS_1"]["passed"]
+
+
+@settings(max_examples=10, deadline=None)
+@given(wire=st.floats(3.0, 7.0), torque=st.floats(10.0, 40.0))
+def test_pzdn_every_fix_passes_when_followed(wire, torque):
+    data = _spec("pzdn_ko2_one_spring.toml")
+    data["spring"][0].update(wire_diameter=round(wire, 1), torque=round(torque, 1))
+    _property_refused_ok(data)
