@@ -482,6 +482,18 @@ def face_width_up(b: float) -> float:
     return math.ceil(b * 10.0 - 1e-9) / 10.0
 
 
+def reconciled_widths(b_contact: float | None, b_bending: float | None
+                      ) -> tuple[float | None, float | None]:
+    """One face width for contact and bending when both fail: the larger of the two least
+    passing widths, advised to both checks (σ_H ∝ b^(-1/2) and σ_F ∝ 1/b fall as the face
+    widens, so the wider passes both; each check advising its own width would leave the
+    other failing).  A width that only one check found is left to it."""
+    if b_contact is None or b_bending is None:
+        return b_contact, b_bending
+    b = max(b_contact, b_bending)
+    return b, b
+
+
 def face_width_fix(b_w: float | None, b_pass: float | None) -> tuple:
     """The face-width advice as a check's ``fix`` (``gear.face_width``), or none."""
     if b_w is None or b_pass is None:

@@ -42,7 +42,7 @@ def _advice(v: dict, geom, mats, duty, setting, iso) -> dict | None:
     :func:`geardesign.spur.checks.face_advice_limit`; ``None`` when the rating passes."""
     from dataclasses import replace
 
-    from geardesign.spur.checks import face_advice_limit, least_passing
+    from geardesign.spur.checks import face_advice_limit, least_passing, reconciled_widths
     from geardesign.spur.geometry import pair_geometry
 
     fails = [kind for kind in ("H", "F") if not IR.passes(v, kind)]
@@ -65,4 +65,5 @@ def _advice(v: dict, geom, mats, duty, setting, iso) -> dict | None:
             b[i] = least_passing(rerate, inp.b_w, lambda x, kind=kind: IR.passes(x, kind),
                                  limit)
             k[i] = least_passing(rescale, 1.0, lambda x, kind=kind: IR.passes(x, kind), 4.0)
+    b[1], b[2] = reconciled_widths(b[1], b[2])
     return {"b": tuple(b), "k": tuple(k), "face_limit": limit}
