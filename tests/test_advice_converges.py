@@ -408,3 +408,33 @@ def test_pzdn_every_fix_passes_when_followed(wire, torque):
     data = _spec("pzdn_ko2_one_spring.toml")
     data["spring"][0].update(wire_diameter=round(wire, 1), torque=round(torque, 1))
     _property_refused_ok(data)
+
+
+# ------------------------------------------------------------------------- spur: a standard
+# module beyond the face width, one face width for contact and bending
+
+
+def test_iso_template_advice_is_a_standard_module_that_passes(tmp_path):
+    """The ISO-rated template (m = 4 mm): no face width within b_w/d_w1 <= 1.6 passes, and
+    the scaled pair would need m = 5.04 mm; the fix is a first-series module with the face
+    width scaled to it, and written into the spec as printed the pitting checks pass."""
+    code, out, _ = cli("template", "spur")
+    data = tomllib.loads(out.replace('# method = "GOST 21354-87"', 'method = "ISO 6336:2019"'))
+    c, _, (_, _, checks) = _follow(tmp_path, "spur", data, "ISO_PITTING_PINION")
+    assert c["fix"]["gear.module"] in MODULES_1 and c["fix"]["gear.module"] > 4.0
+    assert "the pair scaled to a standard module, GOST 9563 / ISO 54 first series" in \
+        c["message"]
+    assert checks["ISO_PITTING_PINION"]["passed"] and checks["ISO_PITTING_WHEEL"]["passed"]
+
+
+def test_contact_and_bending_advise_one_face_width(tmp_path):
+    """600 N·m on a 30 mm face: contact and both roots fail; each advises the same width
+    (the larger of the least passing ones), and following it passes all three."""
+    data = _spur(600.0, "GOST 21354-87", 30.0)
+    c, _, (_, _, checks) = _follow(tmp_path, "spur", data, "CONTACT_FATIGUE")
+    _, _, before = _run_cli(tmp_path, "spur", data)
+    widths = {json.dumps(before[k]["fix"]) for k in ("CONTACT_FATIGUE", "BENDING_FATIGUE_PINION",
+                                                      "BENDING_FATIGUE_WHEEL")}
+    assert len(widths) == 1
+    assert all(checks[k]["passed"] for k in ("CONTACT_FATIGUE", "BENDING_FATIGUE_PINION",
+                                             "BENDING_FATIGUE_WHEEL"))

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from geardesign.core.result import Check, check
+from geardesign.core.result import Check, check, fix_text
 from geardesign.spur import sources as S
 from geardesign.spur.geometry import PairGeometry, span_measurable
 from geardesign.spur.kinematics import Sliding
@@ -473,7 +473,7 @@ def _face_advice(b_w: float | None, b_pass: float | None, limit: float = ADVICE_
         return "; " + face_width_beyond(b_w, limit)
     b = face_width_up(b_pass)
     return f"; or the face width to at least {b:g} mm (+{100 * (b / b_w - 1):.0f} %, " \
-           f"found by re-rating)"
+           f"found by re-rating: set {fix_text(face_width_fix(b_w, b_pass))})"
 
 
 def face_width_up(b: float) -> float:
