@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import tomllib
 from pathlib import Path
 
@@ -438,3 +439,39 @@ def test_contact_and_bending_advise_one_face_width(tmp_path):
     assert len(widths) == 1
     assert all(checks[k]["passed"] for k in ("CONTACT_FATIGUE", "BENDING_FATIGUE_PINION",
                                              "BENDING_FATIGUE_WHEEL"))
+
+
+# ------------------------------------------------------------------------- two methods'
+# advice far apart
+
+
+def test_methods_differ_names_why_the_advice_is_far_apart(tmp_path):
+    """The template rated by both methods at 1.3 times its torque: both fail it, GOST
+    advises a centre distance of about 265 mm and ISO about 339 mm (σ_Hlim 618 against
+    1020 MPa).  METHODS_DIFFER names the advised values that are more than 25 % apart and
+    then the factor that drives them (K_Hβ: f_ma of grade 8 without adjustment)."""
+    code, out, _ = cli("template", "spur")
+    data = tomllib.loads(out.replace('# method = "GOST 21354-87"',
+                                     'methods = ["GOST 21354-87", "ISO 6336:2019"]'))
+    for k in ("torque1", "peak_torque1"):
+        if data["load"].get(k):
+            data["load"][k] *= 1.3
+    code, _, checks = _run_cli(tmp_path, "spur", data)
+    assert code == 1
+    c = checks["METHODS_DIFFER"]
+    assert c["severity"] == "warning", c["message"]
+    msg = c["message"]
+    assert "both methods fail the pair and their advice is far apart (more than 25 %)" in msg
+    a_g, a_i = (float(x) for x in re.search(
+        r"centre distance (\d+) mm by GOST against (\d+) mm by ISO", msg).groups())
+    assert a_i / a_g > 1.25
+    assert msg.index("far apart") < msg.index("K_Hβ 1.04 by GOST against")
+    assert "f_ma = f_Hβ = 22 µm of grade 8 for gears without adjustment" in msg
+
+
+def test_methods_differ_is_quiet_about_advice_when_one_method_passes(tmp_path):
+    code, out, _ = cli("template", "spur")
+    data = tomllib.loads(out.replace('# method = "GOST 21354-87"',
+                                     'methods = ["GOST 21354-87", "ISO 6336:2019"]'))
+    _, _, checks = _run_cli(tmp_path, "spur", data)
+    assert "far apart" not in checks["METHODS_DIFFER"]["message"]

@@ -595,7 +595,12 @@ def _add_gost_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inp
                                       duty.T_peak is not None,
                                       None if internal else geom.inp.b_w, b_contact,
                                       b_bending, geom.a_w, k_contact, face_limit))
-    return v
+    from geardesign.spur.methods_differ import GOST, advised
+
+    gov = 1 if v["sigma_HP1"] <= v["sigma_HP2"] else 2
+    return {**v, "advice": advised(
+        GOST, b_contact or b_bending, None if k_contact is None else k_contact * geom.a_w,
+        v[f"sigma_Hlim{gov}"] * v["sigma_H"] / v["sigma_HP"] if contact_fails else None)}
 
 
 def ratable(g) -> bool:
