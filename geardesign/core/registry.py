@@ -43,7 +43,9 @@ KINDS: dict[str, str] = _discover()
 
 @dataclass(frozen=True)
 class Calculator:
-    """A calculator: its spec schema and a pure ``compute(spec) -> Result``."""
+    """A calculator: its spec schema and a pure ``compute(spec) -> Result``.  ``compute``
+    gives the failed checks their fixes, found by re-rating (:mod:`geardesign.core.advice`);
+    ``rate`` is the same rating without that search (a verdict only, e.g. a sweep's)."""
 
     kind: str
     summary: str
