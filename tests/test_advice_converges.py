@@ -475,3 +475,21 @@ def test_methods_differ_is_quiet_about_advice_when_one_method_passes(tmp_path):
                                      'methods = ["GOST 21354-87", "ISO 6336:2019"]'))
     _, _, checks = _run_cli(tmp_path, "spur", data)
     assert "far apart" not in checks["METHODS_DIFFER"]["message"]
+
+
+def test_rim_advice_hardens_the_fillets_as_printed(tmp_path):
+    data = _spec("epicycle_rim_raba.toml")
+    c, _, (_, _, checks) = _follow(tmp_path, "epicycle_rim", data, "PROBABILITY")
+    assert c["fix"] == {"fillet.hardening_factor": 1.2}
+    assert checks["PROBABILITY"]["passed"] and checks["ENDURANCE_LIMIT"]["passed"]
+
+
+@settings(max_examples=8, deadline=None)
+@given(scale=st.floats(0.8, 2.2), k_v=st.sampled_from((1.0, 1.3, 2.0)))
+def test_epicycle_rim_every_fix_passes_when_followed(scale, k_v):
+    data = _spec("epicycle_rim_improved_fillet.toml")
+    for k, v in list(data["load"].items()):
+        if isinstance(v, float) and "stress" in k:
+            data["load"][k] = round(v * scale, 3)
+    data["fillet"]["hardening_factor"] = k_v
+    _property_refused_ok(data)
