@@ -13,7 +13,8 @@ SCALES = tuple(1.0 + 0.05 * i for i in range(1, 21))
 """Factors on the step diameters tried, smallest first."""
 
 
-def _diameters(data: dict, _res):
+def step_diameters(data: dict, _res):
+    """Every step diameter of the shaft spec ``data`` times each of :data:`SCALES`."""
     steps = data.get("step") or []
     if not all(isinstance(s, dict) and isinstance(s.get("diameter"), (int, float))
                for s in steps) or not steps:
@@ -28,4 +29,4 @@ def _diameters(data: dict, _res):
 
 
 LEVERS = (Lever(("FATIGUE", "STATIC_STRENGTH", "CRITICAL_SPEED", "BEARING_TILT"),
-                _diameters, "every step diameter scaled alike, rounded up to whole mm"),)
+                step_diameters, "every step diameter scaled alike, rounded up to whole mm"),)
