@@ -7,18 +7,20 @@ carry a fix (worm, connection key, planetary)."""
 
 from __future__ import annotations
 
-import copy
 import json
 import math
+import re
 import tomllib
 from pathlib import Path
 
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from geardesign.core.advice import apply_fix
 from geardesign.core.errors import InputError
 from geardesign.core.registry import run_data
 from geardesign.core.result import fix_text
+from geardesign.spur.strength.tables import MODULES_1
 from geardesign.spur.sweep_io import toml_text
 from tests.helpers_cli import cli
 
@@ -26,12 +28,8 @@ SPECS = Path(__file__).parent.parent / "specs"
 
 
 def _apply(data: dict, fix: dict) -> dict:
-    """The spec with the advised values written in (keys ``table.key``)."""
-    out = copy.deepcopy(data)
-    for key, value in fix.items():
-        table, name = key.split(".")
-        out.setdefault(table, {})[name] = value
-    return out
+    """The spec with the advised values written in (keys ``table.key``, ``step[2].d``)."""
+    return apply_fix(data, fix)
 
 
 def _run_cli(tmp_path: Path, kind: str, data: dict, name: str = "s.toml"):
@@ -252,7 +250,12 @@ def test_spur_face_width_fix_passes_when_followed(torque, face, method):
     except InputError:
         return
     for c in doc["checks"]:
-        if "fix" in c:
+        if "fix" in c and "gear.module" in c["fix"]:     # no face width passes: a module
+            assert c["fix"]["gear.module"] in MODULES_1     # of the first series
+            k = c["fix"]["gear.module"] / data["gear"]["module"]
+            assert c["fix"]["gear.face_width"] == math.ceil(10 * k * data["gear"]["face_width"]
+                                                            - 1e-9) / 10
+        elif "fix" in c:
             d_w1 = doc["results"]["geometry"]["d_w1"]
             assert c["fix"]["gear.face_width"] <= 1.6 * d_w1 + 0.1
             assert f"face width to at least {c['fix']['gear.face_width']:g} mm" in c["message"]
@@ -273,3 +276,220 @@ def test_novikov_face_width_fix_passes_when_followed(face):
     except InputError:
         return
     _property(data)
+
+
+# ------------------------------------------------------------------------- shaft, bearing,
+# Geneva, wave gear, drive: advice found by re-rating (geardesign.core.advice)
+
+
+def _spec(name: str) -> dict:
+    return tomllib.loads((SPECS / name).read_text(encoding="utf-8"))
+
+
+def _property_refused_ok(data: dict) -> None:
+    try:
+        run_data(data)
+    except InputError:           # refused input: nothing to advise
+        return
+    _property(data)
+
+
+def test_shaft_advice_passes_as_printed(tmp_path):
+    """A shaft of 0.6 times the reducer's diameters fails fatigue and static strength: one
+    set of step diameters is advised to both and passes when written into the spec."""
+    data = _spec("shaft_reducer_output.toml")
+    for s in data["step"]:
+        s["diameter"] = round(0.6 * s["diameter"])
+    c, after, (_, _, checks) = _follow(tmp_path, "shaft", data, "FATIGUE")
+    assert set(c["fix"]) == {f"step[{i}].diameter" for i in range(len(data["step"]))}
+    assert checks["FATIGUE"]["passed"] and checks["STATIC_STRENGTH"]["passed"]
+
+
+@settings(max_examples=10, deadline=None)
+@given(scale=st.floats(0.5, 0.9), speed=st.sampled_from((120.0, 400.0, 1500.0)))
+def test_shaft_every_fix_passes_when_followed(scale, speed):
+    data = _spec("shaft_reducer_output.toml")
+    for s in data["step"]:
+        s["diameter"] = round(scale * s["diameter"])
+    data["shaft"]["speed"] = speed
+    _property_refused_ok(data)
+
+
+def test_bearing_advice_names_a_catalogue_bearing_that_passes(tmp_path):
+    data = _spec("bearing_gost_single.toml")
+    data["requirements"]["life"] = 5000.0
+    c, _, (code, _, checks) = _follow(tmp_path, "bearing", data, "LIFE")
+    assert c["fix"] == {"bearing.designation": "6408"}
+    assert code == 0 and checks["LIFE"]["passed"]
+
+
+@settings(max_examples=15, deadline=None)
+@given(life=st.floats(1000.0, 40000.0), F_r=st.floats(1000.0, 12000.0),
+       designation=st.sampled_from(("6008", "208", "6306", "7210", "NU 210")))
+def test_bearing_every_fix_passes_when_followed(life, F_r, designation):
+    data = _spec("bearing_gost_single.toml")
+    data["bearing"]["designation"] = designation
+    data["requirements"]["life"] = round(life)
+    data["load"]["F_r"] = round(F_r)
+    _property_refused_ok(data)
+
+
+def test_geneva_roller_advice_passes_as_printed(tmp_path):
+    data = _spec("geneva_six_slot_table.toml")
+    data["geneva"]["roller_diameter"] = 40.0
+    c, _, (_, _, checks) = _follow(tmp_path, "geneva", data, "ROLLER_FIT")
+    assert c["fix"]["geneva.roller_diameter"] < 40.0
+    assert checks["ROLLER_FIT"]["passed"]
+
+
+@settings(max_examples=10, deadline=None)
+@given(d_r=st.floats(10.0, 60.0), a=st.sampled_from((80.0, 120.0, 160.0)))
+def test_geneva_every_fix_passes_when_followed(d_r, a):
+    data = _spec("geneva_six_slot_table.toml")
+    data["geneva"].update(roller_diameter=round(d_r, 1), center_distance=a)
+    _property_refused_ok(data)
+
+
+@settings(max_examples=10, deadline=None)
+@given(rim=st.floats(0.6, 3.0), safety=st.floats(1.2, 3.0), w0=st.floats(0.6, 1.2))
+def test_wave_gear_every_fix_passes_when_followed(rim, safety, w0):
+    data = _spec("wave_gear_thin_rim.toml")
+    data["gear"].update(rim_thickness=round(rim, 2), radial_deflection=round(w0, 3))
+    data["material"]["required_safety"] = round(safety, 2)
+    _property_refused_ok(data)
+
+
+def test_drive_stage_fix_names_the_drives_key_path(tmp_path):
+    """A drive whose low-speed stage is too narrow: the stage's advice (gear.face_width) is
+    carried by STAGE_2 at the drive's path stage[1].gear.face_width and, written into the
+    drive spec as printed, the drive passes that stage."""
+    text = (SPECS / "drive_two_stage_reducer.toml").read_text(encoding="utf-8")
+    assert text.count("face_width = 80.0") == 1          # the low-speed stage's
+    path = tmp_path / "drive.toml"
+    path.write_text(text.replace("face_width = 80.0", "face_width = 40.0"), encoding="utf-8")
+    code, out, err = cli("drive", path, "-f", "json")
+    c = {c["code"]: c for c in json.loads(out)["checks"]}["STAGE_2"]
+    assert code == 1 and not c["passed"], err
+    assert list(c["fix"]) == ["stage[1].gear.face_width"]
+    assert fix_text(list(c["fix"].items())) in c["message"]
+    width = c["fix"]["stage[1].gear.face_width"]
+    path.write_text(text.replace("face_width = 80.0", f"face_width = {width}"),
+                    encoding="utf-8")
+    code, out, err = cli("drive", path, "-f", "json")
+    assert {c["code"]: c for c in json.loads(out)["checks"]}["STAGE_2"]["passed"], err
+
+
+@settings(max_examples=12, deadline=None)
+@given(preload=st.floats(0.5, 8.0), angle=st.floats(30.0, 75.0), speed=st.floats(0.0, 6000.0),
+       torque=st.floats(5.0, 60.0), balls=st.integers(2, 8))
+def test_ball_clutch_every_fix_passes_when_followed(preload, angle, speed, torque, balls):
+    data = _spec("ball_clutch_check.toml")
+    data["spring"]["preload"] = round(preload, 2)
+    data["safety"].update(socket_angle=round(angle, 1), balls=balls)
+    data["operation"].update(speed=round(speed), torque=round(torque, 1))
+    _property_refused_ok(data)
+
+
+def test_pzdn_spring_advice_passes_as_printed(tmp_path):
+    """An overstressed coupling spring (wire 4.5 mm against d_min = 5.88 mm): the advised
+    wire passes its stress check when written into the spec."""
+    data = _spec("pzdn_ko2_one_spring.toml")
+    data["spring"][0]["wire_diameter"] = 4.5
+    doc = run_data(data).document()
+    c = {c["code"]: c for c in doc["checks"]}["SPRING_STRESS_1"]
+    assert c["fix"] == {"spring[0].wire_diameter": 5.9}
+    assert "set spring[0].wire_diameter = 5.9" in c["message"]
+    again = {c["code"]: c for c in run_data(_apply(data, c["fix"])).document()["checks"]}
+    assert again["SPRING_STRESS_1"]["passed"]
+
+
+@settings(max_examples=10, deadline=None)
+@given(wire=st.floats(3.0, 7.0), torque=st.floats(10.0, 40.0))
+def test_pzdn_every_fix_passes_when_followed(wire, torque):
+    data = _spec("pzdn_ko2_one_spring.toml")
+    data["spring"][0].update(wire_diameter=round(wire, 1), torque=round(torque, 1))
+    _property_refused_ok(data)
+
+
+# ------------------------------------------------------------------------- spur: a standard
+# module beyond the face width, one face width for contact and bending
+
+
+def test_iso_template_advice_is_a_standard_module_that_passes(tmp_path):
+    """The ISO-rated template (m = 4 mm): no face width within b_w/d_w1 <= 1.6 passes, and
+    the scaled pair would need m = 5.04 mm; the fix is a first-series module with the face
+    width scaled to it, and written into the spec as printed the pitting checks pass."""
+    code, out, _ = cli("template", "spur")
+    data = tomllib.loads(out.replace('# method = "GOST 21354-87"', 'method = "ISO 6336:2019"'))
+    c, _, (_, _, checks) = _follow(tmp_path, "spur", data, "ISO_PITTING_PINION")
+    assert c["fix"]["gear.module"] in MODULES_1 and c["fix"]["gear.module"] > 4.0
+    assert "the pair scaled to a standard module, GOST 9563 / ISO 54 first series" in \
+        c["message"]
+    assert checks["ISO_PITTING_PINION"]["passed"] and checks["ISO_PITTING_WHEEL"]["passed"]
+
+
+def test_contact_and_bending_advise_one_face_width(tmp_path):
+    """600 N·m on a 30 mm face: contact and both roots fail; each advises the same width
+    (the larger of the least passing ones), and following it passes all three."""
+    data = _spur(600.0, "GOST 21354-87", 30.0)
+    c, _, (_, _, checks) = _follow(tmp_path, "spur", data, "CONTACT_FATIGUE")
+    _, _, before = _run_cli(tmp_path, "spur", data)
+    widths = {json.dumps(before[k]["fix"]) for k in ("CONTACT_FATIGUE", "BENDING_FATIGUE_PINION",
+                                                      "BENDING_FATIGUE_WHEEL")}
+    assert len(widths) == 1
+    assert all(checks[k]["passed"] for k in ("CONTACT_FATIGUE", "BENDING_FATIGUE_PINION",
+                                             "BENDING_FATIGUE_WHEEL"))
+
+
+# ------------------------------------------------------------------------- two methods'
+# advice far apart
+
+
+def test_methods_differ_names_why_the_advice_is_far_apart(tmp_path):
+    """The template rated by both methods at 1.3 times its torque: both fail it, GOST
+    advises a centre distance of about 265 mm and ISO about 339 mm (σ_Hlim 618 against
+    1020 MPa).  METHODS_DIFFER names the advised values that are more than 25 % apart and
+    then the factor that drives them (K_Hβ: f_ma of grade 8 without adjustment)."""
+    code, out, _ = cli("template", "spur")
+    data = tomllib.loads(out.replace('# method = "GOST 21354-87"',
+                                     'methods = ["GOST 21354-87", "ISO 6336:2019"]'))
+    for k in ("torque1", "peak_torque1"):
+        if data["load"].get(k):
+            data["load"][k] *= 1.3
+    code, _, checks = _run_cli(tmp_path, "spur", data)
+    assert code == 1
+    c = checks["METHODS_DIFFER"]
+    assert c["severity"] == "warning", c["message"]
+    msg = c["message"]
+    assert "both methods fail the pair and their advice is far apart (more than 25 %)" in msg
+    a_g, a_i = (float(x) for x in re.search(
+        r"centre distance (\d+) mm by GOST against (\d+) mm by ISO", msg).groups())
+    assert a_i / a_g > 1.25
+    assert msg.index("far apart") < msg.index("K_Hβ 1.04 by GOST against")
+    assert "f_ma = f_Hβ = 22 µm of grade 8 for gears without adjustment" in msg
+
+
+def test_methods_differ_is_quiet_about_advice_when_one_method_passes(tmp_path):
+    code, out, _ = cli("template", "spur")
+    data = tomllib.loads(out.replace('# method = "GOST 21354-87"',
+                                     'methods = ["GOST 21354-87", "ISO 6336:2019"]'))
+    _, _, checks = _run_cli(tmp_path, "spur", data)
+    assert "far apart" not in checks["METHODS_DIFFER"]["message"]
+
+
+def test_rim_advice_hardens_the_fillets_as_printed(tmp_path):
+    data = _spec("epicycle_rim_raba.toml")
+    c, _, (_, _, checks) = _follow(tmp_path, "epicycle_rim", data, "PROBABILITY")
+    assert c["fix"] == {"fillet.hardening_factor": 1.2}
+    assert checks["PROBABILITY"]["passed"] and checks["ENDURANCE_LIMIT"]["passed"]
+
+
+@settings(max_examples=8, deadline=None)
+@given(scale=st.floats(0.8, 2.2), k_v=st.sampled_from((1.0, 1.3, 2.0)))
+def test_epicycle_rim_every_fix_passes_when_followed(scale, k_v):
+    data = _spec("epicycle_rim_improved_fillet.toml")
+    for k, v in list(data["load"].items()):
+        if isinstance(v, float) and "stress" in k:
+            data["load"][k] = round(v * scale, 3)
+    data["fillet"]["hardening_factor"] = k_v
+    _property_refused_ok(data)

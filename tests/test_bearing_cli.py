@@ -50,7 +50,9 @@ def test_life_below_required_fails_and_names_a_bearing_that_passes(tmp_path):
     assert life["message"] == (
         "L_sah = 5 114 h < required 6 000 h: use a bearing with C_r >= 34.3 kN (now 32.5 kN); "
         "the catalogue SKF 6308 (GOST 308) would give 9 959 h, or reduce the load or the "
-        "required life")
+        "required life; set bearing.designation = \"6308\" (the next catalogue bearing of "
+        "this type and bore; it passes when re-rated)")
+    assert life["fix"] == {"bearing.designation": "6308"}
     code, out, _ = cli("run", path, "--format", "table")
     assert code == 1 and re.search(r"✘ FAIL\s+LIFE\s", out)
 
@@ -67,7 +69,9 @@ def test_static_safety_fails():
     c = checks(doc)["STATIC_SAFETY"]
     assert not c["passed"] and doc["verdict"] == "fail"
     assert c["message"] == ("s_0 = C_0r/P_0 = 0.728 < 1: permanent deformation of the raceways; "
-                            "use a bearing with C_0r >= 9 kN or reduce the peak load")
+                            "use a bearing with C_0r >= 9 kN or reduce the peak load; set "
+                            "bearing.designation = \"6404\" (the next catalogue bearing of "
+                            "this type and bore; it passes when re-rated)")
 
 
 def test_axial_load_beyond_table_warns():

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import difflib
 import importlib
+import importlib.util
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
@@ -43,7 +44,9 @@ KINDS: dict[str, str] = _discover()
 
 @dataclass(frozen=True)
 class Calculator:
-    """A calculator: its spec schema and a pure ``compute(spec) -> Result``."""
+    """A calculator: its spec schema and a pure ``compute(spec) -> Result``.  ``compute``
+    gives the failed checks their fixes, found by re-rating (:mod:`geardesign.core.advice`);
+    ``rate`` is the same rating without that search (a verdict only, e.g. a sweep's)."""
 
     kind: str
     summary: str
@@ -67,8 +70,22 @@ class Calculator:
             except InputError as exc:
                 raise InputError([_say_default(p, spec) for p in exc.problems]) from exc
 
-        guarded.__doc__ = compute.__doc__
-        object.__setattr__(self, "compute", guarded)
+        kind = self.kind
+
+        def advised(spec: ValidatedSpec) -> Result:
+            # a failed check whose advice names a spec change carries it, found by
+            # re-rating (geardesign.core.advice; the kind's levers, if it has any)
+            res = guarded(spec)
+            if not res.failed or importlib.util.find_spec(f"geardesign.{kind}.levers") is None:
+                return res
+            from geardesign.core.advice import advise
+
+            levers = importlib.import_module(f"geardesign.{kind}.levers").LEVERS
+            return advise(self, spec, res, levers)
+
+        guarded.__doc__ = advised.__doc__ = compute.__doc__
+        object.__setattr__(self, "rate", guarded)
+        object.__setattr__(self, "compute", advised)
 
     def new_result(self, spec: ValidatedSpec) -> Result:
         """An empty result that echoes the inputs (assumed defaults marked)."""

@@ -326,6 +326,8 @@ class ValidatedSpec:
     assumed: list = field(default_factory=list)
     source: str = ""
     base_dir: Path | None = None
+    raw: dict | None = None
+    """The spec as written (before defaults): advice re-rates it with its fix written in."""
 
 
 def _num(x: float) -> str:
@@ -436,7 +438,7 @@ def validate_partial(schema: SpecSchema, data: dict,
             names = " or ".join(f"[{k}] ({schema.root.member(k).description})" for k in group)
             what = "both" if len(present) > 1 else "neither"
             problems.append(Problem("", f"give exactly one of {names}; the spec has {what}"))
-    return ValidatedSpec(out, assumed, source), problems
+    return ValidatedSpec(out, assumed, source, raw=data), problems
 
 
 def load_toml(path: Path) -> dict:

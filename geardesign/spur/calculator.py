@@ -590,7 +590,8 @@ def _add_gost_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inp
     if (contact_fails or bending_fails) and not getattr(geom, "internal", False):
         from dataclasses import replace
 
-        from geardesign.spur.checks import face_advice_limit, least_passing
+        from geardesign.spur.checks import (face_advice_limit, least_passing,
+                                            reconciled_widths)
         from geardesign.spur.geometry import pair_geometry
 
         rate = method("GOST 21354-87").rate
@@ -615,12 +616,18 @@ def _add_gost_strength(res: Result, geom: PairGeometry, spec: ValidatedSpec, inp
                 rerate, inp.b_w,
                 lambda x: all(x[f"S_F{k}"] >= x[f"S_F{k}_min"] * (1 - 1e-12) for k in (1, 2)),
                 face_limit)
+        b_contact, b_bending = reconciled_widths(b_contact, b_bending)
     internal = getattr(geom, "internal", False)   # no re-rated advice for an internal pair
     res.checks.extend(strength_checks(v, mats, geom.inp.beta > 0, setting.grade,
                                       duty.T_peak is not None,
                                       None if internal else geom.inp.b_w, b_contact,
                                       b_bending, geom.a_w, k_contact, face_limit))
-    return v
+    from geardesign.spur.methods_differ import GOST, advised
+
+    gov = 1 if v["sigma_HP1"] <= v["sigma_HP2"] else 2
+    return {**v, "advice": advised(
+        GOST, b_contact or b_bending, None if k_contact is None else k_contact * geom.a_w,
+        v[f"sigma_Hlim{gov}"] * v["sigma_H"] / v["sigma_HP"] if contact_fails else None)}
 
 
 def ratable(g) -> bool:

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from geardesign.core.result import Check, check
+from geardesign.core.result import Check, check, fix_text
 from geardesign.spur import sources as S
 from geardesign.spur.geometry import PairGeometry, span_measurable
 from geardesign.spur.kinematics import Sliding
@@ -477,13 +477,25 @@ def _face_advice(b_w: float | None, b_pass: float | None, limit: float = ADVICE_
         return "; " + face_width_beyond(b_w, limit)
     b = face_width_up(b_pass)
     return f"; or the face width to at least {b:g} mm (+{100 * (b / b_w - 1):.0f} %, " \
-           f"found by re-rating)"
+           f"found by re-rating: set {fix_text(face_width_fix(b_w, b_pass))})"
 
 
 def face_width_up(b: float) -> float:
     """An advised face width as printed: rounded up to 0.1 mm, so that the value written
     into the spec is not below the one that passes."""
     return math.ceil(b * 10.0 - 1e-9) / 10.0
+
+
+def reconciled_widths(b_contact: float | None, b_bending: float | None
+                      ) -> tuple[float | None, float | None]:
+    """One face width for contact and bending when both fail: the larger of the two least
+    passing widths, advised to both checks (σ_H ∝ b^(-1/2) and σ_F ∝ 1/b fall as the face
+    widens, so the wider passes both; each check advising its own width would leave the
+    other failing).  A width that only one check found is left to it."""
+    if b_contact is None or b_bending is None:
+        return b_contact, b_bending
+    b = max(b_contact, b_bending)
+    return b, b
 
 
 def face_width_fix(b_w: float | None, b_pass: float | None) -> tuple:

@@ -67,6 +67,37 @@ def _drivers(kind: str, g: dict, i: dict, spec) -> str:
     return "the material lines of each method (hardness, treatment, quality)"
 
 
+ADVICE_APART = 1.25
+"""Ratio between the two methods' advised values (face width, centre distance, σ_Hlim)
+from which the check says why they are far apart (25 %)."""
+
+ADVISED = (("face_width", "face width", "mm"), ("center_distance", "centre distance", "mm"),
+           ("sigma_Hlim", "σ_Hlim", "MPa"))
+"""The advised quantities compared: (key, name, unit)."""
+
+
+def advised(method: str, face_width: float | None, center_distance: float | None,
+            sigma_Hlim: float | None) -> dict:
+    """What a method's failed contact/bending checks advise, for :func:`methods_differ`:
+    the least passing face width, the centre distance of the scaled pair and the σ_Hlim
+    that passes (each found by that method's own re-rating or scaling; ``None`` when it
+    advises none)."""
+    return {"method": method, "face_width": face_width, "center_distance": center_distance,
+            "sigma_Hlim": sigma_Hlim}
+
+
+def _advice_apart(g: dict, i: dict) -> list[str]:
+    """The advised quantities whose values differ by more than :data:`ADVICE_APART`."""
+    ag, ai = g.get("advice") or {}, i.get("advice") or {}
+    out = []
+    for key, name, unit in ADVISED:
+        a, b = ag.get(key), ai.get(key)
+        if a and b and max(a / b, b / a) > ADVICE_APART:
+            out.append(f"{name} {_num(a)} {unit} by GOST against {_num(b)} {unit} by ISO "
+                       f"(×{max(a / b, b / a):.2f})")
+    return out
+
+
 def _num(x: float) -> str:
     return f"{x:.0f}" if abs(x) >= 100.0 else f"{x:.3g}"
 
@@ -83,7 +114,9 @@ def methods_differ(rated: dict, spec) -> list[Check]:
     """``METHODS_DIFFER`` for a pair rated by both methods (``rated``: method → value
     record): the :data:`SHOWN` factors with the largest ratio between the methods (at least
     :data:`DIFFER_RATIO`) and their inputs; a warning when one method passes the pair and
-    the other fails it, else information."""
+    the other fails it, or when both fail it and their advice (face width, centre distance,
+    σ_Hlim, :func:`advised`) is more than :data:`ADVICE_APART` apart (the check then names
+    those values before the factors that drive them), else information."""
     g, i = rated[GOST], rated[ISO]
     rows = []
     for sym, kg, ki, kind in FACTORS:
@@ -101,16 +134,22 @@ def methods_differ(rated: dict, spec) -> list[Check]:
         kinds.add(kind)
         shown.append(f"{sym} {_num(a)} by GOST against {_num(b)} by ISO (×{r:.2f}): "
                       f"{_drivers(kind, g, i, spec)}")
-    if not shown:
-        return []
     pg, pi = _passes(g, GOST), _passes(i, ISO)
+    apart = [] if pg or pi else _advice_apart(g, i)
+    if not shown:
+        if not apart:
+            return []
+        shown = ["none of the factors compared differs by 5 % or more (the difference lies "
+                 "in the methods' formulas: Z factors, life factors, the bending model)"]
     verdicts = ("" if pg == pi else
                 f"{GOST} {'passes' if pg else 'fails'} and {ISO} {'passes' if pi else 'fails'} "
                 f"the pair; ")
+    far = ("both methods fail the pair and their advice is far apart (more than "
+           f"{100 * (ADVICE_APART - 1):.0f} %): " + ", ".join(apart) + "; ") if apart else ""
     S = (f"S_H {min(g['S_H1'], g['S_H2']):.2f} (GOST) against {min(i['S_H1'], i['S_H2']):.2f} "
          f"(ISO)")
     return [check(
-        "METHODS_DIFFER", False, "info" if pg == pi else "warning",
-        f"{verdicts}{S}; the methods differ most in " + "; ".join(shown)
+        "METHODS_DIFFER", False, "info" if pg == pi and not apart else "warning",
+        f"{verdicts}{far}{S}; the methods differ most in " + "; ".join(shown)
         + ". Decide which assumption is yours and give it as an input",
-        "", rows[0][0], DIFFER_RATIO, "[GOST21354]; [ISO6336-1]")]
+        "", rows[0][0] if rows else 1.0, DIFFER_RATIO, "[GOST21354]; [ISO6336-1]")]

@@ -913,10 +913,11 @@ def full_check(data: dict, sw: Sweep, index: int) -> str:
     """The verdict of the whole calculator on candidate ``index`` (its emitted spec): "pass",
     or "fail: " and the failing error checks (those the kernel makes pass already)."""
     from geardesign.core.errors import InputError as _IE
-    from geardesign.core.registry import run_data
+    from geardesign.core.registry import load_data
 
-    try:
-        res = run_data(variant_spec(data, sw, index))
+    try:   # the verdict only: rated without the advice (no re-rating for fixes)
+        calc, spec = load_data(variant_spec(data, sw, index))
+        res = calc.rate(spec)
     except _IE as exc:
         return "input: " + exc.problems[0].key
     failed = [c.code for c in res.failed]

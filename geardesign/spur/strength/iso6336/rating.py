@@ -737,7 +737,8 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
             from geardesign.spur.checks import face_width_up
 
             b_w, b = found["b"][0], face_width_up(found["b"][kind])
-            parts.append(f"the face width to at least {b:g} mm (+{100 * (b / b_w - 1):.0f} %)")
+            parts.append(f"the face width to at least {b:g} mm (+{100 * (b / b_w - 1):.0f} %: "
+                         f"set gear.face_width = {b:g})")
         if not parts:
             return None
         text = " or ".join(parts) + " (found by re-rating)"

@@ -19,9 +19,18 @@ def add_iso_strength(res, geom, spec, inputs) -> dict:
         res.section(row.section, IR.SECTIONS[row.section]).add(
             row.key, row.value, row.unit, row.symbol, row.name, row.source)
     internal = bool(getattr(geom, "internal", False))
-    res.checks.extend(IR.rating_checks(rating, internal, found=None if internal else
-                                       _advice(rating.v, geom, mats, duty, setting, iso)))
-    return rating.v
+    found = None if internal else _advice(rating.v, geom, mats, duty, setting, iso)
+    res.checks.extend(IR.rating_checks(rating, internal, found=found))
+    from geardesign.spur.methods_differ import ISO, advised
+
+    v = rating.v
+    need = [v[f"sigma_Hlim{k}"] * v["S_Hmin"] / v.get(f"S_Hspec{k}", v[f"S_H{k}"])
+            for k in (1, 2)]
+    found = found or {}
+    b, k = found.get("b") or (None, None, None), found.get("k") or (None, None, None)
+    return {**v, "advice": advised(ISO, b[1] or b[2], None if k[1] is None else k[1] * k[0],
+                                   max(need) if max(need) > max(v["sigma_Hlim1"],
+                                                                v["sigma_Hlim2"]) else None)}
 
 
 def iso_rating(spec) -> "IR.Rating":
@@ -42,7 +51,7 @@ def _advice(v: dict, geom, mats, duty, setting, iso) -> dict | None:
     :func:`geardesign.spur.checks.face_advice_limit`; ``None`` when the rating passes."""
     from dataclasses import replace
 
-    from geardesign.spur.checks import face_advice_limit, least_passing
+    from geardesign.spur.checks import face_advice_limit, least_passing, reconciled_widths
     from geardesign.spur.geometry import pair_geometry
 
     fails = [kind for kind in ("H", "F") if not IR.passes(v, kind)]
@@ -65,4 +74,5 @@ def _advice(v: dict, geom, mats, duty, setting, iso) -> dict | None:
             b[i] = least_passing(rerate, inp.b_w, lambda x, kind=kind: IR.passes(x, kind),
                                  limit)
             k[i] = least_passing(rescale, 1.0, lambda x, kind=kind: IR.passes(x, kind), 4.0)
+    b[1], b[2] = reconciled_widths(b[1], b[2])
     return {"b": tuple(b), "k": tuple(k), "face_limit": limit}
