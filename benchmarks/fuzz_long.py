@@ -16,6 +16,7 @@ from __future__ import annotations
 import argparse
 import collections
 import json
+import os
 import resource
 import sys
 import time
@@ -23,6 +24,9 @@ from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+# as the command line and the test suite do: one OpenBLAS thread (its spinning threads count
+# towards the CPU-time bound of a case on a busy machine); read when numpy is first imported
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 from tests import fuzz  # noqa: E402
 
