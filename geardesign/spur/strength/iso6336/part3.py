@@ -17,9 +17,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from scipy.optimize import brentq
 
 from geardesign.core import xp
+from geardesign.core.roots import bracket_root
 from geardesign.involute import inv
 from geardesign.spur.geometry import GeometryError
 from geardesign.spur.internal import working_pressure_angle
@@ -208,7 +208,8 @@ def internal_tooth_form(z: int, x: float, m_n: float, alpha_n: float, beta: floa
         lo, hi = hi, hi - step
     else:
         return None
-    psi = brentq(lambda p: cos_tangent(p) - target, hi, lo, xtol=1e-15, rtol=1e-15) \
+    # the 60° tangent: cos_tangent − cos 60° >= 0 at hi, < 0 at lo ([Dowell1971] bracket)
+    psi = bracket_root(lambda p: cos_tangent(p) - target, hi, lo, 1e-15, closed=True) \
         if hi != lo else lo
 
     def fillet(p):

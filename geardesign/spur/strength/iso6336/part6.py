@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from typing import Callable, Sequence
+from geardesign.core.roots import bracket_root
 
 N_MIN = 1.0
 N_MAX = 1e10
@@ -26,42 +27,8 @@ def cycles_to_failure(sigma: float, sigma_G: Callable[[float], float]) -> float:
         return 0.0
     # σ_G(10^x) − σ falls with x, >= 0 at x = 0 and < 0 at log10 N_MAX: log10 N to 1e-13
     # (N to 2.3e-13 relative), the last x with σ_G(10^x) >= σ
-    return 10.0 ** _bracket(lambda x: float(sigma_G(10.0 ** x)) - sigma, 0.0,
+    return 10.0 ** bracket_root(lambda x: float(sigma_G(10.0 ** x)) - sigma, 0.0,
                             math.log10(N_MAX), 1e-13, closed=True)
-
-
-def _bracket(f: Callable[[float], float], a: float, b: float, tol: float,
-             closed: bool) -> float:
-    """Where ``f`` changes sign on [a, b]: the end on a's side of the bracket once it is
-    narrower than ``tol``; a's side holds f > 0 (``closed``: f >= 0), b's side the rest.
-    Regula falsi in its Illinois form (the end kept twice in a row has its value halved in
-    the interpolation), with a bisection whenever two steps have not halved the bracket: a
-    bisection's certainty in a fraction of its steps ([Dowell1971])."""
-    fa, fb = f(a), f(b)
-    widths = [abs(b - a)] * 2
-    kept = 0          # +1: a kept by the last step, −1: b kept
-    bisect = False
-    while abs(b - a) > tol:
-        c = 0.5 * (a + b)
-        if not bisect and fa != fb:
-            c2 = b - fb * (b - a) / (fb - fa)
-            if min(a, b) < c2 < max(a, b):
-                c = c2
-        fc = f(c)
-        if fc > 0 or (closed and fc == 0):
-            a, fa = c, fc
-            if kept == -1:
-                fb *= 0.5
-            kept = -1
-        else:
-            b, fb = c, fc
-            if kept == 1:
-                fa *= 0.5
-            kept = 1
-        w = abs(b - a)
-        bisect = w > 0.5 * widths[0]
-        widths = [widths[1], w]
-    return a
 
 
 def damage(stresses: Sequence[float], cycles: Sequence[float],
@@ -97,4 +64,4 @@ def spectrum_safety(stresses: Sequence[float], cycles: Sequence[float],
         return 1.0 - min(damage([S * s for s in stresses], cycles, sigma_G), 1e6)
 
     # ln S to 1e-13 (S to 1e-13 relative), the last S with D < 1
-    return math.exp(_bracket(margin, math.log(lo), math.log(hi), 1e-13, closed=False))
+    return math.exp(bracket_root(margin, math.log(lo), math.log(hi), 1e-13, closed=False))
