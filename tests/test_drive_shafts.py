@@ -5,7 +5,6 @@ K_Hβ it gives, and the input rules."""
 from __future__ import annotations
 
 import copy
-import json
 import math
 import subprocess
 import sys

@@ -21,7 +21,7 @@ import re
 from collections.abc import Callable, Iterable
 
 from geardesign.core.errors import InputError
-from geardesign.core.result import Check, Result, fix_text
+from geardesign.core.result import Result, fix_text
 
 MAX_TRIES = 40
 """Candidates re-rated per lever at most."""

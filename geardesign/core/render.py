@@ -11,7 +11,6 @@ import textwrap
 from typing import Any
 
 from geardesign import __version__
-from geardesign.core.io import atomic_path, write_atomic  # noqa: F401 (one writer)
 from geardesign.core.result import Check, Result, Row, cleaned
 from geardesign.core.text import escape_controls, json_text
 

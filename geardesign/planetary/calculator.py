@@ -495,7 +495,7 @@ def compute(spec: ValidatedSpec) -> Result:
     from geardesign.planetary import CALCULATOR
 
     d = spec.data
-    tr, op = d["train"], d["operation"]
+    op = d["operation"]
     problems = Problems()
     geo, strength = _input_stages(spec, problems)
     problems.raise_all()
