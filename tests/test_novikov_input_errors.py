@@ -148,3 +148,37 @@ def test_validate_reports_rules_across_keys(tmp_path):
     path.write_text(GOOD, encoding="utf-8")
     code, out, _ = cli("validate", path)
     assert code == 0 and out.strip().endswith("s.toml: ok (novikov)")
+
+
+def test_every_input_error_in_one_round(tmp_path):
+    """Nine mistakes, one run (issue: "every input error in one round"): a schema error, rack
+    constants given to the standard rack, a shift sum, helix angle and centre distance
+    together, a lead error without the explicit model, a life without a speed — and, in
+    the same run, the face width beyond the phase analysis, read on a pair that could be
+    built."""
+    text = (replace("z1 = 12", "z1 = 5")
+            .replace("face_width = 190.0", "face_width = 190.0\nx1 = 0.1")
+            .replace("helix_angle = 22.747", "helix_angle = 22.747\ncenter_distance = 450.0")
+            .replace("torque2 = 69500.0", "torque2 = 69500.0\nlife = 1000.0")
+            + "[rack]\neps_q = 0.3\nlk_star = 0.7\n[accuracy]\nlead_error = 2.0\n")
+    assert run_bad(tmp_path, text) == [
+        "s.toml: gear.z1 = 5: must be an integer >= 6 and <= 1000",
+        's.toml: rack.lk_star = 0.7: applies only to rack.name = "custom" (the GOST 15023-76 '
+        'values are data); remove it or set rack.name = "custom"',
+        's.toml: rack.eps_q = 0.3: applies only to rack.name = "custom" (the GOST 15023-76 '
+        'values are data); remove it or set rack.name = "custom"',
+        "s.toml: gear.x1 + gear.x2 = 0.1: must be 0: a Novikov pair works at the standard "
+        "centre distance m(z1 + z2)/(2cos β); use x2 = -0.1",
+        "s.toml: gear.center_distance = 450.0: give either gear.helix_angle or "
+        "gear.center_distance, not both",
+        's.toml: accuracy.lead_error = 2.0: applies only with accuracy.error_model = '
+        '"explicit"; remove it or set error_model = "explicit"',
+        "s.toml: load.life = 1000.0: needs load.speed1 (the number of cycles is 60·n1·L_h); "
+        "give speed1 or remove life",
+    ]
+    wide = (replace("face_width = 190.0", "face_width = 5000.0")
+            .replace("torque2 = 69500.0", "torque2 = 69500.0\nlife = 1000.0")
+            + '[accuracy]\nerror_model = "explicit"\nlead_error = 2.0\n')
+    lines = run_bad(tmp_path, wide)
+    assert [line.split(" = ")[0].split(":")[1].strip() for line in lines] == [
+        "load.life", "gear.face_width"]

@@ -8,12 +8,12 @@ Modules: :mod:`.rack` and ``racks.toml`` (rack constants as data), :mod:`.tables
 :mod:`.geometry` (pair, Table 1, phases, cyclogram criteria), :mod:`.deviations` (the
 error model), :mod:`.stress` (eq. (3), (4) and their inverses), :mod:`.sharing`
 (system (2)), :mod:`.engagement` (the phase loop), :mod:`.checks`, :mod:`.spec`,
-:mod:`.calculator`.  The GOST 21354-87 allowables come from the shared code
+:mod:`.inputs`, :mod:`.solve`, :mod:`.report`, :mod:`.calculator`.  The GOST 21354-87 allowables come from the shared code
 (:mod:`geardesign.spur.strength.gost21354`, :mod:`geardesign.materials.gear_steel`).
 """
 
 from geardesign.core.registry import Calculator
-from geardesign.novikov.calculator import compute
+from geardesign.novikov.calculator import compute, precheck
 from geardesign.novikov.spec import SCHEMA
 
 CALCULATOR = Calculator(
@@ -24,4 +24,5 @@ CALCULATOR = Calculator(
              "GOST 1643-81", "GOST 21354-87"),
     schema=SCHEMA,
     compute=compute,
+    precheck=precheck,
 )
