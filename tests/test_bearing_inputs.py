@@ -87,7 +87,10 @@ CASES = [
     ("radial load on a thrust bearing", rep('designation = "6208"', 'type = "thrust_ball"\n'
                                                                     'C_r = 30000.0'),
      ["s.toml: load.F_r = 3000.0: a thrust bearing with α = 90° carries no radial load; use 0, "
-      "or a radial or angular bearing"]),
+      "or a radial or angular bearing",
+      # an independent problem of the same spec, in the same round
+      "s.toml: factors.a23: missing; required for a thrust ball bearing (no textbook a23): a "
+      "number > 0"]),
     ("no load", rep("F_a = 1000.0", "F_a = 0.0", rep("F_r = 3000.0", "F_r = 0.0")),
      ["s.toml: load.F_r = 0.0: F_r = F_a = 0: give the radial or the axial load"]),
     ("temperature beyond the K_т table", GOOD + "[factors]\ntemperature = 300.0\n",

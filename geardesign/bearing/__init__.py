@@ -2,11 +2,12 @@
 
 Modules: :mod:`.tables` (coefficient tables, data), :mod:`.life` (pure formulas),
 :mod:`.assess` (one bearing under a load case or spectrum), :mod:`.catalogue` (built-in
-catalogue, ``catalogue.toml``), :mod:`.spec` (the spec schema), :mod:`.calculator`
-(spec -> result, including the catalogue selection of ``mode = "select"``).
+catalogue, ``catalogue.toml``), :mod:`.spec` (the spec schema), :mod:`.inputs` (spec -> typed inputs), :mod:`.solve`
+(inputs -> records, including the catalogue selection of ``mode = "select"``),
+:mod:`.report` (records -> rows and checks), :mod:`.calculator`.
 """
 
-from geardesign.bearing.calculator import compute
+from geardesign.bearing.calculator import compute, precheck
 from geardesign.bearing.spec import SCHEMA
 from geardesign.core.registry import Calculator
 
@@ -17,4 +18,5 @@ CALCULATOR = Calculator(
     methods=("GOST 18855-94", "ISO 281:2007 (GOST 18855-2013)", "ISO 76"),
     schema=SCHEMA,
     compute=compute,
+    precheck=precheck,
 )
