@@ -107,7 +107,7 @@ def test_a_mesh_outside_the_loss_factor_is_refused_or_given(monkeypatch):
     from geardesign.core.errors import InputError
     from geardesign.core.registry import run_data
     from geardesign.core.spec import load_toml
-    from geardesign.planetary import efficiency as EFF
+    from geardesign.gears import losses as EFF
     from tests.conftest import SPECS
 
     monkeypatch.setattr(EFF, "EPS_ALPHA_RANGE", (1.0, 1.5))

@@ -209,15 +209,12 @@ def test_planet_tip_of_the_sun_mesh_is_the_planet_tip_of_the_ring_mesh():
     M1 = Z_B there is computed from it (the rating's d_a1)."""
     from tests.reference.planetary.test_kisssoft_nrel_stages import STAGE1
 
-    from geardesign.planetary import calculator as PC
     from geardesign.core.spec import validate
+    from geardesign.planetary import inputs as PI
     from geardesign.planetary.spec import SCHEMA
 
     spec = validate(SCHEMA, {"kind": "planetary", **copy.deepcopy(STAGE1)})
-    train, conv = PC.train_from_teeth(spec.data)
-    lay = PC._layout(spec.data, train)
-    shifts, _, _ = PC.resolve_shifts(spec.data, spec, lay, conv)
-    meshes = PC._geometry(lay, shifts, conv)
+    meshes = PI.read(spec).meshes
     sun_planet, planet_ring = meshes
     assert sun_planet.geom.g2.d_a == pytest.approx(905.470, abs=0.002)
     assert planet_ring.geom.g1.d_a == sun_planet.geom.g2.d_a

@@ -72,7 +72,10 @@ class Check:
     ``info``; ``message`` says what is wrong and what to change.  ``fix`` is that advice in
     machine-readable form where the calculator found it by re-rating: ``((key, value), ...)``,
     spec keys (``"gear.module"``) and the values that, written into the spec as printed,
-    make the check pass on the next run (JSON: ``checks[].fix``, an object)."""
+    make the check pass on the next run (JSON: ``checks[].fix``, an object).  ``advice``
+    is the change in words, as data: the part of a failed check's message that says what to
+    change (the message ends with it), so that a calculator composing another's checks
+    (the planetary's meshes) states it without editing the message."""
 
     code: str
     severity: str
@@ -82,6 +85,7 @@ class Check:
     limit: float | None = None
     source: str = ""
     fix: tuple = ()
+    advice: str = ""
 
     def __post_init__(self) -> None:
         if self.severity not in SEVERITIES:
@@ -113,12 +117,15 @@ def not_rated(message: str) -> str:
 
 def check(code: str, ok: bool, severity: str, fail_message: str, pass_message: str,
           value: float | None = None, limit: float | None = None, source: str = "",
-          fix: tuple = ()) -> Check:
+          fix: tuple = (), advice: str = "") -> Check:
     """Build a :class:`Check` from a condition, with one message for each outcome (and the
-    machine-readable ``fix`` of a failed one).  A non-finite value or limit is judged by
-    :func:`guard` when the result is finished."""
+    machine-readable ``fix`` and the ``advice`` of a failed one: ``fail_message`` then ends
+    with ``advice``).  A non-finite value or limit is judged by :func:`guard` when the
+    result is finished."""
+    if not ok and advice and not fail_message.endswith(advice):
+        raise ValueError(f"check {code}: the message does not end with its advice")
     return Check(code, severity, bool(ok), pass_message if ok else fail_message,
-                 value, limit, source, () if ok else tuple(fix))
+                 value, limit, source, () if ok else tuple(fix), "" if ok else advice)
 
 
 def fix_text(fix) -> str:

@@ -8,8 +8,8 @@ moves every mesh together: with the sun and ring teeth kept (the ratio and the a
 condition do not change), candidates z_p + Δz (Δz = 0, −1, +1, −2, +2) and a_w on a grid
 of :data:`GRID_STEP`·m within ±:data:`GRID_SPAN`·m of the present centre distance are
 tried, nearest first; the shifts follow from a_w by coaxiality
-(:func:`geardesign.planetary.calculator.resolve_shifts`) and the geometry checks are
-those of :func:`geardesign.planetary.calculator.geometry_checks`.  The first candidate at
+(:func:`geardesign.planetary.shifts.resolve_shifts`) and the geometry checks are
+those of :func:`geardesign.planetary.report.geometry_checks`.  The first candidate at
 which every failed geometry error check passes and no error check that passes fails is
 then rated in full (strength and power included) and advised when that rating fails no
 error check that passed; at most :data:`FULL_RERATINGS` full ratings are made.
@@ -76,23 +76,26 @@ def _candidate_data(spec: ValidatedSpec, z_p: int, a_w: float) -> dict:
 def _geometry(spec: ValidatedSpec, d: dict):
     """The geometry checks of the data ``d`` and the shifts (user's sign) it resolved to;
     ``None`` when the data are refused."""
-    from geardesign.planetary import calculator as PC
+    from geardesign.planetary import report as PR
+    from geardesign.planetary import shifts as SH
+    from geardesign.planetary import train as TR
+    from geardesign.planetary.solve import members_gears
 
     vs = ValidatedSpec(d, [], spec.source, spec.base_dir)
     try:
-        train, conv = PC.train_from_teeth(d)
-        lay = PC._layout(d, train)
-        PC._check_operation(train, d["operation"])
-        shifts, _, _ = PC.resolve_shifts(d, vs, lay, conv)
-        meshes = PC._geometry(lay, shifts, conv)
+        train, conv = TR.train_from_teeth(d)
+        lay = TR._layout(d, train)
+        TR._check_operation(train, d["operation"])
+        shifts, _, _ = SH.resolve_shifts(d, vs, lay, conv)
+        meshes = SH._geometry(lay, shifts, conv)
         from geardesign.planetary import CALCULATOR
 
         res = CALCULATOR.new_result(vs)
-        checks = PC.geometry_checks(res, d, train, meshes, lay, shifts, conv,
-                                    PC._members_gears(meshes))
+        checks = PR.geometry_checks(res, d, train, meshes, lay, shifts, conv,
+                                    members_gears(meshes))
     except (InputError, ValueError, ZeroDivisionError, ArithmeticError):
         return None
-    user = {g: (PC._gost_to_user(x, conv.get(g, 1)) if g.startswith("ring") else x)
+    user = {g: (SH._gost_to_user(x, conv.get(g, 1)) if g.startswith("ring") else x)
             for g, x in shifts.items()}
     return checks, user
 

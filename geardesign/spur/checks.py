@@ -522,79 +522,88 @@ def _pct(x: float) -> str:
 def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool,
                     b_w: float | None = None, b_contact: float | None = None,
                     b_bending: float | None = None, a_w: float | None = None,
-                    k_contact: float | None = None, face_limit: float = ADVICE_FACE_MAX
+                    k_contact: float | None = None, face_limit: float = ADVICE_FACE_MAX,
+                    members: tuple[str, str] = _NAMES, peak_key: str = "load.peak_torque1"
                     ) -> list[Check]:
     """Checks of a GOST 21354-87 rating ``v`` (the :class:`Rating` values by key).
 
     Contact: σ_H <= σ_HP of the pair; bending: S_F >= S_Fmin per gear (σ_F <= σ_FP); peak
     loads: σ_Hmax <= σ_HPmax and σ_Fmax <= σ_FPmax per gear.  The advice uses the scaling
     of the formulas: σ_H ∝ a_w^(-3/2) at a fixed ψ_ba and ∝ b_w^(-1/2); σ_F ∝ 1/(b_w·m_n).
+    ``members`` name gear 1 and gear 2 in the messages and the codes (a planetary mesh:
+    ``("sun", "planet")``); ``peak_key`` is the spec key of the peak torque.
     """
     src = "GOST 21354-87"
     out: list[Check] = []
     sH, sHP = v["sigma_H"], v["sigma_HP"]
     r = sH / sHP
     gov = 1 if v["sigma_HP1"] <= v["sigma_HP2"] else 2
-    who = ("pinion", "wheel")[gov - 1]
+    who = members[gov - 1]
+    advice = ((_scale_advice(a_w, k_contact) if k_contact is not None else
+               f"increase the centre distance by {_pct(r ** (2 / 3) - 1)}")
+              + f", or use a harder {who} material" + _face_advice(b_w, b_contact, face_limit))
     out.append(check(
         "CONTACT_FATIGUE", sH <= sHP * (1 + 1e-12), "error",
         f"contact stress σ_H = {sH:.0f} MPa exceeds σ_HP = {sHP:.0f} MPa by {100 * (r - 1):.1f} % "
-        f"(S_H{gov} = {v[f'S_H{gov}']:.2f} < {v[f'S_H{gov}_min']:.2f}, {who}): "
-        + (_scale_advice(a_w, k_contact) if k_contact is not None else
-           f"increase the centre distance by {_pct(r ** (2 / 3) - 1)}")
-        + f", or use a harder {who} material" + _face_advice(b_w, b_contact, face_limit),
+        f"(S_H{gov} = {v[f'S_H{gov}']:.2f} < {v[f'S_H{gov}_min']:.2f}, {who}): " + advice,
         f"σ_H = {sH:.0f} MPa <= σ_HP = {sHP:.0f} MPa ({100 * (1 - r):.1f} % reserve; S_H1 = "
         f"{v['S_H1']:.2f}, S_H2 = {v['S_H2']:.2f})", sH, sHP, src,
-        face_width_fix(b_w, b_contact)))
+        face_width_fix(b_w, b_contact), advice))
     for k in (1, 2):
-        who = ("pinion", "wheel")[k - 1]
+        who = members[k - 1]
         S, Smin = v[f"S_F{k}"], v[f"S_F{k}_min"]
         sF, sFP = v[f"sigma_F{k}"], v[f"sigma_FP{k}"]
+        advice = (f"increase the module by {_pct(sF / sFP - 1)} (same centre distance, fewer "
+                  f"teeth), or use a material with a higher σ_Flim"
+                  + _face_advice(b_w, b_bending, face_limit))
         out.append(check(
-            f"BENDING_FATIGUE_{('PINION', 'WHEEL')[k - 1]}", S >= Smin * (1 - 1e-12), "error",
+            f"BENDING_FATIGUE_{who.upper()}", S >= Smin * (1 - 1e-12), "error",
             f"{who} root stress σ_F{k} = {sF:.0f} MPa exceeds σ_FP{k} = {sFP:.0f} MPa (S_F{k} = "
-            f"{S:.2f} < {Smin:.2f}): increase the module by {_pct(sF / sFP - 1)} "
-            f"(same centre distance, fewer teeth), or use a material with a higher σ_Flim"
-            + _face_advice(b_w, b_bending, face_limit),
+            f"{S:.2f} < {Smin:.2f}): " + advice,
             f"{who}: σ_F{k} = {sF:.0f} MPa <= σ_FP{k} = {sFP:.0f} MPa (S_F{k} = {S:.2f} >= "
-            f"{Smin:.2f})", S, Smin, src, face_width_fix(b_w, b_bending)))
+            f"{Smin:.2f})", S, Smin, src, face_width_fix(b_w, b_bending), advice))
     if peak_given:
         sHm = v["sigma_Hmax"]
         lim = min(v["sigma_HPmax1"], v["sigma_HPmax2"])
+        advice = (f"limit the peak torque to {v['T_peak'] * (lim / sHm) ** 2:.0f} N·m (e.g. a "
+                  f"slip coupling), or enlarge the gears")
         out.append(check(
             "STATIC_CONTACT", sHm <= lim, "error",
             f"contact stress at the peak torque σ_Hmax = {sHm:.0f} MPa exceeds σ_HPmax = "
-            f"{lim:.0f} MPa: limit the peak torque to {v['T_peak'] * (lim / sHm) ** 2:.0f} N·m "
-            f"(e.g. a slip coupling), or enlarge the gears",
-            f"σ_Hmax = {sHm:.0f} MPa <= σ_HPmax = {lim:.0f} MPa", sHm, lim, src))
+            f"{lim:.0f} MPa: " + advice,
+            f"σ_Hmax = {sHm:.0f} MPa <= σ_HPmax = {lim:.0f} MPa", sHm, lim, src,
+            advice=advice))
         for k in (1, 2):
-            who = ("pinion", "wheel")[k - 1]
+            who = members[k - 1]
             sFm, limF = v[f"sigma_Fmax{k}"], v[f"sigma_FPmax{k}"]
+            advice = (f"limit the peak torque to {v['T_peak'] * limF / sFm:.0f} N·m or "
+                      f"increase the module")
             out.append(check(
-                f"STATIC_BENDING_{('PINION', 'WHEEL')[k - 1]}", sFm <= limF, "error",
+                f"STATIC_BENDING_{who.upper()}", sFm <= limF, "error",
                 f"{who} root stress at the peak torque σ_Fmax{k} = {sFm:.0f} MPa exceeds "
-                f"σ_FPmax{k} = {limF:.0f} MPa: limit the peak torque to "
-                f"{v['T_peak'] * limF / sFm:.0f} N·m or increase the module",
+                f"σ_FPmax{k} = {limF:.0f} MPa: " + advice,
                 f"{who}: σ_Fmax{k} = {sFm:.0f} MPa <= σ_FPmax{k} = {limF:.0f} MPa", sFm, limF,
-                src))
+                src, advice=advice))
     else:
         out.append(check(
             "STATIC_NOT_CHECKED", False, "info",
-            "no peak torque given (load.peak_torque1): the static contact and bending checks "
+            f"no peak torque given ({peak_key}): the static contact and bending checks "
             "were not made", "", None, None, src))
     for k, mat in enumerate(mats, 1):
         for w in mat.warnings:
-            out.append(check(f"HARDNESS_RANGE_{('PINION', 'WHEEL')[k - 1]}", False, "warning", w,
-                             "", None, None, src))
+            out.append(check(f"HARDNESS_RANGE_{members[k - 1].upper()}", False, "warning",
+                             w, "", None, None, src))
     m1, m2 = mats
     if m1.soft and m2.soft:
         d = m1.HB - m2.HB
+        one, two = members
+        advice = f"raise the {one} hardness"
         out.append(check(
             "HARDNESS_DIFFERENCE", d >= HB_DIFFERENCE_MIN, "warning",
-            f"the pinion is only {d:.0f} HB harder than the wheel: soft pairs run in best with "
-            f"the pinion {HB_DIFFERENCE_MIN:.0f}…50 HB harder; raise the pinion hardness",
-            f"pinion {d:.0f} HB harder than the wheel (>= {HB_DIFFERENCE_MIN:.0f} HB for running-in)",
-            d, HB_DIFFERENCE_MIN, "design practice"))
+            f"the {one} is only {d:.0f} HB harder than the {two}: soft pairs run in best with "
+            f"the {one} {HB_DIFFERENCE_MIN:.0f}…50 HB harder; " + advice,
+            f"{one} {d:.0f} HB harder than the {two} (>= {HB_DIFFERENCE_MIN:.0f} HB for "
+            f"running-in)", d, HB_DIFFERENCE_MIN, "design practice", advice=advice))
     limit = max(m.sigma_Hlim for m in mats)
     out.append(check(
         "UNITS_TORQUE", sH <= 3.0 * limit, "warning",
