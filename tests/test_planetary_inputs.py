@@ -237,3 +237,36 @@ def test_bad_input(tmp_path, name, data, expected):
     code, lines = run_bad(tmp_path, data)
     assert code == 2, lines
     assert lines == expected
+
+
+def test_rules_met_late_in_the_calculation_are_reported_with_the_others(tmp_path):
+    """Every input error in one round (issue 29): a peak torque below the input torque and
+    a baseline without amplitudes used to stop the calculation one at a time, after the
+    geometry; now they are found with the train's problems, in one run."""
+    code, out, err = cli("template", "planetary")
+    assert code == 0
+    text = (out.replace("# peak_torque =  #", "peak_torque = 10.0  #", 1)
+            .replace("# baseline =  #", "baseline = [1.0, 2.0]  #", 1)
+            .replace("planets = 3", "planets = 30", 1))
+    path = tmp_path / "s.toml"
+    path.write_text(text, encoding="utf-8")
+    code, out, err = cli("planetary", path)
+    assert code == 2 and out == ""
+    lines = [line.replace(str(path), "s.toml") for line in err.splitlines()]
+    assert lines == [
+        "s.toml: train.planets = 30: must be an integer >= 1 and <= 24",
+        "s.toml: frequencies.amplitudes: missing; required with frequencies.baseline: the "
+        "amplitudes measured now",
+        "s.toml: strength.peak_torque = 10.0: smaller than the input torque 40 N·m; give the "
+        "largest short-time torque",
+    ]
+    text = text.replace("planets = 30", "planets = 3", 1)
+    path.write_text(text, encoding="utf-8")
+    code, out, err = cli("planetary", path)
+    assert code == 2 and out == ""
+    assert [line.replace(str(path), "s.toml") for line in err.splitlines()] == [
+        "s.toml: frequencies.amplitudes: missing; required with frequencies.baseline: the "
+        "amplitudes measured now",
+        "s.toml: strength.peak_torque = 10.0: smaller than the input torque 40 N·m; give the "
+        "largest short-time torque",
+    ]
