@@ -74,7 +74,7 @@ class Check:
     spec keys (``"gear.module"``) and the values that, written into the spec as printed,
     make the check pass on the next run (JSON: ``checks[].fix``, an object).  ``advice``
     is the change in words, as data: the part of a failed check's message that says what to
-    change (the message ends with it), so that a calculator composing another's checks
+    change (the builder's message ends with it), so that a calculator composing another's checks
     (the planetary's meshes) states it without editing the message."""
 
     code: str
