@@ -2,9 +2,10 @@
 
 Modules: :mod:`.tables` (coefficient tables, data), :mod:`.life` (pure formulas),
 :mod:`.assess` (one bearing under a load case or spectrum), :mod:`.catalogue` (built-in
-catalogue, ``catalogue.toml``), :mod:`.spec` (the spec schema), :mod:`.inputs` (spec -> typed inputs), :mod:`.solve`
-(inputs -> records, including the catalogue selection of ``mode = "select"``),
-:mod:`.report` (records -> rows and checks), :mod:`.calculator`.
+catalogue, ``catalogue.toml``), :mod:`.spec` (the spec schema), :mod:`.inputs` (spec ->
+typed inputs; :mod:`.resolve`, :mod:`.conditions`), :mod:`.solve` (inputs -> records,
+including the catalogue selection of ``mode = "select"``), :mod:`.report` and
+:mod:`.checks` (records -> rows and checks), :mod:`.calculator`.
 """
 
 from geardesign.bearing.calculator import compute, precheck

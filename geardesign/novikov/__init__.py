@@ -8,8 +8,9 @@ Modules: :mod:`.rack` and ``racks.toml`` (rack constants as data), :mod:`.tables
 :mod:`.geometry` (pair, Table 1, phases, cyclogram criteria), :mod:`.deviations` (the
 error model), :mod:`.stress` (eq. (3), (4) and their inverses), :mod:`.sharing`
 (system (2)), :mod:`.engagement` (the phase loop), :mod:`.checks`, :mod:`.spec`,
-:mod:`.inputs`, :mod:`.solve`, :mod:`.report`, :mod:`.calculator`.  The GOST 21354-87 allowables come from the shared code
-(:mod:`geardesign.spur.strength.gost21354`, :mod:`geardesign.materials.gear_steel`).
+:mod:`.inputs`, :mod:`.solve`, :mod:`.report`, :mod:`.calculator`.  The GOST 21354-87
+allowables come from the shared code (:mod:`geardesign.spur.strength.gost21354`,
+:mod:`geardesign.materials.gear_steel`).
 """
 
 from geardesign.core.registry import Calculator

@@ -5,7 +5,9 @@ diagnostic frequencies, and a synthesis mode.
 
 Modules: :mod:`.kinematics`, :mod:`.assembly`, :mod:`.geometry`, :mod:`.efficiency`,
 :mod:`.strength`, :mod:`.synthesis` (pure functions), :mod:`.checks`, :mod:`.spec`,
-:mod:`.calculator`.  Internal-gear geometry is shared code:
+:mod:`.inputs` (with :mod:`.train`, :mod:`.shifts`), :mod:`.solve`, :mod:`.report` (with
+:mod:`.report_strength`), :mod:`.calculator`.  The tooth loss factor is shared gear code:
+:mod:`geardesign.gears.losses`.  Internal-gear geometry is shared code:
 :mod:`geardesign.spur.internal`.
 """
 
