@@ -51,7 +51,7 @@ class Selection:
 
 @dataclass(frozen=True)
 class PairSolution:
-    """Induced axial loads of a pair ([PR] rules) and both bearings rated."""
+    """Induced axial loads of a pair ([SKF6000] pp. 415–416) and both bearings rated."""
 
     F_iA: float
     F_iB: float
@@ -123,7 +123,7 @@ def solve_select(inp: SelectInputs) -> Selection:
 
 def induced(b: Bearing, F_r: float, factor: float | None) -> float:
     """The induced axial force of a tapered roller (k·F_r/Y) or angular contact ball
-    bearing (R·F_r) [N] ([PR])."""
+    bearing (R·F_r) [N] ([SKF6000] pp. 415–416)."""
     if b.kind == "tapered_roller":
         Y = b.Y
         if Y is None:

@@ -218,7 +218,7 @@ def speeds(train: K.Train, op: Mapping, unit: bool = False) -> K.Speeds:
 
 
 def _loss_factor_inputs(d: dict, meshes) -> None:
-    """The loss factor H_V holds for 1 <= ε_α <= 2 ([Ohlendorf], [ISO14179-2])."""
+    """The loss factor H_V holds for 1 <= ε_α <= 2 ([ISOTR14179-2], H_V of Ohlendorf)."""
     model = d["efficiency"]["model"]
     if model == "given":
         return

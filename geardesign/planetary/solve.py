@@ -71,7 +71,7 @@ def assembly_advice(train: K.Train) -> str:
 
 def assembly(train: K.Train, meshes, lay: PG.Layout, shifts: Mapping, conv: Mapping,
              gears: Mapping, spacing_mode: str, neighbour_gap: float) -> Assembly:
-    """The assembly conditions of the train ([Kudryavtsev]; [Matusevich] coaxiality)."""
+    """The assembly conditions of the train ([Kudryavtsev]; [Matusevich2017] coaxiality)."""
     a_ref = meshes[0].geom.a_w
     needed, sign_note = {}, {}
     for mesh in meshes[1:]:
@@ -118,7 +118,8 @@ class Efficiency:
 
 
 def mesh_efficiencies(meshes, eff: Mapping) -> tuple[dict, dict]:
-    """The efficiency of each central member's meshes: 1 − μ·H_V ([Ohlendorf]) or given."""
+    """The efficiency of each central member's meshes: 1 − μ·H_V ([ISOTR14179-2], H_V of
+    Ohlendorf) or given."""
     by_member, hv = {}, {}
     for mesh in meshes:
         H = GL.mesh_loss_factor(mesh.geom)
@@ -263,7 +264,8 @@ def strength(inp: Inputs, s: K.Speeds, T_ideal: Mapping) -> Strength:
 
 @dataclass(frozen=True)
 class Frequencies:
-    """Frequencies for diagnostics and the discriminant of measured amplitudes ([BelAZ])."""
+    """Frequencies for diagnostics and the discriminant of measured amplitudes
+    ([Gavrilov2017])."""
 
     fr: K.Frequencies
     sidebands: Mapping            # member -> sideband families around the mesh harmonics
