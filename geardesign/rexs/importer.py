@@ -10,6 +10,7 @@ top of the spec, "Not imported": every component type of the model is either rea
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 
 from geardesign.rexs.model import Attribute, Component, Model, ModelError, convert, number
@@ -73,6 +74,9 @@ class _Reader:
         self.label = label
         self.not_imported: dict[str, list[str]] = {}
         self.read: set[str] = set()
+        self.used_materials: set[str] = set()
+        self.stage_tables: dict[str, dict] = {}
+        self.spectrum: list[dict] = []
         self._check_relations()
 
     # ---------------------------------------------------------------- helpers
@@ -202,6 +206,7 @@ def import_model(model: Model, label: str = "model") -> Imported:
                 break
     if speed is None:
         raise ModelError("the model states no shaft speed (rotational_speed of a shaft)")
+    r.spectrum = _spectrum(r, gu_of(m), torque_load, speed[1], T_in, speed[0])
 
     # the chain of stages from the shaft that carries the torque
     chain = _chain(r, stages, load_shaft)
@@ -222,21 +227,52 @@ def import_model(model: Model, label: str = "model") -> Imported:
     gu = (m.of_type("gear_unit") or [None])[0]
     out.lines.append(f"title = {_q(gu.name if gu is not None and gu.name else label)}")
     out.blank()
+    extra = custom(gu) if gu is not None else {}
+    motor = {k[len("motor__"):]: v for k, v in extra.items() if k.startswith("motor__")}
+    load = {k[len("load__"):]: v for k, v in extra.items() if k.startswith("load__")}
+    split = {k[len("split__"):]: v for k, v in extra.items() if k.startswith("split__")}
+    spur = {k[len("spur__"):]: v for k, v in extra.items() if k.startswith("spur__")}
+    stage_tables: dict[str, dict] = {}
+    for k, v in spur.items():     # a spur spec exported: its load keys go to the drive
+        t, _, key = k.rpartition("__")
+        if t == "load" and key in ("life_hours", "application_factor", "regime"):
+            load.setdefault(key, v)
+        elif t == "load" and key == "peak_torque1":
+            motor.setdefault("peak_ratio", (v[0] / T_in, v[1] + " / the input torque"))
+        elif t and t != "load":
+            stage_tables.setdefault(t.replace("__", "."), {})[key] = v
     out.table("motor")
-    out.kv("torque", T_in, src(torque_load, "torque_around_u_axis", case_no))
-    out.kv("speed", speed[0], speed[2])
+    if "power" in motor or "torque" in motor:
+        out.comment(f"input torque {fmt(T_in)} N·m stated ({src(torque_load, 'torque_around_u_axis', case_no)})")
+    else:
+        out.kv("torque", T_in, src(torque_load, "torque_around_u_axis", case_no))
+    if "speed" not in motor:
+        out.kv("speed", speed[0], speed[2])
+    for k, (v, s_) in motor.items():
+        out.kv(k, v, s_)
     out.blank()
     out.table("load")
     life, life_src = (None, None)
     if gu is not None:
         life, life_src = r.value(gu, "operating_time", "h")
-    out.kv("life_hours", life or DEFAULT_LIFE_HOURS,
-           life_src or "assumed: the gear unit states no operating_time")
+    if "life_hours" not in load:
+        out.kv("life_hours", life or DEFAULT_LIFE_HOURS,
+               life_src or "assumed: the gear unit states no operating_time")
+    for k, (v, s_) in load.items():
+        out.kv(k, v, s_)
     others = [k for k in range(1, len(m.load_cases) + 1) if k != case_no]
-    if others:
+    if r.spectrum:
+        head.append(f"# Load cases 1–{len(m.load_cases)}: the stages' load spectrum.")
+    elif others:
         head.append(f"# Load cases {', '.join(map(str, others))} are not rated (one load case "
                     f"per drive spec).")
     out.blank()
+    r.stage_tables = stage_tables
+    if split:
+        out.table("split")
+        for k, (v, s_) in split.items():
+            out.kv(k, v, s_)
+        out.blank()
 
     stated = []
     for i, (st, a, b) in enumerate(chain, 1):
@@ -248,6 +284,10 @@ def import_model(model: Model, label: str = "model") -> Imported:
             r.skip(st, "not on the chain of stages from the input shaft")
 
     _lubricant(r, out)
+    for mat in m.of_type("material"):
+        if mat.id not in r.used_materials:
+            r.skip(mat, "names no grade of the library, or no heat treatment (gears rated "
+                        f"as {DEFAULT_MATERIAL['grade']})")
     _shafts(r, out, order, chain)
     for c in m.components.values():
         if c.type not in READ_TYPES:
@@ -273,6 +313,120 @@ def import_model(model: Model, label: str = "model") -> Imported:
     return Imported(text, read_types, r.not_imported, stated)
 
 
+CUSTOM = "custom_geardesign__"
+
+
+def custom(c: Component) -> dict[str, tuple]:
+    """The ``custom_geardesign__<table>__<key>`` attributes of ``c`` (written by
+    ``geardesign export`` for keys REXS has no attribute for): path → (value, source)."""
+    out = {}
+    for aid, a in c.attributes.items():
+        if aid.startswith(CUSTOM):
+            v = a.value
+            if isinstance(v, list):
+                v = [str(x) for x in v]
+            elif isinstance(v, str):
+                low = v.strip().lower()
+                if low in ("true", "false"):
+                    v = low == "true"
+                else:
+                    try:
+                        v = int(v) if re.fullmatch(r"-?\d+", v.strip()) else float(v)
+                    except ValueError:
+                        pass
+            out[aid[len(CUSTOM):]] = (v, src(c, aid))
+    return out
+
+
+def _material(r: "_Reader", gear: Component) -> dict[str, tuple] | None:
+    """The [material] table of a gear from the material its ``reference`` relation names,
+    when that names a grade of the library; else None."""
+    from geardesign.materials import gear_steel
+
+    mat = None
+    for rel in r.m.relations:
+        if rel.type == "reference" and rel.role("origin") == gear.id:
+            c = r.comp(rel.role("referenced") or "", rel)
+            if c.type == "material":
+                mat = c
+    if mat is None:
+        return None
+    name = r.text(mat, "material_designation") or ""
+    grade = gear_steel.normalize_grade(name) if name else ""
+    if grade not in gear_steel.grades():
+        grade = gear_steel.equivalent_of(name) if name else None
+    if not grade:
+        return None
+    out = {"grade": (name.strip(), src(mat, "material_designation"))}
+    kind = r.text(mat, "heat_treated_material_type_iso_6336_2006")
+    hard = {}
+    for key, aid, unit in (("hardness_HB", "surface_hardness_brinell", "HB"),
+                           ("hardness_HRC", "surface_hardness_rockwell", "HRC"),
+                           ("hardness_HV", "surface_hardness_vickers", "HV"),
+                           ("core_HRC", "core_hardness_rockwell", "HRC")):
+        a = mat.attributes.get(aid)
+        if a is not None:
+            hard[key] = (number(a, f"component {mat.id} (material)"), src(mat, aid))
+    treat = {"normalized_wrought_low_carbon_steel": "normalized",
+             "flame_or_induction_hardened_steel": "induction",
+             "case_hardened_wrought_steel": "carburized",
+             "nitrided_steel": "nitrided",
+             "through_hardened_wrought_steel": "improved" if "hardness_HB" in hard
+             else "through_hardened"}.get(kind or "")
+    if treat is None:
+        return None
+    out["treatment"] = (treat, src(mat, "heat_treated_material_type_iso_6336_2006"))
+    out.update(hard)
+    for k, (v, s_) in custom(mat).items():
+        out.setdefault(k, (v, s_))
+    for k, aid in (("E", "elastic_modulus"), ("nu", "poisson_ratio")):
+        a = mat.attributes.get(aid)
+        if a is not None and k not in out:
+            out[k] = (convert(a, "MPa" if k == "E" else "", f"component {mat.id} (material)"),
+                      src(mat, aid))
+    r.read.add("material")
+    r.used_materials.add(mat.id)
+    return out
+
+
+def gu_of(m: Model) -> Component | None:
+    return (m.of_type("gear_unit") or [None])[0]
+
+
+FRACTIONS = ("operating_time_fraction", "load_duration_fraction")
+"""The gear unit's share of the operating time of a load case [%] (REXS 1.5 name, and the
+name of 1.0–1.4)."""
+
+
+def _spectrum(r: "_Reader", gu, load: Component, shaft: Component, T_max: float,
+              n_max: float) -> list[dict]:
+    """The load cases as [[stage.load.spectrum]] blocks (torque and speed over those of the
+    largest torque, the time share), when there are two or more and each states its
+    share; else []."""
+    cases = r.m.load_cases
+    if len(cases) < 2 or gu is None:
+        return []
+    blocks = []
+    for k, case in enumerate(cases, 1):
+        g = r.merged(gu, case)
+        frac = next((g[f] for f in FRACTIONS if f in g), None)
+        ld, sh = r.merged(load, case), r.merged(shaft, case)
+        if frac is None or "torque_around_u_axis" not in ld or "rotational_speed" not in sh:
+            return []
+        share = convert(frac, "%", f"component {gu.id} (gear_unit)") / 100.0
+        T = abs(convert(ld["torque_around_u_axis"], "N m", f"component {load.id}"))
+        n = abs(convert(sh["rotational_speed"], "1 / min", f"component {shaft.id}"))
+        if share <= 0 or T <= 0 or n <= 0:
+            continue
+        blocks.append({"torque_ratio": (T / T_max, f"load case {k}: T / {fmt(T_max)} N·m"),
+                       "time_share": (share, src(gu, frac.id, k) + " / 100"),
+                       "speed_ratio": (n / n_max, f"load case {k}: n / {fmt(n_max)} min^-1")})
+    total = sum(b["time_share"][0] for b in blocks)
+    if len(blocks) < 2 or abs(total - 1.0) > 1e-6:
+        return []
+    return blocks
+
+
 def _q(s: str) -> str:
     import json
 
@@ -294,6 +448,8 @@ class Writer:
             v = str(value)
         elif isinstance(value, float):
             v = fmt(value)
+        elif isinstance(value, list):
+            v = "[" + ", ".join(_q(x) for x in value) + "]"
         else:
             v = _q(value)
         self.lines.append(f"{key} = {v}" + (f"  # {source}" if source else ""))
@@ -345,7 +501,7 @@ def _flank(r: _Reader, gear: Component) -> tuple[Component | None, Component | N
 def _stage(r: _Reader, out: Writer, i: int, st: Component, a: Component, b: Component) -> dict:
     out.table("stage", array=True)
     out.kv("name", st.name or f"stage {st.id}", f"component {st.id} ({st.type}) name")
-    out.kv("kind", "spur", None)
+    out.kv("kind", "spur", "a cylindrical stage")
     out.table("stage.gear")
     mn, s_mn = r.value(a, "normal_module", "mm")
     mn2, _ = r.value(b, "normal_module", "mm")
@@ -416,7 +572,12 @@ def _stage(r: _Reader, out: Writer, i: int, st: Component, a: Component, b: Comp
             out.kv("x1", xs[0][0], xs[0][1])
     if internal:
         out.kv("internal", True, "a negative number_of_teeth: an internal gear")
-    out.kv("bearing_scheme", 5, "assumed: GOST 21354-87 chart 5 (REXS has no such attribute)")
+    extra = custom(st)
+    gear_keys = {k.split("__", 1)[1]: v for k, v in extra.items() if k.startswith("gear__")}
+    for k, (v, s_) in gear_keys.items():
+        out.kv(k, v, s_)
+    if "bearing_scheme" not in gear_keys:
+        out.kv("bearing_scheme", 5, "assumed: GOST 21354-87 chart 5 (REXS has no such attribute)")
     tips = {}
     for key, g in (("d_a1", a), ("d_a2", b)):
         da, s_da = r.value(g, "tip_diameter", "mm")
@@ -432,11 +593,32 @@ def _stage(r: _Reader, out: Writer, i: int, st: Component, a: Component, b: Comp
     ratio, s_u = r.value(st, "gear_ratio", "")
     if ratio is not None:
         tips["u"] = (ratio, s_u)
+    tables: dict[str, dict] = {t: dict(v) for t, v in r.stage_tables.items()}
+    for k, v in extra.items():
+        if not k.startswith("gear__") and "__" in k:
+            t, key = k.rsplit("__", 1)
+            tables.setdefault(t.replace("__", "."), {})[key] = v
+    ka, s_ka = r.value(st, "application_factor_iso_6336_2006", "")
+    if ka is not None:
+        tables.setdefault("load", {})["application_factor"] = (ka, s_ka)
+    for t, keys in tables.items():
+        out.table(f"stage.{t}")
+        for k, (v, s_) in keys.items():
+            out.kv(k, v, s_)
+    for block in r.spectrum:
+        out.table("stage.load.spectrum", array=True)
+        for k, (v, s_) in block.items():
+            out.kv(k, v, s_)
     for side, g in (("pinion", a), ("wheel", b)):
         out.table(f"stage.material.{side}")
-        for k, v in DEFAULT_MATERIAL.items():
-            out.kv(k, v, "assumed: the model names no material of the library"
-                   if k == "grade" else None)
+        mat = _material(r, g)
+        if mat is None:
+            for k, v in DEFAULT_MATERIAL.items():
+                out.kv(k, v, "assumed: the model names no material of the library"
+                       if k == "grade" else "assumed with the grade")
+        else:
+            for k, (v, s_) in mat.items():
+                out.kv(k, v, s_)
     out.blank()
     return {"stage": i, "component": st.id, "stated": tips,
             "x": [x for x, _ in xs], "internal": internal}
@@ -457,9 +639,6 @@ def _lubricant(r: _Reader, out: Writer) -> None:
                 f"REXS does not describe; not applied")
     r.skip(lub, "the losses and the heat balance need the housing, which the model does not "
                 "give")
-    for mat in r.m.of_type("material"):
-        r.skip(mat, "names no grade of the library (gears rated as "
-                    f"{DEFAULT_MATERIAL['grade']})")
     out.blank()
 
 
@@ -478,18 +657,19 @@ def _bearing_support(r: _Reader, br: Component) -> tuple[dict | None, str]:
         if found is not None:
             key = "catalogue_designation" if br.attributes.get("catalogue_designation") \
                 else "name"
-            return {"designation": designation}, src(br, key)
+            return {"designation": (designation, src(br, key))}, ""
     kind = BEARING_TYPES.get(r.text(br, "bearing_type") or "")
-    C, _ = r.value(br, "dynamic_capacity", "N")
-    C0, _ = r.value(br, "static_capacity", "N")
+    C, s_C = r.value(br, "dynamic_capacity", "N")
+    C0, s_C0 = r.value(br, "static_capacity", "N")
     if kind and C and C0:
-        table = {"type": kind, "C_r": C, "C_0r": C0}
-        d, _ = r.value(br, "inner_diameter", "mm")
-        D, _ = r.value(br, "outer_diameter", "mm")
+        note = f" (\"{designation}\" is not in the catalogue)" if designation else ""
+        table = {"type": (kind, src(br, "bearing_type") + note), "C_r": (C, s_C),
+                 "C_0r": (C0, s_C0)}
+        d, s_d = r.value(br, "inner_diameter", "mm")
+        D, s_D = r.value(br, "outer_diameter", "mm")
         if d and D:
-            table.update(d=d, D=D)
-        return table, (src(br, "bearing_type, dynamic_capacity, static_capacity")
-                       + (f" (\"{designation}\" is not in the catalogue)" if designation else ""))
+            table.update(d=(d, s_d), D=(D, s_D))
+        return table, ""
     return None, (f"\"{designation}\" is not in the catalogue and the model gives no ratings"
                   if designation else "no designation and no ratings")
 
@@ -499,7 +679,7 @@ def _shafts(r: _Reader, out: Writer, order: list, chain: list) -> None:
     for idx, sh in enumerate(order, 1):
         lines = Writer()
         lines.table("shaft", array=True)
-        lines.kv("index", idx, None)
+        lines.kv("index", idx, f"component {sh.id} (shaft): place on the chain from the input")
         lines.kv("name", sh.name or f"shaft {sh.id}", f"component {sh.id} (shaft) name")
         brs = []
         for rel in r.m.relations:
@@ -520,11 +700,12 @@ def _shafts(r: _Reader, out: Writer, order: list, chain: list) -> None:
             brs = [brs[0], brs[-1]]
         lines.kv("bearing_a", brs[0][0], brs[0][2])
         lines.kv("bearing_b", brs[1][0], brs[1][2])
-        fixed = "a"
-        for side, (_, br, _) in zip("ab", brs):
+        shaft_extra = custom(sh)
+        for k, (v, s_) in shaft_extra.items():
+            lines.kv(k, v, s_)
+        for side, (_, br, _) in zip("ab", brs if "fixed" not in shaft_extra else ()):
             ax = r.text(br, "axial_force_absorption")
             if ax == "both_directions":
-                fixed = side
                 lines.kv("fixed", side, src(br, "axial_force_absorption") + " = both_directions")
                 break
         secs = sorted(((r.value(s, "u_coordinate_on_shaft", "mm", 0.0)[0], s)
@@ -538,13 +719,16 @@ def _shafts(r: _Reader, out: Writer, order: list, chain: list) -> None:
                     gears.append((k, g, mate))
         for k, g, mate in gears:
             lines.table("shaft.gear", array=True)
-            lines.kv("stage", k, None)
+            lines.kv("stage", k, f"component {chain[k - 1][0].id} (cylindrical_stage), "
+                                 f"gear {g.id}")
             u, s_u = r.value(g, "u_coordinate_on_shaft", "mm")
             if u is None:
                 raise ModelError(f"cylindrical_gear {g.id} states no u_coordinate_on_shaft")
             lines.kv("position", u, s_u)
             ang = _mate_angle(r, g, mate)
             lines.kv("mate_angle", ang[0], ang[1])
+            for kk, (v, s_) in custom(g).items():
+                lines.kv(kk, v, s_)
         ok = True
         for side, (_, br, _) in zip("ab", brs):
             table, why = _bearing_support(r, br)
@@ -553,10 +737,8 @@ def _shafts(r: _Reader, out: Writer, order: list, chain: list) -> None:
                 ok = False
                 continue
             lines.table(f"shaft.support_{side}")
-            first = True
-            for k, v in table.items():
-                lines.kv(k, v, why if first else None)
-                first = False
+            for k, (v, s_) in table.items():
+                lines.kv(k, v, s_)
         if secs:
             for u0, s in secs:
                 L, s_L = r.value(s, "length", "mm")
