@@ -224,7 +224,7 @@ def import_model(model: Model, label: str = "model") -> Imported:
             f"# Load case: {case_no if case_no else 'the model'} (the largest input torque).",
             ]
     out.lines.append("kind = \"drive\"")
-    gu = (m.of_type("gear_unit") or [None])[0]
+    gu = gu_of(m)
     out.lines.append(f"title = {_q(gu.name if gu is not None and gu.name else label)}")
     out.blank()
     extra = custom(gu) if gu is not None else {}
@@ -390,7 +390,8 @@ def _material(r: "_Reader", gear: Component) -> dict[str, tuple] | None:
 
 
 def gu_of(m: Model) -> Component | None:
-    return (m.of_type("gear_unit") or [None])[0]
+    units = m.of_type("gear_unit")
+    return units[0] if units else None
 
 
 FRACTIONS = ("operating_time_fraction", "load_duration_fraction")
