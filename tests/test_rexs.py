@@ -311,3 +311,14 @@ def test_import_writes_the_output_file(tmp_path):
     assert code == 0, err
     code, _, err = cli("run", out, "--format", "json", "-o", tmp_path / "r.json")
     assert code in (0, 1), err
+
+
+def test_cli_start_up_does_not_import_the_exchange_code():
+    import subprocess
+    import sys
+
+    code = ("import sys, geardesign.cli; "
+            "print(sorted(m for m in sys.modules if m.startswith('geardesign.rexs.')))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         cwd=Path(__file__).parent.parent, check=True).stdout
+    assert out.strip() == "['geardesign.rexs.cli']"
