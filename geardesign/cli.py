@@ -570,6 +570,11 @@ from geardesign import browse as _browse  # noqa: E402
 
 _browse.register(app, _choose_format, _finite)
 
+# REXS exchange (geardesign/rexs/cli.py): geardesign import MODEL.rexs, geardesign export SPEC
+from geardesign.rexs import cli as _rexs  # noqa: E402
+
+_rexs.register(app, _err, _write)
+
 
 def main() -> None:
     """Console entry point: never a traceback for the user."""

@@ -21,8 +21,9 @@ from geardesign.core.result import Result, Row, guard
 from geardesign.core.spec import (SpecSchema, ValidatedSpec, iter_fields, load_toml,
                                   validate_partial)
 
-NOT_CALCULATORS = {"core", "gears", "materials"}
-"""Subpackages of ``geardesign`` that are shared code, not calculators."""
+NOT_CALCULATORS = {"core", "fatigue", "gears", "materials", "report", "rexs"}
+"""Subpackages of ``geardesign`` that are shared code, not calculators (``rexs``: the
+exchange commands import and export)."""
 
 ORDER = ("spur", "bearing", "worm", "planetary", "novikov", "epicycle_rim", "pzdn", "drive")
 """Listing order of the calculators; others follow alphabetically."""
