@@ -44,6 +44,8 @@ LONG = {
     "core/spec.py": SPLITTING + ": schema types apart from validation",
     "core/render.py": SPLITTING + ": the HTML report in its own package",
     "core/io.py": SPLITTING + ": the writers apart from the readers",
+    "rexs/importer.py": SPLITTING + ": one reader per REXS component type (shafts, stages, "
+                        "bearings, load case) apart from the spec writer",
     # a reason of its own
     "bearing/life.py": "the ISO 281:2007 / GOST 18855 life formulas, one function per "
                        "equation with its doctest and clause; " + SPLITTING + " by part "
