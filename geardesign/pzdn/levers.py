@@ -30,8 +30,10 @@ from geardesign.core.advice import Lever
 MAX_SPRINGS = 8
 """Springs whose checks carry a fix."""
 
-STEPS = 15
-"""Candidates per lever beyond the first."""
+STEPS = 3
+"""Candidates per lever beyond the first: each re-rating runs the whole spec (with a
+start-up simulation about half a second), and the first candidates are the exact
+solutions of linear laws (T_lim ∝ φ_stop, p' ∝ p, D/d)."""
 
 MAX_GAP = 1.0
 """The largest gap between the coils advised, in wire diameters (p <= 2·d)."""
@@ -70,10 +72,12 @@ def _thicker(n: int):
     def gen(data: dict, res):
         sp, c = _spring(data, n), _failed(res, f"SPRING_STRESS_{n}")
         d = None if sp is None else sp.get("wire_diameter")
+        d_min = _row(res, "d_min", n)
         if c is None or not _num(d):
             return
-        # σ ∝ 1/d³ at a given torque: the least wire, then 0.1 mm steps
-        first = max(d * (c.value / c.limit) ** (1.0 / 3.0), d)
+        # the least wire the calculator names (σ ∝ k/d³ at the torque), else σ ∝ 1/d³
+        first = d_min if _num(d_min) and d_min > d else max(
+            d * (c.value / c.limit) ** (1.0 / 3.0), d)
         key = f"spring[{n - 1}]."
         for (_, d2), in _steps(key + "wire_diameter", (int(first * 10.0 - 1e-9) + 1) / 10.0,
                                0.1, 1, True):
@@ -101,15 +105,22 @@ def _stop_for(sp: dict, res, n: int, k: float) -> float | None:
 
 
 def _stop(n: int, code: str, up: bool):
-    """Stop angles from the present one times the check's limit/value (see the module)."""
+    """Stop angles from the present one times the check's limit/value (see the module),
+    within the range in which the torque limit carries the working torque and keeps the
+    coils within [σ] (none when the working torque overstresses them)."""
     def gen(data: dict, res):
         sp, c = _spring(data, n), _failed(res, code)
         phi = None if sp is None else sp.get("stop_angle")
-        if c is None or not _num(phi):
+        T, T_lim, T_allow = _row(res, "T", n), _row(res, "T_limit", n), _row(res, "T_allow", n)
+        if c is None or not all(_num(x) and x > 0 for x in (phi, T, T_lim, T_allow)):
             return
+        lo, hi = phi * T / T_lim, phi * T_allow / T_lim
         x = phi * c.limit / c.value * 10.0
         first = (math.ceil(x - 1e-9) if up else math.floor(x + 1e-9)) / 10.0
-        yield from _steps(f"spring[{n - 1}].stop_angle", first, 0.1, 1, up)
+        for fix in _steps(f"spring[{n - 1}].stop_angle", first, 0.1, 1, up):
+            if not lo - 1e-9 <= fix[0][1] <= hi + 1e-9:
+                return
+            yield fix
     return gen
 
 
