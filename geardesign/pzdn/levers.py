@@ -2,8 +2,8 @@
 re-rated, for spring ``n`` (keys ``spring[n-1].…``):
 
 * ``SPRING_STRESS_n``: a thicker wire (``wire_diameter``), from the least the check names
-  (σ ∝ 1/d³ at a given torque, rounded up to 0.1 mm) in 0.1 mm steps, with a given pitch
-  grown by as much where the coils would overlap (the gap kept), and next to each wire the
+  (d_min, rounded up to 0.1 mm) in 0.1 mm steps, with a given pitch grown by as much (the
+  gap between the coils kept), and next to each wire the
   same with the stop angle set so that the torque limit lies between the working torque and
   the thicker wire's T_allow (the stiffer spring may reach its stop at a torque that
   overstresses it);
@@ -82,7 +82,7 @@ def _thicker(n: int):
         for (_, d2), in _steps(key + "wire_diameter", (int(first * 10.0 - 1e-9) + 1) / 10.0,
                                0.1, 1, True):
             fix = [(key + "wire_diameter", d2)]
-            if _num(sp.get("pitch")) and sp["pitch"] < d2:   # the coils would overlap
+            if _num(sp.get("pitch")):          # the gap between the coils kept
                 fix.append((key + "pitch", round(sp["pitch"] + d2 - d, 2)))
             yield tuple(fix)
             stop = _stop_for(sp, res, n, d2 / d)
