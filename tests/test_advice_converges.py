@@ -391,16 +391,22 @@ def test_ball_clutch_every_fix_passes_when_followed(preload, angle, speed, torqu
 
 
 def test_pzdn_spring_advice_passes_as_printed(tmp_path):
-    """An overstressed coupling spring (wire 4.5 mm against d_min = 5.88 mm): the advised
-    wire passes its stress check when written into the spec."""
+    """An overstressed coupling spring (wire 4.5 mm against d_min = 5.88 mm) that also
+    slips (its stop is reached below the working torque): no stop angle passes both, so
+    both checks advise one change, a thicker wire with the gap between the coils kept
+    (pitch 8 + 1.4 mm) and the stop angle set between the working torque and T_allow of
+    the thicker wire; written into the spec, both pass."""
     data = _spec("pzdn_ko2_one_spring.toml")
     data["spring"][0]["wire_diameter"] = 4.5
     doc = run_data(data).document()
-    c = {c["code"]: c for c in doc["checks"]}["SPRING_STRESS_1"]
-    assert c["fix"] == {"spring[0].wire_diameter": 5.9}
-    assert "set spring[0].wire_diameter = 5.9" in c["message"]
+    checks = {c["code"]: c for c in doc["checks"]}
+    c = checks["SPRING_STRESS_1"]
+    assert c["fix"] == {"spring[0].wire_diameter": 5.9, "spring[0].pitch": 9.4,
+                        "spring[0].stop_angle": 80.0}
+    assert checks["COUPLING_SLIP_1"]["fix"] == c["fix"]
+    assert "set spring[0].wire_diameter = 5.9, spring[0].pitch = 9.4" in c["message"]
     again = {c["code"]: c for c in run_data(_apply(data, c["fix"])).document()["checks"]}
-    assert again["SPRING_STRESS_1"]["passed"]
+    assert again["SPRING_STRESS_1"]["passed"] and again["COUPLING_SLIP_1"]["passed"]
 
 
 @settings(max_examples=10, deadline=None)
