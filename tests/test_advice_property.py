@@ -150,14 +150,12 @@ def test_every_printed_fix_passes_when_followed(kind, data):
         if c["passed"] or c["severity"] != "error":
             continue
         if "fix" not in c:
-            print("NOFIX", kind, c["code"])
             assert NEXT_LEVER.search(c["message"]), (kind, c["code"], c["message"])
             continue
         # the message prints the fix: "set KEY = VALUE", or its values in the advice's words
         # ("increase the face width to at least 52.4 mm")
         assert fix_text(list(c["fix"].items())) in c["message"] or all(
             fix_text([("", v)])[3:] in c["message"] for v in c["fix"].values()), c["message"]
-        print("FOLLOW", kind, c["code"])
         again = {x["code"]: x for x in run_data(apply_fix(spec, c["fix"])).document()["checks"]}
         assert c["code"] in again and again[c["code"]]["passed"], (
             kind, c["code"], c["fix"], again.get(c["code"], {}).get("message"))

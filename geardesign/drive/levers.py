@@ -112,33 +112,33 @@ def _bearings(data: dict, res) -> dict:
     return out
 
 
-def _connections(data: dict, res) -> dict:
-    reports = iter(r for key, _, r in res.parts if key == "connection_reports")
-    out = {}
+def _analysed(data: dict, res, part: str, each):
+    """``(k, shaft, item, report)`` of the analysed shafts (those with steps) in the order of
+    their nested reports ``part``: ``each(shaft)`` lists a shaft's items (its connections,
+    or the shaft itself), one report each."""
+    reports = iter(r for key, _, r in res.parts if key == part)
     for k, sh in _shafts(data):
         if not sh.get("step"):
             continue
-        for j, c in enumerate(sh.get("key") or []):
+        for item in each(sh):
             report = next(reports, None)
             if report is None:
-                return out
-            if report.failed and isinstance(c, dict):
-                typ = c.get("type")
-                fix = _part_fix(report, f"shaft[{k}].key[{j}].",
-                                {f"{typ}.length": "length", f"{typ}.count": "count"})
-                if fix:
-                    out[f"CONNECTION_{sh.get('index')}_{j + 1}"] = (
-                        fix, "the connection rated with the torque through its hub")
+                return
+            yield k, sh, item, report
+
+
+def _connections(data: dict, res) -> dict:
+    out = {}
+    for k, sh, (j, c), report in _analysed(data, res, "connection_reports",
+                                           lambda sh: enumerate(sh.get("key") or [])):
+        if report.failed and isinstance(c, dict):
+            typ = c.get("type")
+            fix = _part_fix(report, f"shaft[{k}].key[{j}].",
+                            {f"{typ}.length": "length", f"{typ}.count": "count"})
+            if fix:
+                out[f"CONNECTION_{sh.get('index')}_{j + 1}"] = (
+                    fix, "the connection rated with the torque through its hub")
     return out
-
-
-def _strip(x):
-    """A validated table as a spec: the keys that are not set left out."""
-    if isinstance(x, dict):
-        return {k: _strip(v) for k, v in x.items() if v is not None}
-    if isinstance(x, list):
-        return [_strip(v) for v in x]
-    return x
 
 
 def _seats(part: dict) -> set[int]:
@@ -162,7 +162,7 @@ def _shaft_fix(report, k: int):
     from geardesign.core.registry import load_data
     from geardesign.shaft.levers import scale_order, scaled_steps
 
-    part = _strip(report.inputs)
+    part = dict(report.document()["inputs"], kind="shaft")    # the spec the drive built
     steps = part.get("step") or []
     if not steps:
         return None
@@ -191,14 +191,8 @@ def _shaft_fix(report, k: int):
 
 
 def _shafts_fixes(data: dict, res) -> dict:
-    reports = iter(r for key, _, r in res.parts if key == "shaft_reports")
     out = {}
-    for k, sh in _shafts(data):
-        if not sh.get("step"):
-            continue
-        report = next(reports, None)
-        if report is None:
-            break
+    for k, sh, _, report in _analysed(data, res, "shaft_reports", lambda sh: (sh,)):
         if report.failed:
             fix = _shaft_fix(report, k)
             if fix:
