@@ -79,7 +79,7 @@ KNOBS: dict[str, list] = {
         ("scale", ("shaft[1].key[0].length",), (0.5, 1.0))],
 }
 
-CPU = {"pzdn": 0.3, "drive": 0.2, "drive_shafts": 0.3, "epicycle_rim": 0.1}
+CPU = {"drive": 0.2, "drive_shafts": 0.3, "epicycle_rim": 0.1}
 """CPU seconds of an advised run measured on the development machine (bounded_work: 20
 times, at least 2 s); 0.05 s for the others."""
 
@@ -96,7 +96,10 @@ def _base(kind: str) -> dict:
             encoding="utf-8"))
     code, out, err = cli("template", kind)
     assert code == 0, err
-    return tomllib.loads(out)
+    data = tomllib.loads(out)
+    if kind == "pzdn":       # the start-up simulation (half a second a run) is not the springs'
+        data.pop("startup", None)
+    return data
 
 
 _BASES: dict[str, dict] = {}
@@ -134,13 +137,13 @@ def _variant(kind: str, draw) -> dict:
     return apply_fix(data, fix)
 
 
-@pytest.mark.parametrize("kind", sorted(KNOBS))
-@settings(max_examples=6, deadline=None,
-          suppress_health_check=[HealthCheck.function_scoped_fixture,
-                                 HealthCheck.too_slow])
-@given(st.data())
-def test_every_printed_fix_passes_when_followed(kind, data):
-    spec = _variant(kind, data.draw)
+SLOW = ("drive_shafts", "epicycle_rim")
+"""Kinds whose rating takes a tenth of a second or more (a drive with its shafts and heat
+balance, a rim with Floquet bands): fewer examples."""
+
+
+def _follow_every_fix(kind: str, draw) -> None:
+    spec = _variant(kind, draw)
     try:
         with bounded_work(CPU.get(kind, 0.05), f"{kind}: rating with the advice search"):
             doc = run_data(spec).document()
@@ -159,3 +162,19 @@ def test_every_printed_fix_passes_when_followed(kind, data):
         again = {x["code"]: x for x in run_data(apply_fix(spec, c["fix"])).document()["checks"]}
         assert c["code"] in again and again[c["code"]]["passed"], (
             kind, c["code"], c["fix"], again.get(c["code"], {}).get("message"))
+
+
+@pytest.mark.parametrize("kind", sorted(set(KNOBS) - set(SLOW)))
+@settings(max_examples=6, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
+@given(st.data())
+def test_every_printed_fix_passes_when_followed(kind, data):
+    _follow_every_fix(kind, data.draw)
+
+
+@pytest.mark.parametrize("kind", SLOW)
+@settings(max_examples=3, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
+@given(st.data())
+def test_every_printed_fix_passes_when_followed_slow_kinds(kind, data):
+    _follow_every_fix(kind, data.draw)
