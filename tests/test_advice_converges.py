@@ -633,3 +633,22 @@ def test_geneva_centre_distance_beyond_half_the_roller(tmp_path):
     c, _, (_, _, checks) = _follow(tmp_path, "geneva", data, "ROLLER_FIT")
     assert list(c["fix"]) == ["geneva.center_distance"] and c["fix"]["geneva.center_distance"] > 120
     assert checks["ROLLER_FIT"]["passed"]
+
+
+def test_ball_clutch_preload_with_a_thicker_wire(tmp_path):
+    """Three times the rated torque: the preload that trips above it would overstress the
+    spring, so the fix is the preload with a thicker wire of the same rate and a longer free
+    length; written into the spec, the clutch passes.  At 8000 min^-1 no such spring keeps
+    the balls from releasing and the clutch from tripping: no fix, the message names the
+    preload, the rate, lighter balls or a smaller ball circle."""
+    code, out, _ = cli("template", "ball_clutch")
+    data = tomllib.loads(out)
+    data["operation"]["torque"] = 45.0
+    c, _, (code, _, checks) = _follow(tmp_path, "ball_clutch", data, "LIMIT_ABOVE_RATED")
+    assert set(c["fix"]) == {"spring.preload", "spring.wire_diameter", "spring.active_coils",
+                             "spring.free_length"}
+    assert code == 0
+    data["operation"].update(torque=15.0, speed=8000.0)
+    _, _, checks = _run_cli(tmp_path, "ball_clutch", data)
+    c = checks["CENTRIFUGAL_RELEASE"]
+    assert "fix" not in c and "increase the spring preload or rate" in c["message"]

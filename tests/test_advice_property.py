@@ -1,7 +1,8 @@
 """Every advice of every calculator that carries a fix converges in one step: the template
 (``geardesign template KIND``, and for the drive also the reducer with shafts, keys and a
 heat balance) perturbed into random failing variants; each failed check's printed fix is
-written into the spec as printed and the spec run again, and the check passes.  A failed
+written into the spec as printed and the spec run again, and the check passes and no error
+check that passed (or that the spec did not have) fails.  A failed
 check without a fix says what to change instead (the next lever).  The advised run stays
 bounded in CPU time (``bounded_work``)."""
 
@@ -149,6 +150,7 @@ def _follow_every_fix(kind: str, draw) -> None:
             doc = run_data(spec).document()
     except InputError:           # refused input: nothing to advise
         return
+    before = {c["code"]: c["passed"] for c in doc["checks"] if c["severity"] == "error"}
     for c in doc["checks"]:
         if c["passed"] or c["severity"] != "error":
             continue
@@ -162,6 +164,10 @@ def _follow_every_fix(kind: str, draw) -> None:
         again = {x["code"]: x for x in run_data(apply_fix(spec, c["fix"])).document()["checks"]}
         assert c["code"] in again and again[c["code"]]["passed"], (
             kind, c["code"], c["fix"], again.get(c["code"], {}).get("message"))
+        # and no error check that passed (or that the spec did not have) fails now
+        broken = [k for k, x in again.items() if x["severity"] == "error" and not x["passed"]
+                  and before.get(k, True)]
+        assert not broken, (kind, c["code"], c["fix"], broken)
 
 
 @pytest.mark.parametrize("kind", sorted(set(KNOBS) - set(SLOW)))

@@ -89,11 +89,15 @@ def rerate(calc, spec, fix) -> Result | None:
         return None
 
 
-def passes(res: Result, todo: set, passing: set) -> bool:
-    """Every check of ``todo`` passes in ``res`` and every error check of ``passing`` still
-    does."""
+def passes(res: Result, todo: set, passing: set, known: set | None = None) -> bool:
+    """Every check of ``todo`` passes in ``res``, every error check of ``passing`` still
+    does, and no error check that the result before did not have (``known``: its codes)
+    appears failed (a check a calculator makes only in some states, such as the limit
+    torque of a clutch that no longer releases by speed)."""
     now = {c.code: c.passed for c in res.checks if c.severity == "error"}
     if not all(now.get(k, True) for k in passing):
+        return False
+    if known is not None and not all(ok for k, ok in now.items() if k not in known):
         return False
     return all(now.get(k, False) for k in todo)
 
@@ -104,6 +108,7 @@ def advise(calc, spec, res: Result, levers: Iterable[Lever]) -> Result:
         return res
     failed = {c.code for c in res.failed}
     passing = {c.code for c in res.checks if c.severity == "error" and c.passed}
+    known = {c.code for c in res.checks}
     found: dict[str, tuple] = {}
     for lever in levers:
         todo = failed & set(lever.codes) - set(found)
@@ -117,7 +122,7 @@ def advise(calc, spec, res: Result, levers: Iterable[Lever]) -> Result:
             if n >= MAX_TRIES:
                 break
             again = rerate(calc, spec, fix)
-            if again is not None and passes(again, todo, passing):
+            if again is not None and passes(again, todo, passing, known):
                 for k in todo:
                     found[k] = (tuple(fix), lever.what)
                 break
@@ -153,9 +158,9 @@ def _per_check(calc, spec, res: Result, lever: Lever, todo: set, passing: set) -
         again = rerate(calc, spec, tuple(merged.items()))
         if again is None:
             continue
-        now = {c.code: c.passed for c in again.checks if c.severity == "error"}
-        if not all(now.get(k, True) for k in passing):
+        if not passes(again, set(), passing, {c.code for c in res.checks}):
             continue
+        now = {c.code: c.passed for c in again.checks if c.severity == "error"}
         for code, (fix, what) in proposal.items():
             if now.get(code, False):
                 found[code] = (tuple(fix), what)

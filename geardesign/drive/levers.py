@@ -184,7 +184,7 @@ def _shaft_fix(report, k: int):
             again = calc.rate(spec)
         except (InputError, ArithmeticError, ValueError):
             return None
-        if passes(again, todo, passing):
+        if passes(again, todo, passing, {c.code for c in report.checks}):
             return tuple((f"shaft[{k}].{key}", d) for (key, d), d0 in zip(fix, diameters)
                          if d != d0)
     return None
