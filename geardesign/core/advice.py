@@ -10,6 +10,11 @@ every failed check of the lever passes and no error check that passes now fails.
 search is bounded (:data:`MAX_TRIES` candidates per lever); when no candidate passes the
 check keeps its own words and carries no fix.  A closed form is not trusted: the candidate
 is always re-rated, so that the advice passes as printed.
+
+A lever ``per_check`` proposes one fix for each failed check at once (a drive's bearing,
+shaft and connection checks, each found by re-rating that part alone with the loads the
+drive computed): all proposed fixes are written in together and the spec re-rated once;
+each check that then passes carries its own fix (at most :data:`MAX_PROPOSALS` proposals).
 """
 
 from __future__ import annotations
@@ -26,17 +31,23 @@ from geardesign.core.result import Result, fix_text
 MAX_TRIES = 40
 """Candidates re-rated per lever at most."""
 
+MAX_PROPOSALS = 2
+"""Proposals of a ``per_check`` lever re-rated at most."""
+
 
 @dataclasses.dataclass(frozen=True)
 class Lever:
     """``codes``: the error checks this lever can make pass; ``candidates(data, result)``
     yields changes ``((key, value), ...)`` of the spec as written (``data``), in the order
     in which they are preferred; ``what`` says in words what the change is ("the next
-    standard diameters")."""
+    standard diameters").  ``per_check``: ``candidates`` yields proposals
+    ``{code: (fix, what)}``, one fix per failed check, re-rated together (see the
+    module)."""
 
     codes: tuple[str, ...]
-    candidates: Callable[[dict, Result], Iterable[tuple]]
+    candidates: Callable[[dict, Result], Iterable]
     what: str
+    per_check: bool = False
 
 
 _PART = re.compile(r"([^.\[\]]+)(?:\[(\d+)\])?")
@@ -78,9 +89,15 @@ def rerate(calc, spec, fix) -> Result | None:
         return None
 
 
-def _passes(res: Result, todo: set, passing: set) -> bool:
+def passes(res: Result, todo: set, passing: set, known: set | None = None) -> bool:
+    """Every check of ``todo`` passes in ``res``, every error check of ``passing`` still
+    does, and no error check that the result before did not have (``known``: its codes)
+    appears failed (a check a calculator makes only in some states, such as the limit
+    torque of a clutch that no longer releases by speed)."""
     now = {c.code: c.passed for c in res.checks if c.severity == "error"}
     if not all(now.get(k, True) for k in passing):
+        return False
+    if known is not None and not all(ok for k, ok in now.items() if k not in known):
         return False
     return all(now.get(k, False) for k in todo)
 
@@ -91,17 +108,21 @@ def advise(calc, spec, res: Result, levers: Iterable[Lever]) -> Result:
         return res
     failed = {c.code for c in res.failed}
     passing = {c.code for c in res.checks if c.severity == "error" and c.passed}
+    known = {c.code for c in res.checks}
     found: dict[str, tuple] = {}
     for lever in levers:
         todo = failed & set(lever.codes) - set(found)
         todo = {k for k in todo if not any(c.fix for c in res.failed if c.code == k)}
         if not todo:
             continue
+        if lever.per_check:
+            found.update(_per_check(calc, spec, res, lever, todo, passing))
+            continue
         for n, fix in enumerate(lever.candidates(spec.raw, res)):
             if n >= MAX_TRIES:
                 break
             again = rerate(calc, spec, fix)
-            if again is not None and _passes(again, todo, passing):
+            if again is not None and passes(again, todo, passing, known):
                 for k in todo:
                     found[k] = (tuple(fix), lever.what)
                 break
@@ -116,6 +137,36 @@ def advise(calc, spec, res: Result, levers: Iterable[Lever]) -> Result:
         checks.append(c)
     res.checks = checks
     return res
+
+
+def _per_check(calc, spec, res: Result, lever: Lever, todo: set, passing: set) -> dict:
+    """The fixes of a ``per_check`` lever that pass when re-rated together (see the
+    module): ``{code: (fix, what)}``."""
+    found: dict = {}
+    for n, proposal in enumerate(lever.candidates(spec.raw, res)):
+        if n >= MAX_PROPOSALS:
+            break
+        proposal = {k: v for k, v in proposal.items() if k in todo and k not in found}
+        merged: dict = {}
+        for code, (fix, _) in list(proposal.items()):
+            if any(merged.get(k, v) != v for k, v in fix):    # sets a key differently
+                del proposal[code]
+                continue
+            merged.update(fix)
+        if not proposal:
+            continue
+        again = rerate(calc, spec, tuple(merged.items()))
+        if again is None:
+            continue
+        if not passes(again, set(), passing, {c.code for c in res.checks}):
+            continue
+        now = {c.code: c.passed for c in again.checks if c.severity == "error"}
+        for code, (fix, what) in proposal.items():
+            if now.get(code, False):
+                found[code] = (tuple(fix), what)
+        if set(todo) <= set(found):
+            break
+    return found
 
 
 def fmt(v: float) -> str:

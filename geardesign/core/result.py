@@ -132,7 +132,9 @@ def fix_text(fix) -> str:
     """A machine-readable fix as the message writes it: ``gear.module = 8, gear.x = 0.25``
     (numbers to at most four decimals, as they are to be typed into the spec)."""
     def show(v):
-        if isinstance(v, bool) or not isinstance(v, float):
+        if isinstance(v, bool):
+            return "true" if v else "false"          # as TOML writes it
+        if not isinstance(v, float):
             return f'"{v}"' if isinstance(v, str) else str(v)
         return f"{v:.4f}".rstrip("0").rstrip(".")
     return ", ".join(f"{k} = {show(v)}" for k, v in fix)

@@ -1,10 +1,34 @@
-"""Levers of the drive advice (:mod:`geardesign.core.advice`): a stage fails (``STAGE_i``)
-and its own report advises a change of the stage spec (``gear.face_width = ...``).  The
-drive writes that change at the drive's own key path (``stage[0].gear.face_width``) and
-re-rates the whole drive with it, so that the stage's loads, efficiencies and the heat
-balance follow; a stage read from a file is changed in that file, which the drive spec
-cannot name: no fix.  Candidates: the fixes of the stage's failed checks merged into one
-change (where they do not set a key differently), then each on its own."""
+"""Levers of the drive advice (:mod:`geardesign.core.advice`).
+
+**Stages.** A stage fails (``STAGE_i``) and its own report advises a change of the stage
+spec (``gear.face_width = ...``).  The drive writes that change at the drive's own key path
+(``stage[0].gear.face_width``) and re-rates the whole drive with it, so that the stage's
+loads, efficiencies and the heat balance follow; a stage read from a file is changed in
+that file, which the drive spec cannot name: no fix.  Candidates: the fixes of the stage's
+failed checks merged into one change (where they do not set a key differently), then each
+on its own.
+
+**Bearings, shafts, connections.** Each is found on the part itself, with the loads the
+drive computed for it (its nested report's inputs), so that no trial runs the drive's
+stages or heat balance:
+
+* ``BEARING_<i><A/B>``: the bearing calculator's own fix (the next catalogue bearing of
+  the type and bore with a higher C_r, re-rated with the drive's reactions and oil) at
+  ``shaft[k].support_a.designation``;
+* ``CONNECTION_<i>_<j>``: the connection calculator's own fix (the standard key length, or
+  two keys, within 1.5·d and the hub, re-rated with the torque through the hub) at
+  ``shaft[k].key[j-1].length`` / ``.count``;
+* ``SHAFT_<i>``: the shaft calculator re-rated with the drive's loads and supports, the
+  steps scaled alike (:func:`geardesign.shaft.levers.scaled_steps`) but the bearing seats
+  kept (their diameter is the bearing's bore) and the steps outboard of them no larger than
+  the seat, at ``shaft[k].step[n].diameter``.
+
+The fixes are then written into the drive spec together and the drive re-rated once
+(``per_check``): the heat balance (a larger bearing loses more), the mesh misalignment from
+the shafts' slopes and the keys on a thicker step follow, and a check carries its fix only
+when it passes then.  A part that no change within its proportions makes pass keeps its
+words (the shaft's and the connection's messages name the next lever: a larger bearing
+bore, a spline or an interference fit)."""
 
 from __future__ import annotations
 
@@ -12,6 +36,9 @@ from geardesign.core.advice import Lever
 
 MAX_STAGES = 12
 """Stages whose advice is carried up (a drive has a few)."""
+
+MAX_SHAFT_TRIES = 6
+"""Scales of a drive's shaft re-rated at most (each a shaft analysis)."""
 
 
 def _stage_fixes(i: int):
@@ -45,6 +72,162 @@ def _stage_fixes(i: int):
     return gen
 
 
+# ------------------------------------------------------------------ parts
+
+
+def _shafts(data: dict) -> list[tuple[int, dict]]:
+    """``(k, shaft table)`` of the spec's ``[[shaft]]`` entries that are tables."""
+    return [(k, sh) for k, sh in enumerate(data.get("shaft") or []) if isinstance(sh, dict)]
+
+
+def _part_fix(report, prefix: str, keys: dict) -> tuple | None:
+    """The fix that the failed checks of a nested ``report`` carry, at the drive's path:
+    ``keys`` maps the part's key to the drive's (``None``: not a key the drive can name)."""
+    fix: dict = {}
+    for c in report.failed:
+        for k, v in c.fix:
+            if k not in keys or fix.get(keys[k], v) != v:
+                return None
+            fix[keys[k]] = v
+    if not fix or any(not c.fix for c in report.failed):
+        return None
+    return tuple((prefix + k, v) for k, v in fix.items())
+
+
+def _bearings(data: dict, res) -> dict:
+    reports = [r for key, _, r in res.parts if key == "bearing_reports"]
+    out, n = {}, 0
+    for k, sh in _shafts(data):
+        for side in ("a", "b"):
+            if n >= len(reports):
+                return out
+            report, n = reports[n], n + 1
+            if report.failed:
+                fix = _part_fix(report, f"shaft[{k}].support_{side}.",
+                                {"bearing.designation": "designation"})
+                if fix:
+                    out[f"BEARING_{sh.get('index')}{side.upper()}"] = (
+                        fix, "the next catalogue bearing of its type and bore, rated with "
+                        "the drive's loads")
+    return out
+
+
+def _analysed(data: dict, res, part: str, each):
+    """``(k, shaft, item, report)`` of the analysed shafts (those with steps) in the order of
+    their nested reports ``part``: ``each(shaft)`` lists a shaft's items (its connections,
+    or the shaft itself), one report each."""
+    reports = iter(r for key, _, r in res.parts if key == part)
+    for k, sh in _shafts(data):
+        if not sh.get("step"):
+            continue
+        for item in each(sh):
+            report = next(reports, None)
+            if report is None:
+                return
+            yield k, sh, item, report
+
+
+def _connections(data: dict, res) -> dict:
+    out = {}
+    for k, sh, (j, c), report in _analysed(data, res, "connection_reports",
+                                           lambda sh: enumerate(sh.get("key") or [])):
+        if report.failed and isinstance(c, dict):
+            typ = c.get("type")
+            fix = _part_fix(report, f"shaft[{k}].key[{j}].",
+                            {f"{typ}.length": "length", f"{typ}.count": "count"})
+            if fix:
+                out[f"CONNECTION_{sh.get('index')}_{j + 1}"] = (
+                    fix, "the connection rated with the torque through its hub")
+    return out
+
+
+def _seats(part: dict) -> set[int]:
+    """The steps of a shaft spec (the shaft calculator's) on which a support sits."""
+    seats, z = set(), 0.0
+    spans = []
+    for i, s in enumerate(part["step"]):
+        spans.append((z, z + s["length"], i))
+        z += s["length"]
+    for sup in part.get("support") or []:
+        x = sup.get("position")
+        seats |= {i for a, b, i in spans if x is not None and a - 1e-9 <= x <= b + 1e-9}
+    return seats
+
+
+def _shaft_fix(report, k: int):
+    """The least scale of a drive shaft's steps (seats kept) that passes its checks,
+    re-rated by the shaft calculator alone; ``None`` when none within the scales does."""
+    from geardesign.core.advice import passes
+    from geardesign.core.errors import InputError
+    from geardesign.core.registry import load_data
+    from geardesign.shaft.levers import scale_order, scaled_steps
+
+    part = dict(report.document()["inputs"], kind="shaft")    # the spec the drive built
+    steps = part.get("step") or []
+    if not steps:
+        return None
+    seats = _seats(part)
+    diameters = [s["diameter"] for s in steps]
+    todo = {c.code for c in report.failed}
+    passing = {c.code for c in report.checks if c.severity == "error" and c.passed}
+    last, tries = None, 0
+    for scale in scale_order(report):
+        fix = scaled_steps(diameters, scale, seats)
+        if fix == last:
+            continue
+        last, tries = fix, tries + 1
+        if tries > MAX_SHAFT_TRIES:
+            return None
+        trial = dict(part, step=[dict(s, diameter=d) for s, (_, d) in zip(steps, fix)])
+        try:
+            calc, spec = load_data(trial)
+            again = calc.rate(spec)
+        except (InputError, ArithmeticError, ValueError):
+            return None
+        if passes(again, todo, passing, {c.code for c in report.checks}):
+            return tuple((f"shaft[{k}].{key}", d) for (key, d), d0 in zip(fix, diameters)
+                         if d != d0)
+    return None
+
+
+def _shafts_fixes(data: dict, res) -> dict:
+    out = {}
+    for k, sh, _, report in _analysed(data, res, "shaft_reports", lambda sh: (sh,)):
+        if report.failed:
+            fix = _shaft_fix(report, k)
+            if fix:
+                out[f"SHAFT_{sh.get('index')}"] = (
+                    fix, "the steps between the bearing seats scaled alike, rounded up to "
+                    "whole mm, rated with the drive's loads")
+    return out
+
+
+def part_fixes(data: dict, res):
+    """Proposals of the ``per_check`` lever: every part's fix, then those of the bearings
+    and connections alone (when a shaft's thicker steps upset a check that passed)."""
+    found = {**_bearings(data, res), **_connections(data, res)}
+    shafts = _shafts_fixes(data, res) if any(
+        c.code.startswith("SHAFT_") for c in res.failed) else {}
+    yield {**found, **shafts}
+    if shafts and found:
+        yield found
+
+
+MAX_SHAFTS = 13
+"""Shafts whose checks carry a fix (a drive of up to 12 stages)."""
+
+MAX_CONNECTIONS = 12
+"""Connections per shaft whose checks carry a fix."""
+
+PART_CODES = tuple(
+    [f"BEARING_{i}{s}" for i in range(1, MAX_SHAFTS + 1) for s in "AB"]
+    + [f"SHAFT_{i}" for i in range(1, MAX_SHAFTS + 1)]
+    + [f"CONNECTION_{i}_{j}" for i in range(1, MAX_SHAFTS + 1)
+       for j in range(1, MAX_CONNECTIONS + 1)])
+"""The checks of the drive's parts."""
+
+
 LEVERS = tuple(Lever((f"STAGE_{i + 1}",), _stage_fixes(i),
                      f"the change stage {i + 1}'s report advises, at the drive's key path")
-               for i in range(MAX_STAGES))
+               for i in range(MAX_STAGES)) + (
+    Lever(PART_CODES, part_fixes, "each part re-rated alone", per_check=True),)
