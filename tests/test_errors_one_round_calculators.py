@@ -11,7 +11,7 @@ import itertools
 import pytest
 
 from .helpers_cli import cli, cli_process, run_bad, write_spec
-from .test_errors_one_round import edit, template
+from .test_errors_one_round import SPECS, edit, template
 
 MISTAKES = {
     "shaft": {
@@ -163,3 +163,62 @@ def test_cross_bore_at_the_default_middle_names_the_hole(tmp_path):
     assert run_bad(tmp_path, text) == [
         "s.toml: step[2].cross_bore = 12.0: wider than the step's length 10 mm: the hole at "
         "its middle (the default of cross_bore_at, not in the spec) must lie within the step"]
+
+
+# --------------------------------------------------------------- --select with a pair
+
+
+def test_select_on_a_pair_spec_is_one_line_saying_what_is_allowed(tmp_path):
+    """`geardesign run pair.toml --select`: the flag replaces mode = "check" (and its
+    designation), not the pair the spec asks for; one line on the mode, not a complaint
+    about [pair]."""
+    text = (SPECS / "bearing_tapered_pair.toml").read_text(encoding="utf-8")
+    path = write_spec(tmp_path, text)
+    for command in (("run",), ("bearing",)):
+        code, out, err = cli(*command, path, "--select")
+        assert code == 2 and out == ""
+        assert err.replace(str(path), "s.toml").splitlines() == [
+            's.toml: mode = "pair": --select replaces only mode = "check" (the default); this '
+            'spec sets mode = "pair": run it without --select, or write mode = "select" in '
+            'place of "pair" and remove [pair]']
+
+
+def test_select_still_replaces_a_written_check_mode(tmp_path):
+    text = template("bearing").replace('kind = "bearing"', 'kind = "bearing"\nmode = "check"')
+    code, out, err = cli("bearing", write_spec(tmp_path, text), "--select", "--format", "json")
+    assert code == 0, err
+
+
+# --------------------------------------------------------------- spur advice of a module
+
+
+def test_a_module_fix_does_not_also_advise_a_scaled_centre_distance(tmp_path):
+    """When the advice sets a standard module, the check's words no longer advise the
+    continuous scaling (a centre distance of 510.3 mm, a module +211 %) that the user
+    would not set."""
+    import json
+
+    text = edit(template("spur"), ("\ntorque1 = 250.0", "\ntorque1 = 2500.0"),
+                ("peak_torque1 = 500.0", "peak_torque1 = 5000.0"))
+    code, out, err = cli("run", write_spec(tmp_path, text), "--format", "json")
+    assert code == 1, err
+    fixed = [c for c in json.loads(out)["checks"] if c.get("fix") and "gear.module" in c["fix"]]
+    assert {c["code"] for c in fixed} >= {"CONTACT_FATIGUE", "BENDING_FATIGUE_PINION"}
+    for c in fixed:
+        assert "increase the centre distance" not in c["message"], c["message"]
+        assert "increase the module by" not in c["message"], c["message"]
+        assert "gear.center_distance" not in c["message"]
+
+
+def test_without_leaves_out_a_clause_and_its_joint():
+    from geardesign.core.advice import without
+    from geardesign.spur.levers import SUPERSEDED
+
+    assert without("S = 0.4: increase the centre distance to at least 510.3 mm (+104 %, module "
+                   "and face width in proportion, found by re-rating), or use a harder wheel "
+                   "material", SUPERSEDED) == "S = 0.4: use a harder wheel material"
+    assert without("S = 0.9: use a harder material, or increase the module by 58 % (same "
+                   "centre distance, fewer teeth)", SUPERSEDED) == "S = 0.9: use a harder material"
+    assert without("S = 0.4 (spectrum): increase the centre distance by 52 % (module and face "
+                   "width in proportion); no face width passes", SUPERSEDED) == \
+        "S = 0.4 (spectrum); no face width passes"
