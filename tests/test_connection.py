@@ -122,8 +122,11 @@ BAD = [
      ["s.toml: spline.module = 2.0: the series table has no spline 42 x 2; give "
       "spline.teeth"]),
     ("soft teeth sliding under load", SPL + 'use = "sliding_loaded"\n',
-     ['s.toml: spline.hardness = "soft": the default (not in the spec): a hub sliding under '
-      'load needs hardened teeth (spline.hardness = "hardened") or give spline.allowable_pressure']),
+     ['s.toml: spline.use = "sliding_loaded": a hub sliding under load needs hardened teeth: '
+      'give spline.hardness = "hardened" (the default is "soft") or spline.allowable_pressure']),
+    ("soft teeth given, sliding under load", SPL + 'use = "sliding_loaded"\nhardness = "soft"\n',
+     ['s.toml: spline.hardness = "soft": a hub sliding under load needs hardened teeth '
+      '(spline.hardness = "hardened") or give spline.allowable_pressure']),
 ]
 
 

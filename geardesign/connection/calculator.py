@@ -35,7 +35,7 @@ def compute(spec: ValidatedSpec) -> Result:
         fraction = max([r.tau / r.tau_allow] + [fl.p / fl.p_allow for fl in r.flanks])
         what = "the key uses {:.2g} % of its capacity (pressure and shear over their limits)"
     elif data.get("spline") is not None:
-        s = I.spline(data)
+        s = I.spline(data, spec.assumed)
         res, ld = CALCULATOR.new_result(spec), I.load(data)
         r = solve.spline(s, ld)
         _spline_report(res, s, ld, r)

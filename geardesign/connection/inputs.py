@@ -214,15 +214,16 @@ def _spline_size(s: dict) -> tuple[float, float, int, str]:
     return d_B, mod, row.z, f"{S.SPLINE_GEOM}; splines.csv row {row.row}"
 
 
-def spline(data: dict) -> SplineInput:
+def spline(data: dict, assumed: tuple | list = ()) -> SplineInput:
     """The spline: its size, the profile shift the size gives, the tooth hardness against
-    the use; each rule independent."""
+    the use; each rule independent.  ``assumed``: the keys the spec leaves to their
+    defaults (``ValidatedSpec.assumed``)."""
     s = data["spline"]
     problems = Problems()
     size = problems.stage(_spline_size, s)
     if size is not Problems.FAILED:
         problems.stage(_spline_shift, s, *size[:3])
-    problems.stage(_spline_hardness, s)
+    problems.stage(_spline_hardness, s, "spline.hardness" in assumed)
     problems.raise_all()
     d_B, m, z, src = size
     return SplineInput(d_B, m, z, src, s["standard"] == "GOST 6033-80", s["length"],
@@ -254,12 +255,19 @@ def _spline_shift(s: dict, d_B: float, m: float, z: int) -> None:
                         f"5480: {hint}")
 
 
-def _spline_hardness(s: dict) -> None:
-    if (s["allowable_pressure"] is None
-            and s["hardness"] not in tables.toml()["spline_pressure"][s["use"]]):
-        raise InputError.at("spline.hardness", s["hardness"], "a hub sliding under load needs "
-                            'hardened teeth (spline.hardness = "hardened") or give '
-                            "spline.allowable_pressure")
+def _spline_hardness(s: dict, default: bool) -> None:
+    """A hub sliding under load needs hardened teeth (the table has no pressure for soft
+    ones); the line names the use when the hardness is the default."""
+    if (s["allowable_pressure"] is not None
+            or s["hardness"] in tables.toml()["spline_pressure"][s["use"]]):
+        return
+    if default:
+        raise InputError.at("spline.use", s["use"], 'a hub sliding under load needs hardened '
+                            'teeth: give spline.hardness = "hardened" (the default is "soft") '
+                            "or spline.allowable_pressure")
+    raise InputError.at("spline.hardness", s["hardness"], "a hub sliding under load needs "
+                        'hardened teeth (spline.hardness = "hardened") or give '
+                        "spline.allowable_pressure")
 
 
 # --------------------------------------------------------------------------- fit
