@@ -222,3 +222,18 @@ def test_without_leaves_out_a_clause_and_its_joint():
     assert without("S = 0.4 (spectrum): increase the centre distance by 52 % (module and face "
                    "width in proportion); no face width passes", SUPERSEDED) == \
         "S = 0.4 (spectrum); no face width passes"
+
+
+def test_a_wrong_method_leaves_out_only_the_rules_of_a_method(tmp_path):
+    """A misspelt [shaft] method: the schema's line, and the step and load rules that do
+    not depend on the method, in one run."""
+    text = edit(template("shaft"), ("speed = 200.0", 'speed = 200.0\nmethod = "DIN 743"'),
+                *MISTAKES["shaft"]["bore"], *MISTAKES["shaft"]["load_position"])
+    lines = run_bad(tmp_path, text)
+    assert lines[0].startswith('s.toml: shaft.method = "DIN 743": must be one of "GOST", '
+                               '"DIN743"')
+    assert lines[1:] == [
+        "s.toml: step[1].bore = 60.0: must be smaller than the diameter 55 mm",
+        "s.toml: load[1].position = 295.0: outside the shaft: must be within 0…230 mm (the "
+        "sum of the step lengths)",
+    ]

@@ -27,7 +27,9 @@ def model(spec: ValidatedSpec) -> dict:
     steps = problems.stage(IN.steps, spec)
     rows = spec.data["step"]
     d_max = problems.stage(lambda: max(s["diameter"] for s in rows))
-    mat = problems.stage(IN.material, spec.data["material"], IN.method(spec), d_max)
+    how = problems.stage(IN.method, spec)
+    mat = (problems.stage(IN.material, spec.data["material"], how, d_max)
+           if how is not Problems.FAILED else Problems.FAILED)
     length = problems.stage(lambda: sum(s["length"] for s in rows))
     length = None if length is Problems.FAILED else length
     loads = problems.stage(IN.loads, spec, length)

@@ -28,8 +28,14 @@ DIN_STEP = ("groove_depth", "groove_radius", "groove_width", "groove_shape", "cr
 
 
 def method(spec: ValidatedSpec) -> str:
-    """The strength method: ``[shaft] method``, default "GOST"."""
-    return spec.data["shaft"].get("method") or "GOST"
+    """The strength method: ``[shaft] method``, default "GOST" (:class:`Unusable` when the
+    method given is wrong: the rules of a method are then left out, the others checked)."""
+    how = spec.data["shaft"].get("method")
+    if how is None:
+        return "GOST"
+    if not isinstance(how, str):
+        raise Unusable()
+    return how
 
 
 def resolve_defaults(spec: ValidatedSpec) -> None:
@@ -223,8 +229,9 @@ def din_material(m: dict, d_max: float) -> tuple[Material, dict]:
 def steps(spec: ValidatedSpec) -> list[Step]:
     """The steps; every step's rules (:data:`STEP_RULES`) are checked, each independently."""
     rows = spec.data["step"]
-    din = method(spec) == "DIN743"
     problems = Problems()
+    how = problems.stage(method, spec)
+    din = None if how is Problems.FAILED else how == "DIN743"
     x: float | None = 0.0
     for i, s in enumerate(rows):
         for rule in STEP_RULES:
@@ -265,7 +272,9 @@ def _groove_factors(i: int, s: dict, x, n: int, din: bool) -> None:
                             "groove's shoulder")
 
 
-def _keyway_cutter(i: int, s: dict, x, n: int, din: bool) -> None:
+def _keyway_cutter(i: int, s: dict, x, n: int, din: bool | None) -> None:
+    if din is None:
+        raise Unusable()     # the method is wrong: reported by the schema
     if s["keyway"] and s["keyway_cutter"] != "end_mill" and din:
         raise InputError.at(f"step[{i}].keyway_cutter", s["keyway_cutter"],
                             "DIN 743-2 gives the notch factor of a key seat cut by an end "
@@ -276,6 +285,8 @@ def _keyway_cutter(i: int, s: dict, x, n: int, din: bool) -> None:
 def _din_keys(i: int, s: dict, x, n: int, din: bool) -> None:
     """The DIN 743 notches by geometry: their domains (DIN743), or none of their keys
     (GOST, every one given reported)."""
+    if din is None:
+        raise Unusable()     # the method is wrong: reported by the schema
     if din:
         problems = Problems()
         problems.stage(_din_notches, i, s, n)
@@ -296,7 +307,8 @@ def _din_keys(i: int, s: dict, x, n: int, din: bool) -> None:
 
 
 STEP_RULES = (_start, _bore, _groove_factors, _keyway_cutter, _din_keys)
-"""The rules of one step, each ``(i, step, x, n_steps, din)``, checked independently."""
+"""The rules of one step, each ``(i, step, x, n_steps, din)``, checked independently
+(``din`` None: the method is wrong, and the rules of a method are left out)."""
 
 
 def _din_notches(i: int, s: dict, n_steps: int) -> None:
