@@ -142,6 +142,7 @@ def _compute_all(paths: List[Path], expect_kind: Optional[str], mode: Optional[s
                 field = calc.schema.root.member("mode")
                 if field is None or mode not in (field.choices or ()):
                     raise InputError(Problem("", f"--{mode} does not apply to a {calc.kind} spec"))
+                _overridable(spec, calc.schema, field, mode)
                 spec.data["mode"] = mode
                 if "mode" in spec.assumed:
                     spec.assumed.remove("mode")
@@ -150,6 +151,24 @@ def _compute_all(paths: List[Path], expect_kind: Optional[str], mode: Optional[s
             problems.extend(p.line("<stdin>" if str(path) == "-" else str(path))
                             for p in exc.problems)
     return results, problems
+
+
+def _overridable(spec, schema, field, mode: str) -> None:
+    """A mode flag (``--select``) stands for the default mode (``mode = "check"``: rate
+    what the spec gives, whose designation the selection then replaces); a spec that sets
+    another mode itself (a bearing pair, ``mode = "pair"`` with ``[pair]``) asks for a
+    different calculation, and the flag is refused in one line instead of a complaint
+    about the tables of the spec's own mode."""
+    written = None if "mode" in spec.assumed else spec.data.get("mode")
+    if written is None or written in (mode, field.default):
+        return
+    own = [f"[{t.key}]" for t in schema.tables
+           if f'mode = "{written}"' in t.description and spec.data.get(t.key) is not None]
+    remove = f" and remove {', '.join(own)}" if own else ""
+    raise InputError(Problem(
+        "mode", f'--{mode} replaces only mode = "{field.default}" (the default); this spec '
+        f'sets mode = "{written}": run it without --{mode}, or write mode = "{mode}" in place '
+        f'of "{written}"{remove}', written))
 
 
 def _write(path: Path, text: str) -> None:
@@ -250,7 +269,9 @@ OPT_PROFILE = typer.Option(None, "--profile", help="Write the tooth profiles of 
                            "in mesh to FILE (.dxf needs ezdxf, or .svg).")
 OPT_SELECT = typer.Option(False, "--select",
                           help="Selection mode, as mode = \"select\" in the spec (bearing: the "
-                               "smallest catalogue bearing that meets the required life).")
+                               "smallest catalogue bearing that meets the required life; it "
+                               "replaces mode = \"check\" and the given designation, not "
+                               "mode = \"pair\").")
 
 
 def _version(value: bool) -> None:

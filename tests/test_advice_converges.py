@@ -132,8 +132,8 @@ def _property(data: dict) -> None:
 
 def test_iso_face_width_advice_stays_within_the_face_width_ratio(tmp_path):
     """The ISO-rated template (pinion d = 100 mm) no longer advises a 368.6 mm face: no
-    face width within b_w/d_w1 <= 1.6 passes, and the advice names the centre distance
-    and the material instead."""
+    face width within b_w/d_w1 <= 1.6 passes, and the advice names a standard module and
+    the material instead (not also the centre distance scaled by a factor)."""
     code, out, _ = cli("template", "spur")
     assert code == 0
     text = out.replace('# method = "GOST 21354-87"', 'method = "ISO 6336:2019"')
@@ -145,7 +145,8 @@ def test_iso_face_width_advice_stays_within_the_face_width_ratio(tmp_path):
     msg = checks["ISO_PITTING_PINION"]["message"]
     assert "face width to at least" not in msg
     assert "no face width within b_w/d_w1 <= 1.6 (up to 160.0 mm) passes" in msg
-    assert "centre distance to at least" in msg and "σ_Hlim at least" in msg
+    assert "centre distance to at least" not in msg and "σ_Hlim at least" in msg
+    assert "gear.module" in checks["ISO_PITTING_PINION"]["fix"]
 
 
 # ------------------------------------------------------------------------- connection key

@@ -54,8 +54,9 @@ BAD = [
     ("shaft below the key table", KEY.replace("shaft_diameter = 40.0", "shaft_diameter = 5.0"),
      [f"s.toml: key.shaft_diameter = 5.0: {TABLE}"]),
     ("key shorter than its width", KEY.replace("length = 56.0", "length = 10.0"),
-     ["s.toml: key.length = 10.0: must be longer than the key width b = 12 mm (form A: "
-      "bearing length l_p = -2 mm)"]),
+     ["s.toml: key.length = 10.0: must be longer than the key width b = 12 mm (derived "
+      "from key.shaft_diameter = 40 mm by the key table; form A: bearing length l_p = -2 "
+      "mm)"]),
     ("part of a key not from the table", KEY + "width = 12.0\n",
      ["s.toml: key.height: missing; a key not from the table needs key.width, key.height and "
       "key.shaft_depth together"]),
@@ -64,7 +65,11 @@ BAD = [
       "key must stand out into the hub)"]),
     ("DIN 6892 without strengths", KEY + 'standard = "DIN 6885-1"\n',
      ["s.toml: key.shaft_strength: missing; DIN 6892 method C needs the shaft yield strength "
-      "R_e (MPa), or give key.allowable_pressure and key.allowable_shear"]),
+      "R_e (MPa), or give key.allowable_pressure and key.allowable_shear",
+      "s.toml: key.hub_strength: missing; DIN 6892 method C needs the hub strength (R_e of "
+      "steel, R_m of cast iron) (MPa), or give key.allowable_pressure and key.allowable_shear",
+      "s.toml: key.key_strength: missing; DIN 6892 method C needs the key yield strength R_e "
+      "(MPa), or give key.allowable_pressure and key.allowable_shear"]),
     ("two keys", KEY + "count = 3\n",
      ["s.toml: key.count = 3: must be one of 1, 2"]),
     ("hub outer diameter not above the shaft",
@@ -117,8 +122,11 @@ BAD = [
      ["s.toml: spline.module = 2.0: the series table has no spline 42 x 2; give "
       "spline.teeth"]),
     ("soft teeth sliding under load", SPL + 'use = "sliding_loaded"\n',
-     ['s.toml: spline.hardness = "soft": the default (not in the spec): a hub sliding under '
-      'load needs hardened teeth (spline.hardness = "hardened") or give spline.allowable_pressure']),
+     ['s.toml: spline.use = "sliding_loaded": a hub sliding under load needs hardened teeth: '
+      'give spline.hardness = "hardened" (the default is "soft") or spline.allowable_pressure']),
+    ("soft teeth given, sliding under load", SPL + 'use = "sliding_loaded"\nhardness = "soft"\n',
+     ['s.toml: spline.hardness = "soft": a hub sliding under load needs hardened teeth '
+      '(spline.hardness = "hardened") or give spline.allowable_pressure']),
 ]
 
 

@@ -149,8 +149,16 @@ def test_cyrillic_grade_names():
     assert mats["material1"].startswith("40Kh") and mats["material2"].startswith("12KhN3A")
 
 
+def rated(data: dict) -> dict:
+    """The rating's document without the advice search (the checks' own words)."""
+    from geardesign.core.registry import load_data
+
+    calc, vs = load_data(data)
+    return calc.rate(vs).document()
+
+
 def test_overload_fails_with_advice():
-    doc = run_data(spec(load__torque1=600.0, load__peak_torque1=1200.0)).document()
+    doc = rated(spec(load__torque1=600.0, load__peak_torque1=1200.0))
     assert doc["verdict"] == "fail"
     c = {c["code"]: c for c in doc["checks"]}["CONTACT_FATIGUE"]
     assert not c["passed"] and c["severity"] == "error"
@@ -176,12 +184,17 @@ def test_advised_face_width_passes_when_rerun():
 
 def test_face_width_advice_stays_within_the_face_width_ratio():
     """Beyond b_w/d_w1 = 1.6 (the FACE_WIDTH_RATIO bound) the advice proposes no face width
-    and names the bound; it still names the centre distance and the material."""
-    doc = run_data(spec(load__torque1=600.0, load__peak_torque1=1200.0)).document()
-    msg = {c["code"]: c for c in doc["checks"]}["CONTACT_FATIGUE"]["message"]
+    and names the bound; it still names the centre distance and the material, and the
+    advice a standard module in place of the scaled centre distance."""
+    msg = {c["code"]: c for c in rated(spec(load__torque1=600.0, load__peak_torque1=1200.0))[
+        "checks"]}["CONTACT_FATIGUE"]["message"]
     assert "face width to at least" not in msg
     assert "no face width within b_w/d_w1 <= 1.6 (up to 160.0 mm) passes" in msg
     assert "increase the centre distance to at least" in msg and "harder" in msg
+    doc = run_data(spec(load__torque1=600.0, load__peak_torque1=1200.0)).document()
+    c = {c["code"]: c for c in doc["checks"]}["CONTACT_FATIGUE"]
+    assert "gear.module" in c["fix"] and "harder" in c["message"]
+    assert "increase the centre distance" not in c["message"]
 
 
 def test_advised_centre_distance_passes_when_rerun():
@@ -189,7 +202,7 @@ def test_advised_centre_distance_passes_when_rerun():
     found by re-rating: the advised size passes, 1 % smaller does not."""
     import re
 
-    doc = run_data(spec(load__torque1=600.0, load__peak_torque1=1200.0)).document()
+    doc = rated(spec(load__torque1=600.0, load__peak_torque1=1200.0))
     msg = {c["code"]: c for c in doc["checks"]}["CONTACT_FATIGUE"]["message"]
     a = float(re.search(r"centre distance to at least ([0-9.]+) mm", msg).group(1))
     k = a / doc["results"]["geometry"]["a_w"]

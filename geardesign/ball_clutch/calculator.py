@@ -14,7 +14,7 @@ from geardesign.ball_clutch import clutch as C
 from geardesign.ball_clutch import sources as S
 from geardesign.ball_clutch import spring as SP
 from geardesign.ball_clutch.contact import ball_contact, effective_modulus
-from geardesign.core.errors import InputError, Problem
+from geardesign.core.errors import InputError, Problem, Problems
 from geardesign.core.result import Result, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.materials import spring_steel
@@ -56,13 +56,14 @@ def _spring(spec: ValidatedSpec) -> SpringData:
             raise InputError(Problem(
                 "spring.rate", "give either the rate or the wire and coil data "
                 f"(spring.{', spring.'.join(given)}), not both", sp["rate"]))
-        unused = [k for k in ("free_length", "material", "shear_modulus", "tensile_strength",
-                              "allowable_share") if sp[k] is not None]
-        if unused:
-            raise InputError(Problem(
-                "spring." + unused[0], "is used only with the wire data (spring.wire_diameter, "
-                "spring.coil_diameter, spring.active_coils); give them instead of spring.rate "
-                "or remove it", sp[unused[0]]))
+        problems = Problems()
+        for k in ("free_length", "material", "shear_modulus", "tensile_strength",
+                  "allowable_share"):
+            if sp[k] is not None:
+                problems.at("spring." + k, sp[k], "is used only with the wire data "
+                            "(spring.wire_diameter, spring.coil_diameter, spring.active_coils); "
+                            "give them instead of spring.rate or remove it")
+        problems.raise_all()
         return SpringData(c=sp["rate"], geometric=False)
     if len(given) != len(geo_keys):
         missing = [k for k in geo_keys if sp[k] is None]
@@ -70,17 +71,19 @@ def _spring(spec: ValidatedSpec) -> SpringData:
             "spring." + missing[0], "missing; the spring needs spring.rate or all of "
             "spring.wire_diameter, spring.coil_diameter and spring.active_coils"))
     d, D, n_a = sp["wire_diameter"], sp["coil_diameter"], sp["active_coils"]
+    problems = Problems()
     if D <= 2.0 * d:
-        raise InputError.at("spring.coil_diameter", D,
-                            f"the mean coil diameter must exceed twice the wire diameter "
-                            f"(2·{_f(d)} = {_f(2 * d)} mm): the coils cannot be wound")
+        problems.at("spring.coil_diameter", D,
+                    f"the mean coil diameter must exceed twice the wire diameter "
+                    f"(2·{_f(d)} = {_f(2 * d)} mm): the coils cannot be wound")
     mat = spring_steel.get(sp["material"]) if sp["material"] is not None else None
     G = sp["shear_modulus"] if sp["shear_modulus"] is not None else (mat.G if mat else None)
     if G is None:
-        raise InputError(Problem(
+        problems.add(Problem(
             "spring.material", "missing; the wire data need spring.material (one of "
             + ", ".join(f'"{n}"' for n in spring_steel.names())
             + ") or spring.shear_modulus"))
+    problems.raise_all()
     R_m = sp["tensile_strength"] if sp["tensile_strength"] is not None else (
         mat.tensile_strength(d) if mat else None)
     share = sp["allowable_share"] if sp["allowable_share"] is not None else (
@@ -89,27 +92,24 @@ def _spring(spec: ValidatedSpec) -> SpringData:
                       R_m=R_m, share=share, material=sp["material"])
 
 
-def compute(spec: ValidatedSpec) -> Result:
-    from geardesign.ball_clutch import CALCULATOR
-
-    op, sa, sp = spec.data["operation"], spec.data["safety"], spec.data["spring"]
-    T, n = op["torque"], op["speed"]
-    w = n * RPM
-    z3, d_b, d5 = sa["balls"], sa["ball_diameter"], sa["ball_circle"]
-    alpha = math.radians(sa["socket_angle"])
-    h_s = sa["socket_depth"]
-    f, f_g, spread = sa["friction"], sa["guide_friction"], sa["friction_spread"]
-
-    # ------------------------------------------------------------ rules across keys
+def _socket(sa: dict) -> None:
+    """The socket depth and radius against the ball (each reported)."""
+    d_b, h_s = sa["ball_diameter"], sa["socket_depth"]
+    problems = Problems()
     if h_s >= 0.5 * d_b:
-        raise InputError.at("safety.socket_depth", h_s,
-                            f"must be less than the ball radius d_b/2 = {_f(0.5 * d_b)} mm "
-                            "(the ball must stay guided while it leaves the socket)")
+        problems.at("safety.socket_depth", h_s,
+                    f"must be less than the ball radius d_b/2 = {_f(0.5 * d_b)} mm (the ball "
+                    "must stay guided while it leaves the socket)")
     if sa["socket_radius"] is not None and sa["socket_radius"] <= 0.5 * d_b:
-        raise InputError.at("safety.socket_radius", sa["socket_radius"],
-                            f"must be larger than the ball radius d_b/2 = {_f(0.5 * d_b)} mm (a "
-                            "spherical socket holds the ball from outside); omit it for a "
-                            "conical socket")
+        problems.at("safety.socket_radius", sa["socket_radius"],
+                    f"must be larger than the ball radius d_b/2 = {_f(0.5 * d_b)} mm (a "
+                    "spherical socket holds the ball from outside); omit it for a conical "
+                    "socket")
+    problems.raise_all()
+
+
+def _balls_fit(sa: dict) -> None:
+    z3, d_b, d5 = sa["balls"], sa["ball_diameter"], sa["ball_circle"]
     pitch = math.pi * d5 / z3
     if pitch <= d_b:
         raise InputError.at("safety.balls", z3,
@@ -117,6 +117,10 @@ def compute(spec: ValidatedSpec) -> Result:
                             f"(pitch {_f(pitch)} mm); use safety.balls <= "
                             f"{max(1, math.ceil(math.pi * d5 / d_b) - 1)} or a larger "
                             "safety.ball_circle")
+
+
+def _preload(sa: dict, sp: dict) -> None:
+    """The spring preload is given, or designed from safety.limit_torque: one of them."""
     design = sa["limit_torque"] is not None
     if design and sp["preload"] is not None:
         raise InputError(Problem(
@@ -126,22 +130,57 @@ def compute(spec: ValidatedSpec) -> Result:
         raise InputError(Problem(
             "spring.preload", "missing; give spring.preload (mm), or safety.limit_torque to "
             "have the preload designed"))
-    sd = _spring(spec)
+
+
+def _not_self_locking(spec: ValidatedSpec) -> None:
+    """Design mode: cot(α2 + ρ) <= f_g means no spring force releases at the target torque
+    (the formula of the required force leaves its domain and gives a force <= 0).  The
+    frictions named are the spec's, or its defaults (said so)."""
+    sa = spec.data["safety"]
+    f, f_g = sa["friction"], sa["guide_friction"]
+    alpha_free = C.self_locking_angle(f, f_g)
+    if math.radians(sa["socket_angle"]) < alpha_free:
+        return
+
+    def said(key: str, v: float) -> str:
+        return f"{_f(v)}" + (" (the default, not in the spec)"
+                             if f"safety.{key}" in spec.assumed else "")
+
+    raise InputError.at(
+        "safety.socket_angle", sa["socket_angle"],
+        f"must be below {math.degrees(alpha_free):.1f}° with friction f = "
+        f"{said('friction', f)} and guide friction f_g = {said('guide_friction', f_g)}: at a "
+        "larger angle the balls self-lock (cot(α2 + ρ) <= f_g) and no spring force gives "
+        "safety.limit_torque")
+
+
+def compute(spec: ValidatedSpec) -> Result:
+    from geardesign.ball_clutch import CALCULATOR
+
+    op, sa, sp = spec.data["operation"], spec.data["safety"], spec.data["spring"]
+    # ------------------------------------------------------------ rules across keys
+    design = sa["limit_torque"] is not None
+    problems = Problems()
+    problems.stage(_socket, sa)
+    problems.stage(_balls_fit, sa)
+    problems.stage(_preload, sa, sp)
+    if design:
+        problems.stage(_not_self_locking, spec)
+    sd = problems.stage(_spring, spec)
+    problems.raise_all()
+
+    T, n = op["torque"], op["speed"]
+    w = n * RPM
+    z3, d_b, d5 = sa["balls"], sa["ball_diameter"], sa["ball_circle"]
+    alpha = math.radians(sa["socket_angle"])
+    h_s = sa["socket_depth"]
+    f, f_g, spread = sa["friction"], sa["guide_friction"], sa["friction_spread"]
 
     # ------------------------------------------------------------ safety part
     r0 = 0.5 * d5 / 1000.0
     m = C.ball_mass(d_b / 1000.0, sa["ball_density"]) + sa["extra_mass"]
     F_c = C.centrifugal_force(m, r0, w)
     if design:
-        alpha_free = C.self_locking_angle(f, f_g)
-        if alpha >= alpha_free:
-            # cot(α2 + ρ) <= f_g: no spring force releases at the target torque (the formula
-            # of the required force leaves its domain and gives a force <= 0)
-            raise InputError.at(
-                "safety.socket_angle", sa["socket_angle"],
-                f"must be below {math.degrees(alpha_free):.1f}° with friction f = {_f(f)} and "
-                f"guide friction f_g = {_f(f_g)}: at a larger angle the balls self-lock "
-                "(cot(α2 + ρ) <= f_g) and no spring force gives safety.limit_torque")
         F_pre = C.required_spring_force(sa["limit_torque"], F_c, z3, r0, alpha, f, f_g)
         y0 = F_pre / sd.c
     else:

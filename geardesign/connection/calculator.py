@@ -24,23 +24,26 @@ SHRINK_TEMPERATURE_MAX = 350.0
 def compute(spec: ValidatedSpec) -> Result:
     from geardesign.connection import CALCULATOR
 
-    res = CALCULATOR.new_result(spec)
     data = spec.data
-    ld = I.load(data)
+    # the connection's own rules first: a wrong load (reported by the schema) does not
+    # hide them
     if data.get("key") is not None:
         k = I.key(data)
+        res, ld = CALCULATOR.new_result(spec), I.load(data)
         r = solve.key(k, ld)
         _key_report(res, k, ld, r)
         fraction = max([r.tau / r.tau_allow] + [fl.p / fl.p_allow for fl in r.flanks])
         what = "the key uses {:.2g} % of its capacity (pressure and shear over their limits)"
     elif data.get("spline") is not None:
-        s = I.spline(data)
+        s = I.spline(data, spec.assumed)
+        res, ld = CALCULATOR.new_result(spec), I.load(data)
         r = solve.spline(s, ld)
         _spline_report(res, s, ld, r)
         fraction = r.p / r.p_allow
         what = "the spline uses {:.2g} % of its capacity (flank pressure over its limit)"
     else:
         f = I.fit(data)
+        res, ld = CALCULATOR.new_result(spec), I.load(data)
         r = solve.fit(f, ld)
         _fit_report(res, f, ld, r)
         fraction = 1.0 / r.S_slip if r.S_slip > 0.0 else math.inf   # no grip: no slip warning

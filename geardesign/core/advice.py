@@ -42,12 +42,35 @@ class Lever:
     in which they are preferred; ``what`` says in words what the change is ("the next
     standard diameters").  ``per_check``: ``candidates`` yields proposals
     ``{code: (fix, what)}``, one fix per failed check, re-rated together (see the
-    module)."""
+    module).  ``supersedes``: regular expressions of clauses of the check's
+    own words that the found change replaces (the same lever as a figure the user would
+    not set, such as a centre distance scaled by a factor); they are left out of the
+    message that carries the change."""
 
     codes: tuple[str, ...]
     candidates: Callable[[dict, Result], Iterable]
     what: str
     per_check: bool = False
+    supersedes: tuple[str, ...] = ()
+
+
+def without(message: str, clauses: Iterable[str]) -> str:
+    """``message`` without each clause matching one of the regular expressions ``clauses``,
+    with the "or" that joined it to the rest."""
+    for pattern in clauses:
+        m = re.search(pattern, message)
+        if m is None:
+            continue
+        before, after = message[:m.start()], message[m.end():]
+        for joint in (", or ", " or "):
+            if after.startswith(joint):
+                after = after[len(joint):]
+                break
+            if before.endswith(joint):
+                before = before[:-len(joint)]
+                break
+        message = re.sub(r":\s*;", ";", before + after).rstrip(": ")
+    return message
 
 
 _PART = re.compile(r"([^.\[\]]+)(?:\[(\d+)\])?")
@@ -110,6 +133,7 @@ def advise(calc, spec, res: Result, levers: Iterable[Lever]) -> Result:
     passing = {c.code for c in res.checks if c.severity == "error" and c.passed}
     known = {c.code for c in res.checks}
     found: dict[str, tuple] = {}
+    superseded: dict[str, tuple] = {}
     for lever in levers:
         todo = failed & set(lever.codes) - set(found)
         todo = {k for k in todo if not any(c.fix for c in res.failed if c.code == k)}
@@ -125,6 +149,7 @@ def advise(calc, spec, res: Result, levers: Iterable[Lever]) -> Result:
             if again is not None and passes(again, todo, passing, known):
                 for k in todo:
                     found[k] = (tuple(fix), lever.what)
+                    superseded[k] = lever.supersedes
                 break
     if not found:
         return res
@@ -132,7 +157,8 @@ def advise(calc, spec, res: Result, levers: Iterable[Lever]) -> Result:
     for c in res.checks:
         if c.code in found and not c.passed and not c.fix:
             fix, what = found[c.code]
-            c = dataclasses.replace(c, fix=fix, message=f"{c.message}; set {fix_text(fix)} "
+            own = without(c.message, superseded.get(c.code, ()))
+            c = dataclasses.replace(c, fix=fix, message=f"{own}; set {fix_text(fix)} "
                                     f"({what}; it passes when re-rated)")
         checks.append(c)
     res.checks = checks

@@ -117,16 +117,23 @@ class Problems:
     ``stage(fn, *args)`` runs one stage of checks: its :class:`InputError` lines are kept and
     :data:`FAILED` is returned (stages that need its result are then skipped by the caller);
     a stage that reads a value already reported (:class:`Unusable`) is skipped silently.
-    ``raise_all()`` raises one :class:`InputError` with every line, in order, once each.
+    ``at(key, value, message)`` adds one problem of a rule checked in place (the rule's
+    stage goes on with the next rule).  ``raise_all()`` raises one :class:`InputError` with
+    every line, in order, once each; with none, but a stage skipped for a reported value, it
+    raises :class:`Unusable` (what follows would need that stage's result).
     """
 
     FAILED: Any = object()
 
     def __init__(self, problems: list[Problem] | None = None):
         self.found: list[Problem] = list(problems or ())
+        self.skipped = False
 
     def add(self, problem: Problem) -> None:
         self.found.append(problem)
+
+    def at(self, key: str, value: Any, message: str) -> None:
+        self.found.append(Problem(key, message, value))
 
     def stage(self, fn, *args, **kwargs):
         try:
@@ -134,10 +141,12 @@ class Problems:
         except InputError as exc:
             self.found.extend(exc.problems)
         except Unusable:
-            pass
+            self.skipped = True
         return self.FAILED
 
     def raise_all(self) -> None:
         if self.found:
             lines = {p.line(""): p for p in self.found}
             raise InputError(list(lines.values()))
+        if self.skipped:
+            raise Unusable()

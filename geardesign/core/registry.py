@@ -201,15 +201,16 @@ def load_data(data: dict, source: str = "",
 
 def _precheck(calc: Calculator, spec: ValidatedSpec, problems: Problems) -> None:
     """The calculator's own input checks on a spec whose schema problems are reported:
-    its ``precheck`` when it has one, else its calculation, which stops at its first
-    input error.  The wrong keys hold :data:`~geardesign.core.errors.REPORTED`, so a check
+    its ``precheck`` when it has one, else its rating without the advice search
+    (``rate``), whose input reading reports every problem it finds at once
+    (:class:`~geardesign.core.errors.Problems`) and stops there.  The wrong keys hold :data:`~geardesign.core.errors.REPORTED`, so a check
     that needs one is left out; a calculation that trips over one in another way is left
     out too (the problems already found are the answer, never an internal error)."""
     try:
         if calc.precheck is not None:
             calc.precheck(spec, problems)
         else:
-            calc.compute(spec)
+            calc.rate(spec)
     except (InputError, Unusable):
         raise
     except Exception:   # noqa: BLE001 - a partial spec: see the docstring

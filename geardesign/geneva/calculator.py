@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 
-from geardesign.core.errors import InputError, Problem
+from geardesign.core.errors import InputError, Problem, Problems
 from geardesign.core.result import Result, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.geneva import kinematics as K
@@ -27,8 +27,20 @@ def _f(x: float, digits: int = 4) -> str:
 
 
 def _rules(spec: ValidatedSpec) -> None:
-    """Rules across keys: a dwell must exist; the drive tables need [barrel]."""
-    g = spec.data["geneva"]
+    """Rules across keys, each reported (one run): a dwell must exist; the drive tables
+    need [barrel]."""
+    problems = Problems()
+    problems.stage(_dwell, spec.data["geneva"])
+    for table in ("spindles", "drive"):
+        if spec.data[table] is not None and spec.data["barrel"] is None:
+            problems.add(Problem(
+                table, f"[{table}] belongs to the spindle-block drive and needs a [barrel] "
+                "table (stations, inertia, efficiency); add it or remove this table"))
+    problems.raise_all()
+
+
+def _dwell(g: dict) -> None:
+    """The cross must stand still between indexes (motion share < 1)."""
     internal = g["type"] == "internal"
     z, k = g["slots"], g["pins"]
     share = K.motion_share(z, k, internal)
@@ -43,11 +55,6 @@ def _rules(spec: ValidatedSpec) -> None:
             f"no dwell: {k} roller(s) keep the {kind} cross moving {share * 100:.0f} % of a "
             f"crank turn (k·(z {'+' if internal else '−'} 2)/(2z) must be < 1); use pins <= "
             f"{k_max} with {z} slots")
-    for table in ("spindles", "drive"):
-        if spec.data[table] is not None and spec.data["barrel"] is None:
-            raise InputError(Problem(
-                table, f"[{table}] belongs to the spindle-block drive and needs a [barrel] "
-                "table (stations, inertia, efficiency); add it or remove this table"))
 
 
 def compute(spec: ValidatedSpec) -> Result:

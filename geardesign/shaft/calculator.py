@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
-from geardesign.core.errors import InputError
+from geardesign.core.errors import InputError, Problems
 from geardesign.core.result import DataTable, Result, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.shaft import inputs as IN
@@ -19,14 +19,25 @@ from geardesign.shaft.solve import ARCMIN, ShaftResult, analyse
 
 
 def model(spec: ValidatedSpec) -> dict:
-    """The plain data of :func:`.solve.analyse` read from the spec (every input rule)."""
-    IN.resolve_defaults(spec)
-    steps = IN.steps(spec)
-    mat, origin = IN.material(spec.data["material"], IN.method(spec),
-                              max(s.diameter for s in steps))
-    length = sum(s.length for s in steps)
-    return dict(steps=steps, loads=IN.loads(spec, length), supports=IN.supports(spec, length),
-                material=mat, options=IN.options(spec), origin=origin)
+    """The plain data of :func:`.solve.analyse` read from the spec (every input rule): the
+    method's defaults, the steps, the material, the loads and the supports are checked
+    independently, and every problem is reported at once."""
+    problems = Problems()
+    problems.stage(IN.resolve_defaults, spec)
+    steps = problems.stage(IN.steps, spec)
+    rows = spec.data["step"]
+    d_max = problems.stage(lambda: max(s["diameter"] for s in rows))
+    how = problems.stage(IN.method, spec)
+    mat = (problems.stage(IN.material, spec.data["material"], how, d_max)
+           if how is not Problems.FAILED else Problems.FAILED)
+    length = problems.stage(lambda: sum(s["length"] for s in rows))
+    length = None if length is Problems.FAILED else length
+    loads = problems.stage(IN.loads, spec, length)
+    supports = problems.stage(IN.supports, spec, length)
+    problems.raise_all()
+    mat, origin = mat
+    return dict(steps=steps, loads=loads, supports=supports, material=mat,
+                options=IN.options(spec), origin=origin)
 
 
 def compute(spec: ValidatedSpec) -> Result:

@@ -1,12 +1,15 @@
 """From a validated spec to the plain data of :mod:`.solve`; every rule across keys raises
-:class:`~geardesign.core.errors.InputError` (one line: key, value, what is allowed)."""
+:class:`~geardesign.core.errors.InputError` (one line: key, value, what is allowed).
+Independent rules are collected (:class:`~geardesign.core.errors.Problems`): a spec with
+mistakes in several steps, loads or supports and in the material gets every line in one
+run; a rule that needs a wrong value is left out."""
 
 from __future__ import annotations
 
 import difflib
 import math
 
-from geardesign.core.errors import InputError, Problem
+from geardesign.core.errors import InputError, Problem, Problems, Unusable
 from geardesign.core.spec import ValidatedSpec
 from geardesign.materials.gear_steel import normalize_grade
 from geardesign.shaft import strength as ST
@@ -25,8 +28,14 @@ DIN_STEP = ("groove_depth", "groove_radius", "groove_width", "groove_shape", "cr
 
 
 def method(spec: ValidatedSpec) -> str:
-    """The strength method: ``[shaft] method``, default "GOST"."""
-    return spec.data["shaft"].get("method") or "GOST"
+    """The strength method: ``[shaft] method``, default "GOST" (:class:`Unusable` when the
+    method given is wrong: the rules of a method are then left out, the others checked)."""
+    how = spec.data["shaft"].get("method")
+    if how is None:
+        return "GOST"
+    if not isinstance(how, str):
+        raise Unusable()
+    return how
 
 
 def resolve_defaults(spec: ValidatedSpec) -> None:
@@ -36,10 +45,12 @@ def resolve_defaults(spec: ValidatedSpec) -> None:
     spec is left as validated."""
     sh = spec.data["shaft"]
     if method(spec) != "DIN743":
+        problems = Problems()
         for key in ("din743_load_case", "din743_hard_surface"):
             if sh.get(key) is not None:
-                raise InputError.at(f"shaft.{key}", sh[key],
-                                    'used only by method = "DIN743" (this spec rates by GOST)')
+                problems.at(f"shaft.{key}", sh[key],
+                            'used only by method = "DIN743" (this spec rates by GOST)')
+        problems.raise_all()
         return
     lim = din_tables()["limits"]
     for key, value in (("din743_load_case", 2), ("din743_hard_surface", False),
@@ -62,14 +73,46 @@ def _grade_key(name: str) -> str:
 
 def material(m: dict, how: str = "GOST", d_max: float = 0.0) -> tuple[Material, dict]:
     """The shaft material and a record of where each value came from.  ``how``: the
-    method; ``d_max``: the largest step diameter (DIN 743: default d_eff)."""
+    method; ``d_max``: the largest step diameter (DIN 743: default d_eff;
+    ``Problems.FAILED`` when a diameter is wrong).  The keys of the other method are
+    reported each, together with the steel's own problem."""
+    problems = Problems()
     if how == "DIN743":
-        return din_material(m, d_max)
-    for key in DIN_ONLY:
-        if m.get(key) is not None:
-            raise InputError.at(f"material.{key}", m[key],
-                                'used only by [shaft] method = "DIN743" (this spec rates by '
-                                'GOST)')
+        for key in GOST_ONLY:
+            if m.get(key) is not None:
+                problems.at(f"material.{key}", m[key],
+                            "used only by the GOST method; DIN 743 takes the endurance limits "
+                            "and the mean-stress sensitivity from sigma_B (DIN 743-3) and one "
+                            "row per grade: leave it out, or give sigma_B and sigma_T of the "
+                            "blank")
+        out = problems.stage(din_material, m, d_max)
+    else:
+        for key in DIN_ONLY:
+            if m.get(key) is not None:
+                problems.at(f"material.{key}", m[key],
+                            'used only by [shaft] method = "DIN743" (this spec rates by GOST)')
+        out = problems.stage(_gost_material, m)
+    problems.raise_all()
+    return out
+
+
+def _strengths_in_order(m: dict, sigma_B: float, sigma_T: float, origin: dict,
+                        yield_name: str = "σ_T") -> None:
+    """The yield strength must lie below the ultimate strength: the line names the one the
+    spec gives (the other one is the grade's, and says so)."""
+    if sigma_T < sigma_B:
+        return
+    if origin.get("sigma_T") == "given" or origin.get("sigma_B") != "given":
+        of = "" if origin.get("sigma_B") == "given" else " (of the grade)"
+        raise InputError.at("material.sigma_T", sigma_T, f"must be below the ultimate "
+                            f"strength sigma_B = {sigma_B:g} MPa{of}")
+    raise InputError.at("material.sigma_B", sigma_B, f"must be above the yield strength "
+                        f"{yield_name} = {sigma_T:g} MPa of the grade (derived from "
+                        f"material.grade = \"{m['grade']}\"): give sigma_T too, or leave out "
+                        f"sigma_B")
+
+
+def _gost_material(m: dict) -> tuple[Material, dict]:
     steels = ST.tables()["steel"]
     row, alloy_default, origin = {}, False, {}
     if m["grade"] is not None:
@@ -109,9 +152,7 @@ def material(m: dict, how: str = "GOST", d_max: float = 0.0) -> tuple[Material, 
         return None
 
     sigma_B, sigma_T = pick("sigma_B"), pick("sigma_T")
-    if sigma_T >= sigma_B:
-        raise InputError.at("material.sigma_T", sigma_T,
-                            f"must be below the ultimate strength sigma_B = {sigma_B:g} MPa")
+    _strengths_in_order(m, sigma_B, sigma_T, origin)
     s_est, _ = ST.endurance_estimates(sigma_B)
     sigma_m1 = pick("sigma_m1")
     if sigma_m1 is None:
@@ -133,13 +174,6 @@ def material(m: dict, how: str = "GOST", d_max: float = 0.0) -> tuple[Material, 
 def din_material(m: dict, d_max: float) -> tuple[Material, dict]:
     """The shaft steel for DIN 743: an EN grade of [DIN743-3] (or a GOST grade with an EN
     equivalent), or sigma_B, sigma_T and steel_type; at the blank diameter d_eff."""
-    for key in GOST_ONLY:
-        if m.get(key) is not None:
-            raise InputError.at(f"material.{key}", m[key],
-                                "used only by the GOST method; DIN 743 takes the endurance "
-                                "limits and the mean-stress sensitivity from sigma_B "
-                                "(DIN 743-3) and one row per grade: leave it out, or give "
-                                "sigma_B and sigma_T of the blank")
     origin: dict = {}
     if m["grade"] is not None:
         name = m["grade"]
@@ -178,11 +212,11 @@ def din_material(m: dict, d_max: float) -> tuple[Material, dict]:
     sigma_S = m["sigma_T"] if m.get("sigma_T") is not None else st.sigma_S
     origin["sigma_B"] = "given" if m.get("sigma_B") is not None else "grade"
     origin["sigma_T"] = "given" if m.get("sigma_T") is not None else "grade"
-    if sigma_S >= sigma_B:
-        raise InputError.at("material.sigma_T", sigma_S,
-                            f"must be below the ultimate strength sigma_B = {sigma_B:g} MPa")
+    _strengths_in_order(m, sigma_B, sigma_S, origin, "R_e")
     st = D3.Steel(st.name, st.type, sigma_B, sigma_S, st.d_B, st.d_B_S)
     d_eff = m["d_eff"] if m.get("d_eff") is not None else d_max
+    if d_eff is Problems.FAILED:
+        raise Unusable()     # the largest diameter is wrong: reported with the steps
     origin["d_eff"] = "given" if m.get("d_eff") is not None else "largest step"
     din = DR.material(st, d_eff)
     _, W_b, W_t = D3.endurance_limits(st.sigma_B)
@@ -193,50 +227,88 @@ def din_material(m: dict, d_max: float) -> tuple[Material, dict]:
 
 
 def steps(spec: ValidatedSpec) -> list[Step]:
-    out, x = [], 0.0
-    for i, s in enumerate(spec.data["step"]):
-        if s["start"] is not None and abs(s["start"] - x) > 1e-6 * max(1.0, x):
-            what = "overlaps" if s["start"] < x else "leaves a gap after"
-            prev = f"step[{i - 1}], which ends at {x:g} mm" if i else "the left end at 0 mm"
-            raise InputError.at(f"step[{i}].start", s["start"],
-                                f"{what} {prev}; steps follow each other without gaps: give "
-                                f"start = {x:g} or leave it out")
-        if s["bore"] >= s["diameter"]:
-            raise InputError.at(f"step[{i}].bore", s["bore"],
-                                f"must be smaller than the diameter {s['diameter']:g} mm")
-        if s["groove_K_tau"] is not None and s["groove_K_sigma"] is None:
-            raise InputError.at(f"step[{i}].groove_K_tau", s["groove_K_tau"],
-                                "needs groove_K_sigma (the groove's factor in bending)")
-        if (s["keyway"] and s["keyway_cutter"] != "end_mill"
-                and method(spec) == "DIN743"):
-            raise InputError.at(f"step[{i}].keyway_cutter", s["keyway_cutter"],
-                                "DIN 743-2 gives the notch factor of a key seat cut by an end "
-                                "mill only: no data for a disc cutter (use end_mill, or "
-                                "method GOST)")
-        if method(spec) == "DIN743":
-            _din_notches(i, s, len(spec.data["step"]))
-        else:
-            for key in DIN_STEP:
-                if s.get(key) is not None:
-                    what = "cross-bore" if key.startswith("cross") else "groove"
-                    hint = (": give the groove's factors groove_K_sigma/groove_K_tau"
-                            if what == "groove" else "")
-                    raise InputError.at(f"step[{i}].{key}", s[key],
-                                        f'a DIN 743 key, used only by [shaft] method = '
-                                        f'"DIN743" (this spec rates by GOST, whose tables '
-                                        f'have no factors of a {what} by its geometry{hint})')
-        if s["groove_K_sigma"] is not None and i == len(spec.data["step"]) - 1:
-            raise InputError.at(f"step[{i}].groove_K_sigma", s["groove_K_sigma"],
-                                "a groove sits at the right end of its step, and the last step "
-                                "ends with the shaft: give it on the step to the left of the "
-                                "groove's shoulder")
-        out.append(Step(s["length"], s["diameter"], s["bore"], s["fillet"], s["keyway"],
-                        s["keyway_cutter"], s["press_fit"], s["groove_K_sigma"],
-                        s["groove_K_tau"], s["Rz"], s["groove_depth"], s["groove_radius"],
-                        s["groove_width"], s["cross_bore"], s["cross_bore_at"],
-                        s["groove_shape"]))
-        x += s["length"]
-    return out
+    """The steps; every step's rules (:data:`STEP_RULES`) are checked, each independently."""
+    rows = spec.data["step"]
+    problems = Problems()
+    how = problems.stage(method, spec)
+    din = None if how is Problems.FAILED else how == "DIN743"
+    x: float | None = 0.0
+    for i, s in enumerate(rows):
+        for rule in STEP_RULES:
+            problems.stage(rule, i, s, x, len(rows), din)
+        x = x + s["length"] if x is not None and isinstance(s["length"], (int, float)) else None
+    problems.raise_all()
+    return [Step(s["length"], s["diameter"], s["bore"], s["fillet"], s["keyway"],
+                 s["keyway_cutter"], s["press_fit"], s["groove_K_sigma"], s["groove_K_tau"],
+                 s["Rz"], s["groove_depth"], s["groove_radius"], s["groove_width"],
+                 s["cross_bore"], s["cross_bore_at"], s["groove_shape"]) for s in rows]
+
+
+def _start(i: int, s: dict, x: float | None, n: int, din: bool) -> None:
+    """``start``, when given, is where the steps before end (``x``; None: unknown)."""
+    if s["start"] is not None and x is not None and abs(s["start"] - x) > 1e-6 * max(1.0, x):
+        what = "overlaps" if s["start"] < x else "leaves a gap after"
+        prev = f"step[{i - 1}], which ends at {x:g} mm" if i else "the left end at 0 mm"
+        raise InputError.at(f"step[{i}].start", s["start"],
+                            f"{what} {prev}; steps follow each other without gaps: give "
+                            f"start = {x:g} or leave it out")
+
+
+def _bore(i: int, s: dict, x, n: int, din: bool) -> None:
+    if s["bore"] >= s["diameter"]:
+        raise InputError.at(f"step[{i}].bore", s["bore"],
+                            f"must be smaller than the diameter {s['diameter']:g} mm")
+
+
+def _groove_factors(i: int, s: dict, x, n: int, din: bool) -> None:
+    """A groove by its factors: K_τ needs K_σ; no groove at the shaft's right end."""
+    if s["groove_K_tau"] is not None and s["groove_K_sigma"] is None:
+        raise InputError.at(f"step[{i}].groove_K_tau", s["groove_K_tau"],
+                            "needs groove_K_sigma (the groove's factor in bending)")
+    if s["groove_K_sigma"] is not None and i == n - 1:
+        raise InputError.at(f"step[{i}].groove_K_sigma", s["groove_K_sigma"],
+                            "a groove sits at the right end of its step, and the last step "
+                            "ends with the shaft: give it on the step to the left of the "
+                            "groove's shoulder")
+
+
+def _keyway_cutter(i: int, s: dict, x, n: int, din: bool | None) -> None:
+    if din is None:
+        raise Unusable()     # the method is wrong: reported by the schema
+    if s["keyway"] and s["keyway_cutter"] != "end_mill" and din:
+        raise InputError.at(f"step[{i}].keyway_cutter", s["keyway_cutter"],
+                            "DIN 743-2 gives the notch factor of a key seat cut by an end "
+                            "mill only: no data for a disc cutter (use end_mill, or "
+                            "method GOST)")
+
+
+def _din_keys(i: int, s: dict, x, n: int, din: bool) -> None:
+    """The DIN 743 notches by geometry: their domains (DIN743), or none of their keys
+    (GOST, every one given reported)."""
+    if din is None:
+        raise Unusable()     # the method is wrong: reported by the schema
+    if din:
+        problems = Problems()
+        problems.stage(_din_notches, i, s, n)
+        problems.stage(_cross_bore, f"step[{i}]", s)
+        problems.raise_all()
+        return
+    problems = Problems()
+    for key in DIN_STEP:
+        if s.get(key) is not None:
+            what = "cross-bore" if key.startswith("cross") else "groove"
+            hint = (": give the groove's factors groove_K_sigma/groove_K_tau"
+                    if what == "groove" else "")
+            problems.at(f"step[{i}].{key}", s[key],
+                        f'a DIN 743 key, used only by [shaft] method = "DIN743" (this spec '
+                        f'rates by GOST, whose tables have no factors of a {what} by its '
+                        f'geometry{hint})')
+    problems.raise_all()
+
+
+STEP_RULES = (_start, _bore, _groove_factors, _keyway_cutter, _din_keys)
+"""The rules of one step, each ``(i, step, x, n_steps, din)``, checked independently
+(``din`` None: the method is wrong, and the rules of a method are left out)."""
 
 
 def _din_notches(i: int, s: dict, n_steps: int) -> None:
@@ -275,7 +347,7 @@ def _din_notches(i: int, s: dict, n_steps: int) -> None:
                                     f"a V-notch of DIN 743-2 holds for {c['t_d_min']:g} <= t/d "
                                     f"<= {c['t_d_max']:g} (d = diameter − 2t the root): t "
                                     f"from {lo:.3g} to {hi:.3g} mm, the root outside the bore")
-            return _cross_bore(at, s)
+            return
         if shape == "rectangular" and m is None:
             raise InputError(Problem(
                 f"{at}.groove_width",
@@ -315,7 +387,6 @@ def _din_notches(i: int, s: dict, n_steps: int) -> None:
             if m > L:
                 raise InputError.at(f"{at}.groove_width", m,
                                     f"more than the step's length {L:g} mm")
-    _cross_bore(at, s)
 
 
 def _cross_bore(at: str, s: dict) -> None:
@@ -337,25 +408,38 @@ def _cross_bore(at: str, s: dict) -> None:
                                 f"cross-bore's factors taken here)")
         x = s["cross_bore_at"] if s["cross_bore_at"] is not None else L / 2.0
         if x < dL / 2.0 or x > L - dL / 2.0:
+            if s["cross_bore_at"] is None:   # the default middle: the hole is too large
+                raise InputError.at(f"{at}.cross_bore", dL,
+                                    f"wider than the step's length {L:g} mm: the hole at its "
+                                    f"middle (the default of cross_bore_at, not in the spec) "
+                                    f"must lie within the step")
             raise InputError.at(f"{at}.cross_bore_at", x,
                                 f"the hole must lie within the step: {dL / 2:g}…"
                                 f"{L - dL / 2:g} mm from its left end")
 
 
-def _on_shaft(key: str, position: float, length: float) -> None:
-    """A load or support position must lie on the shaft (0 … the sum of the step lengths)."""
-    if position > length * (1 + 1e-12):
+def _on_shaft(key: str, position: float, length: float | None) -> None:
+    """A load or support position must lie on the shaft (0 … the sum of the step lengths;
+    ``length`` None: a step length is wrong, reported with the steps)."""
+    if length is not None and position > length * (1 + 1e-12):
         raise InputError.at(key, position, f"outside the shaft: must be within 0…{length:g} mm "
                             f"(the sum of the step lengths)")
 
 
-def loads(spec: ValidatedSpec, length: float) -> list[Load]:
+def loads(spec: ValidatedSpec, length: float | None) -> list[Load]:
+    problems = Problems()
     out = []
     for i, ld in enumerate(spec.data["load"]):
-        _on_shaft(f"load[{i}].position", ld["position"], length)
+        problems.stage(_on_shaft, f"load[{i}].position", ld["position"], length)
         out.append(Load(ld["position"], ld["Fy"], ld["Fz"], ld["Fx"], ld["torque"],
                         ld["moment_y"], ld["moment_z"], ld["mass"], ld["name"] or "",
                         ld["module"]))
+    problems.stage(_balanced, out)
+    problems.raise_all()
+    return out
+
+
+def _balanced(out: list[Load]) -> None:
     torques = [abs(ld.torque) for ld in out]
     total = sum(ld.torque for ld in out)
     if torques and abs(total) > 1e-3 * max(torques) + 1e-9:
@@ -363,26 +447,31 @@ def loads(spec: ValidatedSpec, length: float) -> list[Load]:
             "load", f"the torques do not balance: their sum is {total:g} N·m; a shaft in "
                     f"steady rotation takes out what is put in: give the output torque(s) "
                     f"with the opposite sign so that the sum is 0"))
+
+
+def supports(spec: ValidatedSpec, length: float | None) -> list[Support]:
+    problems = Problems()
+    out = []
+    for i, s in enumerate(spec.data["support"]):
+        problems.stage(_on_shaft, f"support[{i}].position", s["position"], length)
+        out.append(Support(s["position"], s["stiffness"], s["type"], s["axial"],
+                           s["name"] or ""))
+    problems.stage(_two_positions, out, length)
+    axial = [i for i, s in enumerate(out) if s.axial is True]
+    if len(axial) > 1:
+        problems.at(f"support[{axial[1]}].axial", True,
+                    f"only one bearing takes the axial force (support[{axial[0]}] already "
+                    f"does)")
+    problems.raise_all()
     return out
 
 
-def supports(spec: ValidatedSpec, length: float) -> list[Support]:
-    out = []
-    for i, s in enumerate(spec.data["support"]):
-        _on_shaft(f"support[{i}].position", s["position"], length)
-        out.append(Support(s["position"], s["stiffness"], s["type"], s["axial"],
-                           s["name"] or ""))
+def _two_positions(out: list[Support], length: float | None) -> None:
     xs = sorted(s.position for s in out)
-    if xs[-1] - xs[0] <= 1e-3 * length:
+    if xs[-1] - xs[0] <= 1e-3 * (length or 0.0):
         raise InputError(Problem(
             "support", "a free shaft needs at least two supports at different positions to "
                        "carry its loads; add a [[support]]"))
-    axial = [i for i, s in enumerate(out) if s.axial]
-    if len(axial) > 1:
-        raise InputError.at(f"support[{axial[1]}].axial", True,
-                            f"only one bearing takes the axial force (support[{axial[0]}] "
-                            f"already does)")
-    return out
 
 
 def options(spec: ValidatedSpec) -> Options:

@@ -6,7 +6,9 @@ tooth numbers and shifts kept, the face width and a given centre distance scaled
 module (face width rounded up to 0.1 mm, centre distance to 0.01 mm), each re-rated, the
 first that passes advised as ``gear.module``, ``gear.face_width``,
 ``gear.center_distance``.  A standard module instead of the scaled one (4 -> 5.04 mm) is
-what can be ordered and cut."""
+what can be ordered and cut.  The check's own figures of the same change, a centre
+distance scaled by a factor and a module raised by a per cent (:data:`SUPERSEDED`), are
+left out of the message that carries the standard module: the user sets the module."""
 
 from __future__ import annotations
 
@@ -44,5 +46,13 @@ def standard_modules(data: dict, _res):
         yield tuple(fix)
 
 
+SUPERSEDED = (
+    r"increase the centre distance (?:to at least|by) [^()]*\([^()]*in proportion[^()]*\)"
+    r"(?: \(found by re-rating\))?",
+    r"increase the module by [^()]*\(same centre distance, fewer teeth\)",
+)
+"""The clauses of the strength checks' words (:mod:`geardesign.spur.checks`, ISO 6336
+rating) that a standard module replaces: the continuous scaling of the pair."""
+
 LEVERS = (Lever(CODES, standard_modules, "the pair scaled to a standard module, GOST 9563 / "
-                "ISO 54 first series"),)
+                "ISO 54 first series", SUPERSEDED),)

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 
-from geardesign.core.errors import InputError
+from geardesign.core.errors import InputError, Problems
 from geardesign.core.result import Result, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.wave_gear import flexwheel as F
@@ -32,14 +32,10 @@ def _f(x: float, digits: int = 3) -> str:
     return "0" if text == "-0" else text
 
 
-def compute(spec: ValidatedSpec) -> Result:
-    from geardesign.wave_gear import CALCULATOR
-
-    g, rk, mat = spec.data["gear"], spec.data["rack"], spec.data["material"]
-    m, z, U, H0 = g["module"], g["flex_teeth"], g["waves"], g["rim_thickness"]
-
-    # ------------------------------------------------------------ rules across keys
-    z_b = g["rigid_teeth"]
+def _rigid_teeth(spec: ValidatedSpec) -> int:
+    """z_b (default z_g + U): z_b − z_g a positive multiple of the waves."""
+    g = spec.data["gear"]
+    z, U, z_b = g["flex_teeth"], g["waves"], g["rigid_teeth"]
     if z_b is None:
         z_b = z + U
         g["rigid_teeth"] = z_b
@@ -49,31 +45,81 @@ def compute(spec: ValidatedSpec) -> Result:
         raise InputError.at("gear.rigid_teeth", z_b,
                             f"z_b − z_g = {dz} must be a positive multiple of the number of "
                             f"waves U = {U}; use rigid_teeth = {z + U} (or {z + 2 * U})")
+    return z_b
+
+
+def _shift(spec: ValidatedSpec) -> tuple[float, str]:
+    """The shift of the flexible wheel and how it was found: given, or by the rule of
+    eq. (7) (default) or eq. (8) from the teeth."""
+    g = spec.data["gear"]
     if g["shift"] is not None and g["shift_rule"] is not None:
         raise InputError.at("gear.shift_rule", g["shift_rule"],
                             "applies only when gear.shift is not given; remove one of them")
-    if g["shift"] is None:
-        if g["shift_rule"] is None:
-            g["shift_rule"] = "eq7"
-            spec.assumed.append("gear.shift_rule")
-        x = R.shift_rule(z, g["shift_rule"])
-        how = "eq. (7)" if g["shift_rule"] == "eq7" else "eq. (8)"
-    else:
-        x, how = g["shift"], "given"
+    if g["shift"] is not None:
+        return g["shift"], "given"
+    if g["shift_rule"] is None:
+        g["shift_rule"] = "eq7"
+        spec.assumed.append("gear.shift_rule")
+    how = "eq. (7)" if g["shift_rule"] == "eq7" else "eq. (8)"
+    return R.shift_rule(g["flex_teeth"], g["shift_rule"]), how
+
+
+_RACK_KEYS = ("root_radius_coef", "pressure_angle", "clearance_coef", "addendum_coef")
+
+
+def _rack(spec: ValidatedSpec):
+    """The basic rack's tooth space; a fillet that does not fit is reported on the rack key
+    the spec gives (the fillet radius first), with the values it was found from."""
+    rk = spec.data["rack"]
+    try:
+        return R.rack_space(math.radians(rk["pressure_angle"]), rk["addendum_coef"],
+                            rk["clearance_coef"], rk["root_radius_coef"])
+    except ValueError as exc:
+        key = next((k for k in _RACK_KEYS if f"rack.{k}" not in spec.assumed), _RACK_KEYS[0])
+        if key == "root_radius_coef":
+            raise InputError.at("rack.root_radius_coef", rk[key],
+                                f"too large: {exc}; reduce it") from None
+        fillet = ("the default, not in the spec" if "rack.root_radius_coef" in spec.assumed
+                  else "rack.root_radius_coef")
+        raise InputError.at(f"rack.{key}", rk[key],
+                            f"too large for the root fillet: {exc} (ρ_f* from {fillet}); "
+                            f"reduce rack.{key} or give a smaller rack.root_radius_coef"
+                            ) from None
+
+
+def _root_circle(spec: ValidatedSpec, x: float, how: str) -> None:
+    g, rk = spec.data["gear"], spec.data["rack"]
+    if F.root_radius(g["module"], g["flex_teeth"], x, rk["addendum_coef"],
+                     rk["clearance_coef"]) > 0:
+        return
+    if how == "given":
+        raise InputError.at("gear.shift", x, "gives a root circle of zero radius; increase it")
+    raise InputError.at("gear.flex_teeth", g["flex_teeth"],
+                        f"gives with the shift x = {x:.4g} (derived from gear.flex_teeth by "
+                        f"{how}) a root circle of zero radius: give gear.shift")
+
+
+def compute(spec: ValidatedSpec) -> Result:
+    from geardesign.wave_gear import CALCULATOR
+
+    g, rk, mat = spec.data["gear"], spec.data["rack"], spec.data["material"]
+    m, z, U, H0 = g["module"], g["flex_teeth"], g["waves"], g["rim_thickness"]
+
+    # ------------------------------------------------------------ rules across keys
+    problems = Problems()
+    z_b = problems.stage(_rigid_teeth, spec)
+    shift = problems.stage(_shift, spec)
     w0 = g["radial_deflection"]
     if w0 is None:
         w0 = m
         g["radial_deflection"] = w0
         spec.assumed.append("gear.radial_deflection")
-    try:
-        rack = R.rack_space(math.radians(rk["pressure_angle"]), rk["addendum_coef"],
-                            rk["clearance_coef"], rk["root_radius_coef"])
-    except ValueError as exc:
-        raise InputError.at("rack.root_radius_coef", rk["root_radius_coef"],
-                            f"too large: {exc}; reduce it") from None
+    rack = problems.stage(_rack, spec)
+    if shift is not Problems.FAILED:
+        problems.stage(_root_circle, spec, *shift)
+    problems.raise_all()
+    x, how = shift
     r_f = F.root_radius(m, z, x, rk["addendum_coef"], rk["clearance_coef"])
-    if r_f <= 0:
-        raise InputError.at("gear.shift", x, "gives a root circle of zero radius; increase it")
 
     res = CALCULATOR.new_result(spec)
 
