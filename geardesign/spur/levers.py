@@ -55,4 +55,4 @@ SUPERSEDED = (
 rating) that a standard module replaces: the continuous scaling of the pair."""
 
 LEVERS = (Lever(CODES, standard_modules, "the pair scaled to a standard module, GOST 9563 / "
-                "ISO 54 first series", SUPERSEDED),)
+                "ISO 54 first series", supersedes=SUPERSEDED),)
