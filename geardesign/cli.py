@@ -45,14 +45,15 @@ class Format(str, Enum):
     markdown = "markdown"
     csv = "csv"
     html = "html"
+    pdf = "pdf"
 
 
 FORMAT_HELP = ("Output format. Default: table on a terminal, json when stdout is a pipe or "
                "file; with --output, taken from the file extension (.json, .jsonl, .md, .csv, "
-               ".html, .txt).")
+               ".html, .pdf, .txt). pdf needs the report extra and a Chromium.")
 
 EXTENSIONS = {".json": "json", ".jsonl": "jsonl", ".md": "markdown", ".markdown": "markdown",
-              ".csv": "csv", ".html": "html", ".htm": "html", ".txt": "table"}
+              ".csv": "csv", ".html": "html", ".htm": "html", ".pdf": "pdf", ".txt": "table"}
 """Report formats by the extension of --output."""
 
 
@@ -152,12 +153,59 @@ def _compute_all(paths: List[Path], expect_kind: Optional[str], mode: Optional[s
     return results, problems
 
 
-def _write(path: Path, text: str) -> None:
-    """``text`` to ``path`` through the one atomic writer; a failure is one line, exit 2."""
-    from geardesign.core.io import write_atomic
+def _pdf_ready(fmt_name: str, output: Optional[Path]) -> None:
+    """A PDF report needs Playwright and a Chromium, and a file or a pipe to go to: one
+    line and exit 2 before any work when one is missing."""
+    if fmt_name != "pdf":
+        return
+    from geardesign.report.browser import INSTALL_HINT, missing
+
+    why = missing()
+    if why:
+        _err(f"geardesign: --format pdf: {why}; install: {INSTALL_HINT}")
+        raise typer.Exit(2)
+    if output is None and sys.stdout.isatty():
+        _err("geardesign: --format pdf writes a file: give --output FILE.pdf")
+        raise typer.Exit(2)
+
+
+def _report(results: list, fmt_name: str, output: Optional[Path], quiet: bool,
+            color: bool = False, width: Optional[int] = None) -> None:
+    """The report in ``fmt_name`` to ``output`` (atomically) or standard output."""
+    from geardesign.core.render import render, render_pdf
+
+    if fmt_name == "pdf":
+        from geardesign.report.browser import BrowserMissing
+
+        try:
+            data = render_pdf(results)
+        except BrowserMissing as exc:
+            _err(f"geardesign: --format pdf: {exc}")
+            raise typer.Exit(2)
+        if output is not None:
+            _write(output, data)
+        elif not quiet:
+            sys.stdout.buffer.write(data)
+            sys.stdout.flush()
+        return
+    text = render(results, fmt_name, color=color, width=width)
+    if output is not None:
+        _write(output, text)
+    elif not quiet:
+        sys.stdout.write(text)
+
+
+def _write(path: Path, text) -> None:
+    """``text`` (or bytes) to ``path`` through the one atomic writer; a failure is one
+    line, exit 2."""
+    from geardesign.core.io import atomic_path, write_atomic
 
     try:
-        write_atomic(path, text)
+        if isinstance(text, bytes):
+            with atomic_path(path) as tmp:
+                Path(tmp).write_bytes(text)
+        else:
+            write_atomic(path, text)
     except InputError as exc:
         _err(f"{path}: cannot write: {exc.problems[0].message}")
         raise typer.Exit(2)
@@ -201,9 +249,8 @@ def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quie
           expect_kind: Optional[str] = None, mode: Optional[str] = None,
           plot: Optional[Path] = None, keep_going: bool = False,
           profile: Optional[Path] = None) -> None:
-    from geardesign.core.render import render
-
     fmt_name = _choose_format(fmt, output)
+    _pdf_ready(fmt_name, output)
     _targets(output, plot, profile)
     results, problems = _compute_all(paths, expect_kind, mode)
     if problems:
@@ -224,15 +271,11 @@ def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quie
         from geardesign.core.render import terminal_width
 
         width = terminal_width()
-    text = render(results, fmt_name, color=color, width=width)
     code = 2 if problems else max(r.exit_code for r in results)
-    if output is not None:
-        _write(output, text)
-        if not quiet:
-            verdicts = ", ".join(f"{r.source}: {r.verdict}" for r in results)
-            _err(f"wrote {output} ({verdicts})")
-    elif not quiet:
-        sys.stdout.write(text)
+    _report(results, fmt_name, output, quiet, color, width)
+    if output is not None and not quiet:
+        verdicts = ", ".join(f"{r.source}: {r.verdict}" for r in results)
+        _err(f"wrote {output} ({verdicts})")
     raise typer.Exit(code)
 
 
@@ -400,10 +443,10 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
               quiet: bool = OPT_QUIET) -> None:
     """Sweep a spur pair over ranges of its data: every variant rated by the vectorised
     kernel, ranked by the objectives, with the Pareto front (exit 1 when none is feasible)."""
-    from geardesign.core.render import render
     from geardesign.spur import sweep as SW
 
     fmt_name = _choose_format(format, output)
+    _pdf_ready(fmt_name, output)
     if data is not None and data.suffix.lower() not in (".csv", ".parquet"):
         _err(f"{data}: --data must end in .csv or .parquet")
         raise typer.Exit(2)
@@ -485,12 +528,8 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
     to_terminal = output is None and sys.stdout.isatty()
     from geardesign.core.render import terminal_width
 
-    text = render([res], fmt_name, color=to_terminal and not os.environ.get("NO_COLOR"),
-                  width=terminal_width() if to_terminal else None)
-    if output is not None:
-        _write(output, text)
-    elif not quiet:
-        sys.stdout.write(text)
+    _report([res], fmt_name, output, quiet, to_terminal and not os.environ.get("NO_COLOR"),
+            terminal_width() if to_terminal else None)
     raise typer.Exit(res.exit_code)
 
 

@@ -1,0 +1,278 @@
+"""The pictures of a result for the report, as inline SVG: ``figures(res)`` maps a
+section key (``""`` for the top of the report, after the summary) to a list of
+:class:`Figure`.  Drawn from the result alone (its rows and tables, the spur pair's
+geometry), never recomputed; a kind without a picture gets none.
+
+* spur/helical pair: the tooth profiles in mesh with the pitch, base, tip and root circles
+  and the line of action (:func:`geardesign.spur.export.profile_svg`);
+* shaft: shear force, bending moment and torque, and deflection along the shaft, the
+  critical sections marked;
+* drive: the power flow motor → stages → output (torque, speed, ratio, efficiency of
+  each stage) and the heat balance (losses per stage and kind, sump temperature);
+* sweep: the ranked variants and the Pareto front in the plane of the first two
+  objectives, each point labelled with its rank.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from geardesign.report.svg import PALETTE, Chart, Series, chart_svg
+from geardesign.report.typeset import e, number_text, unit_text
+
+
+@dataclass(frozen=True)
+class Figure:
+    caption: str
+    svg: str          # an <svg> element
+
+
+def _rows(res, key: str) -> dict:
+    for s in res.sections:
+        if s.key == key:
+            return {r.key: r for r in s.rows}
+    return {}
+
+
+def _table(res, key: str):
+    for t in res.tables:
+        if t.key == key:
+            return t
+    return None
+
+
+def _spur(res) -> dict:
+    if getattr(res, "pair_geometry", None) is None:
+        return {}
+    from geardesign.spur.export import ExportError, profile_svg
+
+    try:
+        svg = profile_svg(res, zoom=True)
+    except (ExportError, ValueError, IndexError):   # a pair the outline cannot be drawn for
+        return {}
+    return {"geometry": [Figure("Tooth profiles in mesh (transverse section): pitch circles "
+                                "dashed, base circles dotted, tip and root circles thin; "
+                                "line of action with the ends A, E of the path of contact "
+                                "and the pitch point P", svg)]}
+
+
+def _shaft(res) -> dict:
+    d = _rows(res, "diagrams")
+    if "x" not in d or not isinstance(d["x"].value, list):
+        return {}
+    x = d["x"].value
+    strength = _rows(res, "strength")
+    marks = []
+    for key, label in (("x_critical", "critical (fatigue)"),):
+        row = strength.get(key)
+        if row is not None and isinstance(row.value, (int, float)):
+            name = strength.get("critical_section")
+            marks.append((row.value, f"{label}: {name.value}" if name else label))
+    sections = _table(res, "sections")
+    if sections is not None and "S_static" in strength:
+        worst = min((r for r in sections.rows if isinstance(r.get("S_static"), (int, float))),
+                    key=lambda r: r["S_static"], default=None)
+        if worst is not None and isinstance(worst.get("x"), (int, float)):
+            marks.append((worst["x"], f"critical (static): {worst.get('label', '')}"))
+
+    def series(keys):
+        out = []
+        for i, k in enumerate(keys):
+            if k in d and isinstance(d[k].value, list) and len(d[k].value) == len(x):
+                out.append(Series(d[k].symbol or k, x, d[k].value, PALETTE[i]))
+        return out
+
+    def unit(keys):
+        return next((unit_text(d[k].unit) for k in keys if k in d), "")
+
+    charts = []
+    for title, keys, ylabel in (
+            ("Shear force", ("V_y", "V_z"), "V"), ("Bending moment and torque",
+                                                  ("M_y", "M_z", "M", "T"), "M, T"),
+            ("Deflection", ("w_y", "w_z", "w"), "w")):
+        ss = series(keys)
+        if ss:
+            charts.append(Chart("position along the shaft x, mm", f"{ylabel}, {unit(keys)}",
+                                ss, title=title, marks=marks, height=220))
+    figs = [Figure(c.title + " along the shaft" + (", critical sections marked" if marks
+                                                    else ""), chart_svg(c)) for c in charts]
+    return {"diagrams": [f for f in figs if f.svg]}
+
+
+def _drive(res) -> dict:
+    stages = _table(res, "stages")
+    if stages is None or not stages.rows:
+        return {}
+    d = _rows(res, "drive")
+    figs = [Figure("Power flow: motor → stages → output, torque and speed at each shaft, "
+                   "ratio and efficiency of each stage", _power_flow(stages.rows, d))]
+    losses = _table(res, "losses")
+    thermal = _rows(res, "thermal")
+    heat = _heat_balance(losses, thermal) if losses is not None else ""
+    if heat:
+        figs.append(Figure("Heat balance: power losses per stage and kind, and the sump "
+                           "temperature they settle at", heat))
+    return {"": figs}
+
+
+def _val(row, unit):
+    v = row.get(unit) if isinstance(row, dict) else None
+    return v if isinstance(v, (int, float)) and not isinstance(v, bool) else None
+
+
+def _power_flow(rows: list, drive: dict) -> str:
+    n = len(rows)
+    bw, gap, h = 150, 70, 150
+    W = 2 * 110 + n * bw + (n + 1) * gap
+    out = [f'<svg class="diagram" viewBox="0 0 {W} {h}" role="img" aria-label="power flow" '
+           f'xmlns="http://www.w3.org/2000/svg" font-family="sans-serif" font-size="12">',
+           '<defs><marker id="arrow" viewBox="0 0 10 10" refX="10" refY="5" markerWidth="7" '
+           'markerHeight="7" orient="auto"><path d="M0,0L10,5L0,10z" fill="#555"/></marker>'
+           '</defs>']
+
+    def box(x, title, lines, fill):
+        out.append(f'<rect x="{x}" y="35" width="{bw if lines else 110}" height="80" rx="6" '
+                   f'fill="{fill}" stroke="#555"/>')
+        wdt = bw if lines else 110
+        out.append(f'<text x="{x + wdt / 2}" y="56" text-anchor="middle" font-weight="bold">'
+                   f'{e(title)}</text>')
+        for j, line in enumerate(lines):
+            out.append(f'<text x="{x + wdt / 2}" y="{76 + 17 * j}" text-anchor="middle">'
+                       f'{e(line)}</text>')
+
+    def shaft_label(x, T, nn):
+        if T is not None:
+            out.append(f'<text x="{x}" y="28" text-anchor="middle">T = {e(number_text(T, "N·m"))}'
+                       f' N·m</text>')
+        if nn is not None:
+            out.append(f'<text x="{x}" y="136" text-anchor="middle">n = '
+                       f'{e(number_text(nn, "min^-1"))} min⁻¹</text>')
+
+    def arrow(x1, x2):
+        out.append(f'<line x1="{x1}" y1="75" x2="{x2}" y2="75" stroke="#555" stroke-width="2" '
+                   f'marker-end="url(#arrow)"/>')
+
+    P = drive.get("P_m")
+    box(0, "motor", [], "#eef3fb")
+    if P is not None and isinstance(P.value, (int, float)):
+        out.append(f'<text x="55" y="80" text-anchor="middle">{e(number_text(P.value, "kW"))}'
+                   f' kW</text>')
+    x = 110
+    for i, r in enumerate(rows):
+        arrow(x, x + gap)
+        shaft_label(x + gap / 2, _val(r, "T_in"), _val(r, "n_in"))
+        x += gap
+        u, eta = _val(r, "ratio"), _val(r, "efficiency")
+        lines = [str(r.get("name") or r.get("kind") or "")[:22]]
+        if u is not None:
+            lines.append(f"u = {number_text(u, '-')}" + (f", η = {number_text(eta, '-')}"
+                                                         if eta is not None else ""))
+        fill = "#fbeaea" if str(r.get("verdict", "")).lower() == "fail" else "#eef7ef"
+        box(x, f"stage {r.get('stage', i + 1)}", lines, fill)
+        x += bw
+    arrow(x, x + gap)
+    last = rows[-1]
+    shaft_label(x + gap / 2, _val(last, "T_out"), _val(last, "n_out"))
+    box(x + gap, "output", [], "#eef3fb")
+    Po = drive.get("P_out")
+    if Po is not None and isinstance(Po.value, (int, float)):
+        out.append(f'<text x="{x + gap + 55}" y="80" text-anchor="middle">'
+                   f'{e(number_text(Po.value, "kW"))} kW</text>')
+    out.append("</svg>")
+    return "".join(out)
+
+
+LOSS_KINDS = (("mesh", "mesh"), ("churning", "churning"), ("bearings", "bearings"),
+              ("seals", "seals"), ("other", "by own η"))
+
+
+def _heat_balance(losses, thermal: dict) -> str:
+    rows = [r for r in losses.rows if _val(r, "total") is not None]
+    if not rows:
+        return ""
+    total = max(_val(r, "total") for r in rows) or 1.0
+    W, L, bar = 640, 70, 22
+    H = 34 + len(rows) * (bar + 12) + 30
+    out = [f'<svg class="chart" viewBox="0 0 {W} {H}" role="img" aria-label="heat balance" '
+           f'xmlns="http://www.w3.org/2000/svg" font-family="sans-serif" font-size="11">']
+    for j, (key, label) in enumerate(LOSS_KINDS):
+        out.append(f'<rect x="{L + 90 * j}" y="8" width="10" height="10" '
+                   f'fill="{PALETTE[j]}"/><text x="{L + 90 * j + 14}" y="17">{e(label)}</text>')
+    pw = W - L - 80
+    y = 34
+    for r in rows:
+        x = L
+        out.append(f'<text x="{L - 6}" y="{y + 15}" text-anchor="end">stage '
+                   f'{e(r.get("stage", ""))}<title>{e(r.get("name", ""))}</title></text>')
+        for j, (key, _) in enumerate(LOSS_KINDS):
+            v = _val(r, key) or 0.0
+            w = max(0.0, v / total * pw)
+            if w > 0:
+                out.append(f'<rect x="{x:.1f}" y="{y}" width="{w:.1f}" height="{bar}" '
+                           f'fill="{PALETTE[j]}"><title>{e(key)}: {e(number_text(v, "W"))} W'
+                           f'</title></rect>')
+            x += w
+        out.append(f'<text x="{x + 5:.1f}" y="{y + 15}">{e(number_text(_val(r, "total"), "W"))}'
+                   f' W</text>')
+        y += bar + 12
+    t, pv, pq = thermal.get("t_oil"), thermal.get("P_V"), thermal.get("P_Q")
+    if t is not None and isinstance(t.value, (int, float)):
+        text = f"sump temperature {number_text(t.value, '°C')} °C"
+        if pv is not None and isinstance(pv.value, (int, float)):
+            text += f": losses P_V = {number_text(pv.value, 'W')} W"
+        if pq is not None and isinstance(pq.value, (int, float)):
+            text += f" = heat dissipated P_Q = {number_text(pq.value, 'W')} W"
+        out.append(f'<text x="{L}" y="{y + 12}">{e(text)}</text>')
+    out.append("</svg>")
+    return "".join(out)
+
+
+def _sweep(res) -> dict:
+    ranked, front = _table(res, "ranked"), _table(res, "pareto")
+    objectives = list(((res.inputs or {}).get("sweep") or {}).get("objectives") or [])
+    if ranked is None or not ranked.rows:
+        return {}
+    names = objectives[:2] if len(objectives) > 1 else (objectives or ["mass"])[:1] + ["margin"]
+    cols = {k: (h, u) for k, h, u in ranked.columns}
+    if not all(n in cols for n in names):
+        return {}
+
+    def axis(n):
+        head, unit = cols[n]
+        u = unit_text(unit)
+        return f"{head}, {u}" if u else head
+
+    def pts(rows):
+        ok = [r for r in rows if _val(r, names[0]) is not None and _val(r, names[1]) is not None]
+        ok.sort(key=lambda r: r[names[0]])
+        return ([r[names[0]] for r in ok], [r[names[1]] for r in ok],
+                [f"#{r.get('rank')}" for r in ok])
+
+    x, y, lab = pts(ranked.rows)
+    series = [Series("ranked variants (#rank)", x, y, PALETTE[0], marker=True, line=False,
+                     point_labels=lab)]
+    if front is not None and front.rows:
+        fx, fy, _ = pts(front.rows)
+        series.append(Series("Pareto front", fx, fy, PALETTE[1], marker=True))
+    c = Chart(axis(names[0]), axis(names[1]), series, zero=False, height=320)
+    return {"ranked": [Figure(f"Ranked variants and the Pareto front of {names[0]} and "
+                              f"{names[1]}", chart_svg(c))]}
+
+
+_BY_KIND = {"spur": _spur, "shaft": _shaft, "drive": _drive, "sweep": _sweep}
+
+
+def figures(res) -> dict:
+    """The figures of ``res`` by section key (``""``: after the summary)."""
+    make = _BY_KIND.get(res.kind)
+    if make is None:
+        return {}
+    try:
+        out = make(res)
+    except (KeyError, TypeError, ValueError, ZeroDivisionError, OverflowError):
+        return {}          # a picture never stops the report
+    return {k: [f for f in v if f.svg] for k, v in out.items()}
+
+
+def has_figure(res) -> bool:
+    return any(figures(res).values())
