@@ -164,8 +164,8 @@ def profile_svg(result, zoom: bool = False) -> str:
         clip = (box[0] - span, box[1] - span, box[2] + span, box[3] + span)
         digits = 4
     else:
-        lo = np.minimum(m.pinion.min(axis=0), m.wheel.min(axis=0)) - mn
-        hi = np.maximum(m.pinion.max(axis=0), m.wheel.max(axis=0)) + mn
+        lo = np.minimum(m.pinion.min(axis=0), m.wheel.min(axis=0)) - 1.0
+        hi = np.maximum(m.pinion.max(axis=0), m.wheel.max(axis=0)) + 1.0
         clip, digits = None, 6
     w, h = hi - lo
     size = (f'width="{w:.3f}mm" height="{h:.3f}mm" ' if not zoom
