@@ -145,13 +145,3 @@ def test_pdf_of_the_drive(tmp_path):
                            text=True, check=True).stdout
     assert "PASS" in first and "Governing margins" in first and "STAGE_1" in first
     assert first.count("\f") <= 1                      # one page
-
-
-def test_pdf_refused_without_a_browser(tmp_path):
-    """No Chromium: one line with the install hint, exit 2, nothing written."""
-    out = tmp_path / "r.pdf"
-    env = {**os.environ, "GEARDESIGN_CHROMIUM": str(tmp_path / "no-such-browser")}
-    r = cli_process("run", SPECS / "spur_plain.toml", "--format", "pdf", "-o", out, env=env)
-    assert r.returncode == 2 and r.stdout == "" and not out.exists()
-    assert r.stderr.count("\n") == 1 and "no Chromium" in r.stderr
-    assert "pip install 'geardesign[report]'" in r.stderr

@@ -255,7 +255,7 @@ def _sweep(res) -> dict:
         fx, fy, _ = pts(front.rows)
         series.append(Series("Pareto front", fx, fy, PALETTE[1], marker=True))
     c = Chart(axis(names[0]), axis(names[1]), series, zero=False, height=320)
-    return {"ranked": [Figure(f"Ranked variants and the Pareto front of {names[0]} and "
+    return {"": [Figure(f"Ranked variants and the Pareto front of {names[0]} and "
                               f"{names[1]}", chart_svg(c))]}
 
 

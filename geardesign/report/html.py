@@ -306,7 +306,9 @@ class _Doc:
         figs = figures(r)
         body = _Doc()
         body.ids = ids
-        toc = body.body(r, figs, 2, key)
+        for f in figs.get("", []):      # the picture of the whole, before the contents
+            self.figure(f)
+        toc = body.body(r, {k: v for k, v in figs.items() if k}, 2, key)
         toc += [(2, all_id, "All margins"), (2, checks_id, "Checks"),
                 (2, ids(key, "inputs"), "Inputs")]
         self.add(_toc(toc))

@@ -11,7 +11,9 @@ A margin is a ratio that is 1 at the limit and above 1 on the safe side:
   limit / value.  Which of the two is read from the check itself: a passed check whose
   value is at least its limit, or a failed one whose value is below it, is of the first
   kind.  A failed check whose value is not below its limit failed for another reason
-  (a contact ratio of teeth that interfere) and is listed with the failed checks only.
+  (a contact ratio of teeth that interfere) and is listed with the failed checks only;
+  a check whose margin equals that of a safety factor within 0.1 % (the stress against
+  its allowable of GOST 21354, σ_H ≤ σ_HP, beside S_H ≥ S_Hmin) is not shown twice.
 
 Margins are sorted worst first; each names its symbol, its section (the method and the
 gear: "ISO 6336: pitting", "pinion") and the check that judges it.
@@ -86,6 +88,8 @@ def margins(res: Result) -> list[Margin]:
             continue                          # ratio of teeth that cannot mesh): listed only
         at_least = (value >= limit) == c.passed
         ratio = value / limit if at_least else limit / value
+        if any(abs(m.ratio - ratio) <= 1e-3 * ratio and m.passed == c.passed for m in out):
+            continue            # the stress check of a safety factor already shown
         out.append(Margin(c.code, c.message, "checks", value, limit, at_least, ratio,
                           c.code, c.passed))
     out.sort(key=lambda m: (m.ratio, m.label))
