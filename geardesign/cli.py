@@ -223,6 +223,9 @@ def _write_plot(results: list, plot: Path) -> None:
     if not with_history and len(results) == 1 and results[0].kind == "spur":
         _write_spur_file(results[0], plot, "write_plot")
         return
+    if not with_history and len(results) == 1:
+        _write_report_plot(results[0], plot)
+        return
     if len(with_history) != 1:
         _err(f"{plot}: --plot needs exactly one spec with a start-up time history (a pzdn "
              f"spec with [startup] and history_points >= 2); {len(with_history)} given")
@@ -232,6 +235,22 @@ def _write_plot(results: list, plot: Path) -> None:
     except PlotError as exc:
         _err(f"{plot}: {exc}")
         raise typer.Exit(2)
+
+
+def _write_report_plot(result, plot: Path) -> None:
+    """``--plot FILE.svg`` of a kind whose report has pictures (shaft diagrams, a drive's
+    power flow and heat balance): the report's pictures in one SVG."""
+    from geardesign.report.figures import plot_svg
+
+    svg = plot_svg(result)
+    if svg is None:
+        _err(f"{plot}: --plot: a {result.kind} result has no picture; pictures: spur, pzdn "
+             f"(with [startup]), shaft, drive, sweep")
+        raise typer.Exit(2)
+    if plot.suffix.lower() != ".svg":
+        _err(f"{plot}: --plot of a {result.kind} result writes .svg")
+        raise typer.Exit(2)
+    _write(plot, svg)
 
 
 def _write_spur_file(result, path: Path, writer: str) -> None:
@@ -288,7 +307,8 @@ OPT_QUIET = typer.Option(False, "--quiet", "-q",
 ARG_SPECS = typer.Argument(..., help="Spec file(s), TOML.", show_default=False)
 OPT_PLOT = typer.Option(None, "--plot", help="Write the start-up transient of a pzdn spec "
                         "with [startup], or the mesh of a spur pair, to FILE (.png or .svg; "
-                        "needs matplotlib).")
+                        "needs matplotlib); the diagrams of a shaft, the power flow and heat "
+                        "balance of a drive to FILE.svg.")
 OPT_PROFILE = typer.Option(None, "--profile", help="Write the tooth profiles of a spur pair "
                            "in mesh to FILE (.dxf needs ezdxf, or .svg).")
 OPT_SELECT = typer.Option(False, "--select",
@@ -323,6 +343,10 @@ def run_cmd(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT
           keep_going=keep_going, profile=profile)
 
 
+PLOT_KINDS = ("shaft", "drive")
+"""Kinds besides spur and pzdn whose command has ``--plot`` (the report's pictures)."""
+
+
 def _kind_command(kind: str):
     """``geardesign <kind>``: only the options that apply to that calculator."""
     if kind == "bearing":
@@ -344,6 +368,12 @@ def _kind_command(kind: str):
                     profile: Optional[Path] = OPT_PROFILE) -> None:
             _emit(specs, format, output, quiet, expect_kind=kind, plot=plot,
                   keep_going=keep_going, profile=profile)
+    elif kind in PLOT_KINDS:
+        def command(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
+                    output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET,
+                    keep_going: bool = OPT_KEEP_GOING, plot: Optional[Path] = OPT_PLOT) -> None:
+            _emit(specs, format, output, quiet, expect_kind=kind, plot=plot,
+                  keep_going=keep_going)
     else:
         def command(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
                     output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET,

@@ -276,3 +276,14 @@ def figures(res) -> dict:
 
 def has_figure(res) -> bool:
     return any(figures(res).values())
+
+
+def plot_svg(res) -> str | None:
+    """Every picture of ``res`` in one SVG document (``--plot FILE.svg``), or None when
+    its kind has none."""
+    from geardesign.report.svg import stack_svg
+
+    figs = [f for fs in figures(res).values() for f in fs]
+    if not figs:
+        return None
+    return stack_svg([f.svg for f in figs], [f.caption for f in figs])

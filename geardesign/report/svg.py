@@ -10,6 +10,7 @@ tick labels and the axis titles, which are therefore never clipped.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 
 from geardesign.report.typeset import e
@@ -125,13 +126,12 @@ def chart_svg(c: Chart, role_label: str = "") -> str:
                f'{e(c.xlabel)}</text>')
     out.append(f'<text transform="translate(14 {T + ph / 2:.1f}) rotate(-90)" '
                f'text-anchor="middle">{e(c.ylabel)}</text>')
-    for j, (x, text) in enumerate(c.marks):   # labels stepped down, inside the frame
-        right = X(x) > L + 0.6 * pw
+    for x, text in c.marks:       # the label along its line, reading upwards
         out.append(f'<line x1="{X(x):.1f}" x2="{X(x):.1f}" y1="{T}" y2="{T + ph}" '
-                   f'stroke="#b22222" stroke-dasharray="4 3"/><text x="'
-                   f'{X(x) + (-3 if right else 3):.1f}" y="{T + ph - 6 - 13 * j}" '
-                   f'text-anchor="{"end" if right else "start"}" fill="#b22222" '
-                   f'paint-order="stroke" stroke="#fff" stroke-width="3">{e(text)}</text>')
+                   f'stroke="#b22222" stroke-dasharray="4 3"/><text transform="translate('
+                   f'{X(x) - 4:.1f} {T + 4}) rotate(-90)" text-anchor="end" fill="#b22222" '
+                   f'font-size="10" paint-order="stroke" stroke="#fff" stroke-width="3">'
+                   f'{e(text)}</text>')
     for y, text in c.hlines:
         out.append(f'<line x1="{L}" x2="{L + pw}" y1="{Y(y):.1f}" y2="{Y(y):.1f}" '
                    f'stroke="#b22222" stroke-dasharray="4 3"/><text x="{L + pw - 3}" '
@@ -172,3 +172,28 @@ def chart_svg(c: Chart, role_label: str = "") -> str:
             lx += 40 + 6.5 * len(label)
     out.append("</svg>")
     return "".join(out)
+
+
+_VIEWBOX = re.compile(r'viewBox="([-\d.e]+) ([-\d.e]+) ([-\d.e]+) ([-\d.e]+)"')
+
+
+def stack_svg(svgs: list[str], captions: list[str], width: int = 640) -> str:
+    """Several ``<svg>`` elements one below the other in one SVG document, each scaled to
+    ``width`` and followed by its caption (``--plot FILE.svg`` of the report's pictures)."""
+    parts, y = [], 0.0
+    for svg, caption in zip(svgs, captions):
+        m = _VIEWBOX.search(svg)
+        if m is None:
+            continue
+        w, h = float(m.group(3)), float(m.group(4))
+        hh = width * h / w
+        inner = svg.replace("<svg ", f'<svg x="0" y="{y:.1f}" width="{width}" '
+                            f'height="{hh:.1f}" ', 1)
+        parts.append(inner)
+        y += hh + 6
+        parts.append(f'<text x="0" y="{y + 10:.1f}" font-family="sans-serif" font-size="11" '
+                     f'fill="#555">{e(caption)}</text>')
+        y += 24
+    return (f'<?xml version="1.0" encoding="UTF-8"?>\n<svg xmlns="http://www.w3.org/2000/svg" '
+            f'width="{width}" height="{y:.0f}" viewBox="0 0 {width} {y:.0f}">'
+            + "".join(parts) + "</svg>\n")
