@@ -29,7 +29,8 @@ from geardesign.report.margins import Margin, margins
 from geardesign.report.typeset import e, number_parts, symbol_html, unit_html
 
 FIRST_SCREEN_MARGINS = 8
-"""Margins shown as bars on the first screen (the worst ones); all are in "Margins"."""
+"""Rows of the first screen's margins: the failed checks that have no ratio (at most six),
+then the worst margins as bars (at least two); all margins are in "All margins"."""
 
 PART_GROUPS = {"stage_reports": "Stage calculations", "bearing_reports": "Bearing calculations",
                "shaft_reports": "Shaft calculations",
@@ -60,6 +61,8 @@ margin:3px 0;font-size:.9em}
 .bar{position:relative;height:14px;background:#f1f3f4;border-radius:3px}
 .bar .fill{position:absolute;left:0;top:0;bottom:0;border-radius:3px;background:var(--ok)}
 .bar .fill.low{background:#c98a00}.bar .fill.bad{background:var(--bad)}
+.bar.failed{background:var(--bad);color:#fff;font-size:.75em;line-height:14px;padding-left:6px;
+font-weight:600}
 .bar .one{position:absolute;top:-3px;bottom:-3px;width:2px;background:var(--ink)}
 .bar-row .num{font-variant-numeric:tabular-nums;text-align:right;white-space:nowrap}
 .findings ul{margin:.2em 0 .8em;padding-left:1.1em}.findings li{margin:.25em 0}
@@ -83,7 +86,8 @@ tr.assumed td{background:#fff8e1}
 td.st-fail{color:var(--bad);font-weight:600;white-space:nowrap}
 td.st-warn{color:var(--warn);white-space:nowrap}td.st-ok{color:var(--ok);white-space:nowrap}
 td.st-info{color:var(--mute);white-space:nowrap}
-figure{margin:.6em 0 1.2em}figure svg{width:100%;height:auto;max-height:560px;display:block}
+figure{margin:.6em 0 1.2em}figure svg{width:100%;height:auto;display:block}
+figure svg.chart{max-width:820px}figure svg.diagram{max-width:980px}
 figure svg.figure-profile{max-width:640px;max-height:460px;border:1px solid var(--line)}
 figcaption{color:var(--mute);font-size:.88em}
 .part-head{color:var(--mute);font-size:.92em}
@@ -160,15 +164,25 @@ class _Doc:
 
     # ------------------------------------------------------------------ first screen
 
-    def margin_bars(self, ms: list[Margin], all_id: str) -> None:
+    def margin_bars(self, ms: list[Margin], all_id: str, failed: list[Check] = ()) -> None:
         self.add('<section class="margins" aria-label="governing margins">'
                  '<h2 id="{}">Governing margins</h2>'.format(self.ids("governing")))
+        shown = {m.code for m in ms}
+        extra = [c for c in failed if c.code not in shown][:FIRST_SCREEN_MARGINS - 2]
+        for c in extra:            # a failed check without a ratio (a shift, a geometry)
+            nums = (f"{_short(c.value)} vs {_short(c.limit)}"
+                    if isinstance(c.value, (int, float)) and isinstance(c.limit, (int, float))
+                    else "")
+            self.add(f'<div class="bar-row" title="{e(c.message)}"><span class="lbl">'
+                     f'<span class="code">{e(c.code)}</span></span><span class="bar failed">'
+                     f'failed</span><span class="num">{e(nums)}</span></div>')
         if not ms:
             self.add('<p class="none">No safety factor or limit of this kind to compare.</p>'
                      "</section>")
             return
         top = 2.5
-        for m in ms[:FIRST_SCREEN_MARGINS]:
+        room = max(2, FIRST_SCREEN_MARGINS - len(extra))
+        for m in ms[:room]:
             width = max(0.0, min(m.ratio, top)) / top * 100
             cls = "bad" if (m.ratio < 1 or not m.passed) else ("low" if m.ratio < 1.1 else "")
             rel = "≥" if m.at_least else "≤"
@@ -182,7 +196,7 @@ class _Doc:
                      f'<span class="one" style="left:{100 / top:.1f}%"></span></span>'
                      f'<span class="num">{e(_short(m.value))} {rel} {e(_short(m.limit))}'
                      f'</span></div>')
-        more = len(ms) - FIRST_SCREEN_MARGINS
+        more = len(ms) - room
         note = f"{more} more: " if more > 0 else ""
         self.add(f'<p class="none">Bar: value against its limit (line = 1); '
                  f'{note}<a href="#{all_id}">all margins</a>.</p></section>')
@@ -300,7 +314,7 @@ class _Doc:
                  f"<span>{e(verdict_line(r).split(':', 1)[-1].strip())}</span></div>")
         ms = margins(r)
         self.add('<div class="summary">')
-        self.margin_bars(ms, all_id)
+        self.margin_bars(ms, all_id, r.failed)
         self.findings(r, checks_id)
         self.add("</div></header>")
         figs = figures(r)
