@@ -10,7 +10,11 @@ geometry), never recomputed; a kind without a picture gets none.
 * drive: the power flow motor → stages → output (torque, speed, ratio, efficiency of
   each stage) and the heat balance (losses per stage and kind, sump temperature);
 * sweep: the ranked variants and the Pareto front in the plane of the first two
-  objectives, each point labelled with its rank.
+  objectives, each point labelled with its rank;
+* planetary: the layout to scale (sun, planets on the carrier circle, ring or rings);
+* pzdn: the start-up torques and speeds; geneva: the motion law and the load over the
+  crank angle; novikov: stresses and loads over the contact phases; ball clutch: the
+  limit torque against speed; epicycle rim: the Mathieu stability chart.
 """
 
 from __future__ import annotations
@@ -259,7 +263,147 @@ def _sweep(res) -> dict:
                               f"{names[1]}", chart_svg(c))]}
 
 
-_BY_KIND = {"spur": _spur, "shaft": _shaft, "drive": _drive, "sweep": _sweep}
+def _largest(values: list) -> list:
+    """An array of arrays (a value per contact point of each phase) as the largest of
+    each inner array; a flat array as it is."""
+    out = []
+    for v in values:
+        if isinstance(v, list):
+            finite = [x for x in v if isinstance(x, (int, float))]
+            out.append(max(finite) if finite else None)
+        else:
+            out.append(v)
+    return out
+
+
+def _curves(res, key: str, x: str, xlabel: str, groups, x_from: str = "") -> dict:
+    """Charts of the arrays of section ``key`` over the array ``x`` (of section
+    ``x_from``, else the same): ``groups`` of ``(title, keys, ylabel)``; a key that is
+    missing or of another length is left out; an array of arrays is drawn as the largest
+    value of each (:func:`_largest`)."""
+    d = _rows(res, key)
+    dx = _rows(res, x_from) if x_from else d
+    if x not in dx or not isinstance(dx[x].value, list):
+        return {}
+    xs = dx[x].value
+    unit_x = unit_text(dx[x].unit)
+    figs = []
+    for title, keys, ylabel in groups:
+        ss = [Series(d[k].symbol or k, xs, _largest(d[k].value), PALETTE[i % len(PALETTE)])
+              for i, k in enumerate(keys)
+              if k in d and isinstance(d[k].value, list) and len(d[k].value) == len(xs)]
+        if ss:
+            u = unit_text(d[keys[0]].unit) if keys[0] in d else ""
+            c = Chart(f"{xlabel}, {unit_x}" if unit_x else xlabel,
+                      f"{ylabel}, {u}" if u else ylabel, ss, title=title, height=240)
+            figs.append(Figure(title, chart_svg(c)))
+    return {key: figs}
+
+
+def _pzdn(res) -> dict:
+    return _curves(res, "history", "t", "time t", (
+        ("Start-up: torques in the springs", ("T12", "T13"), "T"),
+        ("Start-up: speeds of the three masses", ("omega1", "omega2", "omega3"), "ω")))
+
+
+def _geneva(res) -> dict:
+    out = _curves(res, "motion_law", "phi", "crank angle φ", (
+        ("Motion law of the wheel, relative to the crank",
+         ("omega2_ratio", "eps2_ratio", "power_ratio"), "ratio"),))
+    out.update(_curves(res, "load", "phi", "crank angle φ", (
+        ("Crank torque during the indexing", ("M1",), "M_1"),
+        ("Force on the slot", ("F",), "F")), x_from="motion_law"))
+    return out
+
+
+def _novikov(res) -> dict:
+    return _curves(res, "phases", "phase", "contact phase", (
+        ("Stresses over the phases of engagement (largest over the contact points)",
+         ("sigma_H", "sigma_F"), "σ"),
+        ("Tooth load over the phases of engagement (largest over the contact points)",
+         ("F_ideal", "F_max"), "F")))
+
+
+def _ball_clutch(res) -> dict:
+    return _curves(res, "speed", "n_grid", "speed n", (
+        ("Limit torque against speed", ("T_lim_curve",), "T_lim"),))
+
+
+def _epicycle_rim(res) -> dict:
+    d = _rows(res, "resonance")
+    if "chart_b" not in d:
+        return {}
+    q = d["chart_b"].value
+    ss = []
+    for n in range(8):           # a_n(q) solid, b_n(q) dashed, one colour per order
+        for name, dash in ((f"chart_a{n}", ""), (f"chart_b{n}", "4 3")):
+            if name in d and isinstance(d[name].value, list) and len(d[name].value) == len(q):
+                ss.append(Series(f"order {n}" if not dash else "", q, d[name].value,
+                                 PALETTE[n % len(PALETTE)], dash=dash))
+    if "chart_line_a" in d:
+        ss.append(Series("working line a = 2q/μ", q, d["chart_line_a"].value, "#000000",
+                         dash="2 2"))
+    c = Chart("q of Mathieu's equation", "characteristic value a", ss,
+              title="Ince–Strutt stability chart", height=320, zero=False)
+    return {"resonance": [Figure("Ince–Strutt chart of Mathieu's equation: characteristic "
+                                 "values a_n(q) solid and b_n(q) dashed (unstable between "
+                                 "them), and the working line of the rim", chart_svg(c))]}
+
+
+def _planetary(res) -> dict:
+    g, asm = _rows(res, "gears"), _rows(res, "assembly")
+    angles = asm.get("planet_angles")
+    a_w = asm.get("a_w_sun_planet")
+    if angles is None or a_w is None or "d_a_sun" not in g:
+        return {}
+    svg = _layout(g, a_w.value, angles.value)
+    return {"gears": [Figure("Layout to scale: sun, planets on the carrier circle, ring(s); "
+                             "tip circles solid, root circles dashed", svg)]} if svg else {}
+
+
+def _layout(g: dict, a_w: float, angles: list) -> str:
+    import math
+
+    def val(k):
+        row = g.get(k)
+        return abs(row.value) if row is not None and isinstance(row.value, (int, float)) \
+            else None
+
+    rings = [n for n in ("ring", "ring2") if val(f"d_f_{n}")]
+    R = max([val(f"d_f_{n}") / 2 for n in rings] + [a_w + val("d_a_planet") / 2]) * 1.06
+    sw = R / 250
+    out = [f'<svg class="diagram" viewBox="{-R:.3f} {-R:.3f} {2 * R:.3f} {2 * R:.3f}" '
+           f'role="img" aria-label="planetary layout" xmlns="http://www.w3.org/2000/svg" '
+           f'style="max-width:460px">']
+
+    def circle(cx, cy, d, color, dash=False, fill="none"):
+        if d:
+            dd = f' stroke-dasharray="{4 * sw:.3f} {2 * sw:.3f}"' if dash else ""
+            out.append(f'<circle cx="{cx:.3f}" cy="{cy:.3f}" r="{d / 2:.3f}" fill="{fill}" '
+                       f'stroke="{color}" stroke-width="{sw:.3f}"{dd}/>')
+
+    for n, color in zip(rings, ("#b22222", "#8a5a00")):
+        circle(0, 0, val(f"d_a_{n}"), color, fill="none")
+        circle(0, 0, val(f"d_f_{n}"), color, dash=True)
+    circle(0, 0, 2 * a_w, "#777", dash=True)                     # carrier circle
+    circle(0, 0, val("d_a_sun"), "#1f4e9e", fill="#dbe5f5")
+    circle(0, 0, val("d_f_sun"), "#1f4e9e", dash=True)
+    for ang in angles:
+        t = math.radians(ang)
+        x, y = a_w * math.cos(t), -a_w * math.sin(t)
+        out.append(f'<line x1="0" y1="0" x2="{x:.3f}" y2="{y:.3f}" stroke="#777" '
+                   f'stroke-width="{2 * sw:.3f}"/>')
+        circle(x, y, val("d_a_planet"), "#2e8b57", fill="#dff0e5")
+        circle(x, y, val("d_f_planet"), "#2e8b57", dash=True)
+        circle(x, y, 4 * sw, "#555", fill="#555")
+    circle(0, 0, 6 * sw, "#555", fill="#555")
+    out.append("</svg>")
+    return "".join(out)
+
+
+_BY_KIND = {"spur": _spur, "shaft": _shaft, "drive": _drive, "sweep": _sweep, "pzdn": _pzdn,
+            "geneva": _geneva, "novikov": _novikov, "ball_clutch": _ball_clutch,
+            "epicycle_rim": _epicycle_rim, "planetary": _planetary}
 
 
 def figures(res) -> dict:

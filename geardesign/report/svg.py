@@ -83,7 +83,8 @@ def _finite(v) -> bool:
 
 def chart_svg(c: Chart, role_label: str = "") -> str:
     """The chart as an inline ``<svg>`` element."""
-    legend_row = len(c.series) > 1 or bool(c.series and c.series[0].marker)
+    labelled = [s for s in c.series if s.label]
+    legend_row = len(labelled) > 1 or bool(labelled and labelled[0].marker)
     L, R, B = 70, 16, 46
     T = 12 + (18 if c.title else 0) + (18 if legend_row else 0)
     W, H = c.width, c.height
@@ -165,6 +166,8 @@ def chart_svg(c: Chart, role_label: str = "") -> str:
     if legend_row:                # one row above the frame, never over the data
         lx, ly = L, T - 8
         for label, color, dash, line in legend:
+            if lx + 30 + 6.5 * len(label) > W - R:
+                break                  # no room left in the row: the caption explains
             d = f' stroke-dasharray="{dash}"' if dash else ""
             out.append(f'<line x1="{lx}" x2="{lx + 18}" y1="{ly - 4}" y2="{ly - 4}" '
                        f'stroke="{color}" stroke-width="{1.6 if line else 6}"{d}/>'
