@@ -245,7 +245,7 @@ def _write_report_plot(result, plot: Path) -> None:
     svg = plot_svg(result)
     if svg is None:
         _err(f"{plot}: --plot: a {result.kind} result has no picture; pictures: spur, pzdn "
-             f"(with [startup]), shaft, drive, sweep")
+             f"(with [startup]), {', '.join(PLOT_KINDS)}, sweep")
         raise typer.Exit(2)
     if plot.suffix.lower() != ".svg":
         _err(f"{plot}: --plot of a {result.kind} result writes .svg")
@@ -307,8 +307,8 @@ OPT_QUIET = typer.Option(False, "--quiet", "-q",
 ARG_SPECS = typer.Argument(..., help="Spec file(s), TOML.", show_default=False)
 OPT_PLOT = typer.Option(None, "--plot", help="Write the start-up transient of a pzdn spec "
                         "with [startup], or the mesh of a spur pair, to FILE (.png or .svg; "
-                        "needs matplotlib); the diagrams of a shaft, the power flow and heat "
-                        "balance of a drive to FILE.svg.")
+                        "needs matplotlib); the report's pictures of a shaft, drive, "
+                        "planetary, geneva, novikov, ball_clutch or epicycle_rim to FILE.svg.")
 OPT_PROFILE = typer.Option(None, "--profile", help="Write the tooth profiles of a spur pair "
                            "in mesh to FILE (.dxf needs ezdxf, or .svg).")
 OPT_SELECT = typer.Option(False, "--select",
@@ -343,7 +343,7 @@ def run_cmd(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT
           keep_going=keep_going, profile=profile)
 
 
-PLOT_KINDS = ("shaft", "drive")
+PLOT_KINDS = ("shaft", "drive", "planetary", "geneva", "novikov", "ball_clutch", "epicycle_rim")
 """Kinds besides spur and pzdn whose command has ``--plot`` (the report's pictures)."""
 
 

@@ -343,20 +343,16 @@ class _Doc:
         toc = []
         for f in figs.get("", []):
             self.figure(f)
-        for sec in r.sections:
-            sid = self.ids(key, sec.key)
-            toc.append((level, sid, sec.title))
-            self.add(f'<h{h} id="{sid}">{e(sec.title)}</h{h}>')
-            for f in figs.get(sec.key, []):
+        blocks = ([(sec.key, sec.title, lambda sec=sec: self.rows_table(sec.rows, True))
+                   for sec in r.sections]
+                  + [(t.key, t.title, lambda t=t: self.data_table(t)) for t in r.tables])
+        for bkey, title, table in blocks:
+            bid = self.ids(key, bkey)
+            toc.append((level, bid, title))
+            self.add(f'<h{h} id="{bid}">{e(title)}</h{h}>')
+            for f in figs.get(bkey, []):
                 self.figure(f)
-            self.rows_table(sec.rows, True)
-        for t in r.tables:
-            tid = self.ids(key, t.key)
-            toc.append((level, tid, t.title))
-            self.add(f'<h{h} id="{tid}">{e(t.title)}</h{h}>')
-            for f in figs.get(t.key, []):
-                self.figure(f)
-            self.data_table(t)
+            table()
         groups: dict[str, list] = {}
         for pkey, title, part in r.parts:
             groups.setdefault(pkey, []).append((title, part))
