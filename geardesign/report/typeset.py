@@ -5,7 +5,9 @@ the part after the first underscore is a subscript and Greek names become letter
 Units are written as the JSON document has them (``mm^2/s``, ``min^-1``, ``kg*m^2``)
 and printed as an engineer writes them (mm²/s, min⁻¹, kg·m²).  Numbers are rounded to
 the precision of their unit (:data:`DECIMALS`) and keep at least :data:`SIGNIFICANT`
-significant digits.
+significant digits.  The printing rules are those of [ISO80000-1] clause 7 (subscripts of
+quantity symbols, the half-high dot of a product of units, powers as superscripts); the
+gear symbols themselves are those of the standards cited in each row ([ISO21771]).
 """
 
 from __future__ import annotations
