@@ -36,7 +36,8 @@ def drive():
     ("K_Hbeta", "K<sub>Hβ</sub>"), ("eps_alpha", "ε<sub>α</sub>"),
     ("S_H,st1", "S<sub>H,st1</sub>"), ("sigma_Hlim", "σ<sub>Hlim</sub>"),
     ("b_w/d_w1", "b<sub>w</sub>/d<sub>w1</sub>"), ("x_min1", "x<sub>min1</sub>"),
-    ("<i>_x", "&lt;i&gt;<sub>x</sub>"), ("theta", "θ"), ("u", "u")])
+    ("<i>_x", "&lt;i&gt;<sub>x</sub>"), ("theta", "θ"), ("u", "u"), ("omega2", "ω2"),
+    ("rotation_ring", "rotation_ring"), ("T_lim", "T<sub>lim</sub>")])
 def test_symbols_are_typeset(sym, html):
     assert symbol_html(sym) == html
 

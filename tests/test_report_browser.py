@@ -1,7 +1,8 @@
 """The HTML report in a real browser (the system's Chromium through Playwright), and its
 PDF.  Every example spec is rendered and looked at at 1280×800: nothing wider than the
 window, the verdict and the governing margins inside the first screen, every picture
-drawn and not empty, no console error, no request leaving the document.
+drawn and not empty, no console error, no request leaving the document; and each is
+printed to PDF.
 
 Skipped, with the reason, where Playwright or a Chromium is not installed (a developer's
 laptop); CI installs both (``.ci/run``).  ``GEARDESIGN_SCREENSHOTS=docs/img`` also writes
@@ -109,6 +110,12 @@ def test_report_in_the_browser(page, spec, tmp_path):
     for fig in look["figs"]:
         assert fig["w"] > 0 and fig["h"] > 0 and fig["kids"] > 0, fig
     assert page.errors == [] and page.requests == []
+    # and as PDF: the print style sheet lays out every report
+    page.emulate_media(media="print")
+    try:
+        assert page.pdf(format="A4").startswith(b"%PDF")
+    finally:
+        page.emulate_media(media="screen")
     out = os.environ.get("GEARDESIGN_SCREENSHOTS")
     if out and spec.stem in DOC_SHOTS:
         page.screenshot(path=str(Path(out) / DOC_SHOTS[spec.stem]))

@@ -70,7 +70,7 @@ font-weight:600}
 .findings .fix{color:var(--mute)}
 .none{color:var(--mute)}
 nav.toc{border-top:1px solid var(--line);margin-top:16px;padding-top:4px}
-nav.toc ol{columns:3 16em;margin:.3em 0;padding-left:1.4em}nav.toc ol ol{columns:1;padding-left:1.2em}
+nav.toc ol{columns:3 16em;margin:.3em 0;padding-left:2.2em}nav.toc ol ol{columns:1;padding-left:1.6em}
 nav.toc li{break-inside:avoid}
 a{color:#1a57b5;text-decoration:none}a:hover{text-decoration:underline}
 .scroll{overflow-x:auto;max-width:100%}

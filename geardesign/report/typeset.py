@@ -50,9 +50,17 @@ def symbol_html(sym: str) -> str:
 _OPERATORS = re.compile(r"([/·*() ]+)")
 
 
+_GREEK_BASE = re.compile(rf"^({_NAMES})(\d*)$")
+_WORD = re.compile(r"^[a-z]{4,}\d*$")
+
+
 def _term_html(sym: str) -> str:
     base, sep, sub = sym.partition("_")
-    base = GREEK.get(base, base)
+    m = _GREEK_BASE.match(base)
+    if m:
+        base = GREEK[m.group(1)] + m.group(2)
+    elif _WORD.match(base):          # a key used as its own symbol ("rotation_ring")
+        return escape(sym)
     if not sep or not sub:
         return escape(base + sep)
     sub = _GREEK_IN_SUB.sub(lambda m: GREEK[m.group(1)], sub)
