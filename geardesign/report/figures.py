@@ -22,7 +22,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from geardesign.report.svg import PALETTE, Chart, Series, chart_svg
-from geardesign.report.typeset import e, number_text, unit_text
+from geardesign.report.typeset import SUPERSCRIPT, e, number_text, unit_text
 
 
 @dataclass(frozen=True)
@@ -110,6 +110,11 @@ def _drive(res) -> dict:
     d = _rows(res, "drive")
     figs = [Figure("Power flow: motor → stages → output, torque and speed at each shaft, "
                    "ratio and efficiency of each stage", _power_flow(stages.rows, d))]
+    bearings = _table(res, "bearings")
+    life = _bearing_lives(bearings.rows, res.checks) if bearings is not None else ""
+    if life:
+        figs.append(Figure("Bearing lives (logarithmic scale) against the required life "
+                           "(red line), and the radial load of each bearing", life))
     losses = _table(res, "losses")
     thermal = _rows(res, "thermal")
     heat = _heat_balance(losses, thermal) if losses is not None else ""
@@ -183,6 +188,58 @@ def _power_flow(rows: list, drive: dict) -> str:
         out.append(f'<text x="{x + gap + 55}" y="80" text-anchor="middle">'
                    f'{e(number_text(Po.value, "kW"))} kW</text>')
     out.append("</svg>")
+    return "".join(out)
+
+
+def _bearing_lives(rows: list, checks: list) -> str:
+    """Horizontal bars of the bearings' lives on a logarithmic scale, the required life
+    (the limit of the ``BEARING_…`` checks) as a red line, the radial load beside."""
+    import math
+
+    lives = [(r, _val(r, "life")) for r in rows]
+    lives = [(r, v) for r, v in lives if v is not None and v > 0]
+    need = next((c.limit for c in checks if c.code.startswith("BEARING_")
+                 and isinstance(c.limit, (int, float)) and c.limit > 0), None)
+    if not lives:
+        return ""
+    values = [v for _, v in lives] + ([need] if need else [])
+    lo = 10 ** math.floor(math.log10(min(values)))
+    hi = 10 ** math.ceil(math.log10(max(values)))
+    if hi <= lo:
+        hi = lo * 10
+    W, L, R, bar = 640, 80, 200, 16
+    H = 30 + len(lives) * (bar + 8) + 36
+    pw = W - L - R
+
+    def X(v):
+        return L + (math.log10(v) - math.log10(lo)) / (math.log10(hi) - math.log10(lo)) * pw
+
+    out = [f'<svg class="chart" viewBox="0 0 {W} {H}" role="img" aria-label="bearing lives" '
+           f'xmlns="http://www.w3.org/2000/svg" font-family="sans-serif" font-size="11">']
+    y = 20
+    for r, v in lives:
+        ok = need is None or v >= need
+        out.append(f'<text x="{L - 6}" y="{y + 12}" text-anchor="end">shaft '
+                   f'{e(r.get("shaft", ""))}, {e(r.get("bearing", ""))}</text>'
+                   f'<rect x="{L}" y="{y}" width="{max(1.0, X(v) - L):.1f}" height="{bar}" '
+                   f'fill="{PALETTE[2] if ok else PALETTE[1]}"/>')
+        fr = _val(r, "F_r")
+        out.append(f'<text x="{W - R + 6}" y="{y + 12}">{e(number_text(v, "h"))} h'
+                   + (f", F_r {e(number_text(fr, 'N'))} N" if fr is not None else "")
+                   + "</text>")
+        y += bar + 8
+    k = lo
+    while k <= hi * 1.0001:
+        out.append(f'<line x1="{X(k):.1f}" x2="{X(k):.1f}" y1="14" y2="{y}" stroke="#ddd"/>'
+                   f'<text x="{X(k):.1f}" y="{y + 14}" text-anchor="middle">'
+                   f'10{str(round(math.log10(k))).translate(SUPERSCRIPT)}</text>')
+        k *= 10
+    if need:
+        out.append(f'<line x1="{X(need):.1f}" x2="{X(need):.1f}" y1="14" y2="{y}" '
+                   f'stroke="#b22222" stroke-width="2"/><text x="{X(need) + 4:.1f}" y="12" '
+                   f'fill="#b22222">required {e(number_text(need, "h"))} h</text>')
+    out.append(f'<text x="{L + pw / 2:.1f}" y="{H - 6}" text-anchor="middle">life L, h '
+               f'(logarithmic)</text></svg>')
     return "".join(out)
 
 
