@@ -307,7 +307,7 @@ OPT_QUIET = typer.Option(False, "--quiet", "-q",
 ARG_SPECS = typer.Argument(..., help="Spec file(s), TOML.", show_default=False)
 OPT_PLOT = typer.Option(None, "--plot", help="Write the start-up transient of a pzdn spec "
                         "with [startup], or the mesh of a spur pair, to FILE (.png or .svg; "
-                        "needs matplotlib); the report's pictures of a shaft, drive, "
+                        "needs matplotlib); the report's pictures of a shaft, drive, worm, "
                         "planetary, geneva, novikov, ball_clutch or epicycle_rim to FILE.svg.")
 OPT_PROFILE = typer.Option(None, "--profile", help="Write the tooth profiles of a spur pair "
                            "in mesh to FILE (.dxf needs ezdxf, or .svg).")
@@ -343,7 +343,7 @@ def run_cmd(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT
           keep_going=keep_going, profile=profile)
 
 
-PLOT_KINDS = ("shaft", "drive", "planetary", "geneva", "novikov", "ball_clutch", "epicycle_rim")
+PLOT_KINDS = ("shaft", "drive", "worm", "planetary", "geneva", "novikov", "ball_clutch", "epicycle_rim")
 """Kinds besides spur and pzdn whose command has ``--plot`` (the report's pictures)."""
 
 

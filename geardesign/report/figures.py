@@ -11,6 +11,7 @@ geometry), never recomputed; a kind without a picture gets none.
   each stage) and the heat balance (losses per stage and kind, sump temperature);
 * sweep: the ranked variants and the Pareto front in the plane of the first two
   objectives, each point labelled with its rank;
+* worm: the pair in the mid-plane of the wheel, to scale;
 * planetary: the layout to scale (sun, planets on the carrier circle, ring or rings);
 * pzdn: the start-up torques and speeds; geneva: the motion law and the load over the
   crank angle; novikov: stresses and loads over the contact phases; ball clutch: the
@@ -458,7 +459,50 @@ def _layout(g: dict, a_w: float, angles: list) -> str:
     return "".join(out)
 
 
-_BY_KIND = {"spur": _spur, "shaft": _shaft, "drive": _drive, "sweep": _sweep, "pzdn": _pzdn,
+def _worm(res) -> dict:
+    """The worm pair in the mid-plane of the wheel, to scale: the wheel's outside, tip,
+    reference and root circles, the worm as its tip cylinder of length b1 with the
+    reference and root lines, the centre distance a_w."""
+    g = _rows(res, "geometry")
+    need = ("a_w", "d1", "d_a1", "d_f1", "d2", "d_a2", "d_f2")
+    if not all(k in g and isinstance(g[k].value, (int, float)) for k in need):
+        return {}
+    v = {k: float(g[k].value) for k in need}
+    dam2 = float(g["d_aM2"].value) if "d_aM2" in g else v["d_a2"]
+    b1 = float(g["b1"].value) if "b1" in g else 2.0 * v["d_a1"]
+    a = v["a_w"]
+    R = max(dam2 / 2, b1 / 2) * 1.08
+    top = -(a + v["d_a1"] / 2) - 0.06 * R
+    height = (dam2 / 2 + 0.06 * R) - top
+    sw = R / 220
+    out = [f'<svg class="diagram" viewBox="{-R:.3f} {top:.3f} {2 * R:.3f} {height:.3f}" '
+           f'role="img" aria-label="worm pair" xmlns="http://www.w3.org/2000/svg" '
+           f'style="max-width:520px" font-family="sans-serif" font-size="{R / 22:.3f}">']
+    for d, dash, color in ((dam2, "", "#b22222"), (v["d_a2"], "", "#b22222"),
+                           (v["d2"], f"{6 * sw} {2 * sw} {sw} {2 * sw}", "#555"),
+                           (v["d_f2"], f"{4 * sw} {2 * sw}", "#b22222")):
+        dd = f' stroke-dasharray="{dash}"' if dash else ""
+        out.append(f'<circle cx="0" cy="0" r="{d / 2:.3f}" fill="none" stroke="{color}" '
+                   f'stroke-width="{sw:.3f}"{dd}/>')
+    y0 = -a
+    out.append(f'<rect x="{-b1 / 2:.3f}" y="{y0 - v["d_a1"] / 2:.3f}" width="{b1:.3f}" '
+               f'height="{v["d_a1"]:.3f}" fill="#dbe5f5" stroke="#1f4e9e" '
+               f'stroke-width="{sw:.3f}"/>')
+    for d, dash in ((v["d1"], f"{6 * sw} {2 * sw} {sw} {2 * sw}"), (v["d_f1"], f"{4 * sw} {2 * sw}")):
+        for sgn in (-1, 1):
+            y = y0 + sgn * d / 2
+            out.append(f'<line x1="{-b1 / 2:.3f}" x2="{b1 / 2:.3f}" y1="{y:.3f}" y2="{y:.3f}" '
+                       f'stroke="#1f4e9e" stroke-width="{sw / 2:.3f}" stroke-dasharray="{dash}"/>')
+    out.append(f'<line x1="0" y1="0" x2="0" y2="{y0:.3f}" stroke="#2e8b57" '
+               f'stroke-width="{sw:.3f}"/><text x="{2 * sw:.3f}" y="{y0 / 2:.3f}" '
+               f'fill="#2e8b57">a_w = {e(number_text(a, "mm"))} mm</text></svg>')
+    return {"geometry": [Figure("Worm pair in the mid-plane of the wheel, to scale: wheel "
+                                "outside, tip, reference (dash-dot) and root (dashed) "
+                                "circles; worm tip cylinder of length b1 with its reference "
+                                "and root lines", "".join(out))]}
+
+
+_BY_KIND = {"worm": _worm, "spur": _spur, "shaft": _shaft, "drive": _drive, "sweep": _sweep, "pzdn": _pzdn,
             "geneva": _geneva, "novikov": _novikov, "ball_clutch": _ball_clutch,
             "epicycle_rim": _epicycle_rim, "planetary": _planetary}
 
