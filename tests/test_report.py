@@ -176,3 +176,19 @@ def test_cold_html_report_imports_no_matplotlib(tmp_path):
                        cwd=Path(__file__).resolve().parent.parent)
     assert r.returncode == 0, r.stderr[-500:]
     assert "matplotlib" not in r.stderr and "playwright" not in r.stderr
+
+
+def test_plot_svg_of_the_report_pictures(tmp_path):
+    from tests.helpers_cli import cli
+
+    code, _, err = cli("shaft", SPECS / "shaft_reducer_output.toml", "--plot",
+                       tmp_path / "s.svg", "-q")
+    assert code == 0, err
+    text = (tmp_path / "s.svg").read_text()
+    assert text.startswith("<?xml") and text.count('class="chart"') == 3
+    code, _, err = cli("shaft", SPECS / "shaft_reducer_output.toml", "--plot",
+                       tmp_path / "s.png", "-q")
+    assert code == 2 and err.endswith("--plot of a shaft result writes .svg\n")
+    code, _, err = cli("run", SPECS / "bearing_select.toml", "--plot", tmp_path / "b.svg")
+    assert code == 2 and "a bearing result has no picture" in err
+    assert not (tmp_path / "b.svg").exists() and not (tmp_path / "s.png").exists()
