@@ -192,3 +192,12 @@ def test_plot_svg_of_the_report_pictures(tmp_path):
     code, _, err = cli("run", SPECS / "bearing_select.toml", "--plot", tmp_path / "b.svg")
     assert code == 2 and "a bearing result has no picture" in err
     assert not (tmp_path / "b.svg").exists() and not (tmp_path / "s.png").exists()
+
+
+def test_pdf_refused_when_the_browser_does_not_start(tmp_path):
+    pytest.importorskip("playwright")
+    out = tmp_path / "r.pdf"
+    env = {**os.environ, "GEARDESIGN_CHROMIUM": "/bin/false"}
+    r = cli_process("run", SPECS / "spur_plain.toml", "-o", out, env=env)
+    assert r.returncode == 2 and not out.exists()
+    assert r.stderr.count("\n") == 1 and "did not start as Chromium" in r.stderr

@@ -59,8 +59,15 @@ def browser():
         raise BrowserMissing(why)
     from playwright.sync_api import sync_playwright
 
+    from playwright.sync_api import Error
+
     with sync_playwright() as p:
-        b = p.chromium.launch(executable_path=chromium_path(), args=ARGS)
+        try:
+            b = p.chromium.launch(executable_path=chromium_path(), args=ARGS, timeout=60_000)
+        except Error as exc:        # not a Chromium, or one that cannot start here
+            first = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
+            raise BrowserMissing(f"{chromium_path()} did not start as Chromium ({first})") \
+                from None
         try:
             yield b
         finally:
