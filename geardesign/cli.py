@@ -45,14 +45,15 @@ class Format(str, Enum):
     markdown = "markdown"
     csv = "csv"
     html = "html"
+    pdf = "pdf"
 
 
 FORMAT_HELP = ("Output format. Default: table on a terminal, json when stdout is a pipe or "
                "file; with --output, taken from the file extension (.json, .jsonl, .md, .csv, "
-               ".html, .txt).")
+               ".html, .pdf, .txt). pdf needs the report extra and a Chromium.")
 
 EXTENSIONS = {".json": "json", ".jsonl": "jsonl", ".md": "markdown", ".markdown": "markdown",
-              ".csv": "csv", ".html": "html", ".htm": "html", ".txt": "table"}
+              ".csv": "csv", ".html": "html", ".htm": "html", ".pdf": "pdf", ".txt": "table"}
 """Report formats by the extension of --output."""
 
 
@@ -171,12 +172,59 @@ def _overridable(spec, schema, field, mode: str) -> None:
         f'of "{written}"{remove}', written))
 
 
-def _write(path: Path, text: str) -> None:
-    """``text`` to ``path`` through the one atomic writer; a failure is one line, exit 2."""
-    from geardesign.core.io import write_atomic
+def _pdf_ready(fmt_name: str, output: Optional[Path]) -> None:
+    """A PDF report needs Playwright and a Chromium, and a file or a pipe to go to: one
+    line and exit 2 before any work when one is missing."""
+    if fmt_name != "pdf":
+        return
+    from geardesign.report.browser import INSTALL_HINT, missing
+
+    why = missing()
+    if why:
+        _err(f"geardesign: --format pdf: {why}; install: {INSTALL_HINT}")
+        raise typer.Exit(2)
+    if output is None and sys.stdout.isatty():
+        _err("geardesign: --format pdf writes a file: give --output FILE.pdf")
+        raise typer.Exit(2)
+
+
+def _report(results: list, fmt_name: str, output: Optional[Path], quiet: bool,
+            color: bool = False, width: Optional[int] = None) -> None:
+    """The report in ``fmt_name`` to ``output`` (atomically) or standard output."""
+    from geardesign.core.render import render, render_pdf
+
+    if fmt_name == "pdf":
+        from geardesign.report.browser import BrowserMissing
+
+        try:
+            data = render_pdf(results)
+        except BrowserMissing as exc:
+            _err(f"geardesign: --format pdf: {exc}")
+            raise typer.Exit(2)
+        if output is not None:
+            _write(output, data)
+        elif not quiet:
+            sys.stdout.buffer.write(data)
+            sys.stdout.flush()
+        return
+    text = render(results, fmt_name, color=color, width=width)
+    if output is not None:
+        _write(output, text)
+    elif not quiet:
+        sys.stdout.write(text)
+
+
+def _write(path: Path, text) -> None:
+    """``text`` (or bytes) to ``path`` through the one atomic writer; a failure is one
+    line, exit 2."""
+    from geardesign.core.io import atomic_path, write_atomic
 
     try:
-        write_atomic(path, text)
+        if isinstance(text, bytes):
+            with atomic_path(path) as tmp:
+                Path(tmp).write_bytes(text)
+        else:
+            write_atomic(path, text)
     except InputError as exc:
         _err(f"{path}: cannot write: {exc.problems[0].message}")
         raise typer.Exit(2)
@@ -194,6 +242,9 @@ def _write_plot(results: list, plot: Path) -> None:
     if not with_history and len(results) == 1 and results[0].kind == "spur":
         _write_spur_file(results[0], plot, "write_plot")
         return
+    if not with_history and len(results) == 1:
+        _write_report_plot(results[0], plot)
+        return
     if len(with_history) != 1:
         _err(f"{plot}: --plot needs exactly one spec with a start-up time history (a pzdn "
              f"spec with [startup] and history_points >= 2); {len(with_history)} given")
@@ -203,6 +254,22 @@ def _write_plot(results: list, plot: Path) -> None:
     except PlotError as exc:
         _err(f"{plot}: {exc}")
         raise typer.Exit(2)
+
+
+def _write_report_plot(result, plot: Path) -> None:
+    """``--plot FILE.svg`` of a kind whose report has pictures (shaft diagrams, a drive's
+    power flow and heat balance): the report's pictures in one SVG."""
+    from geardesign.report.figures import plot_svg
+
+    svg = plot_svg(result)
+    if svg is None:
+        _err(f"{plot}: --plot: a {result.kind} result has no picture; pictures: spur, pzdn "
+             f"(with [startup]), {', '.join(PLOT_KINDS)}, sweep")
+        raise typer.Exit(2)
+    if plot.suffix.lower() != ".svg":
+        _err(f"{plot}: --plot of a {result.kind} result writes .svg")
+        raise typer.Exit(2)
+    _write(plot, svg)
 
 
 def _write_spur_file(result, path: Path, writer: str) -> None:
@@ -220,9 +287,8 @@ def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quie
           expect_kind: Optional[str] = None, mode: Optional[str] = None,
           plot: Optional[Path] = None, keep_going: bool = False,
           profile: Optional[Path] = None) -> None:
-    from geardesign.core.render import render
-
     fmt_name = _choose_format(fmt, output)
+    _pdf_ready(fmt_name, output)
     _targets(output, plot, profile)
     results, problems = _compute_all(paths, expect_kind, mode)
     if problems:
@@ -243,15 +309,11 @@ def _emit(paths: List[Path], fmt: Optional[Format], output: Optional[Path], quie
         from geardesign.core.render import terminal_width
 
         width = terminal_width()
-    text = render(results, fmt_name, color=color, width=width)
     code = 2 if problems else max(r.exit_code for r in results)
-    if output is not None:
-        _write(output, text)
-        if not quiet:
-            verdicts = ", ".join(f"{r.source}: {r.verdict}" for r in results)
-            _err(f"wrote {output} ({verdicts})")
-    elif not quiet:
-        sys.stdout.write(text)
+    _report(results, fmt_name, output, quiet, color, width)
+    if output is not None and not quiet:
+        verdicts = ", ".join(f"{r.source}: {r.verdict}" for r in results)
+        _err(f"wrote {output} ({verdicts})")
     raise typer.Exit(code)
 
 
@@ -264,7 +326,8 @@ OPT_QUIET = typer.Option(False, "--quiet", "-q",
 ARG_SPECS = typer.Argument(..., help="Spec file(s), TOML.", show_default=False)
 OPT_PLOT = typer.Option(None, "--plot", help="Write the start-up transient of a pzdn spec "
                         "with [startup], or the mesh of a spur pair, to FILE (.png or .svg; "
-                        "needs matplotlib).")
+                        "needs matplotlib); the report's pictures of a shaft, drive, worm, "
+                        "planetary, geneva, novikov, ball_clutch or epicycle_rim to FILE.svg.")
 OPT_PROFILE = typer.Option(None, "--profile", help="Write the tooth profiles of a spur pair "
                            "in mesh to FILE (.dxf needs ezdxf, or .svg).")
 OPT_SELECT = typer.Option(False, "--select",
@@ -301,6 +364,10 @@ def run_cmd(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT
           keep_going=keep_going, profile=profile)
 
 
+PLOT_KINDS = ("shaft", "drive", "worm", "planetary", "geneva", "novikov", "ball_clutch", "epicycle_rim")
+"""Kinds besides spur and pzdn whose command has ``--plot`` (the report's pictures)."""
+
+
 def _kind_command(kind: str):
     """``geardesign <kind>``: only the options that apply to that calculator."""
     if kind == "bearing":
@@ -322,6 +389,12 @@ def _kind_command(kind: str):
                     profile: Optional[Path] = OPT_PROFILE) -> None:
             _emit(specs, format, output, quiet, expect_kind=kind, plot=plot,
                   keep_going=keep_going, profile=profile)
+    elif kind in PLOT_KINDS:
+        def command(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
+                    output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET,
+                    keep_going: bool = OPT_KEEP_GOING, plot: Optional[Path] = OPT_PLOT) -> None:
+            _emit(specs, format, output, quiet, expect_kind=kind, plot=plot,
+                  keep_going=keep_going)
     else:
         def command(specs: List[Path] = ARG_SPECS, format: Optional[Format] = OPT_FORMAT,
                     output: Optional[Path] = OPT_OUTPUT, quiet: bool = OPT_QUIET,
@@ -421,10 +494,10 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
               quiet: bool = OPT_QUIET) -> None:
     """Sweep a spur pair over ranges of its data: every variant rated by the vectorised
     kernel, ranked by the objectives, with the Pareto front (exit 1 when none is feasible)."""
-    from geardesign.core.render import render
     from geardesign.spur import sweep as SW
 
     fmt_name = _choose_format(format, output)
+    _pdf_ready(fmt_name, output)
     if data is not None and data.suffix.lower() not in (".csv", ".parquet"):
         _err(f"{data}: --data must end in .csv or .parquet")
         raise typer.Exit(2)
@@ -506,12 +579,8 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
     to_terminal = output is None and sys.stdout.isatty()
     from geardesign.core.render import terminal_width
 
-    text = render([res], fmt_name, color=to_terminal and not os.environ.get("NO_COLOR"),
-                  width=terminal_width() if to_terminal else None)
-    if output is not None:
-        _write(output, text)
-    elif not quiet:
-        sys.stdout.write(text)
+    _report([res], fmt_name, output, quiet, to_terminal and not os.environ.get("NO_COLOR"),
+            terminal_width() if to_terminal else None)
     raise typer.Exit(res.exit_code)
 
 

@@ -15,11 +15,11 @@ PLAIN = SPECS / "spur_plain.toml"
 
 
 def test_unknown_output_extension_is_refused_before_computing(tmp_path):
-    code, out, err = cli("run", PLAIN, "--output", tmp_path / "r.pdf")
+    code, out, err = cli("run", PLAIN, "--output", tmp_path / "r.docx")
     assert code == 2 and out == ""
-    assert err == (f"{tmp_path / 'r.pdf'}: cannot write a report as .pdf; use one of .json, "
-                   ".jsonl, .md, .markdown, .csv, .html, .htm, .txt or give --format\n")
-    assert not (tmp_path / "r.pdf").exists()
+    assert err == (f"{tmp_path / 'r.docx'}: cannot write a report as .docx; use one of .json, "
+                   ".jsonl, .md, .markdown, .csv, .html, .htm, .pdf, .txt or give --format\n")
+    assert not (tmp_path / "r.docx").exists()
 
 
 def test_html_and_csv_reports(tmp_path):

@@ -14,7 +14,7 @@ from geardesign import __version__
 from geardesign.core.result import Check, Result, Row, cleaned
 from geardesign.core.text import escape_controls, json_text
 
-FORMATS = ("table", "json", "jsonl", "markdown", "csv", "html")
+FORMATS = ("table", "json", "jsonl", "markdown", "csv", "html", "pdf")
 
 _STATUS = {  # (failed?, severity) -> (mark, word, rich style)
     (False, "error"): ("✔", "ok", "green"),
@@ -421,57 +421,20 @@ def to_csv(results: list[Result]) -> str:
 
 
 def to_html(results: list[Result]) -> str:
-    """A self-contained HTML report (the Markdown report's content as tables)."""
-    from html import escape
+    """The self-contained HTML report (:mod:`geardesign.report.html`)."""
+    from geardesign.report.html import to_html as html
 
-    def e(x) -> str:
-        return escape(escape_controls(str(x)))
+    return html(results)
 
-    parts = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
-             "<title>geardesign report</title><style>body{font-family:sans-serif;margin:2em}"
-             "table{border-collapse:collapse;margin:0.5em 0 1.5em}td,th{border:1px solid #ccc;"
-             "padding:2px 8px}td.v{text-align:right;font-variant-numeric:tabular-nums}"
-             ".fail{color:#b00;font-weight:bold}.pass{color:#070}</style></head><body>"]
 
-    def rows(title: str, rs: list[Row], with_source: bool) -> None:
-        parts.append(f"<h3>{e(title)}</h3><table><tr><th>symbol</th><th>name</th>"
-                     f"<th>value</th><th>unit</th>{'<th>source</th>' if with_source else ''}</tr>")
-        for row in rs:
-            value = fmt(row.value) + (" (assumed)" if row.assumed else "")
-            parts.append(f"<tr><td>{e(row.symbol)}</td><td>{e(row.name)}</td>"
-                         f"<td class=v>{e(value)}</td><td>{e(row.unit or '')}</td>"
-                         + (f"<td>{e(row.source)}</td>" if with_source else "") + "</tr>")
-        parts.append("</table>")
+def render_pdf(results: list[Result]) -> bytes:
+    """The HTML report printed to PDF by Chromium (:mod:`geardesign.report.pdf`);
+    :class:`geardesign.report.browser.BrowserMissing` when no browser is installed."""
+    from geardesign.report.html import document_title
+    from geardesign.report.pdf import html_to_pdf
 
-    def one(r: Result, level: int) -> None:
-        parts.append(f"<h{level}>{e(_header(r))}</h{level}>")
-        parts.append(f"<p>Methods: {e(', '.join(r.methods))}</p>")
-        for sec in r.sections:
-            rows(sec.title, sec.rows, True)
-        for t in r.tables:
-            parts.append(f"<h3>{e(t.title)}</h3><table><tr>"
-                         + "".join(f"<th>{e(h)}{e(f' [{u}]' if u not in (None, '-') else '')}</th>"
-                                   for _, h, u in t.columns) + "</tr>")
-            for row in t.rows:
-                parts.append("<tr>" + "".join(f"<td class=v>{e(fmt(row.get(k)))}</td>"
-                                              for k, _, _ in t.columns) + "</tr>")
-            parts.append("</table>")
-        rows("Inputs", r.input_rows, False)
-        parts.append("<h3>Checks</h3><table><tr><th></th><th>code</th><th>message</th></tr>")
-        for c in r.checks:
-            mark, word, _ = _status(c)
-            cls = "fail" if (not c.passed and c.severity == "error") else "pass"
-            parts.append(f"<tr><td class={cls}>{e(mark + ' ' + word)}</td><td>{e(c.code)}</td>"
-                         f"<td>{e(c.message)}</td></tr>")
-        parts.append(f"</table><p class={'fail' if r.failed else 'pass'}>"
-                     f"{e(verdict_line(r))}</p>")
-        for _, title, part in r.parts:
-            one(part, min(level + 1, 6))
-
-    for r in results:
-        one(r, 2)
-    parts.append("</body></html>")
-    return "\n".join(parts) + "\n"
+    results = [cleaned(r) for r in results]
+    return html_to_pdf(to_html(results), document_title(results))
 
 
 def render(results: list[Result], fmt_name: str, color: bool = False, width: int | None = None) -> str:

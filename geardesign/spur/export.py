@@ -79,11 +79,10 @@ def write_profile(result, path) -> Path:
     ext = path.suffix.lower()
     if ext not in PROFILE_FORMATS:
         raise ExportError("the profile file must end in .dxf or .svg")
+    if ext == ".svg":
+        return _write_svg(result, path)
     g, allow = _pair_of(result)
-    m = mesh(g, allow)
-    if ext == ".dxf":
-        return _write_dxf(m, g, path)
-    return _write_svg(m, g, path)
+    return _write_dxf(mesh(g, allow), g, path)
 
 
 def _write_dxf(m, g, path: Path) -> Path:
@@ -120,33 +119,91 @@ def _write_dxf(m, g, path: Path) -> Path:
     return path
 
 
-def _svg_path(pts: np.ndarray) -> str:
-    head = f"M{pts[0, 0]:.6f},{-pts[0, 1]:.6f}"
-    body = " ".join(f"L{x:.6f},{-y:.6f}" for x, y in pts[1:])
-    return f"{head} {body} Z"
+def _svg_path(pts: np.ndarray, box=None, digits: int = 6) -> str:
+    """An outline as SVG path data (y up in the drawing is −y in SVG), closed; with ``box``
+    (xmin, ymin, xmax, ymax) only the runs of points inside it, each an open subpath."""
+    if box is None:
+        head = f"M{pts[0, 0]:.{digits}f},{-pts[0, 1]:.{digits}f}"
+        body = " ".join(f"L{x:.{digits}f},{-y:.{digits}f}" for x, y in pts[1:])
+        return f"{head} {body} Z"
+    inside = ((pts[:, 0] >= box[0]) & (pts[:, 0] <= box[2]) & (pts[:, 1] >= box[1])
+              & (pts[:, 1] <= box[3]))
+    out, pen = [], False
+    for (x, y), ok in zip(pts, inside):
+        if ok:
+            out.append(f"{'L' if pen else 'M'}{x:.{digits}f},{-y:.{digits}f}")
+        pen = bool(ok)
+    return " ".join(out)
 
 
-def _write_svg(m, g, path: Path) -> Path:
-    lo = np.minimum(m.pinion.min(axis=0), m.wheel.min(axis=0)) - 1.0
-    hi = np.maximum(m.pinion.max(axis=0), m.wheel.max(axis=0)) + 1.0
-    w, h = hi - lo
+PROFILE_STROKE = 0.03
+"""Stroke width of the tooth outlines as a fraction of the normal module: about 1 px at
+the size a browser shows the pair, and a fine line in a CAD program (1 unit = 1 mm)."""
+
+
+def profile_svg(result, zoom: bool = False) -> str:
+    """The pair in mesh as an ``<svg>`` element: both outlines, the pitch (dashed), base
+    (dotted), tip and root circles (thin), the line of action N1N2 with A, P and E; a
+    ``viewBox`` in mm (1 unit = 1 mm), strokes relative to the module
+    (:data:`PROFILE_STROKE`).  ``zoom``: the mesh region only (six modules or the path of
+    contact around the pitch point, as the ``--plot`` picture), for the report; else both
+    whole gears, for ``--profile FILE.svg``."""
+    from geardesign.spur.profile import mesh
+
+    g, allow = _pair_of(result)
+    m = mesh(g, allow)
     loa = line_of_action(g)
-    text = [
-        '<?xml version="1.0" encoding="UTF-8"?>',
-        f'<svg xmlns="http://www.w3.org/2000/svg" width="{w:.3f}mm" height="{h:.3f}mm" '
-        f'viewBox="{lo[0]:.6f} {-hi[1]:.6f} {w:.6f} {h:.6f}">',
-        '<!-- geardesign: transverse tooth profiles in mesh, 1 unit = 1 mm, y up in the '
-        'drawing is -y here -->',
-        f'<path id="pinion" fill="none" stroke="#1f4e9e" stroke-width="0.05" '
-        f'd="{_svg_path(m.pinion)}"/>',
-        f'<path id="wheel" fill="none" stroke="#b22222" stroke-width="0.05" '
-        f'd="{_svg_path(m.wheel)}"/>',
-        f'<line id="line_of_action" x1="{loa["ends"][0][0]:.6f}" y1="{-loa["ends"][0][1]:.6f}" '
-        f'x2="{loa["ends"][1][0]:.6f}" y2="{-loa["ends"][1][1]:.6f}" stroke="#2e8b57" '
-        f'stroke-width="0.05"/>',
-        '</svg>', '']
+    mn = g.inp.m_n
+    sw = PROFILE_STROKE * mn
+    if zoom:
+        span = max(6.0 * mn, 1.3 * float(np.linalg.norm(loa["E"] - loa["A"])))
+        cx = float(loa["P"][0])
+        cy = float(loa["P"][1])
+        box = (cx - 1.6 * span, cy - span, cx + 1.6 * span, cy + span)
+        lo, hi = np.array(box[:2]), np.array(box[2:])
+        clip = (box[0] - span, box[1] - span, box[2] + span, box[3] + span)
+        digits = 4
+    else:
+        lo = np.minimum(m.pinion.min(axis=0), m.wheel.min(axis=0)) - 1.0
+        hi = np.maximum(m.pinion.max(axis=0), m.wheel.max(axis=0)) + 1.0
+        clip, digits = None, 6
+    w, h = hi - lo
+    size = (f'width="{w:.3f}mm" height="{h:.3f}mm" ' if not zoom
+            else 'class="figure-profile" role="img" aria-label="tooth profiles in mesh" ')
+    text = [f'<svg xmlns="http://www.w3.org/2000/svg" {size}'
+            f'viewBox="{lo[0]:.6f} {-hi[1]:.6f} {w:.6f} {h:.6f}">']
+    if not zoom:
+        text.append('<!-- geardesign: transverse tooth profiles in mesh, 1 unit = 1 mm, '
+                    'y up in the drawing is -y here -->')
+    for name, centre, gi in (("pinion", (0.0, 0.0), g.g1), ("wheel", m.centre2, g.g2)):
+        for circle, d, dash in (("pitch", gi.d_w, f"{4 * sw:.4f} {2 * sw:.4f}"),
+                                ("base", gi.d_b, f"{sw:.4f} {2 * sw:.4f}"),
+                                ("tip", gi.d_a, ""), ("root", gi.d_f, "")):
+            dash_attr = f' stroke-dasharray="{dash}"' if dash else ""
+            text.append(f'<circle id="{name}_{circle}" cx="{centre[0]:.6f}" '
+                        f'cy="{-centre[1]:.6f}" r="{0.5 * abs(d):.6f}" fill="none" '
+                        f'stroke="#777" stroke-width="{0.5 * sw:.4f}"{dash_attr}/>')
+    text.append(f'<path id="pinion" fill="#9db7e0" fill-opacity="0.5" stroke="#1f4e9e" '
+                f'stroke-width="{sw:.4f}" d="{_svg_path(m.pinion, clip, digits)}"/>')
+    text.append(f'<path id="wheel" fill="#e8a0a0" fill-opacity="0.45" '
+                f'stroke="#b22222" stroke-width="{sw:.4f}" '
+                f'd="{_svg_path(m.wheel, clip, digits)}"/>')
+    (x1, y1), (x2, y2) = loa["ends"]
+    text.append(f'<line id="line_of_action" x1="{x1:.6f}" y1="{-y1:.6f}" x2="{x2:.6f}" '
+                f'y2="{-y2:.6f}" stroke="#2e8b57" stroke-width="{sw:.4f}"/>')
+    for key in ("A", "P", "E"):
+        px, py = loa[key]
+        text.append(f'<circle cx="{px:.6f}" cy="{-py:.6f}" r="{3 * sw:.4f}" fill="#2e8b57"/>'
+                    f'<text x="{px + 4 * sw:.6f}" y="{-py - 4 * sw:.6f}" '
+                    f'font-size="{0.6 * mn:.4f}" font-family="sans-serif">{key}</text>')
+    text.append("</svg>")
+    return "\n".join(text)
+
+
+def _write_svg(result, path: Path) -> Path:
+    text = '<?xml version="1.0" encoding="UTF-8"?>\n' + profile_svg(result) + "\n"
     with atomic_path(path) as tmp:
-        Path(tmp).write_text("\n".join(text), encoding="utf-8")
+        Path(tmp).write_text(text, encoding="utf-8")
     return path
 
 

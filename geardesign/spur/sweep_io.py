@@ -127,20 +127,26 @@ def plot_front(summary: dict, sw, path: Path) -> None:
 
     names = list(sw.objectives[:2]) if len(sw.objectives) > 1 else [sw.objectives[0], "margin"]
     (c1, _, u1, d1), (c2, _, u2, d2) = OBJECTIVES[names[0]], OBJECTIVES[names[1]]
-    fig, ax = plt.subplots(figsize=(7, 5))
-    for block, style, label in ((summary["head"], "o", "ranked"),
+    import textwrap
+
+    import numpy as np
+
+    fig, ax = plt.subplots(figsize=(7.5, 5.5), layout="constrained")
+    for block, style, label in ((summary["head"], "o", "ranked (number: rank)"),
                                 (summary["front"], "s", "Pareto front")):
         if block is not None and len(block["index"]):
-            import numpy as np
-
             order = np.argsort(block[c1], kind="stable")
             ax.plot(block[c1][order], block[c2][order], style, label=label, ms=4,
                     linestyle="-" if "front" in label else "none")
-    ax.set_xlabel(f"{d1} [{u1}]")
-    ax.set_ylabel(f"{d2} [{u2}]")
+            if "front" not in label:      # the ranked points carry their rank
+                for k, (x, y) in enumerate(zip(block[c1], block[c2])):
+                    ax.annotate(str(k + 1), (x, y), textcoords="offset points",
+                                xytext=(4, 4), fontsize=7)
+    # long axis titles wrapped, so that the constrained layout keeps them inside the figure
+    ax.set_xlabel(textwrap.fill(f"{d1} [{u1}]", 60))
+    ax.set_ylabel(textwrap.fill(f"{d2} [{u2}]", 40))
     ax.grid(True, alpha=0.3)
     ax.legend()
-    fig.tight_layout()
     from geardesign.core.io import atomic_path
 
     try:
