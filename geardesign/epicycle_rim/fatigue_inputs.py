@@ -15,6 +15,8 @@ from geardesign.epicycle_rim import endurance as E
 from geardesign.epicycle_rim import stress as ST
 from geardesign.epicycle_rim.spec import FATIGUE
 from geardesign.epicycle_rim.tables import mode_K_FE
+from geardesign.fatigue import gost25504 as g25
+from geardesign.fatigue import probability as FP
 
 _NAME = re.compile(r"^[a-z][a-z0-9_]*$")
 
@@ -129,7 +131,7 @@ def _material(spec: ValidatedSpec) -> Material:
     if m["sigma_m1"] >= m["sigma_u"]:
         raise InputError(Problem("material.sigma_m1", f"must be below sigma_u = "
                                  f"{fmt(m['sigma_u'])} MPa", m["sigma_m1"]))
-    if E.sensitivity_nu(m["sigma_u"]) <= 0.0:
+    if g25.sensitivity_nu(m["sigma_u"]) <= 0.0:
         raise InputError(Problem("material.sigma_u", "must be < 1475 MPa: the sensitivity "
                                  "ν_σ = 0.211 − 0.000143·σ_u of GOST 25.504-82 is <= 0 above",
                                  m["sigma_u"]))
@@ -275,9 +277,9 @@ def _probabilities(ring, f: Fatigue) -> None:
     o = f.options
     probs = [p / 100.0 for p in o.probabilities]
     for P in probs + [o.required_probability / 100.0]:
-        if 1.0 - E.normal_quantile(P) * v <= 0.0:
+        if 1.0 - FP.normal_quantile(P) * v <= 0.0:
             given = P in probs
-            pmax = 100.0 * E.normal_cdf(1.0 / v)
+            pmax = 100.0 * FP.normal_cdf(1.0 / v)
             raise InputError(Problem(
                 "fatigue.probabilities" if given else "fatigue.required_probability",
                 f"P = {P * 100:g} % makes σ_-1D(P) = σ_-1D·(1 − z_P·v) <= 0 with v = "

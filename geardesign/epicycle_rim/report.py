@@ -265,7 +265,7 @@ def _order_rows(sec, inp: Inputs, r: ResonanceResult) -> None:
             sec.add(f"mesh_ratio_stepwise_n{ob.order}",
                     None if ob.mesh_lo is None else [ob.mesh_lo, ob.mesh_hi], "-",
                     f"f_m/k0 (n = {ob.order})", "unstable mesh-frequency ratio, stepwise "
-                    f"stiffness (null: narrower than the search)", S.FLOQUET)
+                    "stiffness (null: narrower than the search)", S.FLOQUET)
     k0s = inp.resonance.natural_frequencies
     sec.add("k0", list(k0s), "Hz", "k0", "natural frequencies of the ring", S.B)
     for o in r.orders:

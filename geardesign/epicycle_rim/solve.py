@@ -1,6 +1,6 @@
 """The ring rim solved: ``solve(inputs) -> Solution``, pure (no rows, no spec, the inputs
-unchanged), from the functions of :mod:`.stress`, :mod:`.endurance`, :mod:`.mesh`,
-:mod:`.mathieu`, :mod:`.resonance` and :mod:`.rim`.  :mod:`.report` turns the record into
+unchanged), from the functions of :mod:`.stress`, :mod:`.endurance`,
+:mod:`geardesign.fatigue`, :mod:`.mesh`, :mod:`.mathieu`, :mod:`.resonance` and :mod:`.rim`.  :mod:`.report` turns the record into
 rows and checks.
 """
 
@@ -17,6 +17,8 @@ from geardesign.epicycle_rim import rim
 from geardesign.epicycle_rim import stress as ST
 from geardesign.epicycle_rim.fatigue_inputs import Fatigue, part_endurance
 from geardesign.epicycle_rim.inputs import Inputs, Planets, Ring, Vehicle, sun_planet_pair
+from geardesign.fatigue import gost25504 as g25
+from geardesign.fatigue import probability as FP
 
 # ----------------------------------------------------------------------------- geometry
 
@@ -117,14 +119,14 @@ def _lg_life(pe: E.PartEndurance, m_slope: float, f: Fatigue, eq: float, P: floa
     o = f.options
     if eq != eq:
         return math.nan
-    return E.lg_life(eq, pe.sigma_m1D, pe.v, P, m_slope, o.knee_cycles, o.slgn_alpha,
+    return FP.lg_life(eq, pe.sigma_m1D, pe.v, P, m_slope, o.knee_cycles, o.slgn_alpha,
                      o.slgn_beta)
 
 
 def _advice(ring: Ring, f: Fatigue, pe: E.PartEndurance, sigma_eq: float, P_req: float
             ) -> Advice:
     """The fillet hardening factor and radius that reach the required probability."""
-    u = E.normal_quantile(P_req)
+    u = FP.normal_quantile(P_req)
     v, va = pe.v, f.options.stress_scatter
     denom = 1.0 - u * u * v * v
     kv = rho = None
@@ -134,7 +136,7 @@ def _advice(ring: Ring, f: Fatigue, pe: E.PartEndurance, sigma_eq: float, P_req:
     if f.options.stress_concentration is None and f.options.stress_gradient is None:
         def prob(r: float) -> float:
             p = part_endurance(ring, f, r)
-            return E.probability_of_non_failure(sigma_eq, p.sigma_m1D, p.v, va)
+            return FP.probability_of_non_failure(sigma_eq, p.sigma_m1D, p.v, va)
 
         lo, hi = f.fillet.radius, 0.5 * f.fillet.root_chord * 0.999
         if prob(hi) >= P_req:
@@ -173,7 +175,7 @@ def _life_km(f: Fatigue, cases: tuple[Case, ...], probs, per_km: float, lgN) -> 
 def _fatigue(ring: Ring, count: int, f: Fatigue, vehicle: Vehicle | None) -> FatigueResult:
     mat, ld, o = f.material, f.load, f.options
     pe = part_endurance(ring, f)
-    psi = ST.psi_sigma(mat.sigma_u)
+    psi = g25.mean_stress_sensitivity(mat.sigma_u)[0]
     psi_D = psi / pe.K
     rs = ST.rim_stresses(ld.sigma_Fn, ld.hoop_loaded, ld.hoop_between)
     va = o.stress_scatter
@@ -182,7 +184,7 @@ def _fatigue(ring: Ring, count: int, f: Fatigue, vehicle: Vehicle | None) -> Fat
         for c in ST.fillet_cycles(rs, ld.load_sharing, s.name, s.mu_F, s.tension_fillet):
             eq = ST.equivalent_amplitude(c.s_a, c.s_m, mat.sigma_u, o.mean_stress_model, psi_D)
             n = pe.sigma_m1D / eq if not math.isnan(eq) else math.nan
-            P = E.probability_of_non_failure(eq, pe.sigma_m1D, pe.v, va) if n == n else math.nan
+            P = FP.probability_of_non_failure(eq, pe.sigma_m1D, pe.v, va) if n == n else math.nan
             cases.append(Case(c, eq, n, P))
     cases = tuple(cases)
     valid = [c for c in cases if not math.isnan(c.sigma_eq)]
@@ -196,9 +198,9 @@ def _fatigue(ring: Ring, count: int, f: Fatigue, vehicle: Vehicle | None) -> Fat
     by_model = tuple((alt, ST.equivalent_amplitude(gov.s_a, gov.s_m, mat.sigma_u, alt, psi_D))
                      for alt in ST.MEAN_STRESS_MODELS)
     probs = tuple(p / 100.0 for p in o.probabilities)
-    P_gov = (E.probability_of_non_failure(gov_eq, pe.sigma_m1D, pe.v, va)
+    P_gov = (FP.probability_of_non_failure(gov_eq, pe.sigma_m1D, pe.v, va)
              if gov_eq == gov_eq else math.nan)
-    m_slope = E.sn_slope(mat.sigma_u, pe.K)
+    m_slope = FP.sn_slope(mat.sigma_u, pe.K)
 
     def lgN(eq: float, P: float) -> float:
         return _lg_life(pe, m_slope, f, eq, P)
@@ -219,8 +221,8 @@ def _fatigue(ring: Ring, count: int, f: Fatigue, vehicle: Vehicle | None) -> Fat
         s_lgn = 10.0 ** min(o.slgn_alpha + o.slgn_beta * math.log10(sb), 300.0)
     return FatigueResult(
         pe, psi, psi_D, rs, cases, worst_dom, worst_max, gov, gov_eq, by_model, probs,
-        tuple(E.normal_quantile(P) for P in probs),
-        tuple(E.quantile_endurance(pe.sigma_m1D, pe.v, P) for P in probs), P_gov, P_req,
+        tuple(FP.normal_quantile(P) for P in probs),
+        tuple(FP.quantile_endurance(pe.sigma_m1D, pe.v, P) for P in probs), P_gov, P_req,
         m_slope, lg_gov, per_km, lives or (), advice, s_lgn, min(below) if below else None)
 
 
