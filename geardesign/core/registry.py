@@ -21,7 +21,7 @@ from geardesign.core.result import Result, Row, guard
 from geardesign.core.spec import (SpecSchema, ValidatedSpec, iter_fields, load_toml,
                                   validate_partial)
 
-NOT_CALCULATORS = {"core", "materials"}
+NOT_CALCULATORS = {"core", "fatigue", "materials"}
 """Subpackages of ``geardesign`` that are shared code, not calculators."""
 
 ORDER = ("spur", "bearing", "worm", "planetary", "novikov", "epicycle_rim", "pzdn", "drive")

@@ -11,7 +11,7 @@ spur calculator), :mod:`.plot` (optional matplotlib plot), :mod:`.spec`,
 """
 
 from geardesign.core.registry import Calculator
-from geardesign.pzdn.calculator import compute
+from geardesign.pzdn.calculator import compute, precheck
 from geardesign.pzdn.spec import SCHEMA
 
 CALCULATOR = Calculator(
@@ -21,4 +21,5 @@ CALCULATOR = Calculator(
     methods=("KO-2 thesis (Lopukhov), corrected", "EN 13906-3", "Shigley §10-12"),
     schema=SCHEMA,
     compute=compute,
+    precheck=precheck,
 )
