@@ -125,16 +125,14 @@ def _material(spec: ValidatedSpec) -> Material:
         if m[key] is None:
             raise InputError(Problem(f"material.{key}", f"missing: give the {what} or a "
                                      f"material.grade"))
-    if m["sigma_y"] >= m["sigma_u"]:
-        raise InputError(Problem("material.sigma_y", f"must be below sigma_u = "
-                                 f"{fmt(m['sigma_u'])} MPa", m["sigma_y"]))
-    if m["sigma_m1"] >= m["sigma_u"]:
-        raise InputError(Problem("material.sigma_m1", f"must be below sigma_u = "
-                                 f"{fmt(m['sigma_u'])} MPa", m["sigma_m1"]))
+    found = [Problem(f"material.{key}", f"must be below sigma_u = {fmt(m['sigma_u'])} MPa",
+                     m[key]) for key in ("sigma_y", "sigma_m1") if m[key] >= m["sigma_u"]]
     if g25.sensitivity_nu(m["sigma_u"]) <= 0.0:
-        raise InputError(Problem("material.sigma_u", "must be < 1475 MPa: the sensitivity "
-                                 "ν_σ = 0.211 − 0.000143·σ_u of GOST 25.504-82 is <= 0 above",
-                                 m["sigma_u"]))
+        found.append(Problem("material.sigma_u", "must be < 1475 MPa: the sensitivity "
+                             "ν_σ = 0.211 − 0.000143·σ_u of GOST 25.504-82 is <= 0 above",
+                             m["sigma_u"]))
+    if found:
+        raise InputError(found)
     return Material(m["sigma_u"], m["sigma_y"], m["sigma_m1"], source, m["specimen_diameter"],
                     m["blank_size"], m["scatter"], m["anisotropy_factor"])
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from geardesign.core.errors import InputError, Problem
+from geardesign.core.errors import InputError, Problem, Problems
 from geardesign.core.spec import ValidatedSpec
 from geardesign.pzdn import spring as SP
 from geardesign.pzdn import tables
@@ -123,8 +123,46 @@ def _arms(key: str, sp: dict, D: float) -> None:
                                 f"the finger must sit in its slot: {fmt(lo)} … {fmt(hi)} mm")
 
 
+def _coil_given(key: str, sp: dict) -> None:
+    if sp["index"] is None and sp["coil_diameter"] is None:
+        raise InputError(Problem(f"{key}.coil_diameter", "missing; give the coil diameter "
+                                 "or the spring index (index), or both"))
+
+
+def _coils_given(key: str, sp: dict, motor: dict | None) -> None:
+    if sp["coils"] is None and sp["design_angle"] is None and motor is None:
+        raise InputError(Problem(f"{key}.coils", "missing; give the number of working coils, "
+                                 "or [motor] (or design_angle) to compute it from the wind-up "
+                                 "angle (method A)"))
+
+
+def _diameter(key: str, sp: dict, d: float) -> float:
+    """The mean coil diameter D for the wire d."""
+    D_in, outer = sp["coil_diameter"], sp["diameter_basis"] == "outer"
+    if D_in is None:
+        return sp["index"] * d
+    limit = 2.0 * d if outer else d
+    if D_in <= limit:
+        what = ("2·d", "an outer") if outer else ("the wire diameter d", "a mean")
+        raise InputError.at(f"{key}.coil_diameter", D_in,
+                            f"must exceed {what[0]} = {fmt(limit)} mm ({what[1]} coil "
+                            f"diameter up to it leaves no bore); increase it or use a "
+                            f"thinner wire")
+    return D_in - d if outer else D_in
+
+
+def _pitch(key: str, sp: dict, d: float) -> None:
+    if sp["pitch"] is not None and sp["pitch"] < d:
+        raise InputError.at(f"{key}.pitch", sp["pitch"],
+                            f"smaller than the wire diameter d = {fmt(d)} mm: the coils "
+                            f"would overlap; give pitch >= d (= d: close-wound)")
+
+
 def spring(spec: ValidatedSpec, j: int, sp: dict, motor: dict | None) -> Spring:
-    """The spring ``spring[j]`` (``motor``: the [motor] table, for method A)."""
+    """The spring ``spring[j]`` (``motor``: the [motor] table, for method A).  Its rules
+    are checked in independent groups (the allowables, the coil diameter given, the coils
+    given; then the coil diameter, the pitch, the arms), so that each mistake of one
+    spring is reported in the same round."""
     from geardesign.materials import spring_steel
 
     key = f"spring[{j}]"
@@ -136,13 +174,16 @@ def spring(spec: ValidatedSpec, j: int, sp: dict, motor: dict | None) -> Spring:
         E = spring_steel.elastic_modulus(sp["material"]) if steel is not None else None
         assume(spec, sp, "E", f"{key}.E", E if E is not None else lim["E_default"])
     E = sp["E"]
-    sigma_of, tau_of, sigma_source = _allowables(sp, key, steel, spec)
+    problems = Problems()
+    allow = problems.stage(_allowables, sp, key, steel, spec)
+    problems.stage(_coil_given, key, sp)
+    problems.stage(_coils_given, key, sp, motor)
+    if problems.found:
+        problems.raise_all()
+    sigma_of, tau_of, sigma_source = allow
     T = sp["torque"] * 1000.0
     c_in, D_in = sp["index"], sp["coil_diameter"]
     outer = sp["diameter_basis"] == "outer"
-    if c_in is None and D_in is None:
-        raise InputError(Problem(f"{key}.coil_diameter", "missing; give the coil diameter "
-                                 "or the spring index (index), or both"))
 
     def d_mean(d: float) -> float | None:
         if D_in is None:
@@ -150,22 +191,11 @@ def spring(spec: ValidatedSpec, j: int, sp: dict, motor: dict | None) -> Spring:
         return D_in - d if outer else D_in
 
     d, in_series = _wire(T, sp, sigma_of, d_mean)
-    if D_in is not None:
-        D = d_mean(d)
-        limit = 2.0 * d if outer else d
-        if D_in <= limit:
-            what = ("2·d", "an outer") if outer else ("the wire diameter d", "a mean")
-            raise InputError.at(f"{key}.coil_diameter", D_in,
-                                f"must exceed {what[0]} = {fmt(limit)} mm ({what[1]} coil "
-                                f"diameter up to it leaves no bore); increase it or use a "
-                                f"thinner wire")
-    else:
-        D = c_in * d
-    if sp["pitch"] is not None and sp["pitch"] < d:
-        raise InputError.at(f"{key}.pitch", sp["pitch"],
-                            f"smaller than the wire diameter d = {fmt(d)} mm: the coils "
-                            f"would overlap; give pitch >= d (= d: close-wound)")
-    _arms(key, sp, D)
+    D = problems.stage(_diameter, key, sp, d)
+    problems.stage(_pitch, key, sp, d)
+    if D is not Problems.FAILED:
+        problems.stage(_arms, key, sp, D)
+    problems.raise_all()
     sigma_allow = sigma_of(d)
     # method A: required wind-up angle
     J = SP.second_moment(d)
@@ -180,10 +210,6 @@ def spring(spec: ValidatedSpec, j: int, sp: dict, motor: dict | None) -> Spring:
         phi_req = phi_kin + phi_leg
         if phi_design is None:
             phi_design = SP.design_angle(phi_req, lim["design_angle_step"])
-    if sp["coils"] is None and phi_design is None:
-        raise InputError(Problem(f"{key}.coils", "missing; give the number of working coils, "
-                                 "or [motor] (or design_angle) to compute it from the wind-up "
-                                 "angle (method A)"))
     pitch_assumed = sp["pitch"] is None
     if pitch_assumed:
         assume(spec, sp, "pitch", f"{key}.pitch", d + lim["pitch_gap_default"])

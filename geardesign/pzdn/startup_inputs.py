@@ -8,7 +8,7 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
-from geardesign.core.errors import InputError, Problem
+from geardesign.core.errors import InputError, Problem, Problems
 from geardesign.core.spec import ValidatedSpec
 from geardesign.pzdn.simulate import Motor
 from geardesign.pzdn.spring_inputs import fmt
@@ -49,22 +49,26 @@ def _drop(spec: ValidatedSpec, table: dict, path: str) -> None:
         table.pop(key, None)
 
 
+def _link(st: dict, line: str, names: list) -> float | None:
+    num, ref = st[f"C{line}"], st[f"C{line}_spring"]
+    if num is None and ref is None:
+        raise InputError(Problem(f"startup.C{line}", f"missing; give the link stiffness "
+                                 f"C{line} [N·m/rad], or C{line}_spring, the name of the "
+                                 f"[[spring]] that gives it"))
+    if num is not None and ref is not None:
+        raise InputError.at(f"startup.C{line}_spring", ref, f"give C{line} or "
+                            f"C{line}_spring, not both")
+    if ref is not None and ref not in names:
+        known = ", ".join(f'"{n}"' for n in names) or "none: add [[spring]] tables"
+        raise InputError.at(f"startup.C{line}_spring", ref,
+                            f"no [[spring]] of that name; known: {known}")
+    return num
+
+
 def _links(st: dict, names: list) -> list:
-    Cs = []
-    for line in ("12", "13"):
-        num, ref = st[f"C{line}"], st[f"C{line}_spring"]
-        if num is None and ref is None:
-            raise InputError(Problem(f"startup.C{line}", f"missing; give the link stiffness "
-                                     f"C{line} [N·m/rad], or C{line}_spring, the name of the "
-                                     f"[[spring]] that gives it"))
-        if num is not None and ref is not None:
-            raise InputError.at(f"startup.C{line}_spring", ref, f"give C{line} or "
-                                f"C{line}_spring, not both")
-        if ref is not None and ref not in names:
-            known = ", ".join(f'"{n}"' for n in names) or "none: add [[spring]] tables"
-            raise InputError.at(f"startup.C{line}_spring", ref,
-                                f"no [[spring]] of that name; known: {known}")
-        Cs.append(num)
+    problems = Problems()
+    Cs = [problems.stage(_link, st, line, names) for line in ("12", "13")]
+    problems.raise_all()
     return Cs
 
 
@@ -140,25 +144,35 @@ def _duration(st: dict) -> tuple[float, str, float | None]:
     return omega_n / eps, "ω_n·ΣJ/(T1 − T2 − T3)", omega_n
 
 
-def startup(spec: ValidatedSpec, st: dict, names: list) -> Startup:
-    """The [startup] table ``st``; ``names``: the names of the [[spring]] tables."""
-    Cs = _links(st, names)
+def _drive(st: dict) -> tuple | None:
     drive = (st["C12_drive"], st["C13_drive"])
     if (drive[0] is None) != (drive[1] is None):
         missing = "C13_drive" if drive[1] is None else "C12_drive"
         raise InputError(Problem(f"startup.{missing}", "missing; give the drive stiffness of "
                                  "both lines (C12_drive and C13_drive) or of neither"))
-    motor = _motor(spec, st)
-    _plot(st)
-    t_end, src, omega_n = _duration(st)
+    return drive if drive[0] is not None else None
+
+
+def startup(spec: ValidatedSpec, st: dict, names: list) -> Startup:
+    """The [startup] table ``st``; ``names``: the names of the [[spring]] tables.  The
+    link stiffnesses, the drive alone, the motor, the plot and the duration are checked
+    independently (every mistake in one round)."""
+    problems = Problems()
+    Cs = problems.stage(_links, st, names)
+    drive = problems.stage(_drive, st)
+    motor = problems.stage(_motor, spec, st)
+    problems.stage(_plot, st)
+    duration = problems.stage(_duration, st)
+    problems.raise_all()
+    t_end, src, omega_n = duration
     method = st["method"]
     damping, stick = st.get("damping_ratio", 0.0), st.get("stick", False)
     if method == "closed_form":   # defaults that only the integration uses: not echoed
         for k in ("rise_time", "damping_ratio", "stick", "motor_model"):
             _drop(spec, st, f"startup.{k}")
     model = ThreeMass(st["T1"], st["T2"], st["T3"], st["J1"], st["J2"], st["J3"], 1.0, 1.0)
-    return Startup(model, tuple(Cs), (st["C12_spring"], st["C13_spring"]),
-                   drive if drive[0] is not None else None, motor, t_end, src, omega_n, method,
+    return Startup(model, tuple(Cs), (st["C12_spring"], st["C13_spring"]), drive, motor,
+                   t_end, src, omega_n, method,
                    damping, stick, st["history_points"], tuple(st["sweep"] or ()), st["plot"])
 
 
