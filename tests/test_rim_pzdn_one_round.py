@@ -89,7 +89,7 @@ PZDN_MISTAKES = (
      "regression.C12 = 24.7: give C12, or pzdn_stiffness"),
 )
 
-PZDN_TABLES = """
+PZDN_SPRINGS = """
 [[spring]]
 torque = 22.1
 wire_diameter = 6.0
@@ -107,32 +107,24 @@ coils = 5
 pitch = 8.0
 sigma_allow = 1000.0
 
-[startup]
-T1 = 26.5
-T2 = 4.4
-T3 = 17.7
-J1 = 0.038
-J2 = 0.026
-J3 = 0.021
-C12 = 8.33
-C13 = 25.0
-t_end = 0.5
-
-[regression]
-pzdn_stiffness = 25.0
-drive_stiffness = 1940.0
 """
+
+
+def _pzdn_tables() -> str:
+    from tests.test_pzdn_inputs import BODY, REG, STARTUP
+
+    return PZDN_SPRINGS + "\n" + STARTUP[BODY:] + "\n" + REG[BODY:]
 
 
 def test_pzdn_every_independent_mistake_in_one_round(tmp_path):
     gear = (SPECS / "pzdn_ko2_coupling_gear.toml").read_text(encoding="utf-8")
-    _refused_in_one_round(tmp_path, gear + PZDN_TABLES, PZDN_MISTAKES)
+    _refused_in_one_round(tmp_path, gear + _pzdn_tables(), PZDN_MISTAKES)
 
 
 def test_pzdn_good_combined_spec_runs(tmp_path):
     gear = (SPECS / "pzdn_ko2_coupling_gear.toml").read_text(encoding="utf-8")
     path = tmp_path / "s.toml"
-    path.write_text(gear + PZDN_TABLES, encoding="utf-8")
+    path.write_text(gear + _pzdn_tables(), encoding="utf-8")
     code, out, err = cli("run", path, "--format", "json")
     assert code in (0, 1) and "Traceback" not in err, err
 
