@@ -174,3 +174,11 @@ def test_rim_solve_is_pure(name):
 @pytest.mark.parametrize("name", sorted(p.name for p in SPECS.glob("pzdn_*.toml")))
 def test_pzdn_solve_is_pure(name):
     _pure(name, "pzdn")
+
+
+def test_rim_schema_and_rule_mistakes_in_one_round(tmp_path):
+    """A value refused by the schema (ring.z) leaves out only the rules that need it: the
+    shifts' sum and the material are still checked."""
+    _refused_in_one_round(tmp_path, _rim_spec(), (
+        ("z = 64\n", "z = 5\n", "ring.z = 5: must be an integer >= 12"),
+        RIM_MISTAKES[0], RIM_MISTAKES[2]))

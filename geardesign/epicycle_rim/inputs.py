@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from geardesign.core.errors import InputError, Problem, Problems
+from geardesign.core.errors import InputError, Problem, Problems, Unusable
 from geardesign.core.spec import ValidatedSpec
 from geardesign.epicycle_rim import mesh
 from geardesign.epicycle_rim.fatigue_inputs import Fatigue, assume, fatigue
@@ -106,9 +106,7 @@ def _ring(spec: ValidatedSpec) -> Ring:
                 ring["tooth_height"])
 
 
-def _angles(ring: dict, pl: dict) -> list[float]:
-    """The planet angles [deg] (given, from the shifts, or equally spaced)."""
-    n = pl["count"]
+def _coaxial(ring: dict, pl: dict) -> None:
     if (pl["z_sun"] is None) != (pl["z_planet"] is None):
         key = "planets.z_planet" if pl["z_planet"] is None else "planets.z_sun"
         raise InputError(Problem(key, "missing: give both z_sun and z_planet (or neither)"))
@@ -119,6 +117,11 @@ def _angles(ring: dict, pl: dict) -> list[float]:
                 "ring.z", f"does not fit the planets: z_sun + 2·z_planet = "
                 f"{pl['z_sun'] + 2 * pl['z_planet']} (coaxial trains need z_r = z_s + 2·z_p, "
                 f"±2 with profile shifts)", ring["z"]))
+
+
+def _angles(ring: dict, pl: dict) -> list[float]:
+    """The planet angles [deg] (given, from the shifts, or equally spaced)."""
+    n = pl["count"]
     if pl["angles"] is not None and pl["shifts"] is not None:
         raise InputError(Problem("planets.shifts", "give planets.angles or planets.shifts, "
                                  "not both", pl["shifts"]))
@@ -141,7 +144,12 @@ def _angles(ring: dict, pl: dict) -> list[float]:
 
 def _planets(spec: ValidatedSpec) -> Planets:
     ring, pl = spec.data["ring"], spec.data["planets"]
-    angles = _angles(ring, pl)
+    problems = Problems()
+    problems.stage(_coaxial, ring, pl)
+    angles = problems.stage(_angles, ring, pl)
+    problems.raise_all()
+    if angles is Problems.FAILED:    # uses a value reported by the schema
+        raise Unusable()
     return Planets(pl["count"], pl["z_sun"], pl["z_planet"], pl["x_sun"], pl["x_planet"],
                    pl["contact_ratio"], tuple(angles))
 
