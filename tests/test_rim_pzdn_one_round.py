@@ -89,16 +89,7 @@ PZDN_MISTAKES = (
      "regression.C12 = 24.7: give C12, or pzdn_stiffness"),
 )
 
-PZDN_SPRINGS = """
-[[spring]]
-torque = 22.1
-wire_diameter = 6.0
-index = 10.0
-coil_diameter = 60.0
-coils = 4
-pitch = 8.0
-sigma_allow = 1200.0
-
+SECOND_SPRING = """
 [[spring]]
 torque = 20.0
 wire_diameter = 6.0
@@ -111,9 +102,10 @@ sigma_allow = 1000.0
 
 
 def _pzdn_tables() -> str:
-    from tests.test_pzdn_inputs import BODY, REG, STARTUP
+    from tests.test_pzdn_inputs import BODY, REG, SPRING, STARTUP
 
-    return PZDN_SPRINGS + "\n" + STARTUP[BODY:] + "\n" + REG[BODY:]
+    return ("\n" + SPRING[BODY:] + SECOND_SPRING + "\n" + STARTUP[BODY:] + "\n"
+            + REG[BODY:])
 
 
 def test_pzdn_every_independent_mistake_in_one_round(tmp_path):
