@@ -2,10 +2,12 @@
 parametric resonance of the ring.
 
 Modules: :mod:`.stress` (fillet and rim stresses, mean-stress correction), :mod:`.endurance`
-(part endurance limit by GOST 25.504-82, scatter, probability, life), :mod:`.mesh` (planet
-positions, mesh phases, stiffness pulsation), :mod:`.mathieu` (Mathieu/Ince-Strutt,
-Floquet), :mod:`.resonance` (resonance frequencies and speeds), :mod:`.rim` (thin-rim
-factors), :mod:`.checks`, :mod:`.spec`, :mod:`.calculator`.
+(the fillet's stress concentration and the part endurance limit, from the GOST 25.504-82
+formulas of :mod:`geardesign.fatigue`), :mod:`.mesh` (planet positions, mesh phases,
+stiffness pulsation), :mod:`.mathieu` (Mathieu/Ince-Strutt, Floquet), :mod:`.resonance`
+(resonance frequencies and speeds), :mod:`.rim` (thin-rim factors), :mod:`.checks`,
+:mod:`.spec`; the calculator: :mod:`.inputs` (with :mod:`.fatigue_inputs`) → :mod:`.solve`
+→ :mod:`.report`, joined by :mod:`.calculator`.
 """
 
 from __future__ import annotations

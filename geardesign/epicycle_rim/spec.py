@@ -5,7 +5,7 @@ epicycle_rim``).
 Two analyses share the ring and planet data: the probabilistic fatigue of the rim (tables
 [fillet], [material], [load], [[stage]] and the optional [fatigue]) and the parametric
 resonance of the ring ([resonance], with [vehicle] for the speeds).  A spec gives one or
-both.  Rules that involve several keys are checked in :mod:`.calculator`.
+both.  Rules that involve several keys are checked in :mod:`.inputs`.
 """
 
 from __future__ import annotations

@@ -204,7 +204,8 @@ def equivalent_amplitude(s_a: float, s_m: float, sigma_u: float, model: str = "c
     * ``goodman``: σ_-1eq = σ_a / (1 − s)
     * ``gerber``: σ_-1eq = σ_a / (1 − s²)
     * ``kinasoshvili`` (Serensen-Kinasoshvili): σ_-1eq = σ_a + ψ_σD·σ_m, with
-      ψ_σD = ψ_σ/K the part's mean-stress sensitivity (:func:`psi_sigma`)
+      ψ_σD = ψ_σ/K the part's mean-stress sensitivity
+      (:func:`geardesign.fatigue.gost25504.mean_stress_sensitivity`)
 
     The diagrams hold inside the 45° rays from σ_m = ±σ_u, i.e. |σ_m| + σ_a < σ_u; outside,
     the result is NaN (the calculator reports a failed check instead).
@@ -235,19 +236,6 @@ def equivalent_amplitude(s_a: float, s_m: float, sigma_u: float, model: str = "c
             raise ValueError("kinasoshvili needs psi_D")
         return s_a + psi_D * s_m
     raise ValueError(f"unknown mean-stress model {model!r}")
-
-
-def psi_sigma(sigma_u: float) -> float:
-    """Mean-stress sensitivity of smooth specimens of structural steel.
-
-    .. math:: ψ_σ = 0.02 + 2·10^{-4} σ_u  \\quad (σ_u \\text{ in MPa})
-
-    References
-    ----------
-    GOST 25.504-82 (form quoted in [Gutyria2017] eqs. (4)-(8); the
-    GOST text was not consulted: unverified).
-    """
-    return 0.02 + 2e-4 * sigma_u
 
 
 # ----------------------------------------------------------------- thin-ring hoop estimate

@@ -6,12 +6,14 @@ Modules: :mod:`.spring` (torsion spring sizing, methods A and B), :mod:`.startup
 form of the three-mass start-up, corrected), :mod:`.simulate` (its numerical integration
 with torque rise, motor characteristic, damping and sticking masses; scipy inside),
 :mod:`.regression` (KO-2 regression), :mod:`.coupling` (the coupling gear, rated by the
-spur calculator), :mod:`.plot` (optional matplotlib plot), :mod:`.spec`,
-:mod:`.calculator`.
+spur calculator), :mod:`.plot` (optional matplotlib plot), :mod:`.spec`; the calculator:
+:mod:`.inputs` (with :mod:`.spring_inputs`, :mod:`.startup_inputs`) → :mod:`.solve` (with
+:mod:`.solve_startup`) → :mod:`.report` (with :mod:`.report_spring`,
+:mod:`.report_startup`), joined by :mod:`.calculator`.
 """
 
 from geardesign.core.registry import Calculator
-from geardesign.pzdn.calculator import compute
+from geardesign.pzdn.calculator import compute, precheck
 from geardesign.pzdn.spec import SCHEMA
 
 CALCULATOR = Calculator(
@@ -21,4 +23,5 @@ CALCULATOR = Calculator(
     methods=("KO-2 thesis (Lopukhov), corrected", "EN 13906-3", "Shigley §10-12"),
     schema=SCHEMA,
     compute=compute,
+    precheck=precheck,
 )

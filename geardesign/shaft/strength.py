@@ -9,8 +9,8 @@ based on GOST 25.504-82 ([GOST25504]):
     S = \\frac{S_σ S_τ}{\\sqrt{S_σ^2 + S_τ^2}},\\quad
     K_{σD} = \\Big(\\frac{K_σ}{K_{dσ}} + \\frac{1}{K_{Fσ}} - 1\\Big)\\frac{1}{K_V}
 
-The factor K_σD is the one of [GOST25504] (delegated to
-:func:`geardesign.epicycle_rim.endurance.reduction_factor`); the tables of K_σ, K_τ, K_σ/K_d
+The formulas of [GOST25504] (K_σD, the roughness factors, ψ_σ and ψ_τ, the safety
+factors) are those of :mod:`geardesign.fatigue.gost25504`; the tables of K_σ, K_τ, K_σ/K_d
 and K_d are data (``tables.toml``).
 """
 
@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
-from geardesign.epicycle_rim import endurance as E
+from geardesign.fatigue import gost25504 as g25
 
 
 @lru_cache(maxsize=1)
@@ -126,16 +126,21 @@ def size_factors(d: float, alloy: bool) -> tuple[float, float]:
 
 
 def surface_factors(Rz: float, sigma_B: float) -> tuple[float, float]:
-    """Surface roughness factors K_Fσ, K_Fτ ([GOST25504] as quoted by [Gutyria2017]):
-    K_Fσ = 1 − 0.22·lg R_z·(lg(σ_B/20) − 1), K_Fτ = 0.575·K_Fσ + 0.425 ([GOST25504])."""
-    k = min(1.0, E.roughness_factor(max(Rz, 1.0), sigma_B))
-    return k, 0.575 * k + 0.425
+    """Surface roughness factors K_Fσ, K_Fτ of a shaft section [-]: K_Fσ of [GOST25504]
+    (:func:`geardesign.fatigue.gost25504.roughness_factor`) at R_z >= 1 µm and at most 1
+    (a polished surface does not raise the limit), K_Fτ = 0.575·K_Fσ + 0.425
+    (:func:`geardesign.fatigue.gost25504.torsion_roughness_factor`).
+
+    >>> [round(k, 4) for k in surface_factors(10.0, 1000.0)]
+    [0.8462, 0.9116]
+    """
+    k = min(1.0, g25.roughness_factor(max(Rz, 1.0), sigma_B))
+    return k, g25.torsion_roughness_factor(k)
 
 
-def mean_stress_sensitivity(sigma_B: float) -> tuple[float, float]:
-    """ψ_σ = 0.02 + 2·10⁻⁴·σ_B and ψ_τ = 0.5·ψ_σ ([GOST25504]; [Ivanov])."""
-    psi = 0.02 + 2e-4 * sigma_B
-    return psi, 0.5 * psi
+mean_stress_sensitivity = g25.mean_stress_sensitivity
+"""ψ_σ = 0.02 + 2·10⁻⁴·σ_B and ψ_τ = 0.5·ψ_σ of the shaft's steel: the function of
+[GOST25504] in :mod:`geardesign.fatigue.gost25504` (one formula for the shaft and the rim)."""
 
 
 def endurance_estimates(sigma_B: float) -> tuple[float, float]:
@@ -164,14 +169,8 @@ def fatigue_safety(sigma_a: float, sigma_m: float, tau_a: float, tau_m: float,
     """Fatigue safety factors of a section (module docstring).  ``ratio_*`` are the largest
     K/K_d of the section's concentrators; stresses nominal, MPa.  A safety with no stress is
     infinite."""
-    K_sD = E.reduction_factor(ratio_sigma, K_F_sigma, K_V, 1.0)
-    K_tD = E.reduction_factor(ratio_tau, K_F_tau, K_V, 1.0)
-    den_s = K_sD * sigma_a + psi_sigma * sigma_m
-    den_t = K_tD * tau_a + psi_tau * tau_m
-    S_s = sigma_m1 / den_s if den_s > 0 else math.inf
-    S_t = tau_m1 / den_t if den_t > 0 else math.inf
-    # S = S_σ·S_τ/√(S_σ² + S_τ²) written as 1/|(1/S_σ, 1/S_τ)|: no overflow for a section
-    # that is barely loaded in one of the two
-    inv = math.hypot(1.0 / S_s, 1.0 / S_t)
-    S = 1.0 / inv if inv > 0 else math.inf
-    return Fatigue(K_sD, K_tD, S_s, S_t, S)
+    K_sD = g25.reduction_factor(ratio_sigma, K_F_sigma, K_V)
+    K_tD = g25.reduction_factor(ratio_tau, K_F_tau, K_V)
+    S_s = g25.safety_factor(sigma_m1, K_sD, psi_sigma, sigma_a, sigma_m)
+    S_t = g25.safety_factor(tau_m1, K_tD, psi_tau, tau_a, tau_m)
+    return Fatigue(K_sD, K_tD, S_s, S_t, g25.combined_safety(S_s, S_t))

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from geardesign.epicycle_rim import endurance as E
+from geardesign.fatigue import gost25504 as g25
 from geardesign.shaft.din743 import tables
 
 
@@ -24,7 +24,7 @@ def K_sigma(beta: float, K_2: float, K_F: float, K_V: float) -> float:
     >>> round(K_sigma(2.0, 0.9, 0.9, 1.0), 4)
     2.3333
     """
-    return E.reduction_factor(beta / K_2, K_F, K_V, 1.0)
+    return g25.reduction_factor(beta / K_2, K_F, K_V)
 
 
 def fatigue_limit(sigma_W_dB: float, K_1: float, K: float) -> float:

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import math
 
-from geardesign.epicycle_rim import endurance as E
+from geardesign.fatigue import gost25504 as g25
 from geardesign.shaft.din743 import tables
 
 
@@ -270,5 +270,5 @@ def K_F(Rz: float, sigma_B_d: float) -> tuple[float, float]:
     >>> [round(k, 4) for k in K_F(10.0, 1000.0)]
     [0.8462, 0.9116]
     """
-    k = E.roughness_factor(Rz, sigma_B_d)
-    return k, 0.575 * k + 0.425
+    k = g25.roughness_factor(Rz, sigma_B_d)
+    return k, g25.torsion_roughness_factor(k)
