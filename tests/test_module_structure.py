@@ -32,8 +32,6 @@ LONG = {
     "spur/geometry.py": SPLITTING + ": shared gear geometry moves to geardesign/gears",
     "spur/internal.py": SPLITTING + ": internal pairs move to geardesign/gears",
     "spur/drawing.py": SPLITTING + ": tolerances shared with the rating (gears/tolerances)",
-    "pzdn/calculator.py": SPLITTING + ": pzdn inputs, solve and report",
-    "epicycle_rim/calculator.py": SPLITTING + ": epicycle rim inputs, solve and report",
     "drive/calculator.py": SPLITTING + ": the drive composes stages through solve()",
     "drive/lubrication.py": SPLITTING + ": the drive composes stages through solve()",
     "drive/shaft_analysis.py": SPLITTING + ": the drive composes stages through solve()",
@@ -46,6 +44,10 @@ LONG = {
     "core/io.py": SPLITTING + ": the writers apart from the readers",
     "rexs/importer.py": SPLITTING + ": one reader per REXS component type (shafts, stages, "
                         "bearings, load case) apart from the spec writer",
+    "shaft/inputs.py": SPLITTING + ": the step, load and support rules apart from the "
+                       "material and method keys",
+    "report/figures.py": SPLITTING + ": one module of pictures per calculator kind",
+    "report/html.py": SPLITTING + ": the first screen apart from the sections",
     # a reason of its own
     "bearing/life.py": "the ISO 281:2007 / GOST 18855 life formulas, one function per "
                        "equation with its doctest and clause; " + SPLITTING + " by part "
