@@ -204,7 +204,10 @@ def _add_gost_strength(res: Result, geom: PairGeometry, spec, inputs, rating) ->
     face_limit = ADVICE_FACE_MAX
     contact_fails = v["sigma_H"] > v["sigma_HP"] * (1 + 1e-12)
     bending_fails = any(v[f"S_F{k}"] < v[f"S_F{k}_min"] * (1 - 1e-12) for k in (1, 2))
-    if (contact_fails or bending_fails) and not getattr(geom, "internal", False):
+    from geardesign.core.advice import rerating
+
+    if (contact_fails or bending_fails) and not getattr(geom, "internal", False) \
+            and not rerating():   # a candidate's re-rating reads the verdicts only
         from dataclasses import replace
 
         from geardesign.spur.checks import (face_advice_limit, least_passing,

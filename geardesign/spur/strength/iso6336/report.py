@@ -20,7 +20,10 @@ def add_iso_strength(res, geom, spec, inputs, rating=None, iso=None) -> dict:
         res.section(row.section, IR.SECTIONS[row.section]).add(
             row.key, row.value, row.unit, row.symbol, row.name, row.source)
     internal = bool(getattr(geom, "internal", False))
-    found = None if internal else _advice(rating.v, geom, mats, duty, setting, iso)
+    from geardesign.core.advice import rerating
+
+    found = None if internal or rerating() else _advice(rating.v, geom, mats, duty, setting,
+                                                         iso)
     res.checks.extend(IR.rating_checks(rating, internal, found=found))
     from geardesign.spur.methods_differ import ISO, advised
 
