@@ -340,3 +340,7 @@ def report(record: Record) -> Result:
     elif strength is not None:
         add_strength(res, record)
     return res
+
+from geardesign.core.modules import callable_module  # noqa: E402
+
+callable_module(__name__, "report")   # spur.report(record)

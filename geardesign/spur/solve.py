@@ -87,14 +87,17 @@ class Record:
 
     def flat(self) -> dict:
         """One flat dict of the pair's main figures (a row of a table of variants):
-        inputs, geometry scalars, then the ratings' values prefixed by method
-        (``GOST.S_H1``, ``ISO.S_F2``)."""
+        inputs, geometry scalars, each gear's figures numbered (``d_a1``, ``d_a2``), then
+        the ratings' values prefixed by method (``GOST.S_H1``, ``ISO.S_F2``)."""
         p, g = self.inputs.pair, self.geometry
         row = {k: v for k, v in _plain(dataclasses.asdict(p)).items()
                if not isinstance(v, (dict, list))}
         row.update({k: v for k, v in _plain({f.name: getattr(g, f.name)
                                              for f in dataclasses.fields(g)}).items()
                     if not isinstance(v, (dict, list))})
+        for i, gear in enumerate(g.gears, 1):     # a gear's figures with its number
+            row.update({f"{f.name}{i}": v for f in dataclasses.fields(gear)
+                        if isinstance(v := _plain(getattr(gear, f.name)), (int, float))})
         for name, r in self.ratings.items():
             tag = "ISO" if name == ISO else "GOST"
             row.update({f"{tag}.{k}": v for k, v in _plain(r.v).items()
@@ -199,3 +202,8 @@ def solve(inputs) -> Record:
                     gear_checks(inputs.iso_table, g)
                 ratings[ISO] = IR.rate(g, st.mats, st.duty, st.setting, inputs.iso)
     return Record(inputs, g, sl, vel, ratings, forces, rated)
+
+
+from geardesign.core.modules import callable_module  # noqa: E402
+
+callable_module(__name__, "solve")   # spur.solve(inputs) as well as spur.solve.Record
