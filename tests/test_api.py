@@ -51,6 +51,9 @@ def test_replace_changes_pair_and_duty_fields():
     b = inp.replace(b_w=40.0, T1=100.0)
     assert b.pair.b_w == 40.0 and b.strength.duty.T1 == 100.0 and b.spec is None
     assert inp.pair.b_w == 63.0
+    fast = inp.replace(n1=1460.0)
+    assert fast.speed1 == fast.strength.duty.n1 == 1460.0
+    assert geardesign.solve(fast).velocities.n2 == pytest.approx(1460.0 * 22 / 87)
     with pytest.raises(ValueError, match="spec"):
         geardesign.report(geardesign.solve(b))
 

@@ -72,8 +72,14 @@ class Inputs:
 
     def replace(self, **changes) -> "Inputs":
         """A copy with ``changes``: fields of these inputs, or of the pair input
-        (``b_w``, ``m_n``, ``x1``, ...), or of the duty (``T1``, ``n1``, ``K_A``, ...).
-        The copy keeps no spec (its report would echo values it no longer has)."""
+        (``b_w``, ``m_n``, ``x1``, ...), or of the duty (``T1``, ``n1``, ``K_A``, ...;
+        ``n1`` and ``speed1`` are one speed).  The copy keeps no spec (its report would echo
+        values it no longer has)."""
+        if self.strength is not None:   # the pinion speed is the duty's n1 as well
+            if "speed1" in changes:
+                changes.setdefault("n1", changes["speed1"])
+            elif "n1" in changes:
+                changes["speed1"] = changes["n1"]
         pair_fields = {f.name for f in dataclasses.fields(self.pair)}
         pair = {k: changes.pop(k) for k in list(changes) if k in pair_fields}
         mine = {k: changes.pop(k) for k in list(changes)
