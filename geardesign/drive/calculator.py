@@ -19,9 +19,15 @@ from geardesign.core.io import confined
 from geardesign.core.spec import ValidatedSpec, load_toml
 from geardesign.drive import split as SPLIT
 from geardesign.drive.shaft_loads import _shaft_rotation, run_bearing, shaft_cases, shaft_loads
-from geardesign.drive.stages import ADAPTERS, Duty, StageRun, values
+from geardesign.drive import stages as ST
+from geardesign.drive.spur_stage import run_spur
+from geardesign.drive.stages import Duty, StageRun, values
 
 DRIVE_KEYS = ("name", "file", "efficiency")
+
+ADAPTERS = {"spur": run_spur, "worm": ST.run_worm, "novikov": ST.run_novikov,
+            "planetary": ST.run_planetary}
+"""The stage adapters by kind (:mod:`.spur_stage`, :mod:`.stages`)."""
 
 
 def _torque_from_power(P: float, n: float) -> float:
@@ -271,7 +277,6 @@ def _analyse_shafts(shafts: list, stages: list, runs: list[StageRun], bearings: 
     """The shafts with steps by the shaft calculator, their connections, and the spur
     stages rated with the misalignment from the shafts (:mod:`.shaft_analysis`)."""
     from geardesign.drive import shaft_analysis as SA
-    from geardesign.drive.stages import run_spur
 
     rot = _shaft_rotation(runs)
     speeds = [n_m] + [r.n_out for r in runs]

@@ -396,7 +396,7 @@ def _rating(run, name: str) -> dict | None:
 def _iso_K_Hbeta(data: dict, sr, duty, where: str, f_sh: float) -> float:
     """K_Hβ of ISO 6336-1 method C of a stage rated to GOST, with ``f_sh`` (informative):
     the ISO rating record of the stage spec, no report."""
-    from geardesign.drive.stages import spur_data
+    from geardesign.drive.spur_stage import spur_data
     from geardesign.spur.strength.iso6336.report import iso_rating
 
     d = spur_data(data, sr.T_in, sr.n_in, duty, where)
