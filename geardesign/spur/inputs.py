@@ -69,6 +69,9 @@ class Inputs:
     allow_undercut: bool = False
     design: Design | None = field(default=None, compare=False)
     spec: ValidatedSpec | None = field(default=None, compare=False, repr=False)
+    geometry: Any = field(default=None, compare=False, repr=False)
+    """The pair's geometry when already computed for ``pair`` (reading the spec checks it);
+    :func:`~geardesign.spur.solve.solve` computes it otherwise."""
 
     def replace(self, **changes) -> "Inputs":
         """A copy with ``changes``: fields of these inputs, or of the pair input
@@ -84,7 +87,7 @@ class Inputs:
         pair = {k: changes.pop(k) for k in list(changes) if k in pair_fields}
         mine = {k: changes.pop(k) for k in list(changes)
                 if k in {f.name for f in dataclasses.fields(self)}}
-        out = dataclasses.replace(self, spec=None, **mine)
+        out = dataclasses.replace(self, spec=None, **{"geometry": None, **mine})
         if pair:
             out = dataclasses.replace(out, pair=dataclasses.replace(out.pair, **pair))
         if changes:
@@ -135,7 +138,7 @@ def from_spec(spec: ValidatedSpec) -> Inputs:
     return Inputs(geom.inp, how, Strength(*strength) if strength is not None else None,
                   methods, iso, d.get("iso") if iso is not None else None,
                   load["speed1"] if load is not None else None, bool(gear["allow_undercut"]),
-                  design, spec)
+                  design, spec, geom)
 
 
 def from_tables(**tables) -> Inputs:

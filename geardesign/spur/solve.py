@@ -173,7 +173,9 @@ def solve(inputs) -> Record:
     strength by every method of ``inputs.methods`` (with strength inputs and a pair that
     can be rated).  Raises :class:`~geardesign.core.errors.InputError` for an ISO 6336
     bore or rim outside the gear body."""
-    g = geometry(inputs.pair)
+    g = inputs.geometry
+    if g is None or g.inp is not inputs.pair:
+        g = geometry(inputs.pair)
     sl = sliding_at_ends(g)
     vel = velocities(g, inputs.speed1) if inputs.speed1 is not None else None
     ratings: dict = {}
