@@ -8,7 +8,6 @@ import copy
 from pathlib import Path
 
 from geardesign.core.registry import run_data
-from geardesign.drive.stages import _strength_margins
 from tests.helpers_cli import run_bad
 from tests.test_iso6336_inputs import DATA
 
@@ -39,8 +38,11 @@ def test_forces_do_not_depend_on_the_method():
 def test_margins_of_both_methods_are_kept_apart():
     data = copy.deepcopy(DATA)
     data["options"] = {"methods": ["GOST 21354-87", "ISO 6336:2019"]}
-    r = run_data(data).document()["results"]
-    m = _strength_margins(r)
+    r = run_data(copy.deepcopy(data)).document()["results"]
+    from geardesign.spur.inputs import from_tables
+    from geardesign.spur.solve import solve
+
+    m = solve(from_tables(**{k: v for k, v in data.items() if k != "kind"})).margins()
     assert set(m) == {"S_H1", "S_H2", "S_F1", "S_F2", "ISO S_H1", "ISO S_H2", "ISO S_F1",
                       "ISO S_F2"}
     assert m["S_H1"] == r["contact"]["S_H1"] / r["contact"]["S_H1_min"]

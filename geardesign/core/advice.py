@@ -19,6 +19,7 @@ each check that then passes carries its own fix (at most :data:`MAX_PROPOSALS` p
 
 from __future__ import annotations
 
+import contextvars
 import copy
 import math
 import dataclasses
@@ -99,17 +100,30 @@ def apply_fix(data: dict, fix) -> dict:
     return out
 
 
+_RERATING = contextvars.ContextVar("rerating", default=False)
+
+
+def rerating() -> bool:
+    """Whether the present calculation is a candidate's re-rating (:func:`rerate`): only
+    its error checks' verdicts are read, so a report may leave out what only words its
+    messages (the face width found by re-rating, a nested stage's advice)."""
+    return _RERATING.get()
+
+
 def rerate(calc, spec, fix) -> Result | None:
     """The result of ``spec`` re-rated with ``fix`` written in, without advice; ``None``
     when the changed spec is refused."""
     from geardesign.core.spec import validate
 
+    token = _RERATING.set(True)
     try:
         vs = validate(calc.schema, apply_fix(spec.raw, fix), spec.source)
         vs.base_dir = spec.base_dir
         return calc.rate(vs)
     except (InputError, ArithmeticError, ValueError, KeyError, IndexError, TypeError):
         return None
+    finally:
+        _RERATING.reset(token)
 
 
 def passes(res: Result, todo: set, passing: set, known: set | None = None) -> bool:

@@ -14,15 +14,20 @@ import math
 from pathlib import Path
 
 from geardesign.core.errors import InputError, Problem
-from geardesign.core.registry import run_data
 from geardesign.core.result import DataTable, Result, check
 from geardesign.core.io import confined
 from geardesign.core.spec import ValidatedSpec, load_toml
 from geardesign.drive import split as SPLIT
-from geardesign.drive.shafts import GearLoad, external_loads, reactions
-from geardesign.drive.stages import ADAPTERS, Duty, StageRun
+from geardesign.drive.shaft_loads import _shaft_rotation, run_bearing, shaft_cases, shaft_loads
+from geardesign.drive import stages as ST
+from geardesign.drive.spur_stage import run_spur
+from geardesign.drive.stages import Duty, StageRun, values
 
 DRIVE_KEYS = ("name", "file", "efficiency")
+
+ADAPTERS = {"spur": run_spur, "worm": ST.run_worm, "novikov": ST.run_novikov,
+            "planetary": ST.run_planetary}
+"""The stage adapters by kind (:mod:`.spur_stage`, :mod:`.stages`)."""
 
 
 def _torque_from_power(P: float, n: float) -> float:
@@ -202,19 +207,19 @@ def compute(spec: ValidatedSpec) -> Result:
         ("ratio", "u", "-"), ("efficiency", "η", "-"), ("T_in", "T_in", "N·m"),
         ("n_in", "n_in", "min^-1"), ("T_out", "T_out", "N·m"), ("n_out", "n_out", "min^-1"),
         ("margin", "worst S/S_min", "-"), ("margin_of", "of", None), ("verdict", "verdict", None),
-    ], [dict(stage=i + 1, name=st[1], kind=r.result.kind, ratio=r.ratio, efficiency=r.efficiency,
+    ], [dict(stage=i + 1, name=st[1], kind=r.kind, ratio=r.ratio, efficiency=r.efficiency,
              T_in=r.T_in, n_in=r.n_in, T_out=r.T_out, n_out=r.n_out, margin=r.margin,
              margin_of=r.margin_of, verdict=r.result.verdict)
         for i, (st, r) in enumerate(zip(stages, runs))]))
 
     for i, (st, r) in enumerate(zip(stages, runs), 1):
-        res.parts.append(("stage_reports", f"Stage {i}: {st[1]} ({r.result.kind})", r.result))
+        res.parts.append(("stage_reports", f"Stage {i}: {st[1]} ({r.kind})", r.result))
         failed = [c.code for c in r.result.failed]
         res.checks.append(check(
             f"STAGE_{i}", not failed, "error",
-            f"stage {i} \"{st[1]}\" ({r.result.kind}) fails {', '.join(failed)}: see its report "
+            f"stage {i} \"{st[1]}\" ({r.kind}) fails {', '.join(failed)}: see its report "
             f"below for what to change",
-            f"stage {i} \"{st[1]}\" ({r.result.kind}) passes (worst margin {r.margin:.2f}, "
+            f"stage {i} \"{st[1]}\" ({r.kind}) passes (worst margin {r.margin:.2f}, "
             f"{r.margin_of})", r.margin, 1.0, "stage calculator"))
     from geardesign.core.units_guard import given, lifted
 
@@ -272,15 +277,14 @@ def _analyse_shafts(shafts: list, stages: list, runs: list[StageRun], bearings: 
     """The shafts with steps by the shaft calculator, their connections, and the spur
     stages rated with the misalignment from the shafts (:mod:`.shaft_analysis`)."""
     from geardesign.drive import shaft_analysis as SA
-    from geardesign.drive.stages import run_spur
 
     rot = _shaft_rotation(runs)
     speeds = [n_m] + [r.n_out for r in runs]
     peak = motor["peak_ratio"] or 2.0
     modules = {}
     for i, r in enumerate(runs, 1):
-        g = r.result.inputs.get("gear") if isinstance(r.result.inputs, dict) else None
-        if r.result.kind in ("spur", "novikov") and isinstance(g, dict):
+        g = r.inputs.get("gear") if isinstance(r.inputs, dict) else None
+        if r.kind in ("spur", "novikov") and isinstance(g, dict):
             modules[i] = (g.get("module"), g.get("face_width") or 0.0)
     by_side = {(c["shaft"], c["side"], c["key"]): br for c, br in bearings}
     shaft_runs = []
@@ -309,91 +313,6 @@ def _analyse_shafts(shafts: list, stages: list, runs: list[StageRun], bearings: 
     return shaft_runs, kh_rows, mis
 
 
-def _shaft_rotation(runs: list[StageRun]) -> list[int]:
-    """Sense of rotation of shafts 1…N+1 (+1 for the motor shaft): an external mesh
-    reverses it; a worm stage's crossed axes keep the sign by convention."""
-    s = [1]
-    for r in runs:
-        s.append(-s[-1] if r.reverses else s[-1])
-    return s
-
-
-def shaft_loads(sh: dict, k: int, runs: list[StageRun]) -> list[tuple[dict, int, GearLoad]]:
-    """The gears of the k-th [[shaft]]: ``(gear table, member, GearLoad)``, member 0 the
-    input member of the stage, 1 its output member."""
-    idx, key = sh["index"], f"shaft[{k}]"
-    out = []
-    for j, g in enumerate(sh["gear"]):
-        st = g["stage"]
-        if st == idx:
-            which = 0            # input member of stage idx
-        elif st == idx - 1:
-            which = 1            # output member of stage idx-1
-        else:
-            raise InputError.at(f"{key}.gear[{j}].stage", st,
-                                f"shaft {idx} carries stage {idx - 1} (output) and stage "
-                                f"{idx} (input) only")
-        if st > len(runs):
-            raise InputError.at(f"{key}.gear[{j}].stage", st,
-                                f"the drive has {len(runs)} stages")
-        out.append((g, which, runs[st - 1].gear_load(which, g["position"],
-                                                     math.radians(g["mate_angle"]),
-                                                     g["axial_sign"])))
-    return out
-
-
-def shaft_cases(shafts: list, runs: list[StageRun], n_m: float, L_h: float) -> list[dict]:
-    """The bearings of the shafts with their loads: one entry per bearing, ``{"shaft",
-    "side", "key", "name", "F_r", "F_a", "n", "data"}`` (``data``: the bearing spec)."""
-    rot = _shaft_rotation(runs)
-    speeds = [n_m] + [r.n_out for r in runs]
-    cases = []
-    for k, sh in enumerate(shafts):
-        idx = sh["index"]
-        key = f"shaft[{k}]"
-        if idx > len(runs) + 1:
-            raise InputError.at(f"{key}.index", idx, f"the drive has {len(runs) + 1} shafts "
-                                f"(1 … {len(runs) + 1})")
-        if sh["bearing_b"] == sh["bearing_a"]:
-            raise InputError.at(f"{key}.bearing_b", sh["bearing_b"],
-                                "the two bearings must be at different positions")
-        loads = [ld for _, _, ld in shaft_loads(sh, k, runs)] + external_loads(sh)
-        R = reactions(sh["bearing_a"], sh["bearing_b"], loads, rot[idx - 1])
-        name = sh["name"] or f"shaft {idx}"
-        for side in ("a", "b"):
-            F_r = R.F_rA if side == "a" else R.F_rB
-            F_a = R.axial if sh["fixed"] == side else 0.0
-            data = {"kind": "bearing", "method": sh["method"], "bearing": dict(sh[f"support_{side}"]),
-                    "load": {"F_r": F_r, "F_a": F_a, "speed": speeds[idx - 1]},
-                    "requirements": {"life": L_h}}
-            if sh.get("lubrication"):
-                data["lubrication"] = dict(sh["lubrication"])
-            cases.append(dict(shaft=idx, side=side, key=key, name=name, F_r=F_r, F_a=F_a,
-                              n=speeds[idx - 1], data=data))
-    return cases
-
-
-def run_bearing(case: dict) -> Result:
-    """The bearing calculator's result for one entry of :func:`shaft_cases`; problems
-    name the shaft's support."""
-    where = f"{case['key']}.support_{case['side']}"
-    try:
-        return run_data(case["data"], where)
-    except InputError as exc:
-        raise InputError([_bearing_problem(where, p) for p in exc.problems]) from None
-
-
-def _bearing_problem(where: str, p: Problem) -> Problem:
-    """A problem of a bearing spec the drive built: its ``load`` table is the drive's (the
-    reactions of the shaft), so say so and what to change instead of naming a key the
-    designer never wrote."""
-    if p.key.startswith("load."):
-        return Problem(f"{where}: {p.key}", f"{p.message} — this is the bearing load the drive "
-                       f"derived from the forces on the shaft: reduce them (torque, external "
-                       f"loads) or move the bearings", p.value)
-    return Problem(f"{where}: {p.key}", p.message, p.value)
-
-
 def _bearing_runs(shafts: list, runs: list[StageRun], n_m: float, L_h: float,
                   bearing_oil=None) -> list[tuple[dict, Result]]:
     """The bearings of the shafts by the bearing calculator: ``(case, result)``;
@@ -415,10 +334,7 @@ def _bearing_report(res: Result, bearings: list, L_h: float) -> None:
     for case, br in bearings:
         idx, side, name = case["shaft"], case["side"], case["name"]
         F_r, F_a, speed = case["F_r"], case["F_a"], case["n"]
-        v = {}
-        for section in br.document()["results"].values():
-            if isinstance(section, dict):
-                v.update(section)
+        v = values(br)
         life = v.get("L_sah", v.get("L_nmh", v.get("L10h")))
         lives.append(life)
         balls.append("ball" in str(v.get("type", "ball")))

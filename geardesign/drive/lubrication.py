@@ -21,6 +21,7 @@ from geardesign.core.spec import ValidatedSpec
 from geardesign.drive import heat as HEAT
 from geardesign.drive import losses as L
 from geardesign.drive import thermal as TH
+from geardesign.drive.stages import values
 from geardesign.materials import lubricants as OIL
 from geardesign.planetary.efficiency import EPS_ALPHA_RANGE, loss_factor_applies
 
@@ -52,14 +53,6 @@ class Thermal:
     bearing_oil: object = None
 
 
-def _values(res: Result) -> dict:
-    out = {}
-    for section in res.document()["results"].values():
-        if isinstance(section, dict):
-            out.update(section)
-    return out
-
-
 def _oil(spec: ValidatedSpec) -> tuple[HEAT.Oil, dict]:
     lub = spec.data["lubrication"]
     oil = OIL.find(lub["oil"])
@@ -82,27 +75,33 @@ def _mesh(run, stage: int) -> tuple[HEAT.Mesh | None, list[HEAT.DipGear], tuple 
     """Mesh data of a cylindrical involute stage (spur calculator), its two gears for the
     churning and (a_w, d_a1, d_a2, b) for the housing; (None, [], None) for others
     (worm, planetary, Novikov, an internal pair)."""
-    if run.result.kind != "spur":
+    rec = run.record
+    if run.kind != "spur" or rec is None:
         return None, [], None
-    doc = run.result.document()
-    v = _values(run.result)
-    gear = doc["inputs"]["gear"]
-    b = gear.get("face_width") or v.get("face_width_proposed")
-    z1, z2 = gear["z1"], gear["z2"]
-    if b is None or z2 < 0 or v.get("d_w2", -1.0) <= 0 or gear.get("internal"):
+    data = rec.inputs.spec.data
+    gear = data.get("gear") or {}
+    g = rec.geometry
+    g1, g2 = g.g1, g.g2
+    b = gear.get("face_width") or rec.inputs.pair.b_w
+    z1, z2 = rec.inputs.pair.z1, rec.inputs.pair.z2
+    if b is None or z2 < 0 or g2.d_w <= 0 or getattr(g, "internal", False):
         return None, [], None
+    # the loss model takes the angles in degrees
+    v = dict(p_bt=g.p_bt, d_a1=g1.d_a, d_a2=g2.d_a, d_b1=g1.d_b, d_b2=g2.d_b,
+             alpha_tw=math.degrees(g.alpha_tw), u=g.u, beta_b=math.degrees(g.beta_b),
+             eps_alpha=g.eps_alpha, d_w1=g1.d_w, d_w2=g2.d_w, a_w=g.a_w)
     pbt = v["p_bt"]
     e1, _ = L.partial_contact_ratios(v["d_a1"], v["d_a2"], v["d_b1"], v["d_b2"],
                                      v["alpha_tw"], pbt)
     P_in = run.T_in * run.n_in * math.pi / 30.0
     F_bt = 2000.0 * run.T_in / v["d_b1"]
-    mat = doc["inputs"].get("material") or {}
+    mat = data.get("material") or {}
     ras = [m.get("roughness_Ra") for m in (mat.get("pinion") or {}, mat.get("wheel") or {})
            if isinstance(m, dict) and m.get("roughness_Ra") is not None]
     Ra = sum(ras) / len(ras) if ras else None
     mesh = HEAT.Mesh(P_in, run.n_in, v["u"], z1, v["beta_b"], v["alpha_tw"], v["eps_alpha"],
                      e1, v["d_w1"], v["d_w2"], b, F_bt, Ra)
-    m_n, a_n = gear["module"], gear.get("pressure_angle", 20.0)
+    m_n, a_n = rec.inputs.pair.m_n, gear.get("pressure_angle", 20.0)
     dip = [HEAT.DipGear(stage, "pinion", v["d_w1"] / 2, v["d_a1"] / 2, b, z1, m_n, a_n,
                         run.n_in),
            HEAT.DipGear(stage, "wheel", v["d_w2"] / 2, v["d_a2"] / 2, b, z2, m_n, a_n,
@@ -190,7 +189,7 @@ def _build(spec, stages, runs, oil: HEAT.Oil) -> tuple:
 def _bearings(cases, bearing_results, n_stages: int) -> list[HEAT.BearingLoad]:
     out = []
     for c, br in zip(cases, bearing_results):
-        v = _values(br)
+        v = values(br)
         kind = v.get("type")
         if kind not in L.bearing_types() or v.get("d") is None or v.get("D") is None:
             continue
@@ -285,7 +284,7 @@ def _set_scuffing_oil(stages: list, scuff: dict, t_oil: float) -> bool:
 
 def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m, scuff: dict | None = None
           ) -> Thermal:
-    from geardesign.drive.calculator import run_bearing, shaft_cases
+    from geardesign.drive.shaft_loads import run_bearing, shaft_cases
 
     d = spec.data
     lub, th = d["lubrication"], d["thermal"]
@@ -310,7 +309,7 @@ def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m, scuff: dict | Non
             m.bearings = _bearings(cases, brs, len(runs))
         bores = {}
         for c, br in zip(cases, brs):
-            bores.setdefault(c["shaft"], _values(br).get("d"))
+            bores.setdefault(c["shaft"], values(br).get("d"))
         speeds = [n_m] + [r.n_out for r in runs]
         torques = [T_in] + [r.T_out for r in runs]
         last = len(runs) + 1
@@ -391,7 +390,7 @@ def report(res: Result, t: Thermal, stages) -> None:
     sec.add("P_Q", D.P_Q, "W", "P_Q", "heat given off at the sump temperature", SRC_HEAT)
     sec.add("A", hs.area, "m^2", "A", "cooling area of the housing" + (
         "" if t.box.get("area_given") else " (box without its base)" if not
-        res.document()["inputs"].get("thermal", {}).get("base_cooled") else " (box)"),
+        (res.inputs.get("thermal") or {}).get("base_cooled") else " (box)"),
         "given" if t.box.get("area_given") else "thermal dimensions")
     for k, name in (("L", "housing length"), ("W", "housing width"), ("H", "housing height")):
         sec.add(f"housing_{k}", t.box[k], "mm", k, name + (" (estimated)" if t.box.get(
@@ -403,7 +402,7 @@ def report(res: Result, t: Thermal, stages) -> None:
     for k, name in (("in", "input"), ("out", "output")):
         sec.add(f"d_seal_{k}", t.box[f"d_seal_{k}"], "mm", f"d_s,{k}", f"shaft diameter at the "
                 f"{name} lip seal", t.seal_source)
-    sec.add("V0", m.V0, "l", "V_0", "oil volume", "given" if res.document()["inputs"][
+    sec.add("V0", m.V0, "l", "V_0", "oil volume", "given" if res.inputs[
         "lubrication"].get("oil_volume") else "housing floor × oil depth")
     sec.add("h_free", D.h_free, "W/(m^2·K)", "α_free", "free convection coefficient",
             "[Incropera2007] eq. (9.26)")

@@ -104,7 +104,9 @@ def _inside(span, z: float, key: str, what: str) -> None:
 
 def _bearing_data(br: Result) -> tuple[float | None, str, str]:
     """Bore d, type and designation of a bearing calculator result."""
-    b = br.document()["results"].get("bearing", {})
+    from geardesign.drive.stages import sections
+
+    b = sections(br).get("bearing", {})
     return b.get("d"), b.get("type") or "", b.get("designation") or ""
 
 
@@ -358,7 +360,7 @@ def misalignment(runs_by_shaft: dict, stage_runs: list) -> dict:
     f_sh = |f_bend + f_twist|)."""
     out = {}
     for i, sr in enumerate(stage_runs, 1):
-        if sr.result.kind != "spur":
+        if sr.kind != "spur":
             continue
         pin = runs_by_shaft.get(i)
         whl = runs_by_shaft.get(i + 1)
@@ -377,7 +379,7 @@ def misalignment(runs_by_shaft: dict, stage_runs: list) -> dict:
             continue
         nx, ny = fx / norm, fy / norm
         d_n = (tp.slope_y - tw.slope_y) * nx + (tp.slope_z - tw.slope_z) * ny
-        b = sr.result.document()["inputs"]["gear"]["face_width"]
+        b = sr.inputs["gear"]["face_width"]
         f_bend = d_n * b * 1e3
         f_twist = _twist(pin, gp[0], b) + _twist(whl, gw[0], b)
         out[i] = dict(f_sh=abs(f_bend + f_twist), b=b, dtheta=d_n, f_bend=f_bend,
@@ -385,14 +387,16 @@ def misalignment(runs_by_shaft: dict, stage_runs: list) -> dict:
     return out
 
 
-def _iso_factors(res: Result) -> dict | None:
-    return res.document()["results"].get("iso6336_factors")
+def _rating(run, name: str) -> dict | None:
+    """The values of a spur stage's rating by ``name`` (None when not rated by it)."""
+    r = run.record.ratings.get(name)
+    return None if r is None else r.v
 
 
 def _iso_K_Hbeta(data: dict, sr, duty, where: str, f_sh: float) -> float:
     """K_Hβ of ISO 6336-1 method C of a stage rated to GOST, with ``f_sh`` (informative):
     the ISO rating record of the stage spec, no report."""
-    from geardesign.drive.stages import spur_data
+    from geardesign.drive.spur_stage import spur_data
     from geardesign.spur.strength.iso6336.report import iso_rating
 
     d = spur_data(data, sr.T_in, sr.n_in, duty, where)
@@ -416,9 +420,8 @@ def rate_with_misalignment(mis: dict, stages: list, stage_runs: list, duty, run_
     for i, m in mis.items():
         sr = stage_runs[i - 1]
         where, _, data, _ = stages[i - 1]
-        before = sr.result.document()["results"]
-        iso_before = before.get("iso6336_factors")
-        gost = before.get("factors")
+        iso_before = _rating(sr, ISO_METHOD)
+        gost = _rating(sr, "GOST 21354-87")
         f_sh = min(m["f_sh"], F_SH_MAX)
         capped = f" (capped at {F_SH_MAX:g} µm)" if m["f_sh"] > F_SH_MAX else ""
         K_new, note = None, ""
@@ -429,13 +432,14 @@ def rate_with_misalignment(mis: dict, stages: list, stage_runs: list, duty, run_
                 iso = d["iso"] = {}
             iso["f_sh"] = f_sh
             new = run_spur(d, sr.T_in, sr.n_in, duty, sr.efficiency, where)
-            K_new = _iso_factors(new.result)["K_Hbeta"]
+            K_new = _rating(new, ISO_METHOD)["K_Hbeta"]
             new.result.checks.append(check(
                 "F_SH_FROM_SHAFTS", False, "info",
                 f"the drive sets iso.f_sh = {f_sh:.3g} µm from the slopes of the analysed "
                 f"shafts and the twist of the gears{capped} (the formula of ISO 6336-1 7.6.3 gives "
                 f"{iso_before['f_sh']:.3g} µm)", "", f_sh, None, "drive"))
-            sr.result, sr.margin, sr.margin_of = new.result, new.margin, new.margin_of
+            sr.result, sr.record = new.result, new.record
+            sr.margin, sr.margin_of = new.margin, new.margin_of
             rows.append(dict(stage=i, method="ISO 6336:2019", b=m["b"],
                              f_sh_formula=iso_before["f_sh"], f_bend=m["f_bend"],
                              f_twist=m["f_twist"], f_sh=m["f_sh"],

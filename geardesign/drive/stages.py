@@ -2,15 +2,20 @@
 
 A stage adapter puts the stage's input torque and speed (and the drive's life, regime,
 application factor and peak torque, where the stage spec does not give its own) into the
-stage spec, runs the stage's own calculator, and reads back the ratio, the efficiency,
-the output torque and speed, the mesh forces on the input and output members (for the
-shafts) and the worst safety margin.  No formula of a calculator is repeated here.
+stage spec and reads back the ratio, the efficiency, the output torque and speed, the mesh
+forces on the input and output members (for the shafts) and the worst safety margin.  A
+spur stage is read into typed inputs (:func:`geardesign.spur.inputs.from_spec`) and solved
+once per pass (:func:`geardesign.spur.solve.solve`); its values come from the typed record,
+and its report (with the advice of its failed checks) is written only when the drive's
+report asks for it, from the last pass.  The worm, Novikov and planetary stages run their
+calculators.  No formula of a calculator is repeated here.
 """
 
 from __future__ import annotations
 
 import copy
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from typing import Any, Callable
 
 from geardesign.core.errors import InputError, Problem
 from geardesign.core.registry import load_data
@@ -45,7 +50,11 @@ class Member:
 
 @dataclass
 class StageRun:
-    result: Result
+    """A stage computed in one pass.  ``record``: the typed record of a spur stage
+    (:class:`geardesign.spur.solve.Record`); ``result``: the stage's report, written on
+    first use (``make_report``) or given (the other calculators)."""
+
+    kind: str
     ratio: float
     efficiency: float
     efficiency_source: str
@@ -57,6 +66,26 @@ class StageRun:
     margin: float | None
     margin_of: str
     reverses: bool                 # output turns opposite to the input (external mesh)
+    record: Any = None
+    make_report: Callable[[], Result] | None = field(default=None, repr=False)
+    given: Result | None = field(default=None, repr=False)
+
+    @property
+    def result(self) -> Result:
+        if self.given is None:
+            self.given = self.make_report()
+        return self.given
+
+    @result.setter
+    def result(self, res: Result) -> None:
+        self.given = res
+
+    @property
+    def inputs(self) -> dict:
+        """The stage's validated spec data (what its report echoes)."""
+        if self.record is not None:
+            return self.record.inputs.spec.data
+        return self.result.inputs
 
     def gear_load(self, which: int, z: float, mate_angle: float, axial_sign: int) -> GearLoad:
         m = self.members[which]
@@ -64,11 +93,25 @@ class StageRun:
                         axial_sign=axial_sign)
 
 
-def _values(doc: dict) -> dict:
+def sections(res: Result) -> dict:
+    """The report sections of a result as its JSON document has them, ``{section: {key:
+    value}}`` (values cleaned as there), without writing the whole document."""
+    from geardesign.core.result import clean_value
+
+    out: dict = {}
+    for sec in res.sections:
+        block = out.setdefault(sec.key, {})
+        for row in sec.rows:
+            block[row.key] = clean_value(row.value)
+    return out
+
+
+def values(res: Result) -> dict:
+    """Every row of a result's sections by key (a later section's row wins), as read from
+    its JSON document."""
     out = {}
-    for section in doc["results"].values():
-        if isinstance(section, dict):
-            out.update(section)
+    for block in sections(res).values():
+        out.update(block)
     return out
 
 
@@ -80,17 +123,6 @@ def _margins(section: dict, prefix: str = "") -> dict:
         need = section.get(f"{k}_min", section.get(f"{k[:3]}min"))
         if section.get(k) is not None and need:
             out[prefix + k] = section[k] / need
-    return out
-
-
-def _strength_margins(results: dict) -> dict:
-    """Margins of every method a spur stage was rated by (GOST sections ``contact`` and
-    ``bending``; ISO 6336 ``iso6336_contact`` and ``iso6336_bending``, named with ``ISO``)."""
-    out = {}
-    for name, prefix in (("contact", ""), ("bending", ""), ("iso6336_contact", "ISO "),
-                         ("iso6336_bending", "ISO ")):
-        if isinstance(results.get(name), dict):
-            out.update(_margins(results[name], prefix))
     return out
 
 
@@ -106,14 +138,9 @@ _SET_BY_DRIVE = {
 """The loads a drive always sets on a stage (its own values are not used)."""
 
 
-def _run(data: dict, where: str, original: dict | None = None) -> Result:
-    """Validate and compute a stage spec; problems name the stage.  The stage's report says
-    which of its loads the drive set (``original`` is the stage spec as written)."""
-    try:
-        calc, spec = load_data(data, where)
-        res = calc.compute(spec)
-    except InputError as exc:
-        raise _named(exc, where) from None
+def _set_by_drive(res: Result, data: dict, original: dict | None) -> None:
+    """The info check of a stage report that says which of its loads the drive set
+    (``data``: the stage spec with the drive's loads, ``original`` as written)."""
     kind = data.get("kind")
     if kind in _SET_BY_DRIVE:
         from geardesign.core.result import check
@@ -130,6 +157,17 @@ def _run(data: dict, where: str, original: dict | None = None) -> Result:
             + (f" (the stage's own {', '.join(replaced)} not used)" if replaced else "")
             + "; life, application factor and peak torque come from the drive where the "
               "stage gives none", "", None, None, "drive"))
+
+
+def _run(data: dict, where: str, original: dict | None = None) -> Result:
+    """Validate and compute a stage spec; problems name the stage.  The stage's report says
+    which of its loads the drive set (``original`` is the stage spec as written)."""
+    try:
+        calc, spec = load_data(data, where)
+        res = calc.compute(spec)
+    except InputError as exc:
+        raise _named(exc, where) from None
+    _set_by_drive(res, data, original)
     return res
 
 
@@ -174,59 +212,6 @@ def _put(table: dict, key: str, value) -> None:
         table[key] = value
 
 
-def spur_data(data: dict, T_in: float, n_in: float, duty: Duty, where: str) -> dict:
-    """A copy of the spur stage spec with the drive's load in it, validated."""
-    d = copy.deepcopy(data)
-    load = _table(d, "load", where)
-    load["torque1"], load["speed1"] = T_in, n_in
-    load.pop("power", None)
-    _put(load, "life_hours", duty.L_h)
-    _put(load, "application_factor", duty.K_A)
-    if duty.peak_ratio is not None:
-        _put(load, "peak_torque1", T_in * duty.peak_ratio)
-    opts = d.get("options")
-    if duty.method is not None:
-        opts = d.setdefault("options", {})
-        if isinstance(opts, dict) and not opts.get("method") and not opts.get("methods"):
-            opts["method"] = duty.method
-    from geardesign.spur.strength.iso6336.spec import ISO_NAME
-
-    methods = (opts.get("methods") or [opts.get("method")]) if isinstance(opts, dict) else []
-    if not load.get("spectrum") and methods != [ISO_NAME]:   # ISO 6336 has no GOST regime
-        _put(load, "regime", duty.regime)
-    _validate(d, where)
-    if d.get("material") is None:
-        raise InputError(Problem(f"{where}: material", "missing table [material.pinion] and "
-                                 "[material.wheel]: a drive rates every stage for strength"))
-    return d
-
-
-def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
-             where: str) -> StageRun:
-    d = spur_data(data, T_in, n_in, duty, where)
-    res = _run(d, where, data)
-    v = _values(res.document())
-    u = v["u"]
-    e, src = (eta, "spec") if eta is not None else (ETA_CYLINDRICAL, "assumed (handbook)")
-    results = res.document()["results"]
-    margins = _strength_margins(results)
-    if not margins:
-        # the spur calculator rates no strength for a pair that cannot mesh as computed
-        # (ε_α < 1, a pointed tooth, ...): the drive has no margin and no mesh forces
-        failed = [c for c in res.checks if not c.passed and c.severity == "error"
-                  and c.code != "STRENGTH_NOT_RATED"]
-        why = "; ".join(f"{c.code}: {c.message}" for c in failed[:2]) or "see its checks"
-        raise InputError(Problem(
-            f"{where}.gear", f"the stage's gears cannot mesh as given, so the drive cannot "
-            f"rate it ({why})"))
-    worst = min(margins, key=margins.get)
-    forces = results["forces"]     # the mesh forces (an ISO section also prints an F_t)
-    F_t, F_r, F_a = forces["F_t"], forces["F_r"], forces["F_a"]
-    return StageRun(res, u, e, src, T_in, n_in, T_in * u * e, n_in / u,
-                    (Member(F_t, F_r, F_a, v["d_w1"] / 2), Member(F_t, F_r, F_a, v["d_w2"] / 2)),
-                    margins[worst], worst, True)
-
-
 def run_novikov(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
                 where: str) -> StageRun:
     d = copy.deepcopy(data)
@@ -237,14 +222,14 @@ def run_novikov(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | N
     _put(load, "life", duty.L_h)
     _put(load, "application_factor", duty.K_A)
     res = _run(d, where, data)
-    v = _values(res.document())
+    v = values(res)
     margins = {"S_H": v["S_H"] / v["S_H_min"], "S_F1": v["S_F1"] / v["S_F_min"],
                "S_F2": v["S_F2"] / v["S_F_min"]}
     worst = min(margins, key=margins.get)
     F_t, F_r, F_a = v["F_t"], v["F_r"], v["F_a"]
-    return StageRun(res, v["u"], e, src, T_in, n_in, T_in * v["u"] * e, n_in / v["u"],
+    return StageRun("novikov", v["u"], e, src, T_in, n_in, T_in * v["u"] * e, n_in / v["u"],
                     (Member(F_t, F_r, F_a, v["d1"] / 2), Member(F_t, F_r, F_a, v["d2"] / 2)),
-                    margins[worst], worst, True)
+                    margins[worst], worst, True, given=res)
 
 
 def run_worm(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
@@ -262,7 +247,7 @@ def run_worm(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
     for _ in range(WORM_ITERATIONS):
         load["torque2"] = T2
         res = _run(d, where, data)
-        v = _values(res.document())
+        v = values(res)
         if abs(v["T1"] - T_in) <= 1e-9 * T_in:
             break
         T2 *= T_in / v["T1"]
@@ -272,8 +257,8 @@ def run_worm(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
     worst = min(margins, key=margins.get)
     worm = Member(v["F_t1"], v["F_r"], v["F_t2"], v["d_w1"] / 2)
     wheel = Member(v["F_t2"], v["F_r"], v["F_t1"], v["d2"] / 2)
-    return StageRun(res, u, e, src, T_in, n_in, T_in * u * e, n_in / u, (worm, wheel),
-                    margins[worst], worst, False)
+    return StageRun("worm", u, e, src, T_in, n_in, T_in * u * e, n_in / u, (worm, wheel),
+                    margins[worst], worst, False, given=res)
 
 
 def run_planetary(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
@@ -299,9 +284,8 @@ def run_planetary(data: dict, T_in: float, n_in: float, duty: Duty, eta: float |
         if duty.peak_ratio is not None:
             _put(st, "peak_torque", T_in * duty.peak_ratio)
     res = _run(d, where, data)
-    doc = res.document()
-    r = doc["results"]
-    ops = doc["inputs"]["operation"]
+    r = sections(res)
+    ops = res.inputs["operation"]
     n_out = r["kinematics"][f"n_{ops['output']}"]
     T_out = abs(r["power"][f"T_{ops['output']}"])
     e = eta if eta is not None else r["efficiency"]["eta"]
@@ -315,9 +299,5 @@ def run_planetary(data: dict, T_in: float, n_in: float, duty: Duty, eta: float |
             margins.update(_margins(v, f"{mesh}."))
     worst = min(margins, key=margins.get) if margins else ""
     zero = Member(0.0, 0.0, 0.0, 0.0)
-    return StageRun(res, abs(n_in / n_out), e, src, T_in, n_in, T_out, abs(n_out), (zero, zero),
-                    margins.get(worst), worst, n_out * n_in < 0)
-
-
-ADAPTERS = {"spur": run_spur, "worm": run_worm, "novikov": run_novikov,
-            "planetary": run_planetary}
+    return StageRun("planetary", abs(n_in / n_out), e, src, T_in, n_in, T_out, abs(n_out),
+                    (zero, zero), margins.get(worst), worst, n_out * n_in < 0, given=res)

@@ -6,20 +6,24 @@ from geardesign.spur.strength.iso6336 import rating as IR
 from geardesign.spur.strength.iso6336.spec import ISO_NAME, gear_checks, iso_setting
 
 
-def add_iso_strength(res, geom, spec, inputs) -> dict:
-    """Rate the pair of a spur spec to ISO 6336 (``inputs`` from the calculator's
-    ``_strength_inputs``): rows under the sections ``iso6336_*``, checks, method name; the
-    rating's value record."""
+def add_iso_strength(res, geom, spec, inputs, rating=None, iso=None) -> dict:
+    """Rate the pair of a spur spec to ISO 6336 (``inputs``: materials, duty, setting;
+    ``rating`` and its ``iso`` setting when already rated): rows under the sections
+    ``iso6336_*``, checks, method name; the rating's value record."""
     mats, duty, setting = inputs
-    gear_checks(spec.data["iso"], geom)
-    iso = iso_setting(spec)
-    rating = IR.rate(geom, mats, duty, setting, iso)
+    if rating is None:
+        gear_checks(spec.data["iso"], geom)
+        iso = iso_setting(spec)
+        rating = IR.rate(geom, mats, duty, setting, iso)
     res.methods.append(ISO_NAME)
     for row in rating.rows:
         res.section(row.section, IR.SECTIONS[row.section]).add(
             row.key, row.value, row.unit, row.symbol, row.name, row.source)
     internal = bool(getattr(geom, "internal", False))
-    found = None if internal else _advice(rating.v, geom, mats, duty, setting, iso)
+    from geardesign.core.advice import rerating
+
+    found = None if internal or rerating() else _advice(rating.v, geom, mats, duty, setting,
+                                                         iso)
     res.checks.extend(IR.rating_checks(rating, internal, found=found))
     from geardesign.spur.methods_differ import ISO, advised
 
@@ -37,7 +41,7 @@ def iso_rating(spec) -> "IR.Rating":
     """The ISO 6336 rating record of a spur spec, without report rows or advice: for a
     caller that needs a factor of it (e.g. a drive's K_Hβ with the misalignment its shafts
     give).  The spec must rate strength (torque and materials)."""
-    from geardesign.spur.calculator import _strength_inputs, solve_geometry
+    from geardesign.spur.spec_inputs import _strength_inputs, solve_geometry
 
     geom, _ = solve_geometry(spec)
     mats, duty, setting = _strength_inputs(spec, spec.data["gear"])

@@ -1,0 +1,145 @@
+"""CPU time of composed drives, before and after, side by side in one process.
+
+    python benchmarks/drive_composition.py [--base 5a58329] [--rounds 15]
+
+The package at ``--base`` (a commit: checked out into a temporary ``git worktree``) and
+the package of this checkout are both imported into this one process, each under its own
+``sys.modules`` (swapped in for its calls, so that the imports inside functions resolve
+to the right version).  Each round times one warm run of each spec by each version
+(``time.process_time``: CPU time of the process, one BLAS thread), alternating which
+version goes first; the figures are the medians over the rounds and the median of the
+paired ratios old/new.  The cases: the drive golden with shafts, keys and heat balance
+(``specs/drive_reducer_shafts_keys_thermal.toml``), a two-stage drive rated by GOST
+21354-87 and ISO 6336 (``specs/drive_two_stage_reducer.toml`` with both methods), and the
+spur golden ``specs/spur_plain.toml`` for scale.  A run is the calculator's ``compute``
+and the JSON document of its result.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+os.environ.setdefault("OMP_NUM_THREADS", "1")
+
+import contextlib  # noqa: E402
+import copy  # noqa: E402
+import statistics  # noqa: E402
+import subprocess  # noqa: E402
+import sys  # noqa: E402
+import tempfile  # noqa: E402
+import time  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+ROOT = Path(__file__).resolve().parent.parent
+SPECS = ROOT / "specs"
+
+
+def _ours() -> dict:
+    return {k: m for k, m in sys.modules.items()
+            if k == "geardesign" or k.startswith("geardesign.")}
+
+
+def load_version(root: Path) -> dict:
+    """Import ``geardesign`` from ``root`` into its own set of modules."""
+    saved = _ours()
+    for k in saved:
+        del sys.modules[k]
+    sys.path.insert(0, str(root))
+    try:
+        import geardesign.core.registry  # noqa: F401
+        import geardesign.core.spec  # noqa: F401
+        mods = _ours()
+    finally:
+        sys.path.remove(str(root))
+        for k in _ours():
+            del sys.modules[k]
+        sys.modules.update(saved)
+    assert Path(mods["geardesign"].__file__).resolve().is_relative_to(root.resolve())
+    return mods
+
+
+@contextlib.contextmanager
+def active(mods: dict):
+    saved = _ours()
+    for k in saved:
+        del sys.modules[k]
+    sys.modules.update(mods)
+    try:
+        yield mods
+    finally:
+        mods.update(_ours())          # modules imported lazily during the call stay
+        for k in _ours():
+            del sys.modules[k]
+        sys.modules.update(saved)
+
+
+def two_methods(data: dict) -> dict:
+    """The two-stage reducer with both stages rated by GOST 21354-87 and ISO 6336."""
+    d = copy.deepcopy(data)
+    for st in d["stage"]:
+        st.setdefault("options", {})["methods"] = ["GOST 21354-87", "ISO 6336:2019"]
+        st["options"].pop("method", None)
+        st.get("load", {}).pop("regime", None)
+    d["load"].pop("method", None)
+    return d
+
+
+def runner(mods: dict, name: str, transform=None):
+    with active(mods):
+        reg = sys.modules["geardesign.core.registry"]
+        spec_mod = sys.modules["geardesign.core.spec"]
+        path = SPECS / name
+        data = spec_mod.load_toml(path)
+    if transform is not None:
+        data = transform(data)
+
+    def run() -> float:
+        with active(mods):
+            d = copy.deepcopy(data)
+            t0 = time.process_time()
+            calc, spec = reg.load_data(d, str(path))
+            spec.base_dir = path.parent
+            calc.compute(spec).document()
+            return time.process_time() - t0
+    return run
+
+
+CASES = [("drive golden: shafts, keys, heat balance", "drive_reducer_shafts_keys_thermal.toml",
+          None),
+         ("two-stage drive, GOST 21354-87 + ISO 6336", "drive_two_stage_reducer.toml",
+          two_methods),
+         ("spur golden (scale)", "spur_plain.toml", None)]
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--base", default="5a58329")
+    ap.add_argument("--rounds", type=int, default=15)
+    args = ap.parse_args()
+    with tempfile.TemporaryDirectory() as tmp:
+        old_root = Path(tmp) / "base"
+        subprocess.run(["git", "worktree", "add", "--detach", str(old_root), args.base],
+                       cwd=ROOT, check=True, capture_output=True)
+        try:
+            old, new = load_version(old_root), load_version(ROOT)
+            print(f"{'case':45s} {'old ms':>8s} {'new ms':>8s} {'old/new':>8s}")
+            for title, name, tf in CASES:
+                ro, rn = runner(old, name, tf), runner(new, name, tf)
+                ro(), rn()                       # warm: imports, caches
+                to, tn, ratio = [], [], []
+                for i in range(args.rounds):
+                    a, b = (ro(), rn()) if i % 2 == 0 else tuple(reversed((rn(), ro())))
+                    to.append(a)
+                    tn.append(b)
+                    ratio.append(a / b)
+                print(f"{title:45s} {1e3 * statistics.median(to):8.1f} "
+                      f"{1e3 * statistics.median(tn):8.1f} {statistics.median(ratio):8.2f}")
+        finally:
+            subprocess.run(["git", "worktree", "remove", "--force", str(old_root)], cwd=ROOT,
+                           capture_output=True)
+
+
+if __name__ == "__main__":
+    main()

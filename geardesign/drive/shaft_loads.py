@@ -1,0 +1,100 @@
+"""The loads of a drive's shafts and their bearings: the sense of rotation of each shaft,
+the gears on it with their mesh forces (:class:`~geardesign.drive.shafts.GearLoad`), the
+bearing reactions (:func:`~geardesign.drive.shafts.reactions`) and the bearing calculator's
+result for each support.  Used by the drive's report (:mod:`.calculator`) and its heat
+balance (:mod:`.lubrication`)."""
+
+from __future__ import annotations
+
+import math
+
+from geardesign.core.errors import InputError, Problem
+from geardesign.core.registry import run_data
+from geardesign.core.result import Result
+from geardesign.drive.shafts import GearLoad, external_loads, reactions
+from geardesign.drive.stages import StageRun
+
+
+def _shaft_rotation(runs: list[StageRun]) -> list[int]:
+    """Sense of rotation of shafts 1…N+1 (+1 for the motor shaft): an external mesh
+    reverses it; a worm stage's crossed axes keep the sign by convention."""
+    s = [1]
+    for r in runs:
+        s.append(-s[-1] if r.reverses else s[-1])
+    return s
+
+
+def shaft_loads(sh: dict, k: int, runs: list[StageRun]) -> list[tuple[dict, int, GearLoad]]:
+    """The gears of the k-th [[shaft]]: ``(gear table, member, GearLoad)``, member 0 the
+    input member of the stage, 1 its output member."""
+    idx, key = sh["index"], f"shaft[{k}]"
+    out = []
+    for j, g in enumerate(sh["gear"]):
+        st = g["stage"]
+        if st == idx:
+            which = 0            # input member of stage idx
+        elif st == idx - 1:
+            which = 1            # output member of stage idx-1
+        else:
+            raise InputError.at(f"{key}.gear[{j}].stage", st,
+                                f"shaft {idx} carries stage {idx - 1} (output) and stage "
+                                f"{idx} (input) only")
+        if st > len(runs):
+            raise InputError.at(f"{key}.gear[{j}].stage", st,
+                                f"the drive has {len(runs)} stages")
+        out.append((g, which, runs[st - 1].gear_load(which, g["position"],
+                                                     math.radians(g["mate_angle"]),
+                                                     g["axial_sign"])))
+    return out
+
+
+def shaft_cases(shafts: list, runs: list[StageRun], n_m: float, L_h: float) -> list[dict]:
+    """The bearings of the shafts with their loads: one entry per bearing, ``{"shaft",
+    "side", "key", "name", "F_r", "F_a", "n", "data"}`` (``data``: the bearing spec)."""
+    rot = _shaft_rotation(runs)
+    speeds = [n_m] + [r.n_out for r in runs]
+    cases = []
+    for k, sh in enumerate(shafts):
+        idx = sh["index"]
+        key = f"shaft[{k}]"
+        if idx > len(runs) + 1:
+            raise InputError.at(f"{key}.index", idx, f"the drive has {len(runs) + 1} shafts "
+                                f"(1 … {len(runs) + 1})")
+        if sh["bearing_b"] == sh["bearing_a"]:
+            raise InputError.at(f"{key}.bearing_b", sh["bearing_b"],
+                                "the two bearings must be at different positions")
+        loads = [ld for _, _, ld in shaft_loads(sh, k, runs)] + external_loads(sh)
+        R = reactions(sh["bearing_a"], sh["bearing_b"], loads, rot[idx - 1])
+        name = sh["name"] or f"shaft {idx}"
+        for side in ("a", "b"):
+            F_r = R.F_rA if side == "a" else R.F_rB
+            F_a = R.axial if sh["fixed"] == side else 0.0
+            data = {"kind": "bearing", "method": sh["method"], "bearing": dict(sh[f"support_{side}"]),
+                    "load": {"F_r": F_r, "F_a": F_a, "speed": speeds[idx - 1]},
+                    "requirements": {"life": L_h}}
+            if sh.get("lubrication"):
+                data["lubrication"] = dict(sh["lubrication"])
+            cases.append(dict(shaft=idx, side=side, key=key, name=name, F_r=F_r, F_a=F_a,
+                              n=speeds[idx - 1], data=data))
+    return cases
+
+
+def run_bearing(case: dict) -> Result:
+    """The bearing calculator's result for one entry of :func:`shaft_cases`; problems
+    name the shaft's support."""
+    where = f"{case['key']}.support_{case['side']}"
+    try:
+        return run_data(case["data"], where)
+    except InputError as exc:
+        raise InputError([_bearing_problem(where, p) for p in exc.problems]) from None
+
+
+def _bearing_problem(where: str, p: Problem) -> Problem:
+    """A problem of a bearing spec the drive built: its ``load`` table is the drive's (the
+    reactions of the shaft), so say so and what to change instead of naming a key the
+    designer never wrote."""
+    if p.key.startswith("load."):
+        return Problem(f"{where}: {p.key}", f"{p.message} — this is the bearing load the drive "
+                       f"derived from the forces on the shaft: reduce them (torque, external "
+                       f"loads) or move the bearings", p.value)
+    return Problem(f"{where}: {p.key}", p.message, p.value)

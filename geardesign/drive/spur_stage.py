@@ -1,0 +1,143 @@
+"""A spur stage of a drive: the stage spec with the drive's load read into typed inputs
+(:func:`geardesign.spur.inputs.from_spec`) and solved once per pass
+(:func:`geardesign.spur.solve.solve`); ratio, margins and mesh forces come from the typed
+record, and the stage's report (with the advice of its failed checks) is written only when
+the drive's report asks for it, from the last pass."""
+
+from __future__ import annotations
+
+import copy
+
+from geardesign.core.errors import InputError, Problem
+from geardesign.core.registry import load_data
+from geardesign.core.result import Result
+from geardesign.drive.stages import (
+    ETA_CYLINDRICAL,
+    Duty,
+    Member,
+    StageRun,
+    _named,
+    _put,
+    _set_by_drive,
+    _table,
+    _validate,
+)
+
+
+def _spur_loads(data: dict, T_in: float, n_in: float, duty: Duty, where: str) -> dict:
+    """A copy of the spur stage spec with the drive's load in it."""
+    d = copy.deepcopy(data)
+    load = _table(d, "load", where)
+    load["torque1"], load["speed1"] = T_in, n_in
+    load.pop("power", None)
+    _put(load, "life_hours", duty.L_h)
+    _put(load, "application_factor", duty.K_A)
+    if duty.peak_ratio is not None:
+        _put(load, "peak_torque1", T_in * duty.peak_ratio)
+    opts = d.get("options")
+    if duty.method is not None:
+        opts = d.setdefault("options", {})
+        if isinstance(opts, dict) and not opts.get("method") and not opts.get("methods"):
+            opts["method"] = duty.method
+    from geardesign.spur.strength.iso6336.spec import ISO_NAME
+
+    methods = (opts.get("methods") or [opts.get("method")]) if isinstance(opts, dict) else []
+    if not load.get("spectrum") and methods != [ISO_NAME]:   # ISO 6336 has no GOST regime
+        _put(load, "regime", duty.regime)
+    return d
+
+
+def _no_material(where: str) -> InputError:
+    return InputError(Problem(f"{where}: material", "missing table [material.pinion] and "
+                              "[material.wheel]: a drive rates every stage for strength"))
+
+
+def spur_data(data: dict, T_in: float, n_in: float, duty: Duty, where: str) -> dict:
+    """A copy of the spur stage spec with the drive's load in it, validated."""
+    d = _spur_loads(data, T_in, n_in, duty, where)
+    _validate(d, where)
+    if d.get("material") is None:
+        raise _no_material(where)
+    return d
+
+
+def spur_inputs(data: dict, T_in: float, n_in: float, duty: Duty, where: str):
+    """The typed inputs (:class:`geardesign.spur.inputs.Inputs`) of a spur stage with the
+    drive's load: the stage spec validated once; problems name the stage."""
+    from geardesign.core.registry import _say_default
+    from geardesign.spur.inputs import from_spec
+
+    d = _spur_loads(data, T_in, n_in, duty, where)
+    has_material = d.get("material") is not None
+    try:
+        _, spec = load_data(d, where)
+    except InputError as exc:
+        raise _named(exc, where) from None
+    if not has_material:
+        raise _no_material(where)
+    try:
+        return from_spec(spec)
+    except InputError as exc:
+        raise _named(InputError([_say_default(p, spec) for p in exc.problems]), where) \
+            from None
+
+
+def _spur_report(record, where: str, original: dict) -> Result:
+    """The report of a solved spur stage as its calculator gives it (the result guard,
+    the advice of its failed checks by re-rating), with the loads the drive set."""
+    from geardesign.core.registry import _say_default
+    from geardesign.core.result import guard
+    from geardesign.spur import CALCULATOR
+    from geardesign.spur.report import report
+
+    spec = record.inputs.spec
+    try:
+        try:
+            res = guard(report(record))
+        except InputError as exc:
+            raise InputError([_say_default(p, spec) for p in exc.problems]) from exc
+        from geardesign.core.advice import advise, rerating
+
+        if res.failed and not rerating():   # a re-rating of the drive reads verdicts only
+            from geardesign.spur.levers import LEVERS
+
+            res = advise(CALCULATOR, spec, res, LEVERS)
+    except InputError as exc:
+        raise _named(exc, where) from None
+    _set_by_drive(res, spec.data, original)
+    return res
+
+
+def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
+             where: str) -> StageRun:
+    """A spur stage solved once (:func:`geardesign.spur.solve.solve`), its report written
+    on demand."""
+    from geardesign.spur import solve as SOLVE
+
+    inputs = spur_inputs(data, T_in, n_in, duty, where)
+    try:
+        rec = SOLVE.solve(inputs)
+    except InputError as exc:
+        raise _named(exc, where) from None
+    g = rec.geometry
+    u = g.u
+    e, src = (eta, "spec") if eta is not None else (ETA_CYLINDRICAL, "assumed (handbook)")
+    margins = rec.margins()
+    run = StageRun("spur", u, e, src, T_in, n_in, T_in * u * e, n_in / u,
+                   (Member(0.0, 0.0, 0.0, 0.0),) * 2, None, "", True, rec,
+                   lambda: _spur_report(rec, where, data))
+    if not margins:
+        # the spur calculator rates no strength for a pair that cannot mesh as computed
+        # (ε_α < 1, a pointed tooth, ...): the drive has no margin and no mesh forces
+        failed = [c for c in run.result.checks if not c.passed and c.severity == "error"
+                  and c.code != "STRENGTH_NOT_RATED"]
+        why = "; ".join(f"{c.code}: {c.message}" for c in failed[:2]) or "see its checks"
+        raise InputError(Problem(
+            f"{where}.gear", f"the stage's gears cannot mesh as given, so the drive cannot "
+            f"rate it ({why})"))
+    worst = min(margins, key=margins.get)
+    forces = (rec.ratings[SOLVE.GOST] if SOLVE.GOST in rec.ratings else rec.forces).v
+    F_t, F_r, F_a = forces["F_t"], forces["F_r"], forces["F_a"]
+    run.members = (Member(F_t, F_r, F_a, g.g1.d_w / 2), Member(F_t, F_r, F_a, g.g2.d_w / 2))
+    run.margin, run.margin_of = margins[worst], worst
+    return run

@@ -1,0 +1,66 @@
+"""The Python API (docs/api.md): the document's examples run, the typed path gives the
+command line's documents, and ``import geardesign`` stays cheap."""
+
+import doctest
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import geardesign
+from geardesign.core.registry import run
+from tests.conftest import SPECS
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def test_the_api_document_runs(monkeypatch):
+    monkeypatch.chdir(ROOT)
+    out = doctest.testfile(str(ROOT / "docs" / "api.md"), module_relative=False,
+                           optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    assert out.attempted > 20 and out.failed == 0
+
+
+@pytest.mark.parametrize("path", sorted(SPECS.glob("spur_*.toml")), ids=lambda p: p.stem)
+def test_load_solve_report_gives_the_command_lines_document(path):
+    """report(solve(load(spec))) is the document of `geardesign run spec`."""
+    doc = geardesign.report(geardesign.solve(geardesign.load(path))).document()
+    assert json.dumps(doc, sort_keys=True) == json.dumps(run(path).document(), sort_keys=True)
+
+
+def test_records_convert_to_json_safe_data_and_flat_rows():
+    from geardesign import spur
+
+    r = spur.solve(geardesign.load(SPECS / "spur_gost_vs_iso.toml"))
+    json.dumps(r.asdict(), allow_nan=False)
+    flat = r.flat()
+    assert all(not isinstance(v, (dict, list)) for v in flat.values())
+    assert flat["GOST.S_H1"] == r.ratings["GOST 21354-87"].v["S_H1"]
+    assert flat["ISO.S_F2"] == r.ratings["ISO 6336:2019"].v["S_F2"]
+    assert flat["d_a1"] == r.geometry.g1.d_a
+    rows = r.rows()
+    assert {"section", "key", "value", "unit", "symbol", "name", "source"} == set(rows[0])
+    json.dumps(rows, allow_nan=False)
+    assert geardesign.rows([r]) == [flat]
+
+
+def test_replace_changes_pair_and_duty_fields():
+    inp = geardesign.load(SPECS / "spur_reducer_through_hardened.toml")
+    b = inp.replace(b_w=40.0, T1=100.0)
+    assert b.pair.b_w == 40.0 and b.strength.duty.T1 == 100.0 and b.spec is None
+    assert inp.pair.b_w == 63.0
+    fast = inp.replace(n1=1460.0)
+    assert fast.speed1 == fast.strength.duty.n1 == 1460.0
+    assert geardesign.solve(fast).velocities.n2 == pytest.approx(1460.0 * 22 / 87)
+    with pytest.raises(ValueError, match="spec"):
+        geardesign.report(geardesign.solve(b))
+
+
+def test_import_geardesign_imports_no_calculator():
+    code = ("import sys, geardesign; "
+            "print(sorted(m for m in sys.modules if m.startswith('geardesign')))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         cwd=ROOT, check=True).stdout
+    assert out.strip() == "['geardesign']"
