@@ -48,6 +48,7 @@ LONG = {
                        "material and method keys",
     "report/figures.py": SPLITTING + ": one module of pictures per calculator kind",
     "report/html.py": SPLITTING + ": the first screen apart from the sections",
+    "spur/spec_inputs.py": SPLITTING + ": the ISO 6336 readers apart from the pair and duty",
     # a reason of its own
     "bearing/life.py": "the ISO 281:2007 / GOST 18855 life formulas, one function per "
                        "equation with its doctest and clause; " + SPLITTING + " by part "

@@ -12,7 +12,7 @@ from typing import Any
 
 from geardesign import __version__
 from geardesign.core.result import Check, Result, Row, cleaned
-from geardesign.core.text import escape_controls, json_text
+from geardesign.core.text import escape_controls, fmt, json_text, verdict_line  # noqa: F401
 
 FORMATS = ("table", "json", "jsonl", "markdown", "csv", "html", "pdf")
 
@@ -26,37 +26,8 @@ _STATUS = {  # (failed?, severity) -> (mark, word, rich style)
 }
 
 
-def fmt(value: Any) -> str:
-    """Round a value for display (6 significant digits)."""
-    if value is None:
-        return "—"
-    if isinstance(value, bool):
-        return "yes" if value else "no"
-    if isinstance(value, int):
-        return str(value)
-    if isinstance(value, float):
-        if not math.isfinite(value):
-            return "—"
-        if value == 0:
-            return "0"
-        return f"{value:.6g}"
-    if isinstance(value, (list, tuple)):
-        if len(value) > 8 or any(isinstance(v, (list, tuple)) for v in value):
-            return f"[{len(value)} values, see JSON]"
-        return ", ".join(fmt(v) for v in value)
-    return escape_controls(str(value))
-
-
 def _status(c: Check) -> tuple[str, str, str]:
     return _STATUS[(not c.passed, c.severity)]
-
-
-def verdict_line(r: Result) -> str:
-    if r.failed:
-        codes = ", ".join(c.code for c in r.failed)
-        return f"✘ FAIL: {len(r.failed)} check(s) failed: {codes}"
-    extra = f" ({len(r.warnings)} warning(s))" if r.warnings else ""
-    return f"✔ PASS: every check passed{extra}"
 
 
 def _header(r: Result) -> str:

@@ -9,7 +9,9 @@ cursor, recolour the terminal or reorder what is shown.
 
 from __future__ import annotations
 
+import math
 import re
+from typing import Any
 
 _CONTROLS = re.compile(
     "[\x00-\x1f\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069\u2028\u2029]")
@@ -42,3 +44,33 @@ def json_text(obj, indent: int | None = None) -> str:
 
 
 _RAW_IN_JSON = re.compile("[\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069\u2028\u2029]")
+
+
+def fmt(value: Any) -> str:
+    """Round a value for display (6 significant digits)."""
+    if value is None:
+        return "—"
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        if not math.isfinite(value):
+            return "—"
+        if value == 0:
+            return "0"
+        return f"{value:.6g}"
+    if isinstance(value, (list, tuple)):
+        if len(value) > 8 or any(isinstance(v, (list, tuple)) for v in value):
+            return f"[{len(value)} values, see JSON]"
+        return ", ".join(fmt(v) for v in value)
+    return escape_controls(str(value))
+
+
+def verdict_line(r) -> str:
+    """The one-line verdict of a :class:`~geardesign.core.result.Result`."""
+    if r.failed:
+        codes = ", ".join(c.code for c in r.failed)
+        return f"✘ FAIL: {len(r.failed)} check(s) failed: {codes}"
+    extra = f" ({len(r.warnings)} warning(s))" if r.warnings else ""
+    return f"✔ PASS: every check passed{extra}"

@@ -128,7 +128,7 @@ def _num_cell(value: Any, unit: str | None) -> tuple[str, int]:
             return '<td class="num">—</td>', 0
         i, f = number_parts(value, unit)
         return f'<td class="num">{e(i)}<span class="f">{e(f)}</span></td>', len(f)
-    from geardesign.core.render import fmt
+    from geardesign.core.text import fmt
 
     return f"<td>{e(fmt(value))}</td>", 0
 
@@ -306,7 +306,7 @@ class _Doc:
                  f'<p class="meta">{e(r.source) + " · " if r.source else ""}'
                  f"kind {e(r.kind)} · {e(', '.join(r.methods))} · geardesign {e(__version__)}"
                  "</p>")
-        from geardesign.core.render import verdict_line
+        from geardesign.core.text import verdict_line
 
         word = "FAIL" if r.failed else "PASS"
         self.add(f'<div class="verdict {word.lower()}" id="{ids(key, "verdict")}" '
@@ -366,7 +366,7 @@ class _Doc:
                 pid = self.ids(key, pkey, title)
                 toc.append((level + 1, pid, title))
                 sub = min(level + 1, 6)
-                from geardesign.core.render import verdict_line
+                from geardesign.core.text import verdict_line
 
                 self.add(f'<section><h{sub} id="{pid}">{e(title)}</h{sub}>'
                          f'<p class="part-head">{e(part.kind)} · {e(", ".join(part.methods))}'
