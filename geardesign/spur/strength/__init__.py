@@ -2,7 +2,7 @@
 
 A method is a module with ``rate(geometry, materials, duty, setting) -> Rating``; the
 spec's ``options.method`` selects one from :data:`METHODS` (``options.methods`` several).
-GOST 21354-87 is :mod:`.rating` (on the formulas of :mod:`.gost21354`); ISO 6336:2019
+GOST 21354-87 is the package :mod:`.gost21354`; ISO 6336:2019
 method B is the package :mod:`.iso6336`.
 """
 
@@ -11,7 +11,7 @@ from __future__ import annotations
 import importlib
 
 METHODS = {
-    "GOST 21354-87": "geardesign.spur.strength.rating",
+    "GOST 21354-87": "geardesign.spur.strength.gost21354.rating",
     "ISO 6336:2019": "geardesign.spur.strength.iso6336.rating",
 }
 

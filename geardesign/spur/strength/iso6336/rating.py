@@ -21,7 +21,7 @@ from geardesign.spur.strength.iso6336 import part3 as P3
 from geardesign.spur.strength.iso6336 import part5 as P5
 from geardesign.spur.strength.iso6336 import part21 as P21
 from geardesign.spur.strength.iso6336 import tables as T
-from geardesign.spur.strength.rating import Rating
+from geardesign.spur.strength.common import Rating
 from geardesign.spur.tolerances import iso1328
 
 NAME = "ISO 6336:2019"

@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 
 from geardesign.core import xp
-from geardesign.spur.strength import tables as T
+from geardesign.spur.strength.gost21354 import tables as T
 
 # ----------------------------------------------------------------------------- contact
 
@@ -119,6 +119,13 @@ def z_x(d: float) -> float:
     References: GOST 21354-87; ZPCIL ``CONTAU.h``.
     """
     return xp.minimum(1.0, xp.maximum(0.75, xp.sqrt(xp.maximum(1.07 - 1e-4 * d, 0.0))))
+
+
+def contact_limit(sigma_Hlim: float, Z_N: float, Z_R: float, Z_v: float, Z_X: float) -> float:
+    """Contact endurance limit of the gear as built [MPa]: σ_Hlim·Z_N·Z_R·Z_v·Z_X; divided
+    by S_Hmin it is the allowable σ_HP, divided by σ_H the safety factor S_H.
+    References: [GOST21354]; [ZPCIL] CONTAU.h."""
+    return sigma_Hlim * Z_N * Z_R * Z_v * Z_X
 
 
 def sigma_hp_pair(s1: float, s2: float, helical: bool) -> float:
@@ -232,6 +239,14 @@ def sigma_f(F_t: float, K_F: float, b_w: float, m_n: float, Y_FS: float, Y_beta:
     References: GOST 21354-87; ZPCIL ``IZGIBU.h`` (``FTF = 2000*TQ/D1``).
     """
     return F_t * K_F / (b_w * m_n) * Y_FS * Y_beta * Y_eps
+
+
+def bending_limit(sigma_Flim: float, Y_N: float, Y_delta: float, Y_R: float, Y_X: float,
+                  Y_A: float) -> float:
+    """Bending endurance limit of the gear as built [MPa]: σ_Flim·Y_N·Y_δ·Y_R·Y_X·Y_A;
+    divided by S_Fmin it is the allowable σ_FP, divided by σ_F the safety factor S_F.
+    References: [GOST21354]; [ZPCIL] IZGIBU.h."""
+    return sigma_Flim * Y_N * Y_delta * Y_R * Y_X * Y_A
 
 
 # ----------------------------------------------------------------------------- load factors
@@ -393,7 +408,7 @@ def peak_factor(K: float, T: float, T_max: float) -> float:
 
 def sigma_h_max(sigma_H: float, T: float, T_max: float, K_H: float, K_Hmax: float) -> float:
     """σ_Hmax = σ_H·sqrt(T_max·K_Hmax/(T·K_H)).  ZPCIL ``SIGMAX.h``; [GOST21354]."""
-    return sigma_H * math.sqrt(T_max * K_Hmax / (T * K_H))
+    return sigma_H * xp.sqrt(T_max * K_Hmax / (T * K_H))
 
 
 def sigma_f_max(sigma_F: float, T: float, T_max: float, K_F: float, K_Fmax: float) -> float:
