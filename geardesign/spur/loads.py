@@ -45,8 +45,9 @@ def mesh_forces(g: PairGeometry, T1: float) -> Forces:
     """
     d_w1 = g.g1.d_w
     F_t = 2000.0 * T1 / d_w1
-    beta_w = xp.atan(xp.tan(g.inp.beta) * d_w1 / g.g1.d)
-    F_a = F_t * xp.tan(beta_w)
+    tan_beta_w = xp.tan(g.inp.beta) * d_w1 / g.g1.d
+    F_a = F_t * tan_beta_w
+    beta_w = xp.atan(tan_beta_w)
     return Forces(
         F_t=F_t, F_r=F_t * xp.tan(g.alpha_tw), F_a=F_a,
         F_n=F_t / (xp.cos(g.alpha_tw) * xp.cos(g.beta_b)), beta_w=beta_w,

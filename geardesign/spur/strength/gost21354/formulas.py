@@ -92,8 +92,9 @@ def z_n(N_HG: float, N_HE: float, Z_N_max: float) -> float:
     References: GOST 21354-87; ZPCIL ``ZLIFE.h``, ``CONTAU.h`` (floor 0.75);
     [ZPCIL] SGMHLB.h, CONTAU.h; [DANNYE].
     """
-    return xp.where(N_HE <= N_HG, xp.minimum((N_HG / N_HE) ** (1.0 / 6.0), Z_N_max),
-                    xp.maximum((N_HG / N_HE) ** (1.0 / 20.0), 0.75))
+    low = N_HE <= N_HG
+    z = (N_HG / N_HE) ** xp.where(low, 1.0 / 6.0, 1.0 / 20.0)
+    return xp.where(low, xp.minimum(z, Z_N_max), xp.maximum(z, 0.75))
 
 
 def z_v(v: float, soft: bool) -> float:
@@ -101,7 +102,11 @@ def z_v(v: float, soft: bool) -> float:
 
     References: GOST 21354-87; ZPCIL ``ZV.h``; [ZPCIL] (Z_v row).
     """
-    return xp.where(v <= 5.0, 1.0, xp.where(soft, 0.85 * v ** 0.1, 0.925 * v ** 0.05))
+    if xp.scalar(soft):    # one material: only its branch
+        fast = 0.85 * v ** 0.1 if soft else 0.925 * v ** 0.05
+    else:
+        fast = xp.where(soft, 0.85 * v ** 0.1, 0.925 * v ** 0.05)
+    return xp.where(v <= 5.0, 1.0, fast)
 
 
 def z_r(Ra: float) -> float:
@@ -253,8 +258,24 @@ def bending_limit(sigma_Flim: float, Y_N: float, Y_delta: float, Y_R: float, Y_X
 
 
 def module_class(m: float) -> int:
+    """Module class of the tables of g_0 and w_max: 0 (m ≤ 3.55), 1 (≤ 10), 2 (> 10) [mm]."""
     lo, hi = T.MODULE_CLASSES
     return xp.where(m <= lo, 0, xp.where(m <= hi, 1, 2))
+
+
+def pitch_factors(grade: int, m: float) -> tuple[float, float]:
+    """The pitch deviation factor g_0 and the limit w_max [N/mm] of the specific dynamic
+    force by accuracy grade and module class (``tables.G0``, ``tables.W_MAX``).
+    References: GOST 21354-87 table 7; [ZPCIL] WV.h."""
+    j = module_class(m)
+    return 1.0 * xp.take(T.G0[grade], j), 1.0 * xp.take(T.W_MAX[grade], j)
+
+
+def specific_dynamic_force(delta: float, g_0: float, w_max: float, v: float, a_w: float,
+                           u: float) -> float:
+    """Specific dynamic force w_v = δ·g_0·v·√(a_w/u) ≤ w_max [N/mm] (:func:`dynamic_load`
+    with g_0, w_max of :func:`pitch_factors`)."""
+    return xp.minimum(delta * g_0 * v * xp.sqrt(a_w / u), w_max)
 
 
 def dynamic_load(delta: float, grade: int, m: float, v: float, a_w: float, u: float) -> float:
@@ -267,9 +288,7 @@ def dynamic_load(delta: float, grade: int, m: float, v: float, a_w: float, u: fl
     References: GOST 21354-87; ZPCIL ``WV.h``; [ZPCIL] DLTH.h, WV.h; [DANNYE] (the δ·g_0
     product of the textbook pairing is 10× too large).
     """
-    j = module_class(m)
-    return xp.minimum(delta * xp.take(T.G0[grade], j) * v * xp.sqrt(a_w / u),
-                      xp.take(T.W_MAX[grade], j))
+    return specific_dynamic_force(delta, *pitch_factors(grade, m), v, a_w, u)
 
 
 def k_v(w_v: float, b_w: float, F_t: float, K_A: float) -> float:

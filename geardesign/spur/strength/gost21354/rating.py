@@ -423,9 +423,9 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
     delta_H = xp.where(helical, T.DELTA_H[(hardness, "helical")], T.DELTA_H[(hardness, spur_form)])
     delta_F = xp.where(helical, T.DELTA_F["helical"], T.DELTA_F[spur_form])
     grade = s.grade
-    w_Hv = G.dynamic_load(delta_H, grade, p.m_n, v, g.a_w, u)
-    w_Fv = G.dynamic_load(delta_F, grade, p.m_n, v, g.a_w, u)
-    j = G.module_class(p.m_n)
+    g_0, w_max = G.pitch_factors(grade, p.m_n)
+    w_Hv = G.specific_dynamic_force(delta_H, g_0, w_max, v, g.a_w, u)
+    w_Fv = G.specific_dynamic_force(delta_F, g_0, w_max, v, g.a_w, u)
     K_Hv = given("K_Hv", lambda: G.k_v(w_Hv, p.b_w, F_tH, K_A))
     K_Fv = given("K_Fv", lambda: G.k_v(w_Fv, p.b_w, F_tH, K_A))
     psi_bd = p.b_w / g.g1.d
@@ -436,7 +436,8 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
     K_Fb = given("K_Fbeta", lambda: K0_Hb ** N_F)
     Z_eps = given("Z_eps", lambda: G.z_eps(eps_a, eps_b))
     Y_eps = given("Y_eps", lambda: G.y_eps(eps_a, eps_b))
-    z_v = tuple(gear.z / xp.cos(p.beta) ** 3 for gear in gears)
+    cos3 = xp.cos(p.beta) ** 3
+    z_v = (g.g1.z / cos3, g.g2.z / cos3)
     a_alpha = 0.2 if soft_pair else 0.3
     hel = None
     if _any(helical):
@@ -467,7 +468,7 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
         helical=helical, soft_pair=soft_pair, grade=grade, scheme=s.scheme, b_h=p.b_w / h_eff,
         form=(("helical" if helical else spur_form) if xp.scalar(helical) else None),
         K_A=K_A, w_Hv=w_Hv, delta_H=delta_H, delta_F=delta_F,
-        g_0=1.0 * xp.take(T.G0[grade], j), w_max=1.0 * xp.take(T.W_MAX[grade], j), w_Fv=w_Fv,
+        g_0=g_0, w_max=w_max, w_Fv=w_Fv,
         K_Hv=K_Hv, K_Fv=K_Fv, psi_bd=psi_bd, K0_Hbeta=K0_Hb, K_Hbeta=K_Hb,
         K_Hw=_when(soft_pair and K0_Hb > 1.0, lambda: (K_Hb - 1.0) / (K0_Hb - 1.0))
         if xp.scalar(K0_Hb) else None,
@@ -486,7 +487,8 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
     ZNmax = given.pair("Z_Nmax", lambda i: mats[i].Z_N_max)
     ZN = given.pair("Z_N", lambda i: G.z_n(NHG[i], N_HE[i], ZNmax[i]))
     ZR = given.pair("Z_R", lambda i: G.z_r(s.Ra[i]))
-    ZV = given.pair("Z_v", lambda i: G.z_v(v, mats[i].soft))
+    z_v_of = {soft: G.z_v(v, soft) for soft in {m.soft for m in mats}}
+    ZV = given.pair("Z_v", lambda i: z_v_of[mats[i].soft])
     ZX = given.pair("Z_X", lambda i: G.z_x(gears[i].d))
     limit_H = [G.contact_limit(mats[i].sigma_Hlim, ZN[i], ZR[i], ZV[i], ZX[i]) for i in range(2)]
     sigma_HP = tuple(limit_H[i] / mats[i].S_H for i in range(2))
