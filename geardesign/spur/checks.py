@@ -524,20 +524,25 @@ def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool,
                     b_bending: float | None = None, a_w: float | None = None,
                     k_contact: float | None = None, face_limit: float = ADVICE_FACE_MAX
                     ) -> list[Check]:
-    """Checks of a GOST 21354-87 rating ``v`` (the :class:`Rating` values by key).
+    """Checks of a GOST 21354-87 rating ``v`` (a :class:`GostRating` or its values by key),
+    judged by :func:`geardesign.spur.strength.verdict.verdict`.
 
     Contact: σ_H <= σ_HP of the pair; bending: S_F >= S_Fmin per gear (σ_F <= σ_FP); peak
     loads: σ_Hmax <= σ_HPmax and σ_Fmax <= σ_FPmax per gear.  The advice uses the scaling
     of the formulas: σ_H ∝ a_w^(-3/2) at a fixed ψ_ba and ∝ b_w^(-1/2); σ_F ∝ 1/(b_w·m_n).
     """
+    from geardesign.spur.strength.verdict import verdict
+
+    v = v if isinstance(v, dict) else v.v
     src = "GOST 21354-87"
     out: list[Check] = []
+    judged = verdict(v)
     sH, sHP = v["sigma_H"], v["sigma_HP"]
     r = sH / sHP
     gov = 1 if v["sigma_HP1"] <= v["sigma_HP2"] else 2
     who = ("pinion", "wheel")[gov - 1]
     out.append(check(
-        "CONTACT_FATIGUE", sH <= sHP * (1 + 1e-12), "error",
+        "CONTACT_FATIGUE", judged.contact_passes, "error",
         f"contact stress σ_H = {sH:.0f} MPa exceeds σ_HP = {sHP:.0f} MPa by {100 * (r - 1):.1f} % "
         f"(S_H{gov} = {v[f'S_H{gov}']:.2f} < {v[f'S_H{gov}_min']:.2f}, {who}): "
         + (_scale_advice(a_w, k_contact) if k_contact is not None else
@@ -551,7 +556,7 @@ def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool,
         S, Smin = v[f"S_F{k}"], v[f"S_F{k}_min"]
         sF, sFP = v[f"sigma_F{k}"], v[f"sigma_FP{k}"]
         out.append(check(
-            f"BENDING_FATIGUE_{('PINION', 'WHEEL')[k - 1]}", S >= Smin * (1 - 1e-12), "error",
+            f"BENDING_FATIGUE_{('PINION', 'WHEEL')[k - 1]}", judged.bending_ok[k - 1], "error",
             f"{who} root stress σ_F{k} = {sF:.0f} MPa exceeds σ_FP{k} = {sFP:.0f} MPa (S_F{k} = "
             f"{S:.2f} < {Smin:.2f}): increase the module by {_pct(sF / sFP - 1)} "
             f"(same centre distance, fewer teeth), or use a material with a higher σ_Flim"

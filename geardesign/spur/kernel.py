@@ -37,6 +37,7 @@ import numpy as np
 from geardesign.spur.geometry import BasicRack, pair_core
 from geardesign.spur.strength.common import values
 from geardesign.spur.strength.gost21354.rating import rate as gost_rate
+from geardesign.spur.strength.verdict import verdict
 
 INPUTS = ("m_n", "z1", "z2", "x1", "x2", "beta", "b_w")
 """The candidate arrays :func:`evaluate` takes (beta in rad)."""
@@ -113,18 +114,14 @@ def _evaluate(c: dict, f: Fixed) -> dict:
     # the static (peak-torque) checks are the re-check's (module docstring)
     rating = gost_rate(pair_view(g), f.mats, replace(f.duty, T_peak=None), f.setting)
     out.update(_numbers(values(rating)))
-    mats = f.mats
-    sigma_H = out["sigma_H"]
+    judged = verdict(rating)
 
     # ------------------------------------------------------------------ checks
-    helical = beta > 0.0
-    ok = _geometry_ok(g, helical)
-    ok["CONTACT_FATIGUE"] = sigma_H <= out["sigma_HP"] * (1 + 1e-12)
-    for k, who in (("1", "PINION"), ("2", "WHEEL")):
-        ok["BENDING_FATIGUE_" + who] = out["S_F" + k] >= mats[int(k) - 1].S_F * (1 - 1e-12)
-    valid = np.asarray(g["valid"], dtype=bool) & np.isfinite(sigma_H)
-    out["margin"] = np.minimum(np.minimum(out["sigma_HP"] / sigma_H, out["S_F1"] / mats[0].S_F),
-                               out["S_F2"] / mats[1].S_F)
+    ok = _geometry_ok(g, beta > 0.0)
+    ok["CONTACT_FATIGUE"] = judged.contact_passes
+    ok["BENDING_FATIGUE_PINION"], ok["BENDING_FATIGUE_WHEEL"] = judged.bending_ok
+    valid = np.asarray(g["valid"], dtype=bool) & np.isfinite(out["sigma_H"])
+    out["margin"] = judged.margin
     return _flags(out, ok, valid)
 
 
@@ -350,14 +347,14 @@ def _evaluate_iso(c: dict, f: Fixed) -> dict:
     ratable = ((eps_a >= 1.0) & (g["rho_p1"] > 0.0) & (g["rho_p2"] > 0.0)
                & (g["s_an1"] > 0.0) & (g["s_an2"] > 0.0))
     ok["STRENGTH_NOT_RATED"] = ratable
-    for k, who in (("1", "PINION"), ("2", "WHEEL")):
-        ok["ISO_PITTING_" + who] = ratable & (out["S_H" + k] >= iso.S_Hmin * (1 - 1e-12))
-        ok["ISO_BENDING_" + who] = ratable & (out["S_F" + k] >= iso.S_Fmin * (1 - 1e-12))
+    judged = verdict(out)
+    for i, who in enumerate(("PINION", "WHEEL")):
+        ok["ISO_PITTING_" + who] = ratable & judged.contact_ok[i]
+        ok["ISO_BENDING_" + who] = ratable & judged.bending_ok[i]
     # the sweep's columns: the larger contact stress and the smaller permissible one
     out["sigma_H"] = np.maximum(sH[0], sH[1])
     out["sigma_HP"] = np.minimum(out["sigma_HP1"], out["sigma_HP2"])
-    out["margin"] = np.minimum.reduce([out["S_H1"] / iso.S_Hmin, out["S_H2"] / iso.S_Hmin,
-                                       out["S_F1"] / iso.S_Fmin, out["S_F2"] / iso.S_Fmin])
+    out["margin"] = judged.margin
     valid = np.asarray(g["valid"], dtype=bool) & _iso_inputs_fit(g, iso)
     return _flags(out, ok, valid)
 
