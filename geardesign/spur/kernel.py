@@ -93,6 +93,15 @@ def evaluate(c: dict, f: Fixed) -> dict:
     return {k: (np.broadcast_to(v, (n,)) if np.ndim(v) == 0 else v) for k, v in out.items()}
 
 
+GOST_COLUMNS = ("F_tH", "v_H", "w_Hv", "w_Fv", "K_Hv", "K_Fv", "psi_bd", "K0_Hbeta", "K_Hbeta",
+                "K_Fbeta", "K_Halpha", "K_Falpha", "K_H", "K_F", "Z_eps", "Y_eps", "Z_E", "Z_H",
+                "sigma_H", "sigma_HP1", "sigma_HP2", "S_H1", "S_H2", "Z_N1", "Z_N2", "Z_v1",
+                "Z_v2", "Z_X1", "Z_X2", "Y_beta", "Y_delta", "Y_FS1", "Y_FS2", "sigma_F1",
+                "sigma_F2", "sigma_FP1", "sigma_FP2", "S_F1", "S_F2", "sigma_HP")
+"""The rating's values a chunk returns as columns (the sweep copies each column of each
+chunk: the rating's other values stay in the record)."""
+
+
 def pair_view(g: dict, rack=None):
     """The pair geometry of :func:`pair_core`'s arrays as the rating reads it
     (``inp``, ``g1``, ``g2`` and the pair values, as :class:`~geardesign.spur.geometry.PairGeometry`)."""
@@ -113,7 +122,8 @@ def _evaluate(c: dict, f: Fixed) -> dict:
     g.update(m_n=m_n, b_w=b_w, beta=beta)
     # the static (peak-torque) checks are the re-check's (module docstring)
     rating = gost_rate(pair_view(g), f.mats, replace(f.duty, T_peak=None), f.setting)
-    out.update(_numbers(values(rating)))
+    v = values(rating)
+    out.update((k, v[k]) for k in GOST_COLUMNS)
     judged = verdict(rating)
 
     # ------------------------------------------------------------------ checks
@@ -123,11 +133,6 @@ def _evaluate(c: dict, f: Fixed) -> dict:
     valid = np.asarray(g["valid"], dtype=bool) & np.isfinite(out["sigma_H"])
     out["margin"] = judged.margin
     return _flags(out, ok, valid)
-
-
-def _numbers(v: dict) -> dict:
-    """The rating's numbers (its text values left out)."""
-    return {k: x for k, x in v.items() if not isinstance(x, str)}
 
 
 def _geometry_ok(g: dict, helical) -> dict:
