@@ -125,13 +125,14 @@ def _evaluate(c: dict, f: Fixed) -> dict:
     v = values(rating)
     out.update((k, v[k]) for k in GOST_COLUMNS)
     judged = verdict(rating)
+    ok = {"CONTACT_FATIGUE": judged.contact_passes}
+    ok["BENDING_FATIGUE_PINION"], ok["BENDING_FATIGUE_WHEEL"] = judged.bending_ok
+    out["margin"] = judged.margin
+    del rating, v, judged      # the chunk's peak memory: the record's other values go now
 
     # ------------------------------------------------------------------ checks
-    ok = _geometry_ok(g, beta > 0.0)
-    ok["CONTACT_FATIGUE"] = judged.contact_passes
-    ok["BENDING_FATIGUE_PINION"], ok["BENDING_FATIGUE_WHEEL"] = judged.bending_ok
+    ok = {**_geometry_ok(g, beta > 0.0), **ok}
     valid = np.asarray(g["valid"], dtype=bool) & np.isfinite(out["sigma_H"])
-    out["margin"] = judged.margin
     return _flags(out, ok, valid)
 
 
