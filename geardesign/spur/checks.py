@@ -525,7 +525,8 @@ def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool,
                     k_contact: float | None = None, face_limit: float = ADVICE_FACE_MAX,
                     members: tuple[str, str] = _NAMES, peak_key: str = "load.peak_torque1"
                     ) -> list[Check]:
-    """Checks of a GOST 21354-87 rating ``v`` (the :class:`Rating` values by key).
+    """Checks of a GOST 21354-87 rating ``v`` (a :class:`GostRating` or its values by key),
+    judged by :func:`geardesign.spur.strength.verdict.verdict`.
 
     Contact: σ_H <= σ_HP of the pair; bending: S_F >= S_Fmin per gear (σ_F <= σ_FP); peak
     loads: σ_Hmax <= σ_HPmax and σ_Fmax <= σ_FPmax per gear.  The advice uses the scaling
@@ -533,8 +534,12 @@ def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool,
     ``members`` name gear 1 and gear 2 in the messages and the codes (a planetary mesh:
     ``("sun", "planet")``); ``peak_key`` is the spec key of the peak torque.
     """
+    from geardesign.spur.strength.verdict import verdict
+
+    v = v if isinstance(v, dict) else v.v
     src = "GOST 21354-87"
     out: list[Check] = []
+    judged = verdict(v)
     sH, sHP = v["sigma_H"], v["sigma_HP"]
     r = sH / sHP
     gov = 1 if v["sigma_HP1"] <= v["sigma_HP2"] else 2
@@ -543,7 +548,7 @@ def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool,
                f"increase the centre distance by {_pct(r ** (2 / 3) - 1)}")
               + f", or use a harder {who} material" + _face_advice(b_w, b_contact, face_limit))
     out.append(check(
-        "CONTACT_FATIGUE", sH <= sHP * (1 + 1e-12), "error",
+        "CONTACT_FATIGUE", judged.contact_passes, "error",
         f"contact stress σ_H = {sH:.0f} MPa exceeds σ_HP = {sHP:.0f} MPa by {100 * (r - 1):.1f} % "
         f"(S_H{gov} = {v[f'S_H{gov}']:.2f} < {v[f'S_H{gov}_min']:.2f}, {who}): " + advice,
         f"σ_H = {sH:.0f} MPa <= σ_HP = {sHP:.0f} MPa ({100 * (1 - r):.1f} % reserve; S_H1 = "
@@ -557,7 +562,7 @@ def strength_checks(v: dict, mats, helical: bool, grade: int, peak_given: bool,
                   f"teeth), or use a material with a higher σ_Flim"
                   + _face_advice(b_w, b_bending, face_limit))
         out.append(check(
-            f"BENDING_FATIGUE_{who.upper()}", S >= Smin * (1 - 1e-12), "error",
+            f"BENDING_FATIGUE_{who.upper()}", judged.bending_ok[k - 1], "error",
             f"{who} root stress σ_F{k} = {sF:.0f} MPa exceeds σ_FP{k} = {sFP:.0f} MPa (S_F{k} = "
             f"{S:.2f} < {Smin:.2f}): " + advice,
             f"{who}: σ_F{k} = {sF:.0f} MPa <= σ_FP{k} = {sFP:.0f} MPa (S_F{k} = {S:.2f} >= "

@@ -352,18 +352,19 @@ def pair_core(m_n, z1, z2, x1, x2, beta, b_w, rack: BasicRack, tip_shortening: b
         alpha_tw = inv_inverse_array(np.where(valid, value, 1e-3))
     d1, d2 = z1 * m_t, z2 * m_t
     a = 0.5 * (d1 + d2)
-    a_w = a * xp.cos(alpha_t) / xp.cos(alpha_tw)
+    cos_at = xp.cos(alpha_t)
+    a_w = a * cos_at / xp.cos(alpha_tw)
     y = (a_w - a) / m_n
     dy = x_sum - y
     g_w = a_w * xp.sin(alpha_tw)
-    p_bt = math.pi * m_t * xp.cos(alpha_t)
+    p_bt = math.pi * m_t * cos_at
     p_bn = math.pi * m_n * math.cos(alpha_n)
     d_w = (2.0 * a_w / (u + 1.0), 2.0 * a_w * u / (u + 1.0))
     hl = rack.h_straight  # h_l* − h_a* in GOST 16532 notation (1.0 for the GOST 13755 rack)
     sin_at = xp.sin(alpha_t)
     for i, (z, x, d) in enumerate(((z1, x1, d1), (z2, x2, d2))):
         k = str(i + 1)
-        d_b = d * xp.cos(alpha_t)
+        d_b = d * cos_at
         d_a = d + 2.0 * (rack.h_a + x - (dy if tip_shortening else 0.0)) * m_n
         d_f = d - 2.0 * (rack.h_a + rack.c - x) * m_n
         if scalar and d_a <= d_b:
@@ -387,8 +388,9 @@ def pair_core(m_n, z1, z2, x1, x2, beta, b_w, rack: BasicRack, tip_shortening: b
         c["d_p" + k] = 2.0 * xp.hypot(0.5 * c["d_b" + k], c["rho_p" + k])
     g_alpha = c["rho_a1"] + c["rho_a2"] - g_w
     eps_alpha = g_alpha / p_bt
-    eps_alpha_z = (z1 * (xp.tan(c["alpha_a1"]) - xp.tan(alpha_tw))
-                   + z2 * (xp.tan(c["alpha_a2"]) - xp.tan(alpha_tw))) / (2.0 * math.pi)
+    tan_atw = xp.tan(alpha_tw)
+    eps_alpha_z = (z1 * (xp.tan(c["alpha_a1"]) - tan_atw)
+                   + z2 * (xp.tan(c["alpha_a2"]) - tan_atw)) / (2.0 * math.pi)
     eps_beta = b_w * xp.sin(beta) / (math.pi * m_n)
     c.update(u=u, m_t=m_t, alpha_t=alpha_t, beta_b=beta_b, alpha_tw=alpha_tw, a=a, a_w=a_w,
              x_sum=x_sum, y=y, dy=dy, g_w=g_w, g_alpha=g_alpha, p_bt=p_bt, p_bn=p_bn,

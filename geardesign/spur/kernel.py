@@ -3,11 +3,12 @@ the geometric checks and the GOST 21354-87 or ISO 6336:2019 fatigue rating, for 
 arrays of candidates (one call per chunk).
 
 No formula is written here: the geometry is :func:`geardesign.spur.geometry.pair_core` and
-every factor a function of :mod:`geardesign.spur.strength.gost21354`, the same functions
-the scalar calculator calls, written with :mod:`geardesign.core.xp` so that they take
-numbers and arrays alike.  This module only strings them together in the order of
-:func:`geardesign.spur.strength.rating.rate`; ``tests/test_sweep_kernel.py`` keeps the two
-equal on 10 000 random pairs (1e-9 relative).
+the GOST 21354-87 rating is :func:`geardesign.spur.strength.gost21354.rating.rate` itself,
+called on a view of the candidates' arrays (:func:`pair_view`): its formulas are written
+with :mod:`geardesign.core.xp`, so one function rates one pair or a chunk.  This module
+keeps only what is array-specific: the view, the check flags and the chunk's columns;
+``tests/test_sweep_kernel.py`` guards kernel == calculator on 10 000 random pairs
+(1e-9 relative).
 
 ISO 6336:2019 (:func:`evaluate` of a :class:`Fixed` with ``method = ISO_NAME``) strings the
 functions of :mod:`geardesign.spur.strength.iso6336` (parts 1, 2, 3, 5 and ISO 1328-1) in
@@ -21,21 +22,22 @@ Scope: external pairs, the fatigue rating (contact and bending, life by GOST reg
 load spectrum) with the ``[factors]`` overrides of the spec, and the error checks of
 :func:`geardesign.spur.checks.geometry_checks` (contact ratio, undercut, pointed tip,
 interference, root diameter, radial clearance).  Not here: the peak-torque (static)
-checks, the span, the informative contact models: a sweep re-rates the variants it
-reports with the scalar calculator (``geardesign sweep --emit-spec``).
+checks (the kernel rates without the peak torque), the span: a sweep re-rates the variants
+it reports with the scalar calculator (``geardesign sweep --emit-spec``).
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from types import SimpleNamespace
 
 import numpy as np
 
 from geardesign.spur.geometry import BasicRack, pair_core
-from geardesign.spur.strength import gost21354 as G
-from geardesign.spur.strength import tables as T
-from geardesign.spur.strength.rating import life_cycles
+from geardesign.spur.strength.common import values
+from geardesign.spur.strength.gost21354.rating import rate as gost_rate
+from geardesign.spur.strength.verdict import verdict
 
 INPUTS = ("m_n", "z1", "z2", "x1", "x2", "beta", "b_w")
 """The candidate arrays :func:`evaluate` takes (beta in rad)."""
@@ -88,113 +90,49 @@ def evaluate(c: dict, f: Fixed) -> dict:
     n = len(arrays["m_n"])
     with np.errstate(all="ignore"):
         out = _evaluate(arrays, f) if f.iso is None else _evaluate_iso(arrays, f)
-    return {k: (np.full(n, v) if np.ndim(v) == 0 else v) for k, v in out.items()}
+    return {k: (np.broadcast_to(v, (n,)) if np.ndim(v) == 0 else v) for k, v in out.items()}
+
+
+GOST_COLUMNS = ("F_tH", "v_H", "w_Hv", "w_Fv", "K_Hv", "K_Fv", "psi_bd", "K0_Hbeta", "K_Hbeta",
+                "K_Fbeta", "K_Halpha", "K_Falpha", "K_H", "K_F", "Z_eps", "Y_eps", "Z_E", "Z_H",
+                "sigma_H", "sigma_HP1", "sigma_HP2", "S_H1", "S_H2", "Z_N1", "Z_N2", "Z_v1",
+                "Z_v2", "Z_X1", "Z_X2", "Y_beta", "Y_delta", "Y_FS1", "Y_FS2", "sigma_F1",
+                "sigma_F2", "sigma_FP1", "sigma_FP2", "S_F1", "S_F2", "sigma_HP")
+"""The rating's values a chunk returns as columns (the sweep copies each column of each
+chunk: the rating's other values stay in the record)."""
+
+
+def pair_view(g: dict, rack=None):
+    """The pair geometry of :func:`pair_core`'s arrays as the rating reads it
+    (``inp``, ``g1``, ``g2`` and the pair values, as :class:`~geardesign.spur.geometry.PairGeometry`)."""
+    inp = SimpleNamespace(m_n=g["m_n"], b_w=g["b_w"], beta=g["beta"], x1=g["x1"], x2=g["x2"],
+                          rack=rack)
+    gears = [SimpleNamespace(**{k: g[k + i] for k in ("z", "x", "d", "d_b", "d_w", "d_a", "d_f",
+                                                       "h", "rho_p", "s_an")})
+             for i in "12"]
+    return SimpleNamespace(inp=inp, g1=gears[0], g2=gears[1], **{
+        k: g[k] for k in ("u", "a_w", "alpha_t", "beta_b", "alpha_tw", "eps_alpha", "eps_beta",
+                          "eps_gamma")})
 
 
 def _evaluate(c: dict, f: Fixed) -> dict:
     m_n, z1, z2, x1, x2, beta, b_w = (c[k] for k in INPUTS)
     g = pair_core(m_n, z1, z2, x1, x2, beta, b_w, f.rack, f.tip_shortening)
     out = dict(g)
-    s, duty, (m1, m2) = f.setting, f.duty, f.mats
-    mats = (m1, m2)
-    helical = beta > 0.0
-    u = g["u"]
-    d1 = g["d1"]
-    eps_a, eps_b = g["eps_alpha"], g["eps_beta"]
-    eps_b_h = np.where(helical, eps_b, 0.0)
-
-    # ------------------------------------------------------------------ forces, life
-    F_tH = 2000.0 * duty.T1 / d1
-    v = math.pi * d1 * duty.n1 / 60000.0
-    _, N_HE, N_FE = life_cycles(duty, mats, u)
-
-    # ------------------------------------------------------------------ load factors
-    K_A = duty.K_A
-    soft_pair = min(m1.HB, m2.HB) <= 350.0
-    dH = np.where(helical, T.DELTA_H[("soft" if soft_pair else "hard", "helical")],
-                  T.DELTA_H[("soft" if soft_pair else "hard",
-                             "spur_relieved" if s.tip_relief else "spur")])
-    dF = np.where(helical, T.DELTA_F["helical"],
-                  T.DELTA_F["spur_relieved" if s.tip_relief else "spur"])
-    w_Hv = G.dynamic_load(dH, s.grade, m_n, v, g["a_w"], u)
-    w_Fv = G.dynamic_load(dF, s.grade, m_n, v, g["a_w"], u)
-    K_Hv = _given(s, "K_Hv", G.k_v(w_Hv, b_w, F_tH, K_A))
-    K_Fv = _given(s, "K_Fv", G.k_v(w_Fv, b_w, F_tH, K_A))
-    psi_bd = b_w / d1
-    K0_Hb = G.k_h_beta(s.scheme, psi_bd, False)
-    K_Hb = _given(s, "K_Hbeta", G.k_h_beta(s.scheme, psi_bd, soft_pair))
-    h_eff = np.where(helical, 2.0 * m_n, 2.0 * m_n / eps_a)
-    K_Fb = _given(s, "K_Fbeta", K0_Hb ** G.n_f(b_w, h_eff))
-    Z_eps = _given(s, "Z_eps", G.z_eps(eps_a, eps_b_h))
-    Y_eps = _given(s, "Y_eps", G.y_eps(eps_a, eps_b_h))
-    zv1 = z1 / np.cos(beta) ** 3
-    zv2 = z2 / np.cos(beta) ** 3
-    c_gamma = G.mesh_stiffness(zv1, zv2, x1, x2) * (0.75 * eps_a + 0.25)
-    f_pb = np.hypot(G.base_pitch_deviation(m_n, d1, s.grade),
-                    G.base_pitch_deviation(m_n, g["d2"], s.grade))
-    a_alpha = 0.2 if soft_pair else 0.3
-    K_Ha_max = G.k_h_alpha_max(eps_a, eps_b, Z_eps)
-    K_Fa_max = 1.0 / Y_eps
-    kha = G.limited(G.k_alpha(eps_a, eps_b, c_gamma, b_w, f_pb, a_alpha, F_tH, K_A, K_Hv, K_Hb),
-                    K_Ha_max)[0]
-    kfa = G.limited(G.k_alpha(eps_a, eps_b, c_gamma, b_w, f_pb, 0.4, F_tH, K_A, K_Fv, K_Fb),
-                    K_Fa_max)[0]
-    K_Ha = _given(s, "K_Halpha", np.where(helical, kha, 1.0))
-    K_Fa = _given(s, "K_Falpha", np.where(helical, kfa, 1.0))
-    K_H = K_A * K_Hv * K_Hb * K_Ha
-    K_F = K_A * K_Fv * K_Fb * K_Fa
-    out.update(F_tH=F_tH, v_H=v, w_Hv=w_Hv, w_Fv=w_Fv, K_Hv=K_Hv, K_Fv=K_Fv, psi_bd=psi_bd,
-               K0_Hbeta=K0_Hb, K_Hbeta=K_Hb, K_Fbeta=K_Fb, K_Halpha=K_Ha, K_Falpha=K_Fa,
-               K_H=K_H, K_F=K_F, Z_eps=Z_eps, Y_eps=Y_eps)
-
-    # ------------------------------------------------------------------ contact
-    Z_E = _given(s, "Z_E", G.z_e(m1.E, m1.nu, m2.E, m2.nu))
-    Z_H = _given(s, "Z_H", G.z_h(g["beta_b"], g["alpha_t"], g["alpha_tw"]))
-    sigma_H = G.sigma_h(Z_E, Z_H, Z_eps, F_tH, K_H, u, b_w, d1)
-    out.update(Z_E=Z_E, Z_H=Z_H, sigma_H=sigma_H)
-    for i, mat in enumerate(mats):
-        k = str(i + 1)
-        NHG = _given(s, "N_HG" + k, G.n_hg(mat.HB))
-        ZNmax = _given(s, "Z_Nmax" + k, mat.Z_N_max)
-        ZN = _given(s, "Z_N" + k, G.z_n(NHG, N_HE[i], ZNmax))
-        ZR = _given(s, "Z_R" + k, G.z_r(s.Ra[i]))
-        ZV = _given(s, "Z_v" + k, G.z_v(v, mat.soft))
-        ZX = _given(s, "Z_X" + k, G.z_x(g["d" + k]))
-        limit = mat.sigma_Hlim * ZN * ZR * ZV * ZX
-        out["sigma_HP" + k] = limit / mat.S_H
-        out["S_H" + k] = limit / sigma_H
-        out["Z_N" + k], out["Z_v" + k], out["Z_X" + k] = ZN, ZV, ZX
-
-    # ------------------------------------------------------------------ bending
-    Y_beta = _given(s, "Y_beta", np.where(helical, G.y_beta(eps_b, beta), 1.0))
-    Y_delta = _given(s, "Y_delta", G.y_delta(m_n))
-    N_FG = _given(s, "N_FG", G.N_FG)
-    Y_R = _given(s, "Y_R", 1.0)
-    out.update(Y_beta=Y_beta, Y_delta=Y_delta)
-    for i, mat in enumerate(mats):
-        k = str(i + 1)
-        zv = zv1 if i == 0 else zv2
-        YFS = _given(s, "Y_FS" + k, G.y_fs(zv, (x1, x2)[i]))
-        sF = G.sigma_f(F_tH, K_F, b_w, m_n, YFS, Y_beta, Y_eps)
-        YN = _given(s, "Y_N" + k, G.y_n(N_FE[i], mat.q_F, N_FG))
-        YX = _given(s, "Y_X" + k, G.y_x(g["d" + k]))
-        rev = duty.reverse_ratio if duty.reverse_ratios is None else duty.reverse_ratios[i]
-        YA = _given(s, "Y_A" + k, G.y_a(mat.gamma_A, rev))
-        limit = mat.sigma_Flim * YN * Y_delta * Y_R * YX * YA
-        out["Y_FS" + k], out["sigma_F" + k] = YFS, sF
-        out["sigma_FP" + k] = limit / mat.S_F
-        out["S_F" + k] = limit / sF
+    g.update(m_n=m_n, b_w=b_w, beta=beta)
+    # the static (peak-torque) checks are the re-check's (module docstring)
+    rating = gost_rate(pair_view(g), f.mats, replace(f.duty, T_peak=None), f.setting)
+    v = values(rating)
+    out.update((k, v[k]) for k in GOST_COLUMNS)
+    judged = verdict(rating)
+    ok = {"CONTACT_FATIGUE": judged.contact_passes}
+    ok["BENDING_FATIGUE_PINION"], ok["BENDING_FATIGUE_WHEEL"] = judged.bending_ok
+    out["margin"] = judged.margin
+    del rating, v, judged      # the chunk's peak memory: the record's other values go now
 
     # ------------------------------------------------------------------ checks
-    ok = _geometry_ok(g, helical)
-    out["sigma_HP"] = G.sigma_hp_pair(out["sigma_HP1"], out["sigma_HP2"],
-                                      helical & (eps_b >= 1.0))
-    ok["CONTACT_FATIGUE"] = sigma_H <= out["sigma_HP"] * (1 + 1e-12)
-    for k, who in (("1", "PINION"), ("2", "WHEEL")):
-        ok["BENDING_FATIGUE_" + who] = out["S_F" + k] >= mats[int(k) - 1].S_F * (1 - 1e-12)
-    valid = np.asarray(g["valid"], dtype=bool) & np.isfinite(sigma_H)
-    out["margin"] = np.minimum.reduce([out["sigma_HP"] / sigma_H,
-                                       out["S_F1"] / m1.S_F, out["S_F2"] / m2.S_F])
+    ok = {**_geometry_ok(g, beta > 0.0), **ok}
+    valid = np.asarray(g["valid"], dtype=bool) & np.isfinite(out["sigma_H"])
     return _flags(out, ok, valid)
 
 
@@ -415,14 +353,14 @@ def _evaluate_iso(c: dict, f: Fixed) -> dict:
     ratable = ((eps_a >= 1.0) & (g["rho_p1"] > 0.0) & (g["rho_p2"] > 0.0)
                & (g["s_an1"] > 0.0) & (g["s_an2"] > 0.0))
     ok["STRENGTH_NOT_RATED"] = ratable
-    for k, who in (("1", "PINION"), ("2", "WHEEL")):
-        ok["ISO_PITTING_" + who] = ratable & (out["S_H" + k] >= iso.S_Hmin * (1 - 1e-12))
-        ok["ISO_BENDING_" + who] = ratable & (out["S_F" + k] >= iso.S_Fmin * (1 - 1e-12))
+    judged = verdict(out)
+    for i, who in enumerate(("PINION", "WHEEL")):
+        ok["ISO_PITTING_" + who] = ratable & judged.contact_ok[i]
+        ok["ISO_BENDING_" + who] = ratable & judged.bending_ok[i]
     # the sweep's columns: the larger contact stress and the smaller permissible one
     out["sigma_H"] = np.maximum(sH[0], sH[1])
     out["sigma_HP"] = np.minimum(out["sigma_HP1"], out["sigma_HP2"])
-    out["margin"] = np.minimum.reduce([out["S_H1"] / iso.S_Hmin, out["S_H2"] / iso.S_Hmin,
-                                       out["S_F1"] / iso.S_Fmin, out["S_F2"] / iso.S_Fmin])
+    out["margin"] = judged.margin
     valid = np.asarray(g["valid"], dtype=bool) & _iso_inputs_fit(g, iso)
     return _flags(out, ok, valid)
 

@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from geardesign.core import xp
 from geardesign.spur.geometry import PairGeometry
 
 
@@ -44,11 +45,12 @@ def mesh_forces(g: PairGeometry, T1: float) -> Forces:
     """
     d_w1 = g.g1.d_w
     F_t = 2000.0 * T1 / d_w1
-    beta_w = math.atan(math.tan(g.inp.beta) * d_w1 / g.g1.d)
-    F_a = F_t * math.tan(beta_w)
+    tan_beta_w = xp.tan(g.inp.beta) * d_w1 / g.g1.d
+    F_a = F_t * tan_beta_w
+    beta_w = xp.atan(tan_beta_w)
     return Forces(
-        F_t=F_t, F_r=F_t * math.tan(g.alpha_tw), F_a=F_a,
-        F_n=F_t / (math.cos(g.alpha_tw) * math.cos(g.beta_b)), beta_w=beta_w,
+        F_t=F_t, F_r=F_t * xp.tan(g.alpha_tw), F_a=F_a,
+        F_n=F_t / (xp.cos(g.alpha_tw) * xp.cos(g.beta_b)), beta_w=beta_w,
         M_a1=F_a * d_w1 / 2000.0, M_a2=F_a * g.g2.d_w / 2000.0,
     )
 

@@ -103,11 +103,9 @@ def _num(x: float) -> str:
 
 
 def _passes(v: dict, method: str) -> bool:
-    if method == GOST:
-        return (v["sigma_H"] <= v["sigma_HP"] * (1 + 1e-12)
-                and all(v[f"S_F{k}"] >= v[f"S_F{k}_min"] * (1 - 1e-12) for k in (1, 2)))
-    return all(v[f"S_H{k}"] >= v["S_Hmin"] * (1 - 1e-12)
-               and v[f"S_F{k}"] >= v["S_Fmin"] * (1 - 1e-12) for k in (1, 2))
+    from geardesign.spur.strength.verdict import verdict
+
+    return bool(verdict(v).passes)
 
 
 def methods_differ(rated: dict, spec) -> list[Check]:

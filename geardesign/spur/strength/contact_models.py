@@ -5,12 +5,15 @@ between tooth deformations and stresses", Bulletin of NTU "KhPI" 2017 No. 25 ([P
 
 These are informative: the allowables of GOST 21354-87 are calibrated against Hertz
 stresses, so the rating uses σ_H of :mod:`.gost21354`; the n = 0.7 model shows the reserve
-the paper attributes to the real tooth compliance.  Forces N, lengths mm, stresses MPa.
+the paper attributes to the real tooth compliance.  Forces N, lengths mm, stresses MPa;
+numbers or arrays of candidates (:mod:`geardesign.core.xp`).
 """
 
 from __future__ import annotations
 
 import math
+
+from geardesign.core import xp
 
 
 def _k(E: float, nu: float) -> float:
@@ -29,7 +32,7 @@ def hertz_line(F_n: float, b_w: float, rho: float, E1: float, nu1: float, E2: fl
     ρ is the reduced radius of curvature ρ1ρ2/(ρ1 + ρ2).
     """
     k = _k(E1, nu1) + _k(E2, nu2)
-    return math.sqrt(4.0 * F_n * rho * k / (math.pi * b_w)), math.sqrt(F_n / (math.pi * b_w * rho * k))
+    return xp.sqrt(4.0 * F_n * rho * k / (math.pi * b_w)), xp.sqrt(F_n / (math.pi * b_w * rho * k))
 
 
 def popov_line(F_n: float, b_w: float, rho: float, E1: float, nu1: float, E2: float,
@@ -56,7 +59,7 @@ def crowning_ellipse_ratio(rho: float, b_w: float, crowning: float) -> float:
     sagitta, α as printed "α = b0/b_K = √(ρ_w/R)").
     """
     R = b_w * b_w / (8.0 * crowning)
-    return math.sqrt(rho / R)
+    return xp.sqrt(rho / R)
 
 
 def popov_point(F_n: float, rho: float, alpha: float, E1: float, nu1: float, E2: float,

@@ -21,7 +21,8 @@ from geardesign.spur.strength.iso6336 import part3 as P3
 from geardesign.spur.strength.iso6336 import part5 as P5
 from geardesign.spur.strength.iso6336 import part21 as P21
 from geardesign.spur.strength.iso6336 import tables as T
-from geardesign.spur.strength.rating import Rating
+from geardesign.spur.strength.common import Rating
+from geardesign.spur.strength.verdict import verdict
 from geardesign.spur.tolerances import iso1328
 
 NAME = "ISO 6336:2019"
@@ -756,13 +757,14 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
 
     out: list[Check] = []
     S_Hmin, S_Fmin = v["S_Hmin"], v["S_Fmin"]
+    judged = verdict(v)
     for k in (1, 2):
         who, up = members[k - 1], members[k - 1].upper()
         key = f"S_Hspec{k}" if spectrum else f"S_H{k}"
         S = v[key]
         r = S_Hmin / S
         out.append(check(
-            f"ISO_PITTING_{up}", S >= S_Hmin * (1 - 1e-12), "error",
+            f"ISO_PITTING_{up}", judged.contact_ok[k - 1], "error",
             f"ISO 6336 pitting, {who}: S_H{k} = {S:.2f} < S_Hmin = {S_Hmin:.2f}"
             + (" (load spectrum)" if spectrum else "") + ": "
             + (by_rerating(1) or f"increase the centre distance by {_pct(r ** (2 / 3) - 1)} "
@@ -777,7 +779,7 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
         S = v[key]
         r = S_Fmin / S
         out.append(check(
-            f"ISO_BENDING_{up}", S >= S_Fmin * (1 - 1e-12), "error",
+            f"ISO_BENDING_{up}", judged.bending_ok[k - 1], "error",
             f"ISO 6336 tooth bending, {who}: S_F{k} = {S:.2f} < S_Fmin = {S_Fmin:.2f}"
             + (" (load spectrum)" if spectrum else "") + f": increase the module by "
             f"{_pct(r - 1)} (same centre distance, fewer teeth), or "
@@ -870,9 +872,10 @@ def scuffing_checks(v: dict) -> list[Check]:
 
 
 def passes(v: dict, kind: str) -> bool:
-    """Whether a rating ``v`` passes pitting (``"H"``) or bending (``"F"``) on both gears."""
-    spec = "spec" if f"S_{kind}spec1" in v else ""
-    return all(v[f"S_{kind}{spec}{k}"] >= v[f"S_{kind}min"] * (1 - 1e-12) for k in (1, 2))
+    """Whether a rating ``v`` passes pitting (``"H"``) or bending (``"F"``) on both gears
+    (:func:`geardesign.spur.strength.verdict.verdict`)."""
+    judged = verdict(v)
+    return bool(judged.contact_passes if kind == "H" else judged.bending_passes)
 
 
 def rating_checks(rating: Rating, internal: bool = False, members=WHO,

@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 
 from geardesign.core import xp
-from geardesign.spur.strength import tables as T
+from geardesign.spur.strength.gost21354 import tables as T
 
 # ----------------------------------------------------------------------------- contact
 
@@ -92,8 +92,9 @@ def z_n(N_HG: float, N_HE: float, Z_N_max: float) -> float:
     References: GOST 21354-87; ZPCIL ``ZLIFE.h``, ``CONTAU.h`` (floor 0.75);
     [ZPCIL] SGMHLB.h, CONTAU.h; [DANNYE].
     """
-    return xp.where(N_HE <= N_HG, xp.minimum((N_HG / N_HE) ** (1.0 / 6.0), Z_N_max),
-                    xp.maximum((N_HG / N_HE) ** (1.0 / 20.0), 0.75))
+    low = N_HE <= N_HG
+    z = (N_HG / N_HE) ** xp.where(low, 1.0 / 6.0, 1.0 / 20.0)
+    return xp.where(low, xp.minimum(z, Z_N_max), xp.maximum(z, 0.75))
 
 
 def z_v(v: float, soft: bool) -> float:
@@ -101,7 +102,11 @@ def z_v(v: float, soft: bool) -> float:
 
     References: GOST 21354-87; ZPCIL ``ZV.h``; [ZPCIL] (Z_v row).
     """
-    return xp.where(v <= 5.0, 1.0, xp.where(soft, 0.85 * v ** 0.1, 0.925 * v ** 0.05))
+    if xp.scalar(soft):    # one material: only its branch
+        fast = 0.85 * v ** 0.1 if soft else 0.925 * v ** 0.05
+    else:
+        fast = xp.where(soft, 0.85 * v ** 0.1, 0.925 * v ** 0.05)
+    return xp.where(v <= 5.0, 1.0, fast)
 
 
 def z_r(Ra: float) -> float:
@@ -119,6 +124,13 @@ def z_x(d: float) -> float:
     References: GOST 21354-87; ZPCIL ``CONTAU.h``.
     """
     return xp.minimum(1.0, xp.maximum(0.75, xp.sqrt(xp.maximum(1.07 - 1e-4 * d, 0.0))))
+
+
+def contact_limit(sigma_Hlim: float, Z_N: float, Z_R: float, Z_v: float, Z_X: float) -> float:
+    """Contact endurance limit of the gear as built [MPa]: σ_Hlim·Z_N·Z_R·Z_v·Z_X; divided
+    by S_Hmin it is the allowable σ_HP, divided by σ_H the safety factor S_H.
+    References: [GOST21354]; [ZPCIL] CONTAU.h."""
+    return sigma_Hlim * Z_N * Z_R * Z_v * Z_X
 
 
 def sigma_hp_pair(s1: float, s2: float, helical: bool) -> float:
@@ -234,12 +246,36 @@ def sigma_f(F_t: float, K_F: float, b_w: float, m_n: float, Y_FS: float, Y_beta:
     return F_t * K_F / (b_w * m_n) * Y_FS * Y_beta * Y_eps
 
 
+def bending_limit(sigma_Flim: float, Y_N: float, Y_delta: float, Y_R: float, Y_X: float,
+                  Y_A: float) -> float:
+    """Bending endurance limit of the gear as built [MPa]: σ_Flim·Y_N·Y_δ·Y_R·Y_X·Y_A;
+    divided by S_Fmin it is the allowable σ_FP, divided by σ_F the safety factor S_F.
+    References: [GOST21354]; [ZPCIL] IZGIBU.h."""
+    return sigma_Flim * Y_N * Y_delta * Y_R * Y_X * Y_A
+
+
 # ----------------------------------------------------------------------------- load factors
 
 
 def module_class(m: float) -> int:
+    """Module class of the tables of g_0 and w_max: 0 (m ≤ 3.55), 1 (≤ 10), 2 (> 10) [mm]."""
     lo, hi = T.MODULE_CLASSES
     return xp.where(m <= lo, 0, xp.where(m <= hi, 1, 2))
+
+
+def pitch_factors(grade: int, m: float) -> tuple[float, float]:
+    """The pitch deviation factor g_0 and the limit w_max [N/mm] of the specific dynamic
+    force by accuracy grade and module class (``tables.G0``, ``tables.W_MAX``).
+    References: GOST 21354-87 table 7; [ZPCIL] WV.h."""
+    j = module_class(m)
+    return 1.0 * xp.take(T.G0[grade], j), 1.0 * xp.take(T.W_MAX[grade], j)
+
+
+def specific_dynamic_force(delta: float, g_0: float, w_max: float, v: float, a_w: float,
+                           u: float) -> float:
+    """Specific dynamic force w_v = δ·g_0·v·√(a_w/u) ≤ w_max [N/mm] (:func:`dynamic_load`
+    with g_0, w_max of :func:`pitch_factors`)."""
+    return xp.minimum(delta * g_0 * v * xp.sqrt(a_w / u), w_max)
 
 
 def dynamic_load(delta: float, grade: int, m: float, v: float, a_w: float, u: float) -> float:
@@ -252,9 +288,7 @@ def dynamic_load(delta: float, grade: int, m: float, v: float, a_w: float, u: fl
     References: GOST 21354-87; ZPCIL ``WV.h``; [ZPCIL] DLTH.h, WV.h; [DANNYE] (the δ·g_0
     product of the textbook pairing is 10× too large).
     """
-    j = module_class(m)
-    return xp.minimum(delta * xp.take(T.G0[grade], j) * v * xp.sqrt(a_w / u),
-                      xp.take(T.W_MAX[grade], j))
+    return specific_dynamic_force(delta, *pitch_factors(grade, m), v, a_w, u)
 
 
 def k_v(w_v: float, b_w: float, F_t: float, K_A: float) -> float:
@@ -393,7 +427,7 @@ def peak_factor(K: float, T: float, T_max: float) -> float:
 
 def sigma_h_max(sigma_H: float, T: float, T_max: float, K_H: float, K_Hmax: float) -> float:
     """σ_Hmax = σ_H·sqrt(T_max·K_Hmax/(T·K_H)).  ZPCIL ``SIGMAX.h``; [GOST21354]."""
-    return sigma_H * math.sqrt(T_max * K_Hmax / (T * K_H))
+    return sigma_H * xp.sqrt(T_max * K_Hmax / (T * K_H))
 
 
 def sigma_f_max(sigma_F: float, T: float, T_max: float, K_F: float, K_Fmax: float) -> float:

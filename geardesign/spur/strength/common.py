@@ -1,0 +1,207 @@
+"""What both strength methods share: the duty (torque, speed, life), the report row, and the
+rating records with their report metadata.
+
+A rating record is a frozen dataclass whose reported fields carry their row metadata
+(:func:`q`: unit, symbol, name, source); a per-gear field holds a (pinion, wheel) pair.
+:func:`rows` turns any record into the report rows and :func:`values` into the flat
+``key → value`` record the checks and the tests read; neither computes anything.  The
+same record holds numbers (the calculator) or numpy arrays of candidates (the sweep
+kernel); rows are built only from numbers.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass, field
+
+from geardesign.spur.loads import Block
+
+WHO = ("pinion", "wheel")
+
+
+@dataclass(frozen=True)
+class Life:
+    """Required life and loading history."""
+
+    L_h: float
+    c: tuple[int, int] = (1, 1)
+    regime: str | None = "0"
+    blocks: tuple[Block, ...] = ()
+
+
+@dataclass(frozen=True)
+class Duty:
+    T1: float               # nominal (largest long-acting) pinion torque, N·m
+    n1: float               # pinion speed, min^-1
+    K_A: float = 1.0
+    T_peak: float | None = None
+    reverse_ratio: float = 0.0
+    life: Life = field(default_factory=lambda: Life(1.0))
+    reverse_ratios: tuple[float, float] | None = None
+    """Reversed torque ratio per gear (pinion, wheel) when they differ, e.g. a planet
+    loaded on both flanks (1.0) meshing a sun loaded on one (0.0); ``None``: both gears
+    take ``reverse_ratio``."""
+
+    def reverse(self, i: int) -> float:
+        """The reversed torque ratio of gear ``i`` (0 pinion, 1 wheel)."""
+        return self.reverse_ratio if self.reverse_ratios is None else self.reverse_ratios[i]
+
+
+@dataclass(frozen=True)
+class Value:
+    """One report row of a rating."""
+
+    section: str
+    key: str
+    value: float | str
+    unit: str | None
+    symbol: str
+    name: str
+    source: str
+
+
+# ----------------------------------------------------------------------------- records
+
+
+def q(unit: str | None, symbol: str, name, source, *, key: str | None = None,
+      gear: bool = False, group: str | None = None, default=dataclasses.MISSING):
+    """A reported field of a rating record.
+
+    ``unit`` (None for a text value), ``symbol`` and ``name`` are the row's; ``source`` a
+    reference (a key of ``docs/references.md``, "spec", "material").  ``name`` and
+    ``source`` may hold ``{placeholders}`` filled from the record's fields (a per-gear field
+    at the gear's index) and from ``k`` (1, 2) and ``who`` (pinion, wheel), or be a function
+    of that context.  ``gear``: a (pinion, wheel) pair, one row per gear, key and symbol
+    with ``{k}``; consecutive per-gear fields of one ``group`` are reported gear by gear.
+    A field that is ``None`` gives no row."""
+    meta = {"unit": unit, "symbol": symbol, "name": name, "source": source,
+            "key": key, "gear": gear, "group": group}
+    return field(default=default, metadata={"report": meta})
+
+
+def opt(unit, symbol, name, source, **kw):
+    """A reported field that may be absent (``None``, no row)."""
+    return q(unit, symbol, name, source, default=None, **kw)
+
+
+class Record:
+    """A rating record: :attr:`v` its values by report key (as :func:`values`), :attr:`rows`
+    its report rows (as :func:`rows`)."""
+
+    @property
+    def v(self) -> dict:
+        return values(self)
+
+    @property
+    def rows(self) -> list[Value]:
+        return rows(self)
+
+
+def _section_records(record):
+    """``(section, record)`` of a rating made of section records (each with ``SECTION``),
+    or of a single section record."""
+    if hasattr(record, "SECTION"):
+        yield record.SECTION, record
+        return
+    for f in dataclasses.fields(record):
+        part = getattr(record, f.name)
+        if part is not None and hasattr(part, "SECTION"):
+            yield part.SECTION, part
+
+
+def _runs(rec):
+    """The reported fields of a section record in report order: runs of fields, a run
+    being one field or the consecutive per-gear fields of one group."""
+    run: list = []
+    for f in dataclasses.fields(rec):
+        meta = f.metadata.get("report")
+        if meta is None:
+            continue
+        if run and meta["gear"] and meta["group"] is not None \
+                and run[-1][1]["group"] == meta["group"]:
+            run.append((f, meta))
+            continue
+        if run:
+            yield run
+        run = [(f, meta)]
+    if run:
+        yield run
+
+
+def _key(f, meta, k: int | None) -> str:
+    key = meta["key"] or (f.name + "{k}" if meta["gear"] else f.name)
+    return key.format(k=k) if k is not None else key
+
+
+def _items(rec):
+    """``(field, meta, gear index or None, key, value)`` of a section record in report
+    order, the absent fields left out."""
+    for run in _runs(rec):
+        gears = (0, 1) if run[0][1]["gear"] else (None,)
+        for i in gears:
+            for f, meta in run:
+                value = getattr(rec, f.name)
+                if value is None:
+                    continue
+                if i is not None:
+                    value = value[i]
+                    if value is None:
+                        continue
+                yield f, meta, i, _key(f, meta, None if i is None else i + 1), value
+
+
+def values(record) -> dict:
+    """The rating's values by report key (the keys of the rows), numbers or arrays."""
+    return {key: value for _, rec in _section_records(record)
+            for _, _, _, key, value in _items(rec)}
+
+
+def _text(template, ctx: dict) -> str:
+    if callable(template):
+        return template(ctx)
+    return template.format(**ctx) if "{" in template else template
+
+
+def rows(record) -> list[Value]:
+    """The report rows of a rating record, from its fields' metadata: key, value, unit,
+    symbol, name and source per row, in field order, per-gear groups gear by gear.  A factor
+    the designer gave (``record.given``) reads "(given)" with the source "spec"; a material
+    value from the spec (``record.from_spec``) has the source "spec"."""
+    given = getattr(record, "given", frozenset())
+    from_spec = getattr(record, "from_spec", frozenset())
+    out = []
+    for section, rec in _section_records(record):
+        base = {f.name: getattr(rec, f.name) for f in dataclasses.fields(rec)}
+        for f, meta, i, key, value in _items(rec):
+            ctx = base
+            if i is not None:
+                ctx = {n: (x[i] if isinstance(x, tuple) else x) for n, x in base.items()}
+                ctx.update(k=i + 1, who=WHO[i])
+            name, source = _text(meta["name"], ctx), _text(meta["source"], ctx)
+            if key in given:
+                name, source = name + " (given)", "spec"
+            elif key in from_spec:
+                source = "spec"
+            if isinstance(value, bool):
+                value = "yes" if value else "no"
+            symbol = meta["symbol"].format(k=i + 1) if i is not None else meta["symbol"]
+            out.append(Value(section, key, value, meta["unit"], symbol, name, source))
+    return out
+
+
+# ----------------------------------------------------------------------------- row writer
+
+
+@dataclass
+class Rating:
+    """Rows written while rating, with the values by key (the ISO 6336 rating, until it
+    returns a record like :class:`geardesign.spur.strength.gost21354.rating.GostRating`)."""
+
+    rows: list[Value] = field(default_factory=list)
+    v: dict = field(default_factory=dict)
+
+    def put(self, section: str, key: str, value, unit, symbol: str, name: str,
+            source: str) -> float:
+        self.rows.append(Value(section, key, value, unit, symbol, name, source))
+        self.v[key] = value
+        return value
