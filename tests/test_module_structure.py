@@ -21,8 +21,6 @@ SPLITTING = "being split (issue 28)"
 LONG = {
     # modules other work of issue 28 is splitting now
     "spur/calculator.py": SPLITTING + ": spur inputs, solve and report",
-    "spur/strength/rating.py": SPLITTING + ": the GOST 21354 rating returns a record",
-    "spur/strength/gost21354.py": SPLITTING + ": a GOST 21354 package (formulas, tables)",
     "spur/strength/iso6336/rating.py": SPLITTING + ": the ISO 6336 rating returns a record",
     "spur/strength/iso6336/spec.py": SPLITTING + ": the ISO 6336 inputs with the spur split",
     "spur/strength/iso6336/part3.py": SPLITTING + ": ISO 6336-3 beside the GOST package",
@@ -49,6 +47,11 @@ LONG = {
     "report/figures.py": SPLITTING + ": one module of pictures per calculator kind",
     "report/html.py": SPLITTING + ": the first screen apart from the sections",
     "spur/spec_inputs.py": SPLITTING + ": the ISO 6336 readers apart from the pair and duty",
+    "spur/strength/gost21354/formulas.py": "the GOST 21354-87 formulas, one function per "
+        "equation with its clause and doctest; " + SPLITTING + " by part (contact, bending, "
+        "load factors)",
+    "spur/strength/gost21354/rating.py": "the GOST 21354-87 record: one frozen section per "
+        "part with its field metadata; " + SPLITTING + ": the sections apart from rate()",
     # a reason of its own
     "bearing/life.py": "the ISO 281:2007 / GOST 18855 life formulas, one function per "
                        "equation with its doctest and clause; " + SPLITTING + " by part "
