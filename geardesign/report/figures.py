@@ -134,7 +134,7 @@ def _power_flow(rows: list, drive: dict) -> str:
     n = len(rows)
     bw, gap, h = 150, 70, 150
     W = 2 * 110 + n * bw + (n + 1) * gap
-    out = [f'<svg class="diagram" viewBox="0 0 {W} {h}" role="img" aria-label="power flow" '
+    out = [f'<svg class="diagram" viewBox="-2 0 {W + 4} {h}" role="img" aria-label="power flow" '
            f'xmlns="http://www.w3.org/2000/svg" font-family="sans-serif" font-size="12">',
            '<defs><marker id="arrow" viewBox="0 0 10 10" refX="10" refY="5" markerWidth="7" '
            'markerHeight="7" orient="auto"><path d="M0,0L10,5L0,10z" fill="#555"/></marker>'
