@@ -4,6 +4,7 @@ but the comparisons of the checks)."""
 from __future__ import annotations
 
 from geardesign.bevel import sources as S
+from geardesign.bevel import solve
 from geardesign.bevel.solve import Solution
 from geardesign.core.result import Result, check
 
@@ -173,6 +174,12 @@ def checks(res: Result, sol: Solution) -> None:
         f"reduce the module with more teeth, or use spiral teeth",
         f"total contact ratio ε_vγ = {g.eps_vg:.3f} >= {EPS_MIN:g}", g.eps_vg, EPS_MIN,
         S.CONTACT_RATIO))
+    rated = solve.ratable(g)
+    res.checks.append(check(
+        "STRENGTH_NOT_RATED", rated, "error",
+        "the strength is not rated: the pair does not mesh as computed (ε_vα < 1, an "
+        "undercut or a pointed tooth, see the checks above); fix the geometry first",
+        "the pair meshes as computed: strength rated", None, None, S.VIRTUAL))
     for label, r, sH, sF in (("ISO 10300", sol.iso, S.ISO_H, S.ISO_F),
                              ("GOST 21354", sol.gost, S.GOST, S.GOST)):
         if r is None:
