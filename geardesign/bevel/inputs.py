@@ -104,12 +104,13 @@ def pitch_angles(z1: int, z2: int, Sigma: float) -> tuple[float, float]:
     return d1, Sigma - d1
 
 
-def _pair_rules(p: Pair, problems: Problems) -> None:
+def _pair_rules(p: Pair, given: dict, problems: Problems) -> None:
+    """The rules across keys of ``[pair]`` (``given``: the values as written)."""
     if p.spiral and p.beta_m <= 0.0:
         problems.at("pair.spiral_angle", 0.0, 'spiral teeth need a mean spiral angle > 0 '
                     '(e.g. 35); for β_m = 0 write teeth = "straight"')
     if not p.spiral and p.beta_m > 0.0:
-        problems.at("pair.spiral_angle", math.degrees(p.beta_m),
+        problems.at("pair.spiral_angle", given["spiral_angle"],
                     'straight teeth have β_m = 0; remove spiral_angle or write '
                     'teeth = "spiral"')
     if p.z2 < p.z1:
@@ -118,7 +119,7 @@ def _pair_rules(p: Pair, problems: Problems) -> None:
         return
     d1, d2 = pitch_angles(p.z1, p.z2, p.Sigma)
     if not (0.0 < d1 and d2 < DELTA_MAX):
-        problems.at("pair.shaft_angle", math.degrees(p.Sigma),
+        problems.at("pair.shaft_angle", given["shaft_angle"],
                     f"with z2/z1 = {p.z2 / p.z1:.3g} the wheel's pitch cone angle would be "
                     f"{math.degrees(d2):.1f}°; a crown or internal bevel gear (δ2 >= "
                     f"{math.degrees(DELTA_MAX):g}°) is not covered: use a smaller shaft angle")
@@ -144,7 +145,7 @@ def read(data: dict) -> Inputs:
                 math.radians(pr["pressure_angle"]), pr["addendum"], pr["clearance"],
                 pr["root_radius"], pr["x1"], pr["xt1"], pr["depth"])
     problems = Problems()
-    problems.stage(_pair_rules, pair, problems)
+    problems.stage(_pair_rules, pair, pr, problems)
     problems.raise_all()
     load = Load(ld["torque"] * 1e3, ld["speed"], ld["rotation"], ld["driver"],
                 ld["application_factor"], ld["dynamic_factor"], ld["mounting"],

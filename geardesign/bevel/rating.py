@@ -86,7 +86,7 @@ def member_forces(F_mt: float, alpha_n: float, beta_m: float, delta: float, s: i
 
     >>> f = member_forces(1000.0, math.radians(20), 0.0, math.radians(45), 1)
     >>> round(f.F_a, 3), round(f.F_r, 3)
-    (257.365, 257.365)
+    (257.366, 257.366)
     """
     k = F_mt / math.cos(beta_m)
     ta, sb = math.tan(alpha_n), math.sin(beta_m)
@@ -167,7 +167,7 @@ def load_sharing(g: Geometry) -> float:
 
     >>> class _G: eps_vb = 1.5; eps_vg = 2.5
     >>> round(load_sharing(_G), 4)
-    0.8577
+    0.8634
     """
     if g.eps_vb <= 0.0 or g.eps_vg <= 2.0:
         return 1.0
