@@ -195,7 +195,7 @@ BAD = [
      ["s.toml: pair.spiral_angle = 0.0: the default (not in the spec): spiral teeth need a "
       'mean spiral angle > 0 (e.g. 35); for β_m = 0 write teeth = "straight"']),
     ("negative torque", GOOD.replace("torque = 150.0", "torque = -150.0"),
-     ["s.toml: load.torque = -150.0: must be a number > 0 and <= 10000000 (N·m)"]),
+     ["s.toml: load.torque = -150.0: must be a number >= 1e-06 and <= 10000000 (N·m)"]),
 ]
 
 
