@@ -21,65 +21,73 @@ EPS_MIN = 1.1
 MEMBERS = ("pinion", "wheel")
 
 
+def _member_rows(sec, members, table) -> None:
+    """One row per (key, attribute, unit, symbol, name, source) of ``table`` for each member,
+    the key and symbol suffixed 1 (pinion) or 2 (wheel)."""
+    for i, (who, m) in enumerate(zip(MEMBERS, members), 1):
+        for key, attr, unit, sym, name, src in table:
+            sec.add(f"{key}{i}", getattr(m, attr), unit, f"{sym}{i}", f"{name}, {who}", src)
+
+
+def _pair_rows(sec, obj, table) -> None:
+    """One row per (key, unit, symbol, name, source) of ``table``, the value ``obj.key``."""
+    for key, unit, sym, name, src in table:
+        sec.add(key, getattr(obj, key), unit, sym, name, src)
+
+
 def geometry_rows(res: Result, sol: Solution) -> None:
     g = sol.geometry
     src = S.GEOM_SPIRAL if g.spiral else S.GEOM_STRAIGHT
     sec = res.section("geometry", "Cones and modules")
-    sec.add("u", g.u, "-", "u", "gear ratio z2/z1", S.CONE)
-    sec.add("m_te", g.m_te, "mm", "m_te", "outer transverse module", src)
-    sec.add("m_tm", g.m_tm, "mm", "m_tm", "mean transverse module", src)
-    sec.add("m_nm", g.m_nm, "mm", "m_nm", "mean normal module", src)
-    sec.add("R_e", g.R_e, "mm", "R_e", "outer cone distance", S.CONE)
-    sec.add("R_m", g.R_m, "mm", "R_m", "mean cone distance", S.CONE)
+    _pair_rows(sec, g, (
+        ("u", "-", "u", "gear ratio z2/z1", S.CONE),
+        ("m_te", "mm", "m_te", "outer transverse module", src),
+        ("m_tm", "mm", "m_tm", "mean transverse module", src),
+        ("m_nm", "mm", "m_nm", "mean normal module", src),
+        ("R_e", "mm", "R_e", "outer cone distance", S.CONE),
+        ("R_m", "mm", "R_m", "mean cone distance", S.CONE)))
     sec.add("b_over_R_e", g.b / g.R_e, "-", "b/R_e", "face width ratio", S.CONE)
-    for name, m in zip(MEMBERS, g.members):
-        i = "1" if name == "pinion" else "2"
-        sec.add(f"delta{i}", m.delta, "rad", f"δ{i}", f"pitch cone angle, {name}", S.CONE)
-        sec.add(f"theta_a{i}", m.theta_a, "rad", f"θ_a{i}", f"addendum angle, {name}", src)
-        sec.add(f"theta_f{i}", m.theta_f, "rad", f"θ_f{i}", f"dedendum angle, {name}", src)
-        sec.add(f"delta_a{i}", m.delta_a, "rad", f"δ_a{i}", f"face cone angle, {name}", src)
-        sec.add(f"delta_f{i}", m.delta_f, "rad", f"δ_f{i}", f"root cone angle, {name}", src)
-        sec.add(f"d_e{i}", m.d_e, "mm", f"d_e{i}", f"outer reference diameter, {name}", src)
-        sec.add(f"d_m{i}", m.d_m, "mm", f"d_m{i}", f"mean reference diameter, {name}", src)
-        sec.add(f"h_ae{i}", m.h_ae, "mm", f"h_ae{i}", f"outer addendum, {name}", src)
-        sec.add(f"h_fe{i}", m.h_fe, "mm", f"h_fe{i}", f"outer dedendum, {name}", src)
-        sec.add(f"d_ae{i}", m.d_ae, "mm", f"d_ae{i}", f"outer tip diameter, {name}", src)
-        sec.add(f"d_fe{i}", m.d_fe, "mm", f"d_fe{i}", f"outer root diameter, {name}", src)
-        sec.add(f"d_am{i}", m.d_am, "mm", f"d_am{i}", f"mean tip diameter, {name}", src)
-        sec.add(f"d_fm{i}", m.d_fm, "mm", f"d_fm{i}", f"mean root diameter, {name}", src)
-        sec.add(f"B{i}", m.B, "mm", f"B{i}", f"apex to the outer tip circle plane, {name}",
-                src)
-        where = "mean normal" if g.spiral else "outer transverse"
-        sec.add(f"s{i}", m.s_e, "mm", f"s{i}", f"{where} circular tooth thickness, {name}",
-                src)
-        sec.add(f"s_c{i}", m.s_c, "mm", f"s̄{i}", f"{where} chordal tooth thickness, {name}",
-                src)
-        sec.add(f"h_c{i}", m.h_c, "mm", f"h̄_a{i}", f"chordal height, {name}", src)
+    where = "mean normal" if g.spiral else "outer transverse"
+    _member_rows(sec, g.members, (
+        ("delta", "delta", "rad", "δ", "pitch cone angle", S.CONE),
+        ("theta_a", "theta_a", "rad", "θ_a", "addendum angle", src),
+        ("theta_f", "theta_f", "rad", "θ_f", "dedendum angle", src),
+        ("delta_a", "delta_a", "rad", "δ_a", "face cone angle", src),
+        ("delta_f", "delta_f", "rad", "δ_f", "root cone angle", src),
+        ("d_e", "d_e", "mm", "d_e", "outer reference diameter", src),
+        ("d_m", "d_m", "mm", "d_m", "mean reference diameter", src),
+        ("h_ae", "h_ae", "mm", "h_ae", "outer addendum", src),
+        ("h_fe", "h_fe", "mm", "h_fe", "outer dedendum", src),
+        ("d_ae", "d_ae", "mm", "d_ae", "outer tip diameter", src),
+        ("d_fe", "d_fe", "mm", "d_fe", "outer root diameter", src),
+        ("d_am", "d_am", "mm", "d_am", "mean tip diameter", src),
+        ("d_fm", "d_fm", "mm", "d_fm", "mean root diameter", src),
+        ("B", "B", "mm", "B", "apex to the outer tip circle plane", src),
+        ("s", "s_e", "mm", "s", f"{where} circular tooth thickness", src),
+        ("s_c", "s_c", "mm", "s̄", f"{where} chordal tooth thickness", src),
+        ("h_c", "h_c", "mm", "h̄_a", "chordal height", src)))
 
     v = res.section("virtual", "Virtual cylindrical gears (mean section)")
-    v.add("alpha_vt", g.alpha_vt, "rad", "α_vt", "transverse pressure angle", S.VIRTUAL)
-    v.add("beta_vb", g.beta_vb, "rad", "β_vb", "base spiral angle", S.VIRTUAL)
-    v.add("u_v", g.u_v, "-", "u_v", "virtual gear ratio", S.VIRTUAL)
-    v.add("a_v", g.a_v, "mm", "a_v", "virtual centre distance", S.VIRTUAL)
-    for name, m in zip(MEMBERS, g.members):
-        i = "1" if name == "pinion" else "2"
-        v.add(f"z_v{i}", m.z_v, "-", f"z_v{i}", f"virtual number of teeth, {name}", S.VIRTUAL)
-        v.add(f"z_vn{i}", m.z_vn, "-", f"z_vn{i}", f"virtual number of teeth (normal), {name}",
-              S.VIRTUAL)
-        v.add(f"d_v{i}", m.d_v, "mm", f"d_v{i}", f"reference diameter, {name}", S.VIRTUAL)
-        v.add(f"d_va{i}", m.d_va, "mm", f"d_va{i}", f"tip diameter, {name}", S.VIRTUAL)
-        v.add(f"d_vb{i}", m.d_vb, "mm", f"d_vb{i}", f"base diameter, {name}", S.VIRTUAL)
-        v.add(f"x_min{i}", m.x_min, "-", f"x_min{i}", f"least shift without undercut, {name}",
-              S.UNDERCUT)
-        v.add(f"s_am{i}", m.s_am, "mm", f"s_am{i}", f"tip thickness (mean, normal), {name}",
-              S.UNDERCUT)
-        if not g.spiral:
-            v.add(f"s_ae{i}", m.s_ae, "mm", f"s_ae{i}", f"tip thickness (outer), {name}",
-                  S.UNDERCUT)
-    v.add("g_va", g.g_va, "mm", "g_vα", "length of action", S.CONTACT_RATIO)
-    v.add("eps_va", g.eps_va, "-", "ε_vα", "transverse contact ratio", S.CONTACT_RATIO)
-    v.add("eps_vb", g.eps_vb, "-", "ε_vβ", "face contact ratio", S.CONTACT_RATIO)
-    v.add("eps_vg", g.eps_vg, "-", "ε_vγ", "total contact ratio", S.CONTACT_RATIO)
+    _pair_rows(v, g, (
+        ("alpha_vt", "rad", "α_vt", "transverse pressure angle", S.VIRTUAL),
+        ("beta_vb", "rad", "β_vb", "base spiral angle", S.VIRTUAL),
+        ("u_v", "-", "u_v", "virtual gear ratio", S.VIRTUAL),
+        ("a_v", "mm", "a_v", "virtual centre distance", S.VIRTUAL)))
+    _member_rows(v, g.members, (
+        ("z_v", "z_v", "-", "z_v", "virtual number of teeth", S.VIRTUAL),
+        ("z_vn", "z_vn", "-", "z_vn", "virtual number of teeth (normal)", S.VIRTUAL),
+        ("d_v", "d_v", "mm", "d_v", "reference diameter", S.VIRTUAL),
+        ("d_va", "d_va", "mm", "d_va", "tip diameter", S.VIRTUAL),
+        ("d_vb", "d_vb", "mm", "d_vb", "base diameter", S.VIRTUAL),
+        ("x_min", "x_min", "-", "x_min", "least shift without undercut", S.UNDERCUT),
+        ("s_am", "s_am", "mm", "s_am", "tip thickness (mean, normal)", S.UNDERCUT))
+        + (() if g.spiral else
+           (("s_ae", "s_ae", "mm", "s_ae", "tip thickness (outer)", S.UNDERCUT),)))
+    _pair_rows(v, g, (
+        ("g_va", "mm", "g_vα", "length of action", S.CONTACT_RATIO),
+        ("eps_va", "-", "ε_vα", "transverse contact ratio", S.CONTACT_RATIO),
+        ("eps_vb", "-", "ε_vβ", "face contact ratio", S.CONTACT_RATIO),
+        ("eps_vg", "-", "ε_vγ", "total contact ratio", S.CONTACT_RATIO)))
 
 
 def force_rows(res: Result, sol: Solution) -> None:
@@ -88,59 +96,53 @@ def force_rows(res: Result, sol: Solution) -> None:
     sec.add("F_mt", f.F_mt, "N", "F_mt", "tangential force", S.FORCES)
     sec.add("T2", f.T2 / 1e3, "N·m", "T2", "wheel torque (no losses)", S.FORCES)
     sec.add("v_mt", f.v_mt, "m/s", "v_mt", "pitch line speed, mean cone", S.FORCES)
-    for name, m in zip(MEMBERS, (f.pinion, f.wheel)):
-        i = "1" if name == "pinion" else "2"
-        sec.add(f"F_a{i}", m.F_a, "N", f"F_a{i}", f"axial force, {name} (+: away from the "
-                f"apex)", S.FORCES)
-        sec.add(f"F_r{i}", m.F_r, "N", f"F_r{i}", f"radial force, {name} (+: toward its "
-                f"axis)", S.FORCES)
+    _member_rows(sec, (f.pinion, f.wheel), (
+        ("F_a", "F_a", "N", "F_a", "axial force (+: away from the apex)", S.FORCES),
+        ("F_r", "F_r", "N", "F_r", "radial force (+: toward its axis)", S.FORCES)))
 
 
 def iso_rows(res: Result, sol: Solution) -> None:
     r = sol.iso
     sec = res.section("iso10300", "ISO 10300 method B1")
-    for key, val, sym, name, src in (
-            ("K_Hbeta_be", r.K_Hbeta_be, "K_Hβ-be", "mounting factor", S.ISO_K),
-            ("K_Hbeta", r.K_Hbeta, "K_Hβ", "face load factor, contact", S.ISO_K),
-            ("K_Fbeta", r.K_Fbeta, "K_Fβ", "face load factor, bending", S.ISO_K),
-            ("Z_E", r.Z_E, "Z_E", "elasticity factor", S.ISO_H),
-            ("Z_H", r.Z_H, "Z_H", "zone factor", S.ISO_H),
-            ("Z_MB", r.Z_MB, "Z_M-B", "mid-zone factor", S.ISO_H),
-            ("Z_LS", r.Z_LS, "Z_LS", "load sharing factor", S.ISO_H),
-            ("Z_beta", r.Z_beta, "Z_β", "spiral angle factor", S.ISO_H),
-            ("Z_K", r.Z_K, "Z_K", "bevel gear factor", S.ISO_H),
-            ("Y_LS", r.Y_LS, "Y_LS", "load sharing factor, bending", S.ISO_F)):
-        sec.add(key, val, "-" if key != "Z_E" else "√MPa", sym, name, src)
-    sec.add("b_eH", r.b_eH, "mm", "b_eH", "effective face width (0.85·b)", S.ISO_H)
-    sec.add("sigma_H0", r.sigma_H0, "MPa", "σ_H0", "nominal contact stress", S.ISO_H)
-    sec.add("sigma_H", r.sigma_H, "MPa", "σ_H", "contact stress", S.ISO_H)
-    for name, m in zip(MEMBERS, (r.pinion, r.wheel)):
-        i = "1" if name == "pinion" else "2"
-        sec.add(f"Y_F{i}", m.Y_F, "-", f"Y_F{i}", f"tooth form factor, {name}", S.TOOTH_FORM)
-        sec.add(f"Y_S{i}", m.Y_S, "-", f"Y_S{i}", f"stress correction factor, {name}",
-                S.TOOTH_FORM)
-        sec.add(f"sigma_F{i}", m.sigma_F, "MPa", f"σ_F{i}", f"root stress, {name}", S.ISO_F)
-        sec.add(f"S_H{i}", m.S_H, "-", f"S_H{i}", f"pitting safety, {name}", S.ISO_H)
-        sec.add(f"S_F{i}", m.S_F, "-", f"S_F{i}", f"bending safety, {name}", S.ISO_F)
+    _pair_rows(sec, r, (
+        ("K_Hbeta_be", "-", "K_Hβ-be", "mounting factor", S.ISO_K),
+        ("K_Hbeta", "-", "K_Hβ", "face load factor, contact", S.ISO_K),
+        ("K_Fbeta", "-", "K_Fβ", "face load factor, bending", S.ISO_K),
+        ("Z_E", "√MPa", "Z_E", "elasticity factor", S.ISO_H),
+        ("Z_H", "-", "Z_H", "zone factor", S.ISO_H),
+        ("Z_MB", "-", "Z_M-B", "mid-zone factor", S.ISO_H),
+        ("Z_LS", "-", "Z_LS", "load sharing factor", S.ISO_H),
+        ("Z_beta", "-", "Z_β", "spiral angle factor", S.ISO_H),
+        ("Z_K", "-", "Z_K", "bevel gear factor", S.ISO_H),
+        ("Y_LS", "-", "Y_LS", "load sharing factor, bending", S.ISO_F),
+        ("b_eH", "mm", "b_eH", "effective face width (0.85·b)", S.ISO_H),
+        ("sigma_H0", "MPa", "σ_H0", "nominal contact stress", S.ISO_H),
+        ("sigma_H", "MPa", "σ_H", "contact stress", S.ISO_H)))
+    _member_rows(sec, (r.pinion, r.wheel), (
+        ("Y_F", "Y_F", "-", "Y_F", "tooth form factor", S.TOOTH_FORM),
+        ("Y_S", "Y_S", "-", "Y_S", "stress correction factor", S.TOOTH_FORM),
+        ("sigma_F", "sigma_F", "MPa", "σ_F", "root stress", S.ISO_F),
+        ("S_H", "S_H", "-", "S_H", "pitting safety", S.ISO_H),
+        ("S_F", "S_F", "-", "S_F", "bending safety", S.ISO_F)))
 
 
 def gost_rows(res: Result, sol: Solution) -> None:
     r = sol.gost
     sec = res.section("gost21354", "GOST 21354 via the virtual spur pair")
-    sec.add("theta_H", r.theta_H, "-", "θ_H", "bevel factor, contact", S.GOST)
-    sec.add("theta_F", r.theta_F, "-", "θ_F", "bevel factor, bending", S.GOST)
-    sec.add("K_H", r.K_H, "-", "K_H", "load factor, contact", S.GOST)
-    sec.add("K_F", r.K_F, "-", "K_F", "load factor, bending", S.GOST)
-    sec.add("Z_E", r.Z_E, "√MPa", "Z_E", "elasticity factor", S.GOST)
-    sec.add("Z_H", r.Z_H, "-", "Z_H", "zone factor", S.GOST)
-    sec.add("sigma_H", r.sigma_H, "MPa", "σ_H", "contact stress", S.GOST)
-    for name, m in zip(MEMBERS, (r.pinion, r.wheel)):
-        i = "1" if name == "pinion" else "2"
-        sec.add(f"z_vn{i}", m.z_vn, "-", f"z_vn{i}", f"virtual spur teeth, {name}", S.GOST)
-        sec.add(f"Y_FS{i}", m.Y_FS, "-", f"Y_FS{i}", f"tooth form factor, {name}", S.GOST)
-        sec.add(f"sigma_F{i}", m.sigma_F, "MPa", f"σ_F{i}", f"root stress, {name}", S.GOST)
-        sec.add(f"S_H{i}", m.S_H, "-", f"S_H{i}", f"pitting safety, {name}", S.GOST)
-        sec.add(f"S_F{i}", m.S_F, "-", f"S_F{i}", f"bending safety, {name}", S.GOST)
+    _pair_rows(sec, r, (
+        ("theta_H", "-", "θ_H", "bevel factor, contact", S.GOST),
+        ("theta_F", "-", "θ_F", "bevel factor, bending", S.GOST),
+        ("K_H", "-", "K_H", "load factor, contact", S.GOST),
+        ("K_F", "-", "K_F", "load factor, bending", S.GOST),
+        ("Z_E", "√MPa", "Z_E", "elasticity factor", S.GOST),
+        ("Z_H", "-", "Z_H", "zone factor", S.GOST),
+        ("sigma_H", "MPa", "σ_H", "contact stress", S.GOST)))
+    _member_rows(sec, (r.pinion, r.wheel), (
+        ("z_vn", "z_vn", "-", "z_vn", "virtual spur teeth", S.GOST),
+        ("Y_FS", "Y_FS", "-", "Y_FS", "tooth form factor", S.GOST),
+        ("sigma_F", "sigma_F", "MPa", "σ_F", "root stress", S.GOST),
+        ("S_H", "S_H", "-", "S_H", "pitting safety", S.GOST),
+        ("S_F", "S_F", "-", "S_F", "bending safety", S.GOST)))
 
 
 def checks(res: Result, sol: Solution) -> None:
