@@ -180,7 +180,7 @@ def checks(res: Result, sol: Solution) -> None:
     res.checks.append(check(
         "STRENGTH_NOT_RATED", rated, "error",
         "the strength is not rated: the pair does not mesh as computed (ε_vα < 1, an "
-        "undercut or a pointed tooth, see the checks above); fix the geometry first",
+        "undercut or a pointed tooth, see the checks above); change the geometry as those checks advise",
         "the pair meshes as computed: strength rated", None, None, S.VIRTUAL))
     for label, r, sH, sF in (("ISO 10300", sol.iso, S.ISO_H, S.ISO_F),
                              ("GOST 21354", sol.gost, S.GOST, S.GOST)):
