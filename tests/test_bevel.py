@@ -203,3 +203,25 @@ BAD = [
 def test_bad_input_one_line_exit_2(tmp_path, name):
     _, text, expected = next(b for b in BAD if b[0] == name)
     assert run_bad(tmp_path, text) == expected
+
+
+@settings(max_examples=150, deadline=None)
+@given(pairs, st.sampled_from(["cw", "ccw"]), st.sampled_from(["pinion", "wheel"]))
+def test_forces_balance_at_any_shaft_angle(args, rotation, driver):
+    """In the plane of the two axes (x along the pitch cone generator from the apex), the
+    axial force acts along the member's axis away from the apex and the radial force toward
+    its axis: the pinion's and the wheel's in-plane forces are equal and opposite for any Σ."""
+    p = _pair(args)
+    inp = dataclasses.replace(_inputs(STRAIGHT), pair=p)
+    inp = dataclasses.replace(inp, load=dataclasses.replace(inp.load, rotation=rotation,
+                                                            driver=driver))
+    g = GEO.pair_geometry(p)
+    f = R.forces(inp, g)
+    d1, d2 = g.pinion.delta, g.wheel.delta
+    axis = ((math.cos(d1), math.sin(d1)), (math.cos(d2), -math.sin(d2)))
+    toward = ((-math.sin(d1), math.cos(d1)), (-math.sin(d2), -math.cos(d2)))
+    total = [0.0, 0.0]
+    for m, a, r in zip((f.pinion, f.wheel), axis, toward):
+        for k in (0, 1):
+            total[k] += m.F_a * a[k] + m.F_r * r[k]
+    assert max(map(abs, total)) <= 1e-9 * f.F_mt
