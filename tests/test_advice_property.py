@@ -46,6 +46,8 @@ KNOBS: dict[str, list] = {
                    ("scale", ("key.length",), (0.3, 0.6, 1.0))],
     "geneva": [("scale", ("geneva.roller_diameter",), (1.0, 3.0, 6.0, 12.0)),
                ("set", "drive.rated_power", (None, 0.05, 0.5))],
+    "bevel": [("scale", ("load.torque",), WORST), ("scale", ("pair.face_width",), THINNER),
+              ("set", "pair.x1", (None, -0.4))],
     "wave_gear": [("scale", ("gear.rim_thickness",), (0.3, 0.5, 1.0)),
                   ("scale", ("load.output_torque",), WORST)],
     "ball_clutch": [("scale", ("operation.torque",), WORST),

@@ -1,0 +1,239 @@
+"""Bevel pair geometry: cones, cone distances, diameters, addendum and dedendum angles,
+tooth thickness and chordal dimensions, the virtual cylindrical gears and contact ratios.
+Angles [rad], lengths [mm].
+
+Conventions.  Straight teeth ([GOST19624], Gleason straight bevel of [ISO23509]) are
+specified at the outer (back) cone: outer transverse module m_te, heights h_ae = (h_a* + x)·m_te,
+h_fe = (h_a* + c* − x)·m_te.  Circular-arc (spiral) teeth ([GOST19326]; the "mean section"
+data of [ISO23509]) are specified at the mean cone: mean normal module m_nm, heights
+h_am = (h_a* + x)·m_nm, h_fm = (h_a* + c* − x)·m_nm.  Either module may be given; the other
+follows from the cone distances.  Two depth forms: ``constant_clearance`` (the tip cone of
+one member parallel to the root cone of the other, θ_a1 = θ_f2: GOST 19624 and GOST 19326
+form II, Gleason) and ``tapered`` (tip and root cones from the pitch apex, θ_a = atan(h_a/R):
+GOST 19326 form I, ISO 23509 "standard depth").  The wheel has the shifts −x1, −x_τ1.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from geardesign.bevel.inputs import Pair, pitch_angles
+from geardesign.spur.geometry import BasicRack, tip_thickness, undercut_shift_limit
+
+
+@dataclass(frozen=True)
+class Member:
+    """One member (pinion or wheel) of the pair."""
+
+    z: int
+    x: float              # profile shift coefficient
+    xt: float             # tangential shift coefficient
+    delta: float          # pitch cone angle δ
+    theta_a: float        # addendum angle θ_a
+    theta_f: float        # dedendum angle θ_f
+    delta_a: float        # face (tip) cone angle δ_a = δ + θ_a
+    delta_f: float        # root cone angle δ_f = δ − θ_f
+    d_e: float            # outer reference diameter
+    d_m: float            # mean reference diameter
+    h_ae: float           # outer addendum
+    h_fe: float           # outer dedendum
+    h_am: float           # mean addendum
+    h_fm: float           # mean dedendum
+    d_ae: float           # outer tip diameter
+    d_fe: float           # outer root diameter
+    d_am: float           # mean tip diameter
+    d_fm: float           # mean root diameter
+    B: float              # pitch apex to the plane of the outer tip circle
+    s_e: float            # outer transverse circular tooth thickness (straight) / mean normal
+    s_c: float            # chordal tooth thickness at the section of s_e
+    h_c: float            # chordal height at the section of s_e
+    # virtual cylindrical gear (mean section, [ISO10300-1] method B1)
+    z_v: float
+    z_vn: float
+    d_v: float
+    d_va: float
+    d_vb: float
+    d_vf: float
+    x_min: float          # least shift without undercut (virtual gear)
+    s_am: float           # normal tooth thickness at the tip, mean section
+    s_ae: float           # transverse tooth thickness at the tip, outer section (straight)
+
+
+@dataclass(frozen=True)
+class Geometry:
+    """The pair: cones, modules, virtual gear pair, contact ratios."""
+
+    spiral: bool
+    Sigma: float
+    u: float
+    beta_m: float
+    alpha_n: float
+    alpha_vt: float       # transverse pressure angle of the virtual gear
+    beta_vb: float        # base helix angle of the virtual gear
+    m_te: float
+    m_tm: float
+    m_nm: float
+    R_e: float
+    R_m: float
+    b: float
+    u_v: float            # virtual gear ratio z_v2/z_v1
+    a_v: float            # virtual centre distance
+    g_va: float           # length of action of the virtual gear
+    eps_va: float         # transverse contact ratio ε_vα
+    eps_vb: float         # face contact ratio ε_vβ
+    eps_vg: float         # total contact ratio ε_vγ
+    pinion: Member
+    wheel: Member
+
+    @property
+    def members(self) -> tuple[Member, Member]:
+        return self.pinion, self.wheel
+
+
+def modules(p: Pair, delta1: float) -> tuple[float, float, float, float, float]:
+    """Modules and cone distances (m_te, m_tm, m_nm, R_e, R_m) from the module as given.
+
+    .. math::
+        R_e = \\frac{m_{te} z_1}{2 \\sin δ_1},\\quad R_m = R_e - b/2,\\quad
+        m_{tm} = m_{te} R_m / R_e,\\quad m_{nm} = m_{tm} \\cos β_m
+
+    (from the mean normal module: m_tm = m_nm/cos β_m, R_m = m_tm z_1/(2 sin δ_1),
+    R_e = R_m + b/2).  [ISO23509] §5.2; [GOST19624] table 1 items 8-11; [GOST19326] table 1.
+
+    >>> from geardesign.bevel.inputs import Pair
+    >>> p = Pair(False, 3.0, "outer", 20, 40, math.pi / 2, 22.0, 0.0, "right",
+    ...          math.radians(20), 1.0, 0.2, 0.25, 0.0, 0.0, "tapered")
+    >>> round(modules(p, pitch_angles(20, 40, math.pi / 2)[0])[3], 5)
+    67.08204
+    """
+    cb = math.cos(p.beta_m)
+    if p.module_at == "outer":
+        m_te = p.m
+        R_e = m_te * p.z1 / (2.0 * math.sin(delta1))
+        R_m = R_e - 0.5 * p.b
+        m_tm = m_te * R_m / R_e
+    else:
+        m_tm = p.m / cb
+        R_m = m_tm * p.z1 / (2.0 * math.sin(delta1))
+        R_e = R_m + 0.5 * p.b
+        m_te = m_tm * R_e / R_m
+    return m_te, m_tm, m_tm * cb, R_e, R_m
+
+
+def transverse_angles(alpha_n: float, beta_m: float) -> tuple[float, float]:
+    """Transverse pressure angle α_vt and base spiral angle β_vb of the virtual gear.
+
+    .. math:: \\tan α_{vt} = \\tan α_n / \\cos β_m,\\quad \\sin β_{vb} = \\sin β_m \\cos α_n
+
+    [ISO10300-1] §6 (method B1); the helical relations of ``spur.geometry``.
+    """
+    from geardesign.spur.geometry import transverse_angles as helical
+
+    return helical(alpha_n, beta_m)
+
+
+def virtual_ratio(u: float, delta1: float, delta2: float) -> float:
+    """Virtual gear ratio u_v = u·cos δ1/cos δ2 (u² at Σ = 90°).  [ISO10300-1] §6.
+
+    >>> d1, d2 = pitch_angles(20, 50, math.pi / 2)
+    >>> round(virtual_ratio(2.5, d1, d2), 9)
+    6.25
+    """
+    return u * math.cos(delta1) / math.cos(delta2)
+
+
+def contact_ratios(d_va: tuple[float, float], d_vb: tuple[float, float], a_v: float,
+                   alpha_vt: float, m_nm: float, beta_m: float, b: float
+                   ) -> tuple[float, float, float, float]:
+    """Length of action g_vα [mm] and the contact ratios ε_vα, ε_vβ, ε_vγ of the virtual
+    cylindrical gear pair (mean section, no backlash).
+
+    .. math::
+        g_{vα} = \\tfrac12\\Big(\\sqrt{d_{va1}^2 - d_{vb1}^2} + \\sqrt{d_{va2}^2 - d_{vb2}^2}\\Big)
+                 - a_v \\sin α_{vt},\\quad
+        ε_{vα} = \\frac{g_{vα} \\cos β_m}{π m_{nm} \\cos α_{vt}},\\quad
+        ε_{vβ} = \\frac{b \\sin β_m}{π m_{nm}},\\quad ε_{vγ} = \\sqrt{ε_{vα}^2 + ε_{vβ}^2}
+
+    [ISO10300-1] §6 (method B1).
+    """
+    g = 0.5 * sum(math.sqrt(max(a * a - c * c, 0.0)) for a, c in zip(d_va, d_vb))
+    g -= a_v * math.sin(alpha_vt)
+    eps_a = g * math.cos(beta_m) / (math.pi * m_nm * math.cos(alpha_vt))
+    eps_b = b * math.sin(beta_m) / (math.pi * m_nm)
+    return g, eps_a, eps_b, math.hypot(eps_a, eps_b)
+
+
+def chordal(s: float, h_a: float, d_v: float) -> tuple[float, float]:
+    """Chordal tooth thickness and chordal height on a virtual gear of diameter d_v.
+
+    .. math:: \\bar s = d_v \\sin\\frac{s}{d_v},\\quad
+              \\bar h_a = h_a + \\frac{d_v}{2}\\Big(1 - \\cos\\frac{s}{d_v}\\Big)
+
+    (≈ s − s³cos²δ/(6 d²) and h_a + s² cos δ/(4 d) with d_v = d/cos δ, the forms printed in
+    [GOST19624] table 4).
+    """
+    half = s / d_v
+    return d_v * math.sin(half), h_a + 0.5 * d_v * (1.0 - math.cos(half))
+
+
+def pair_geometry(p: Pair) -> Geometry:
+    """All geometry of the pair; see the module docstring for the conventions.
+
+    Heights at the basis section (outer for straight, mean for spiral teeth), angles
+    θ_f = atan(h_f/R) at that section, θ_a from the mating member's θ_f (constant
+    clearance) or atan(h_a/R) (tapered); heights elsewhere follow the cones:
+    h(R) = h_basis + (R − R_basis)·tan θ.  Diameters d = m_t z, d_a = d + 2 h_a cos δ,
+    d_f = d − 2 h_f cos δ; B = R_e cos δ − h_ae sin δ.  [GOST19624] table 1;
+    [GOST19326] table 1; [ISO23509] §5.
+    """
+    d1, d2 = pitch_angles(p.z1, p.z2, p.Sigma)
+    m_te, m_tm, m_nm, R_e, R_m = modules(p, d1)
+    outer = not p.spiral
+    m_basis, R_basis = (m_te, R_e) if outer else (m_nm, R_m)
+    xs, xts, zs, deltas = (p.x1, -p.x1), (p.xt1, -p.xt1), (p.z1, p.z2), (d1, d2)
+    h_a = [(p.ha + x) * m_basis for x in xs]
+    h_f = [(p.ha + p.c - x) * m_basis for x in xs]
+    th_f = [math.atan(h / R_basis) for h in h_f]
+    if p.depth == "constant_clearance":
+        th_a = [th_f[1], th_f[0]]
+    else:
+        th_a = [math.atan(h / R_basis) for h in h_a]
+    alpha_vt, beta_vb = transverse_angles(p.alpha_n, p.beta_m)
+    rack = BasicRack(p.alpha_n, p.ha, p.c, p.rho_a0)
+    u = p.z2 / p.z1
+    parts = []
+    for i in (0, 1):
+        z, x, xt, dl = zs[i], xs[i], xts[i], deltas[i]
+        ta, tf = math.tan(th_a[i]), math.tan(th_f[i])
+        h_ae = h_a[i] + (R_e - R_basis) * ta
+        h_fe = h_f[i] + (R_e - R_basis) * tf
+        h_am = h_a[i] - (R_basis - R_m) * ta
+        h_fm = h_f[i] - (R_basis - R_m) * tf
+        d_e, d_m = m_te * z, m_tm * z
+        c = math.cos(dl)
+        # thickness: outer transverse (straight) or mean normal (spiral), [GOST19624]
+        # table 4, [GOST19326] table 4
+        s = (0.5 * math.pi + 2.0 * x * math.tan(p.alpha_n) + xt) * m_basis
+        d_vs = (d_e if outer else d_m / math.cos(p.beta_m) ** 2) / c
+        s_c, h_c = chordal(s, h_a[i], d_vs)
+        d_v = d_m / c
+        z_v = z / c
+        d_va, d_vf = d_v + 2.0 * h_am, d_v - 2.0 * h_fm
+        x_eff = x + xt / (2.0 * math.tan(p.alpha_n))
+        s_am = tip_thickness(z_v, x_eff, d_v, d_va, alpha_vt, p.alpha_n, p.beta_m)
+        s_ae = (tip_thickness(z / c, x_eff, d_e / c, d_e / c + 2.0 * h_ae, p.alpha_n,
+                              p.alpha_n, 0.0) if outer else math.nan)
+        parts.append(Member(
+            z, x, xt, dl, th_a[i], th_f[i], dl + th_a[i], dl - th_f[i], d_e, d_m, h_ae, h_fe,
+            h_am, h_fm, d_e + 2.0 * h_ae * c, d_e - 2.0 * h_fe * c, d_m + 2.0 * h_am * c,
+            d_m - 2.0 * h_fm * c, R_e * c - h_ae * math.sin(dl), s, s_c, h_c,
+            z_v, z_v / (math.cos(beta_vb) ** 2 * math.cos(p.beta_m)), d_v, d_va,
+            d_v * math.cos(alpha_vt), d_vf,
+            undercut_shift_limit(z_v, alpha_vt, p.beta_m, rack), s_am, s_ae))
+    P, W = parts
+    a_v = 0.5 * (P.d_v + W.d_v)
+    g, ea, eb, eg = contact_ratios((P.d_va, W.d_va), (P.d_vb, W.d_vb), a_v, alpha_vt, m_nm,
+                                   p.beta_m, p.b)
+    return Geometry(p.spiral, p.Sigma, u, p.beta_m, p.alpha_n, alpha_vt, beta_vb, m_te, m_tm,
+                    m_nm, R_e, R_m, p.b, virtual_ratio(u, d1, d2), a_v, g, ea, eb, eg, P, W)

@@ -1,0 +1,214 @@
+"""record -> Result: the rows and the checks of a solved bevel pair (nothing computed here
+but the comparisons of the checks)."""
+
+from __future__ import annotations
+
+from geardesign.bevel import sources as S
+from geardesign.bevel import solve
+from geardesign.bevel.solve import Solution
+from geardesign.core.result import Result, check
+
+POINTED_TIP = 0.3
+"""Least tip thickness over the module, s_a >= 0.3·m ([GOST16532] quality checks, as for
+cylindrical gears; [GOST19624] table 1 note)."""
+
+FACE_RECOMMENDED = 1.0 / 3.0
+"""Recommended largest face width over the outer cone distance ([ISO23509] §5)."""
+
+EPS_MIN = 1.1
+"""Least transverse contact ratio of straight teeth (design practice)."""
+
+MEMBERS = ("pinion", "wheel")
+
+
+def _member_rows(sec, members, table) -> None:
+    """One row per (key, attribute, unit, symbol, name, source) of ``table`` for each member,
+    the key and symbol suffixed 1 (pinion) or 2 (wheel)."""
+    for i, (who, m) in enumerate(zip(MEMBERS, members), 1):
+        for key, attr, unit, sym, name, src in table:
+            sec.add(f"{key}{i}", getattr(m, attr), unit, f"{sym}{i}", f"{name}, {who}", src)
+
+
+def _pair_rows(sec, obj, table) -> None:
+    """One row per (key, unit, symbol, name, source) of ``table``, the value ``obj.key``."""
+    for key, unit, sym, name, src in table:
+        sec.add(key, getattr(obj, key), unit, sym, name, src)
+
+
+def geometry_rows(res: Result, sol: Solution) -> None:
+    g = sol.geometry
+    src = S.GEOM_SPIRAL if g.spiral else S.GEOM_STRAIGHT
+    sec = res.section("geometry", "Cones and modules")
+    _pair_rows(sec, g, (
+        ("u", "-", "u", "gear ratio z2/z1", S.CONE),
+        ("m_te", "mm", "m_te", "outer transverse module", src),
+        ("m_tm", "mm", "m_tm", "mean transverse module", src),
+        ("m_nm", "mm", "m_nm", "mean normal module", src),
+        ("R_e", "mm", "R_e", "outer cone distance", S.CONE),
+        ("R_m", "mm", "R_m", "mean cone distance", S.CONE)))
+    sec.add("b_over_R_e", g.b / g.R_e, "-", "b/R_e", "face width ratio", S.CONE)
+    where = "mean normal" if g.spiral else "outer transverse"
+    _member_rows(sec, g.members, (
+        ("delta", "delta", "rad", "δ", "pitch cone angle", S.CONE),
+        ("theta_a", "theta_a", "rad", "θ_a", "addendum angle", src),
+        ("theta_f", "theta_f", "rad", "θ_f", "dedendum angle", src),
+        ("delta_a", "delta_a", "rad", "δ_a", "face cone angle", src),
+        ("delta_f", "delta_f", "rad", "δ_f", "root cone angle", src),
+        ("d_e", "d_e", "mm", "d_e", "outer reference diameter", src),
+        ("d_m", "d_m", "mm", "d_m", "mean reference diameter", src),
+        ("h_ae", "h_ae", "mm", "h_ae", "outer addendum", src),
+        ("h_fe", "h_fe", "mm", "h_fe", "outer dedendum", src),
+        ("d_ae", "d_ae", "mm", "d_ae", "outer tip diameter", src),
+        ("d_fe", "d_fe", "mm", "d_fe", "outer root diameter", src),
+        ("d_am", "d_am", "mm", "d_am", "mean tip diameter", src),
+        ("d_fm", "d_fm", "mm", "d_fm", "mean root diameter", src),
+        ("B", "B", "mm", "B", "apex to the outer tip circle plane", src),
+        ("s", "s_e", "mm", "s", f"{where} circular tooth thickness", src),
+        ("s_c", "s_c", "mm", "s̄", f"{where} chordal tooth thickness", src),
+        ("h_c", "h_c", "mm", "h̄_a", "chordal height", src)))
+
+    v = res.section("virtual", "Virtual cylindrical gears (mean section)")
+    _pair_rows(v, g, (
+        ("alpha_vt", "rad", "α_vt", "transverse pressure angle", S.VIRTUAL),
+        ("beta_vb", "rad", "β_vb", "base spiral angle", S.VIRTUAL),
+        ("u_v", "-", "u_v", "virtual gear ratio", S.VIRTUAL),
+        ("a_v", "mm", "a_v", "virtual centre distance", S.VIRTUAL)))
+    _member_rows(v, g.members, (
+        ("z_v", "z_v", "-", "z_v", "virtual number of teeth", S.VIRTUAL),
+        ("z_vn", "z_vn", "-", "z_vn", "virtual number of teeth (normal)", S.VIRTUAL),
+        ("d_v", "d_v", "mm", "d_v", "reference diameter", S.VIRTUAL),
+        ("d_va", "d_va", "mm", "d_va", "tip diameter", S.VIRTUAL),
+        ("d_vb", "d_vb", "mm", "d_vb", "base diameter", S.VIRTUAL),
+        ("x_min", "x_min", "-", "x_min", "least shift without undercut", S.UNDERCUT),
+        ("s_am", "s_am", "mm", "s_am", "tip thickness (mean, normal)", S.UNDERCUT))
+        + (() if g.spiral else
+           (("s_ae", "s_ae", "mm", "s_ae", "tip thickness (outer)", S.UNDERCUT),)))
+    _pair_rows(v, g, (
+        ("g_va", "mm", "g_vα", "length of action", S.CONTACT_RATIO),
+        ("eps_va", "-", "ε_vα", "transverse contact ratio", S.CONTACT_RATIO),
+        ("eps_vb", "-", "ε_vβ", "face contact ratio", S.CONTACT_RATIO),
+        ("eps_vg", "-", "ε_vγ", "total contact ratio", S.CONTACT_RATIO)))
+
+
+def force_rows(res: Result, sol: Solution) -> None:
+    f = sol.forces
+    sec = res.section("forces", "Forces on the shafts (mean cone)")
+    sec.add("F_mt", f.F_mt, "N", "F_mt", "tangential force", S.FORCES)
+    sec.add("T2", f.T2 / 1e3, "N·m", "T2", "wheel torque (no losses)", S.FORCES)
+    sec.add("v_mt", f.v_mt, "m/s", "v_mt", "pitch line speed, mean cone", S.FORCES)
+    _member_rows(sec, (f.pinion, f.wheel), (
+        ("F_a", "F_a", "N", "F_a", "axial force (+: away from the apex)", S.FORCES),
+        ("F_r", "F_r", "N", "F_r", "radial force (+: toward its axis)", S.FORCES)))
+
+
+def iso_rows(res: Result, sol: Solution) -> None:
+    r = sol.iso
+    sec = res.section("iso10300", "ISO 10300 method B1")
+    _pair_rows(sec, r, (
+        ("K_Hbeta_be", "-", "K_Hβ-be", "mounting factor", S.ISO_K),
+        ("K_Hbeta", "-", "K_Hβ", "face load factor, contact", S.ISO_K),
+        ("K_Fbeta", "-", "K_Fβ", "face load factor, bending", S.ISO_K),
+        ("Z_E", "√MPa", "Z_E", "elasticity factor", S.ISO_H),
+        ("Z_H", "-", "Z_H", "zone factor", S.ISO_H),
+        ("Z_MB", "-", "Z_M-B", "mid-zone factor", S.ISO_H),
+        ("Z_LS", "-", "Z_LS", "load sharing factor", S.ISO_H),
+        ("Z_beta", "-", "Z_β", "spiral angle factor", S.ISO_H),
+        ("Z_K", "-", "Z_K", "bevel gear factor", S.ISO_H),
+        ("Y_LS", "-", "Y_LS", "load sharing factor, bending", S.ISO_F),
+        ("b_eH", "mm", "b_eH", "effective face width (0.85·b)", S.ISO_H),
+        ("sigma_H0", "MPa", "σ_H0", "nominal contact stress", S.ISO_H),
+        ("sigma_H", "MPa", "σ_H", "contact stress", S.ISO_H)))
+    _member_rows(sec, (r.pinion, r.wheel), (
+        ("Y_F", "Y_F", "-", "Y_F", "tooth form factor", S.TOOTH_FORM),
+        ("Y_S", "Y_S", "-", "Y_S", "stress correction factor", S.TOOTH_FORM),
+        ("sigma_F", "sigma_F", "MPa", "σ_F", "root stress", S.ISO_F),
+        ("S_H", "S_H", "-", "S_H", "pitting safety", S.ISO_H),
+        ("S_F", "S_F", "-", "S_F", "bending safety", S.ISO_F)))
+
+
+def gost_rows(res: Result, sol: Solution) -> None:
+    r = sol.gost
+    sec = res.section("gost21354", "GOST 21354 via the virtual spur pair")
+    _pair_rows(sec, r, (
+        ("theta_H", "-", "θ_H", "bevel factor, contact", S.GOST),
+        ("theta_F", "-", "θ_F", "bevel factor, bending", S.GOST),
+        ("K_H", "-", "K_H", "load factor, contact", S.GOST),
+        ("K_F", "-", "K_F", "load factor, bending", S.GOST),
+        ("Z_E", "√MPa", "Z_E", "elasticity factor", S.GOST),
+        ("Z_H", "-", "Z_H", "zone factor", S.GOST),
+        ("sigma_H", "MPa", "σ_H", "contact stress", S.GOST)))
+    _member_rows(sec, (r.pinion, r.wheel), (
+        ("z_vn", "z_vn", "-", "z_vn", "virtual spur teeth", S.GOST),
+        ("Y_FS", "Y_FS", "-", "Y_FS", "tooth form factor", S.GOST),
+        ("sigma_F", "sigma_F", "MPa", "σ_F", "root stress", S.GOST),
+        ("S_H", "S_H", "-", "S_H", "pitting safety", S.GOST),
+        ("S_F", "S_F", "-", "S_F", "bending safety", S.GOST)))
+
+
+def checks(res: Result, sol: Solution) -> None:
+    g, rt = sol.geometry, sol.inputs.rating
+    for name, m in zip(MEMBERS, g.members):
+        res.checks.append(check(
+            "UNDERCUT", m.x >= m.x_min - 1e-9, "error",
+            f"the {name} is undercut: x = {m.x:.3f} < x_min = {m.x_min:.3f} on its virtual "
+            f"gear (z_v = {m.z_v:.1f}); raise pair.x1, or use more pinion teeth",
+            f"{name}: no undercut (x = {m.x:.3f} >= {m.x_min:.3f})", m.x, m.x_min,
+            S.UNDERCUT))
+        for where, s_a, mod in (("mean", m.s_am, g.m_nm), ("outer", m.s_ae, g.m_te)):
+            if where == "outer" and g.spiral:
+                continue
+            res.checks.append(check(
+                "POINTED_TIP", s_a >= POINTED_TIP * mod, "warning",
+                f"the {name}'s tip is {'pointed' if s_a <= 0 else 'thin'} at the {where} "
+                f"section: s_a = {s_a:.3f} mm < {POINTED_TIP:g}·m = {POINTED_TIP * mod:.3f} mm; "
+                f"reduce pair.x1 or pair.xt1",
+                f"{name} tip thickness at the {where} section {s_a:.3f} mm >= "
+                f"{POINTED_TIP:g}·m", s_a, POINTED_TIP * mod, S.UNDERCUT))
+    ratio = g.b / g.R_e
+    res.checks.append(check(
+        "FACE_WIDTH", ratio <= FACE_RECOMMENDED + 1e-9, "warning",
+        f"face width b = {g.b:g} mm is {ratio:.3f}·R_e, over R_e/3: the inner end carries "
+        f"little and is hard to cut; use b <= {g.R_e / 3:.1f} mm",
+        f"face width b/R_e = {ratio:.3f} <= 1/3", ratio, FACE_RECOMMENDED, S.CONE))
+    res.checks.append(check(
+        "CONTACT_RATIO", g.eps_vg >= EPS_MIN, "error",
+        f"total contact ratio ε_vγ = {g.eps_vg:.3f} < {EPS_MIN:g}: the mesh is not continuous; "
+        f"reduce the module with more teeth, or use spiral teeth",
+        f"total contact ratio ε_vγ = {g.eps_vg:.3f} >= {EPS_MIN:g}", g.eps_vg, EPS_MIN,
+        S.CONTACT_RATIO))
+    rated = solve.ratable(g)
+    res.checks.append(check(
+        "STRENGTH_NOT_RATED", rated, "error",
+        "the strength is not rated: the pair does not mesh as computed (ε_vα < 1, an "
+        "undercut or a pointed tooth, see the checks above); change the geometry as those checks advise",
+        "the pair meshes as computed: strength rated", None, None, S.VIRTUAL))
+    for label, r, sH, sF in (("ISO 10300", sol.iso, S.ISO_H, S.ISO_F),
+                             ("GOST 21354", sol.gost, S.GOST, S.GOST)):
+        if r is None:
+            continue
+        tag = "ISO" if r is sol.iso else "GOST"
+        for name, m in zip(MEMBERS, (r.pinion, r.wheel)):
+            res.checks.append(check(
+                f"{tag}_PITTING", m.S_H >= rt.S_Hmin, "error",
+                f"{label}: pitting safety of the {name} S_H = {m.S_H:.3f} < {rt.S_Hmin:g}; "
+                f"widen the face, raise the module or use harder flanks",
+                f"{label}: pitting safety of the {name} S_H = {m.S_H:.3f} >= {rt.S_Hmin:g}",
+                m.S_H, rt.S_Hmin, sH))
+            res.checks.append(check(
+                f"{tag}_BENDING", m.S_F >= rt.S_Fmin, "error",
+                f"{label}: bending safety of the {name} S_F = {m.S_F:.3f} < {rt.S_Fmin:g}; "
+                f"raise the module or use a stronger material",
+                f"{label}: bending safety of the {name} S_F = {m.S_F:.3f} >= {rt.S_Fmin:g}",
+                m.S_F, rt.S_Fmin, sF))
+
+
+def report(res: Result, sol: Solution) -> Result:
+    """Fill ``res`` with the rows and checks of ``sol``."""
+    geometry_rows(res, sol)
+    force_rows(res, sol)
+    if sol.iso is not None:
+        iso_rows(res, sol)
+    if sol.gost is not None:
+        gost_rows(res, sol)
+    checks(res, sol)
+    return res

@@ -1,0 +1,16 @@
+"""Citations used in the bevel reports, in one place so that a reference is corrected once.
+The keys are entries of ``docs/references.md``."""
+
+GEOM_STRAIGHT = "[GOST19624] table 1; [ISO23509] §5"
+GEOM_SPIRAL = "[GOST19326] table 1; [ISO23509] §5"
+CONE = "[ISO23509] §5.2 (pitch cone angles, cone distances)"
+VIRTUAL = "[ISO10300-1] §6 (virtual cylindrical gear, method B1)"
+CONTACT_RATIO = "[ISO10300-1] §6 (ε_vα, ε_vβ, ε_vγ)"
+FORCES = "[ISO10300-1] §5 (tangential force at the mean cone); [ISO23509] annex (axial, radial)"
+ISO_H = "[ISO10300-2] method B1"
+ISO_F = "[ISO10300-3] method B1"
+ISO_K = "[ISO10300-1] §7 (K_Hβ = 1.5·K_Hβ-be, method C)"
+TOOTH_FORM = "[ISO6336-3] method B on the virtual gear ([ISO10300-3] §6)"
+GOST = "[GOST21354] via the virtual spur pair, [Dunaev] §2.6 (θ_H, θ_F)"
+UNDERCUT = "[GOST16532] on the virtual gear ([GOST19624] table 1 note)"
+PRACTICE = "design practice ([Dunaev] §2.6)"

@@ -1,0 +1,227 @@
+"""Bevel pairs: the cone relations, the virtual cylindrical gear identities, forces that
+balance, safety factors that scale with the torque as the formulas say, the handbook forms
+of the GOST route, every input rule in one round (one line each, exit 2), and the formula
+doctests of the package."""
+
+from __future__ import annotations
+
+import dataclasses
+import doctest
+import importlib
+import math
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from geardesign.bevel import geometry as GEO
+from geardesign.bevel import inputs as I
+from geardesign.bevel import rating as R
+from geardesign.bevel.solve import solve
+from geardesign.core.registry import load
+from tests.helpers_cli import run_bad
+
+SPECS = Path(__file__).resolve().parent.parent / "specs"
+STRAIGHT = SPECS / "bevel_straight_gost.toml"
+SPIRAL = SPECS / "bevel_spiral_iso.toml"
+
+
+def _inputs(path: Path) -> I.Inputs:
+    return I.read(load(path)[1].data)
+
+
+@pytest.mark.parametrize("name", ["inputs", "geometry", "rating"])
+def test_formula_doctests(name):
+    module = importlib.import_module(f"geardesign.bevel.{name}")
+    failures, tried = doctest.testmod(module, optionflags=doctest.ELLIPSIS)
+    assert tried > 0 and failures == 0
+
+
+# --------------------------------------------------------------------------- properties
+
+pairs = st.tuples(
+    st.booleans(), st.integers(12, 40), st.integers(0, 60), st.floats(60.0, 120.0),
+    st.floats(15.0, 40.0), st.floats(-0.1, 0.4), st.floats(0.15, 0.3),
+    st.sampled_from(["outer", "mean"]), st.sampled_from(["constant_clearance", "tapered"]),
+    st.sampled_from(["right", "left"]))
+"""(spiral, z1, z2 − z1, Σ [deg], β_m [deg], x1, b/R_e, module_at, depth, hand)."""
+
+
+def _pair(args) -> I.Pair:
+    spiral, z1, extra, Sigma, beta, x1, b_ratio, module_at, depth, hand = args
+    p = I.Pair(spiral, 3.0, module_at, z1, z1 + extra, math.radians(Sigma), 1.0,
+               math.radians(beta) if spiral else 0.0, hand, math.radians(20.0), 1.0, 0.2,
+               0.25, x1, 0.0, depth)
+    d1, _ = I.pitch_angles(p.z1, p.z2, p.Sigma)
+    R_e = GEO.modules(p, d1)[3]
+    return dataclasses.replace(p, b=b_ratio * R_e)
+
+
+@settings(max_examples=150, deadline=None)
+@given(pairs)
+def test_cone_and_virtual_gear_identities(args):
+    p = _pair(args)
+    g = GEO.pair_geometry(p)
+    P, W = g.members
+    assert math.isclose(P.delta + W.delta, p.Sigma, rel_tol=1e-12)
+    # the pitch cones share the cone distance: d_e = 2·R_e·sin δ for both members
+    for m in g.members:
+        assert math.isclose(m.d_e, 2.0 * g.R_e * math.sin(m.delta), rel_tol=1e-12)
+        assert math.isclose(m.d_m, 2.0 * g.R_m * math.sin(m.delta), rel_tol=1e-12)
+    # the virtual gear ratio is the ratio of the virtual diameters and of the virtual teeth
+    assert math.isclose(g.u_v, W.d_v / P.d_v, rel_tol=1e-12)
+    assert math.isclose(g.u_v, W.z_v / P.z_v, rel_tol=1e-12)
+    if abs(p.Sigma - math.pi / 2) < 1e-12:
+        assert math.isclose(g.u_v, g.u ** 2, rel_tol=1e-12)
+    assert math.isclose(g.eps_vg ** 2, g.eps_va ** 2 + g.eps_vb ** 2, rel_tol=1e-12)
+    assert math.isclose(g.m_nm, g.m_tm * math.cos(p.beta_m), rel_tol=1e-12)
+    # constant clearance: each tip cone parallel to the mating root cone
+    if p.depth == "constant_clearance":
+        assert math.isclose(P.theta_a, W.theta_f) and math.isclose(W.theta_a, P.theta_f)
+    # the virtual centre distance is the sum of the virtual radii
+    assert math.isclose(g.a_v, 0.5 * (P.d_v + W.d_v), rel_tol=1e-12)
+
+
+@settings(max_examples=150, deadline=None)
+@given(pairs, st.sampled_from(["cw", "ccw"]), st.sampled_from(["pinion", "wheel"]))
+def test_forces_balance_at_a_right_angle(args, rotation, driver):
+    """At Σ = 90° the pinion's axial force is the wheel's radial force and vice versa,
+    whatever the hand, rotation and driver; and a straight pair has the handbook forms."""
+    p = _pair((*args[:3], 90.0, *args[4:]))
+    inp = dataclasses.replace(_inputs(STRAIGHT), pair=p)
+    inp = dataclasses.replace(inp, load=dataclasses.replace(inp.load, rotation=rotation,
+                                                            driver=driver))
+    g = GEO.pair_geometry(p)
+    f = R.forces(inp, g)
+    assert math.isclose(f.pinion.F_a, f.wheel.F_r, rel_tol=1e-9, abs_tol=1e-9 * f.F_mt)
+    assert math.isclose(f.pinion.F_r, f.wheel.F_a, rel_tol=1e-9, abs_tol=1e-9 * f.F_mt)
+    # F_t, F_a, F_r of a member make the normal force F_t/(cos α_n cos β_m)
+    for m in (f.pinion, f.wheel):
+        F_n = f.F_mt / (math.cos(p.alpha_n) * math.cos(p.beta_m))
+        assert math.isclose(math.hypot(f.F_mt, m.F_a, m.F_r), F_n, rel_tol=1e-9)
+    if not p.spiral:
+        ta = math.tan(p.alpha_n)
+        assert math.isclose(f.pinion.F_a, f.F_mt * ta * math.sin(g.pinion.delta))
+        assert math.isclose(f.pinion.F_r, f.F_mt * ta * math.cos(g.pinion.delta))
+
+
+def test_hand_and_rotation_flip_the_spiral_thrust():
+    """A right-hand driving pinion turning clockwise (seen from its back) is pushed away from
+    the apex (out of mesh); reversing the rotation, the hand or the driver flips the spiral
+    term, and the two thrusts average to the straight-tooth value."""
+    inp = _inputs(SPIRAL)
+    g = GEO.pair_geometry(inp.pair)
+
+    def F_a1(hand, rotation, driver):
+        i = dataclasses.replace(inp, pair=dataclasses.replace(inp.pair, hand=hand),
+                                load=dataclasses.replace(inp.load, rotation=rotation,
+                                                         driver=driver))
+        return R.forces(i, g).pinion.F_a
+
+    out = F_a1("right", "cw", "pinion")
+    into = F_a1("right", "ccw", "pinion")
+    assert out > 0 and into < out
+    assert math.isclose(F_a1("left", "ccw", "pinion"), out)
+    assert math.isclose(F_a1("left", "cw", "pinion"), into)
+    assert math.isclose(F_a1("right", "cw", "wheel"), into)
+    F_t = R.forces(inp, g).F_mt
+    straight = F_t * math.tan(g.alpha_n) * math.sin(g.pinion.delta) / math.cos(g.beta_m)
+    assert math.isclose(0.5 * (out + into), straight, rel_tol=1e-12)
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.sampled_from([STRAIGHT, SPIRAL]), st.floats(0.05, 20.0))
+def test_safety_factors_scale_with_the_torque(path, k):
+    """With constant factors (K_v given), S_H ∝ T^-1/2 and S_F ∝ T^-1 in both methods."""
+    inp = _inputs(path)
+    base = solve(inp)
+    scaled = solve(dataclasses.replace(inp, load=dataclasses.replace(inp.load,
+                                                                     T1=inp.load.T1 * k)))
+    for r0, r1 in ((base.iso, scaled.iso), (base.gost, scaled.gost)):
+        for m0, m1 in ((r0.pinion, r1.pinion), (r0.wheel, r1.wheel)):
+            assert math.isclose(m1.S_H, m0.S_H / math.sqrt(k), rel_tol=1e-9)
+            assert math.isclose(m1.S_F, m0.S_F / k, rel_tol=1e-9)
+
+
+def test_gost_route_is_the_handbook_formula_at_a_right_angle():
+    """Through the virtual spur pair, (u_v + 1)/(d_v1 u_v) = √(u² + 1)/(u·d_m1) at Σ = 90°:
+    σ_H = Z_E Z_H √(F_t K_H √(u² + 1)/(θ_H b d_m1 u)), the form printed in [Dunaev] §2.6."""
+    sol = solve(_inputs(STRAIGHT))
+    g, r, f = sol.geometry, sol.gost, sol.forces
+    u = g.u
+    expected = r.Z_E * r.Z_H * math.sqrt(f.F_mt * r.K_H * math.sqrt(u * u + 1.0)
+                                         / (r.theta_H * g.b * g.pinion.d_m * u))
+    assert math.isclose(r.sigma_H, expected, rel_tol=1e-12)
+    assert r.theta_H == r.theta_F == 0.85
+
+
+def test_straight_gost_outer_dimensions_by_the_handbook_formulas():
+    """[Chernavsky]/[Dunaev] straight bevel forms at Σ = 90°, x = 0: R_e = 0.5·m_te·√(z1² + z2²),
+    d_ae = d_e + 2·m_te·cos δ, d_fe = d_e − 2.4·m_te·cos δ (c* = 0.2), tan δ1 = 1/u."""
+    g = solve(_inputs(STRAIGHT)).geometry
+    m, z1, z2 = g.m_te, g.pinion.z, g.wheel.z
+    assert math.isclose(g.R_e, 0.5 * m * math.hypot(z1, z2), rel_tol=1e-12)
+    assert math.isclose(math.tan(g.pinion.delta), z1 / z2, rel_tol=1e-12)
+    for mb in g.members:
+        assert math.isclose(mb.d_ae, mb.d_e + 2 * m * math.cos(mb.delta), rel_tol=1e-12)
+        assert math.isclose(mb.d_fe, mb.d_e - 2.4 * m * math.cos(mb.delta), rel_tol=1e-12)
+
+
+# --------------------------------------------------------------------------- input rules
+
+GOOD = STRAIGHT.read_text(encoding="utf-8")
+
+
+def test_every_input_rule_in_one_round(tmp_path):
+    text = (GOOD.replace("face_width = 30.0", "face_width = 60.0")
+            .replace("# spiral_angle = 0.0", "spiral_angle = 30.0"))
+    assert run_bad(tmp_path, text) == [
+        's.toml: pair.spiral_angle = 30.0: straight teeth have β_m = 0; remove spiral_angle '
+        'or write teeth = "spiral"',
+        "s.toml: pair.face_width = 60.0: must be at most 0.5·R_e = 53.85 mm (outer cone "
+        "distance R_e = 107.7 mm); ISO 23509 recommends b <= R_e/3 = 35.9 mm"]
+
+
+BAD = [
+    ("z2 < z1", GOOD.replace("z2 = 50", "z2 = 15"),
+     ["s.toml: pair.z2 = 15: the wheel has at least as many teeth as the pinion (z1 = 20); "
+      "swap z1 and z2"]),
+    ("crown gear", GOOD.replace("# shaft_angle = 90.0", "shaft_angle = 160.0"),
+     ["s.toml: pair.shaft_angle = 160.0: with z2/z1 = 2.5 the wheel's pitch cone angle would "
+      "be 147.6°; a crown or internal bevel gear (δ2 >= 89.5°) is not covered: use a smaller "
+      "shaft angle"]),
+    ("spiral without angle", GOOD.replace('# teeth = "straight"', 'teeth = "spiral"'),
+     ["s.toml: pair.spiral_angle = 0.0: the default (not in the spec): spiral teeth need a "
+      'mean spiral angle > 0 (e.g. 35); for β_m = 0 write teeth = "straight"']),
+    ("negative torque", GOOD.replace("torque = 150.0", "torque = -150.0"),
+     ["s.toml: load.torque = -150.0: must be a number >= 1e-06 and <= 10000000 (N·m)"]),
+]
+
+
+@pytest.mark.parametrize("name", [b[0] for b in BAD])
+def test_bad_input_one_line_exit_2(tmp_path, name):
+    _, text, expected = next(b for b in BAD if b[0] == name)
+    assert run_bad(tmp_path, text) == expected
+
+
+@settings(max_examples=150, deadline=None)
+@given(pairs, st.sampled_from(["cw", "ccw"]), st.sampled_from(["pinion", "wheel"]))
+def test_forces_balance_at_any_shaft_angle(args, rotation, driver):
+    """In the plane of the two axes (x along the pitch cone generator from the apex), the
+    axial force acts along the member's axis away from the apex and the radial force toward
+    its axis: the pinion's and the wheel's in-plane forces are equal and opposite for any Σ."""
+    p = _pair(args)
+    inp = dataclasses.replace(_inputs(STRAIGHT), pair=p)
+    inp = dataclasses.replace(inp, load=dataclasses.replace(inp.load, rotation=rotation,
+                                                            driver=driver))
+    g = GEO.pair_geometry(p)
+    f = R.forces(inp, g)
+    d1, d2 = g.pinion.delta, g.wheel.delta
+    axis = ((math.cos(d1), math.sin(d1)), (math.cos(d2), -math.sin(d2)))
+    toward = ((-math.sin(d1), math.cos(d1)), (-math.sin(d2), -math.cos(d2)))
+    total = [0.0, 0.0]
+    for m, a, r in zip((f.pinion, f.wheel), axis, toward):
+        for k in (0, 1):
+            total[k] += m.F_a * a[k] + m.F_r * r[k]
+    assert max(map(abs, total)) <= 1e-9 * f.F_mt
