@@ -67,7 +67,7 @@ def main() -> None:
     for us, name in [t for t in top if "." not in t[1]][:8]:
         print(f"  {us:>8}  {name}")
     print("report modules:", ", ".join(sorted(n for n in names if n.startswith(
-        "geardesign.report"))))
+        "geardesign.rendering"))))
 
 
 if __name__ == "__main__":

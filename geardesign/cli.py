@@ -177,7 +177,7 @@ def _pdf_ready(fmt_name: str, output: Optional[Path]) -> None:
     line and exit 2 before any work when one is missing."""
     if fmt_name != "pdf":
         return
-    from geardesign.report.browser import INSTALL_HINT, missing
+    from geardesign.rendering.browser import INSTALL_HINT, missing
 
     why = missing()
     if why:
@@ -194,7 +194,7 @@ def _report(results: list, fmt_name: str, output: Optional[Path], quiet: bool,
     from geardesign.core.render import render, render_pdf
 
     if fmt_name == "pdf":
-        from geardesign.report.browser import BrowserMissing
+        from geardesign.rendering.browser import BrowserMissing
 
         try:
             data = render_pdf(results)
@@ -259,7 +259,7 @@ def _write_plot(results: list, plot: Path) -> None:
 def _write_report_plot(result, plot: Path) -> None:
     """``--plot FILE.svg`` of a kind whose report has pictures (shaft diagrams, a drive's
     power flow and heat balance): the report's pictures in one SVG."""
-    from geardesign.report.figures import plot_svg
+    from geardesign.rendering.figures import plot_svg
 
     svg = plot_svg(result)
     if svg is None:

@@ -64,3 +64,20 @@ def test_import_geardesign_imports_no_calculator():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          cwd=ROOT, check=True).stdout
     assert out.strip() == "['geardesign']"
+
+
+def test_no_module_of_the_package_shadows_an_api_function():
+    """Importing a subpackage sets it as an attribute of ``geardesign``: a module named as
+    an API function (``geardesign/report/``) would replace the function for every caller
+    after its first import.  No module or package may take an API name, and after every
+    subpackage is imported the API functions are still the functions."""
+    import importlib
+    import pkgutil
+
+    names = {m.name for m in pkgutil.iter_modules(geardesign.__path__)}
+    assert not names & set(geardesign._API), names & set(geardesign._API)
+    for name in sorted(names - {"__main__"}):
+        importlib.import_module(f"geardesign.{name}")
+    for name in geardesign._API:
+        assert callable(getattr(geardesign, name)) and not isinstance(
+            getattr(geardesign, name), type(geardesign)), name

@@ -44,8 +44,8 @@ LONG = {
                         "bearings, load case) apart from the spec writer",
     "shaft/inputs.py": SPLITTING + ": the step, load and support rules apart from the "
                        "material and method keys",
-    "report/figures.py": SPLITTING + ": one module of pictures per calculator kind",
-    "report/html.py": SPLITTING + ": the first screen apart from the sections",
+    "rendering/figures.py": SPLITTING + ": one module of pictures per calculator kind",
+    "rendering/html.py": SPLITTING + ": the first screen apart from the sections",
     "spur/spec_inputs.py": SPLITTING + ": the ISO 6336 readers apart from the pair and duty",
     "spur/strength/gost21354/formulas.py": "the GOST 21354-87 formulas, one function per "
         "equation with its clause and doctest; " + SPLITTING + " by part (contact, bending, "

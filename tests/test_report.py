@@ -14,8 +14,8 @@ import pytest
 
 from geardesign.core.registry import run_data
 from geardesign.core.render import render
-from geardesign.report.margins import margins
-from geardesign.report.typeset import number_parts, symbol_html, unit_html, unit_text
+from geardesign.rendering.margins import margins
+from geardesign.rendering.typeset import number_parts, symbol_html, unit_html, unit_text
 from tests.conftest import SPECS
 from tests.helpers_cli import cli_process
 

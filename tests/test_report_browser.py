@@ -19,7 +19,7 @@ from pathlib import Path
 import pytest
 
 from geardesign.core.render import render
-from geardesign.report.browser import missing
+from geardesign.rendering.browser import missing
 from tests.conftest import SPECS
 from tests.helpers_cli import cli_process
 
@@ -55,7 +55,7 @@ def _result(spec: Path):
 
 @pytest.fixture(scope="session")
 def browser():
-    from geardesign.report.browser import browser as launch
+    from geardesign.rendering.browser import browser as launch
 
     with launch() as b:
         yield b

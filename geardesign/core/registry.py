@@ -21,7 +21,7 @@ from geardesign.core.result import Result, Row, guard
 from geardesign.core.spec import (SpecSchema, ValidatedSpec, iter_fields, load_toml,
                                   validate_partial)
 
-NOT_CALCULATORS = {"core", "fatigue", "gears", "materials", "report", "rexs"}
+NOT_CALCULATORS = {"core", "fatigue", "gears", "materials", "rendering", "rexs"}
 """Subpackages of ``geardesign`` that are shared code, not calculators (``rexs``: the
 exchange commands import and export)."""
 

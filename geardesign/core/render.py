@@ -392,17 +392,17 @@ def to_csv(results: list[Result]) -> str:
 
 
 def to_html(results: list[Result]) -> str:
-    """The self-contained HTML report (:mod:`geardesign.report.html`)."""
-    from geardesign.report.html import to_html as html
+    """The self-contained HTML report (:mod:`geardesign.rendering.html`)."""
+    from geardesign.rendering.html import to_html as html
 
     return html(results)
 
 
 def render_pdf(results: list[Result]) -> bytes:
-    """The HTML report printed to PDF by Chromium (:mod:`geardesign.report.pdf`);
-    :class:`geardesign.report.browser.BrowserMissing` when no browser is installed."""
-    from geardesign.report.html import document_title
-    from geardesign.report.pdf import html_to_pdf
+    """The HTML report printed to PDF by Chromium (:mod:`geardesign.rendering.pdf`);
+    :class:`geardesign.rendering.browser.BrowserMissing` when no browser is installed."""
+    from geardesign.rendering.html import document_title
+    from geardesign.rendering.pdf import html_to_pdf
 
     results = [cleaned(r) for r in results]
     return html_to_pdf(to_html(results), document_title(results))

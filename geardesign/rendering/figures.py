@@ -22,8 +22,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from geardesign.report.svg import PALETTE, Chart, Series, chart_svg
-from geardesign.report.typeset import SUPERSCRIPT, e, number_text, unit_text
+from geardesign.rendering.svg import PALETTE, Chart, Series, chart_svg
+from geardesign.rendering.typeset import SUPERSCRIPT, e, number_text, unit_text
 
 
 @dataclass(frozen=True)
@@ -526,7 +526,7 @@ def has_figure(res) -> bool:
 def plot_svg(res) -> str | None:
     """Every picture of ``res`` in one SVG document (``--plot FILE.svg``), or None when
     its kind has none."""
-    from geardesign.report.svg import stack_svg
+    from geardesign.rendering.svg import stack_svg
 
     figs = [f for fs in figures(res).values() for f in fs]
     if not figs:

@@ -1,6 +1,6 @@
-"""The PDF report: the HTML report (:mod:`geardesign.report.html`) printed by Chromium.
+"""The PDF report: the HTML report (:mod:`geardesign.rendering.html`) printed by Chromium.
 
-Chromium's print-to-PDF (through Playwright, :mod:`geardesign.report.browser`) is the
+Chromium's print-to-PDF (through Playwright, :mod:`geardesign.rendering.browser`) is the
 printer because the same browser already renders and tests the HTML: the PDF is exactly
 the page the browser tests looked at, with the print style sheet (A4, table heads
 repeated on each page, rows, figures and the bars never split, headings kept with what
@@ -12,8 +12,8 @@ the page number and count.
 
 from __future__ import annotations
 
-from geardesign.report.browser import INSTALL_HINT, BrowserMissing, browser, missing
-from geardesign.report.typeset import e
+from geardesign.rendering.browser import INSTALL_HINT, BrowserMissing, browser, missing
+from geardesign.rendering.typeset import e
 
 __all__ = ["INSTALL_HINT", "BrowserMissing", "missing", "html_to_pdf"]
 

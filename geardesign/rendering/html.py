@@ -3,17 +3,17 @@
 Order, as ``DESIGN.md`` ("Report") asks:
 
 1. the first screen: the title (the spec's ``title``), the spec, kind and methods; the
-   verdict; the governing margins as bars (:mod:`geardesign.report.margins`, worst
+   verdict; the governing margins as bars (:mod:`geardesign.rendering.margins`, worst
    first); every failed check with its advice; the warnings;
 2. the table of contents;
-3. the pictures of the whole (:mod:`geardesign.report.figures`), the sections with their
+3. the pictures of the whole (:mod:`geardesign.rendering.figures`), the sections with their
    pictures and the tables, then the parts grouped with their real hierarchy (a drive:
    stages, bearings, shafts, connections; each with its own sections);
 4. all margins, the checks, and the inputs with their source (given / assumed default).
 
-Symbols, units and numbers are typeset by :mod:`geardesign.report.typeset`; numbers of a
+Symbols, units and numbers are typeset by :mod:`geardesign.rendering.typeset`; numbers of a
 column are aligned at the decimal point.  Every text that comes from a spec is escaped.
-The print style sheet makes the PDF (:mod:`geardesign.report.pdf`): A4, headings kept with
+The print style sheet makes the PDF (:mod:`geardesign.rendering.pdf`): A4, headings kept with
 what follows, table heads repeated on each page, rows and figures never split.
 """
 
@@ -24,9 +24,9 @@ from typing import Any
 
 from geardesign import __version__
 from geardesign.core.result import Check, Result, Row, fix_text
-from geardesign.report.figures import Figure, figures
-from geardesign.report.margins import Margin, margins
-from geardesign.report.typeset import e, number_parts, symbol_html, unit_html
+from geardesign.rendering.figures import Figure, figures
+from geardesign.rendering.margins import Margin, margins
+from geardesign.rendering.typeset import e, number_parts, symbol_html, unit_html
 
 FIRST_SCREEN_MARGINS = 8
 """Rows of the first screen's margins: the failed checks that have no ratio (at most six),

@@ -13,7 +13,7 @@ import math
 import re
 from dataclasses import dataclass, field
 
-from geardesign.report.typeset import e
+from geardesign.rendering.typeset import e
 
 PALETTE = ("#1f4e9e", "#b22222", "#2e8b57", "#8a5a00", "#6a3d9a", "#444444")
 """Line colours, in order (dark enough on white and on paper)."""
