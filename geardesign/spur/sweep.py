@@ -360,10 +360,11 @@ def _shift_rule(varied, base: dict) -> str:
     return "equal"
 
 
-def candidates(sw: Sweep, start: int, stop: int) -> dict:
+def candidates(sw: Sweep, start: int, stop: int, sampler=None) -> dict:
     """The varied values of candidates ``start`` … ``stop − 1``: grid indices in C order, or
     points of a scrambled Sobol sequence (``seed``) mapped on the ranges (a value list is
-    sampled by index)."""
+    sampled by index).  ``sampler``: the sequence's engine positioned at ``start``
+    (:func:`samplers`), drawn on; without it one is positioned here."""
     n = stop - start
     out = {}
     if sw.samples is None:
@@ -372,18 +373,13 @@ def candidates(sw: Sweep, start: int, stop: int) -> dict:
         for d, i in zip(sw.dims, idx):
             out[d.key] = d.values[i]
         return out
-    import warnings
+    from geardesign.spur.sobol import engine
 
-    from scipy.stats import qmc
-
-    eng = qmc.Sobol(d=len(sw.dims), scramble=True, seed=sw.seed)
-    with warnings.catch_warnings():
-        # the sequence is drawn chunk by chunk: a chunk need not be a power of 2 (the
-        # balance of the whole sample is what counts)
-        warnings.filterwarnings("ignore", message=".*balance properties of Sobol")
-        if start:
-            eng.fast_forward(start)
-        pts = eng.random(n)
+    if sampler is None:
+        sampler = engine(len(sw.dims), sw.seed, start)
+    if sampler.num_generated != start:
+        raise ValueError(f"the sampler stands at {sampler.num_generated}, not {start}")
+    pts = sampler.random(n)
     for j, d in enumerate(sw.dims):
         k = np.minimum((pts[:, j] * len(d.values)).astype(np.int64), len(d.values) - 1)
         out[d.key] = d.values[k] if len(d.values) <= 64 or d.integer \
@@ -477,17 +473,18 @@ def _evaluate_in_groups(spec_data: dict, sw: Sweep, varied: dict, base: dict) ->
     return c, out
 
 
-def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int, rows: bool = False
-                   ) -> dict:
+def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int, rows: bool = False,
+                   sampler=None) -> dict:
     """Evaluate candidates ``start`` … ``stop − 1`` and return the chunk's summary: counts,
     the ranked head and the Pareto front (as column arrays).  A pure function of its
     arguments: a worker process or a Dask worker runs it as the local loop does.  With
-    ``rows`` it also returns every candidate's columns (the dataset of ``--data``)."""
+    ``rows`` it also returns every candidate's columns (the dataset of ``--data``);
+    ``sampler``: a Sobol sample's engine positioned at ``start`` (:func:`samplers`)."""
     from geardesign.core.registry import load_data
 
     _, spec = load_data(spec_data, "sweep")
     base = _base_values(spec)
-    varied = candidates(sw, start, stop)
+    varied = candidates(sw, start, stop, sampler)
     c, r = _evaluate_in_groups(spec_data, sw, varied, base)
     bad = c["bad"]
     r["valid"] &= ~bad
@@ -621,6 +618,27 @@ def connect(address: str, timeout: float | None = None):
                              f"({why[:200]})") from None
 
 
+def samplers(sw: Sweep, bounds: list, copies: bool = False):
+    """For each chunk ``(start, stop)`` of ``bounds`` in order, the Sobol engine positioned
+    at ``start`` (``None`` for a grid): one engine drawn on chunk after chunk, so the
+    sequence's work is linear in the sample.  With ``copies`` (chunks evaluated elsewhere,
+    in any order) each chunk gets a copy and the one engine skips the chunk's points."""
+    if sw.samples is None:
+        yield from itertools.repeat(None, len(bounds))
+        return
+    import copy
+
+    from geardesign.spur.sobol import engine
+
+    eng = engine(len(sw.dims), sw.seed, bounds[0][0] if bounds else 0)
+    for a, b in bounds:
+        if not copies:
+            yield eng
+            continue
+        yield copy.deepcopy(eng)
+        eng.fast_forward(b - a)
+
+
 def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | None = None,
               progress=None, rows_sink=None) -> dict:
     """Evaluate the whole sweep chunk by chunk (in parallel when asked) and return the
@@ -649,8 +667,8 @@ def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | Non
         from dask.distributed import as_completed
 
         with connect(scheduler) as client:
-            futures = [client.submit(evaluate_chunk, spec_data, sw, a, b, rows, pure=False)
-                       for a, b in bounds]
+            futures = [client.submit(evaluate_chunk, spec_data, sw, a, b, rows, e, pure=False)
+                       for (a, b), e in zip(bounds, samplers(sw, bounds, copies=True))]
             done = {}
             for fut in as_completed(futures):
                 done[futures.index(fut)] = fut.result()
@@ -666,15 +684,15 @@ def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | Non
         try:
             for res in pool.map(evaluate_chunk, itertools.repeat(spec_data), itertools.repeat(sw),
                                 [a for a, _ in bounds], [b for _, b in bounds],
-                                itertools.repeat(rows)):
+                                itertools.repeat(rows), samplers(sw, bounds, copies=True)):
                 take(res)
         except BaseException:     # Ctrl-C or an error: stop at once, no queued chunk runs
             pool.shutdown(wait=False, cancel_futures=True)
             raise
         pool.shutdown()
     else:
-        for a, b in bounds:
-            take(evaluate_chunk(spec_data, sw, a, b, rows))
+        for (a, b), e in zip(bounds, samplers(sw, bounds)):
+            take(evaluate_chunk(spec_data, sw, a, b, rows, e))
     return {"counts": counts, "fails": fails, "head": head, "front": front}
 
 
