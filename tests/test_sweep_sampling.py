@@ -75,3 +75,12 @@ def test_chunks_see_the_sample_a_single_draw_gives(monkeypatch):
                  zip(bounds, SW.samplers(sw, bounds, copies=copies))]
         for k in whole:
             assert np.array_equal(np.concatenate([p[k] for p in parts]), whole[k])
+
+
+def test_local_cluster_workers_keep_glibcs_dynamic_mmap_threshold():
+    distributed = pytest.importorskip("distributed")
+    import os
+
+    with SW.local_cluster(1) as cluster, distributed.Client(cluster) as client:
+        env = client.run(lambda: os.environ.get("MALLOC_TRIM_THRESHOLD_"))
+    assert list(env.values()) == [os.environ.get("MALLOC_TRIM_THRESHOLD_")]

@@ -639,6 +639,25 @@ def samplers(sw: Sweep, bounds: list, copies: bool = False):
         eng.fast_forward(b - a)
 
 
+def local_cluster(workers: int = 2):
+    """A Dask ``LocalCluster`` of ``workers`` single-threaded worker processes for sweeps
+    (the benchmark and the tests; ``--scheduler`` takes its address).
+
+    Dask's nanny starts workers with ``MALLOC_TRIM_THRESHOLD_=65536``, which fixes glibc's
+    mmap threshold: every array of a chunk above 128 kB is then mapped and unmapped anew
+    (page faults, system time about six times the local run's), and two such workers were
+    slower than one local process.  Unset here, glibc keeps its dynamic threshold as a local
+    process does.  A cluster started otherwise (``dask worker``) is set the same way with
+    ``distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_: null`` in its Dask
+    configuration (docs/sweep.md)."""
+    import dask
+    from distributed import LocalCluster
+
+    with dask.config.set({"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None}):
+        return LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                            dashboard_address=None)
+
+
 def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | None = None,
               progress=None, rows_sink=None) -> dict:
     """Evaluate the whole sweep chunk by chunk (in parallel when asked) and return the
@@ -669,9 +688,10 @@ def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | Non
         with connect(scheduler) as client:
             futures = [client.submit(evaluate_chunk, spec_data, sw, a, b, rows, e, pure=False)
                        for (a, b), e in zip(bounds, samplers(sw, bounds, copies=True))]
+            order = {fut.key: i for i, fut in enumerate(futures)}
             done = {}
             for fut in as_completed(futures):
-                done[futures.index(fut)] = fut.result()
+                done[order[fut.key]] = fut.result()
             for i in range(len(bounds)):
                 take(done[i])
     elif workers > 1 and len(bounds) > 1:
