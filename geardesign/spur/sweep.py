@@ -461,6 +461,10 @@ def _evaluate_in_groups(spec_data: dict, sw: Sweep, varied: dict, base: dict) ->
             c["x1"] = np.where(bad, 0.0, c["x1"])
             c["x2"] = np.where(bad, 0.0, c["x2"])
             c["bad"] = bad
+        if len(combos) == 1:    # one group: the chunk's arrays as they are, no masked copies
+            part = evaluate({k: v for k, v in c.items() if k != "bad"}, fixed)
+            return c, {k: np.broadcast_to(v, (n,)).copy() if np.shape(v) != (n,) else v
+                       for k, v in part.items()}
         sel = np.ones(n, dtype=bool)
         for code, k in zip(codes, combo):
             sel &= code == k
