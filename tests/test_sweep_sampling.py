@@ -84,3 +84,17 @@ def test_local_cluster_workers_keep_glibcs_dynamic_mmap_threshold():
     with SW.local_cluster(1) as cluster, distributed.Client(cluster) as client:
         env = client.run(lambda: os.environ.get("MALLOC_TRIM_THRESHOLD_"))
     assert list(env.values()) == [os.environ.get("MALLOC_TRIM_THRESHOLD_")]
+
+
+def test_a_sample_on_dask_is_the_local_sample(monkeypatch):
+    distributed = pytest.importorskip("distributed")
+    monkeypatch.setattr(SW, "CHUNK", 700)
+    data, sw = SW.load_sweep(load_toml(SPEC), "s", (), 5000, 9)
+    one = SW.run_sweep(data, sw)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
+                                  dashboard_address=None) as cluster:
+        dist = SW.run_sweep(data, sw, scheduler=cluster.scheduler_address)
+    assert one["counts"] == dist["counts"]
+    for part in ("head", "front"):
+        for k in one[part]:
+            assert np.array_equal(one[part][k], dist[part][k])
