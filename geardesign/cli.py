@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 import os
 import sys
+from contextlib import contextmanager
 
 # The beam and eigenvalue problems are small (a few hundred unknowns): OpenBLAS's threads
 # only cost there, and on a busy machine their spinning makes one solve take 0.1 s instead
@@ -420,10 +421,10 @@ def _register_kinds() -> None:
 @app.command("list")
 def list_cmd() -> None:
     """List the calculators: kind, what it does, standards used."""
-    calcs = registry.all_calculators()
-    width = max(len(c.kind) for c in calcs)
-    for c in calcs:
-        sys.stdout.write(f"{c.kind:<{width}}  {c.summary} [{', '.join(c.methods)}]\n")
+    rows = registry.catalog()
+    width = max(len(kind) for kind, _, _ in rows)
+    for kind, summary, methods in rows:
+        sys.stdout.write(f"{kind:<{width}}  {summary} [{', '.join(methods)}]\n")
 
 
 def _calculator(kind: str) -> registry.Calculator:
@@ -666,11 +667,31 @@ from geardesign.rexs import cli as _rexs  # noqa: E402
 _rexs.register(app, _err, _write)
 
 
+@contextmanager
+def _only_requested(argv: List[str]):
+    """Keep only the subcommand that ``argv`` names, when it names one: typer builds a
+    click command (``inspect.signature``, its parameters) for every registered command on
+    each start, and one run uses one.  The top-level ``--help``, ``--version``, a mistyped
+    command name and shell completion still see every command."""
+    commands, groups = list(app.registered_commands), list(app.registered_groups)
+    if len(argv) >= 2 and not argv[1].startswith("-") and not any(
+            k.endswith("_COMPLETE") for k in os.environ):
+        named = [c for c in commands
+                 if (c.name or c.callback.__name__.replace("_", "-")) == argv[1]]
+        if named:
+            app.registered_commands[:], app.registered_groups[:] = named, []
+    try:
+        yield
+    finally:
+        app.registered_commands[:], app.registered_groups[:] = commands, groups
+
+
 def main() -> None:
     """Console entry point: never a traceback for the user."""
     _register_kinds()
     try:
-        app()
+        with _only_requested(sys.argv):
+            app()
     except SystemExit as exc:
         if exc.code == 130:       # typer ends a Ctrl-C in a command with a silent exit 130
             _err("geardesign: interrupted")

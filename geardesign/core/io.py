@@ -35,7 +35,6 @@ import os
 import re
 import signal
 import stat
-import tempfile
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, Iterator
@@ -369,6 +368,8 @@ class AtomicFile:
         if blocked:
             old = signal.pthread_sigmask(signal.SIG_BLOCK, _HANDLED)
         try:
+            import tempfile   # shutil, random: only when a file is written
+
             fd, tmp = tempfile.mkstemp(prefix=f".{self.path.name}.", suffix=".tmp", dir=folder)
             os.close(fd)
             _LIVE.add(tmp)

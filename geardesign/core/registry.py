@@ -157,6 +157,38 @@ def all_calculators() -> list[Calculator]:
     return [get(k) for k in KINDS]
 
 
+CATALOG = Path(__file__).with_name("calculators.json")
+"""kind, summary and methods of every calculator, written once from the calculators
+(:func:`write_catalog`, ``python -m geardesign.core.registry``) so that ``geardesign list``
+imports none of them (numpy, scipy); tests/test_startup.py checks that it matches."""
+
+
+def catalog() -> list[tuple[str, str, tuple[str, ...]]]:
+    """``(kind, summary, methods)`` of every calculator in :data:`KINDS` order: from
+    :data:`CATALOG`, and by importing the calculator for a kind the file does not list."""
+    import json
+
+    try:
+        stored = {k: (s, tuple(m)) for k, s, m in json.loads(CATALOG.read_text("utf-8"))}
+    except (OSError, ValueError):
+        stored = {}
+    rows = []
+    for kind in KINDS:
+        if kind not in stored:
+            calc = get(kind)
+            stored[kind] = (calc.summary, tuple(calc.methods))
+        rows.append((kind, *stored[kind]))
+    return rows
+
+
+def write_catalog() -> None:
+    """Rewrite :data:`CATALOG` from the calculators themselves."""
+    import json
+
+    rows = [[c.kind, c.summary, list(c.methods)] for c in all_calculators()]
+    CATALOG.write_text(json.dumps(rows, indent=1, ensure_ascii=False) + "\n", "utf-8")
+
+
 def _kind_problem(value: object) -> Problem:
     known = ", ".join(f'"{k}"' for k in KINDS)
     if isinstance(value, str):
@@ -227,3 +259,7 @@ def run_data(data: dict, source: str = "") -> Result:
     """Compute a spec given as a dict (library use and tests)."""
     calc, spec = load_data(data, source)
     return calc.compute(spec)
+
+
+if __name__ == "__main__":
+    write_catalog()

@@ -360,10 +360,11 @@ def _shift_rule(varied, base: dict) -> str:
     return "equal"
 
 
-def candidates(sw: Sweep, start: int, stop: int) -> dict:
+def candidates(sw: Sweep, start: int, stop: int, sampler=None) -> dict:
     """The varied values of candidates ``start`` … ``stop − 1``: grid indices in C order, or
     points of a scrambled Sobol sequence (``seed``) mapped on the ranges (a value list is
-    sampled by index)."""
+    sampled by index).  ``sampler``: the sequence's engine positioned at ``start``
+    (:func:`samplers`), drawn on; without it one is positioned here."""
     n = stop - start
     out = {}
     if sw.samples is None:
@@ -372,18 +373,13 @@ def candidates(sw: Sweep, start: int, stop: int) -> dict:
         for d, i in zip(sw.dims, idx):
             out[d.key] = d.values[i]
         return out
-    import warnings
+    from geardesign.spur.sobol import engine
 
-    from scipy.stats import qmc
-
-    eng = qmc.Sobol(d=len(sw.dims), scramble=True, seed=sw.seed)
-    with warnings.catch_warnings():
-        # the sequence is drawn chunk by chunk: a chunk need not be a power of 2 (the
-        # balance of the whole sample is what counts)
-        warnings.filterwarnings("ignore", message=".*balance properties of Sobol")
-        if start:
-            eng.fast_forward(start)
-        pts = eng.random(n)
+    if sampler is None:
+        sampler = engine(len(sw.dims), sw.seed, start)
+    if sampler.num_generated != start:
+        raise ValueError(f"the sampler stands at {sampler.num_generated}, not {start}")
+    pts = sampler.random(n)
     for j, d in enumerate(sw.dims):
         k = np.minimum((pts[:, j] * len(d.values)).astype(np.int64), len(d.values) - 1)
         out[d.key] = d.values[k] if len(d.values) <= 64 or d.integer \
@@ -465,6 +461,10 @@ def _evaluate_in_groups(spec_data: dict, sw: Sweep, varied: dict, base: dict) ->
             c["x1"] = np.where(bad, 0.0, c["x1"])
             c["x2"] = np.where(bad, 0.0, c["x2"])
             c["bad"] = bad
+        if len(combos) == 1:    # one group: the chunk's arrays as they are, no masked copies
+            part = evaluate({k: v for k, v in c.items() if k != "bad"}, fixed)
+            return c, {k: np.broadcast_to(v, (n,)).copy() if np.shape(v) != (n,) else v
+                       for k, v in part.items()}
         sel = np.ones(n, dtype=bool)
         for code, k in zip(codes, combo):
             sel &= code == k
@@ -477,17 +477,18 @@ def _evaluate_in_groups(spec_data: dict, sw: Sweep, varied: dict, base: dict) ->
     return c, out
 
 
-def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int, rows: bool = False
-                   ) -> dict:
+def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int, rows: bool = False,
+                   sampler=None) -> dict:
     """Evaluate candidates ``start`` … ``stop − 1`` and return the chunk's summary: counts,
     the ranked head and the Pareto front (as column arrays).  A pure function of its
     arguments: a worker process or a Dask worker runs it as the local loop does.  With
-    ``rows`` it also returns every candidate's columns (the dataset of ``--data``)."""
+    ``rows`` it also returns every candidate's columns (the dataset of ``--data``);
+    ``sampler``: a Sobol sample's engine positioned at ``start`` (:func:`samplers`)."""
     from geardesign.core.registry import load_data
 
     _, spec = load_data(spec_data, "sweep")
     base = _base_values(spec)
-    varied = candidates(sw, start, stop)
+    varied = candidates(sw, start, stop, sampler)
     c, r = _evaluate_in_groups(spec_data, sw, varied, base)
     bad = c["bad"]
     r["valid"] &= ~bad
@@ -621,6 +622,46 @@ def connect(address: str, timeout: float | None = None):
                              f"({why[:200]})") from None
 
 
+def samplers(sw: Sweep, bounds: list, copies: bool = False):
+    """For each chunk ``(start, stop)`` of ``bounds`` in order, the Sobol engine positioned
+    at ``start`` (``None`` for a grid): one engine drawn on chunk after chunk, so the
+    sequence's work is linear in the sample.  With ``copies`` (chunks evaluated elsewhere,
+    in any order) each chunk gets a copy and the one engine skips the chunk's points."""
+    if sw.samples is None:
+        yield from itertools.repeat(None, len(bounds))
+        return
+    import copy
+
+    from geardesign.spur.sobol import engine
+
+    eng = engine(len(sw.dims), sw.seed, bounds[0][0] if bounds else 0)
+    for a, b in bounds:
+        if not copies:
+            yield eng
+            continue
+        yield copy.deepcopy(eng)
+        eng.fast_forward(b - a)
+
+
+def local_cluster(workers: int = 2):
+    """A Dask ``LocalCluster`` of ``workers`` single-threaded worker processes for sweeps
+    (the benchmark and the tests; ``--scheduler`` takes its address).
+
+    Dask's nanny starts workers with ``MALLOC_TRIM_THRESHOLD_=65536``, which fixes glibc's
+    mmap threshold: every array of a chunk above 128 kB is then mapped and unmapped anew
+    (page faults, system time about six times the local run's), and two such workers were
+    slower than one local process.  Unset here, glibc keeps its dynamic threshold as a local
+    process does.  A cluster started otherwise (``dask worker``) is set the same way with
+    ``distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_: null`` in its Dask
+    configuration (docs/sweep.md)."""
+    import dask
+    from distributed import LocalCluster
+
+    with dask.config.set({"distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None}):
+        return LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                            dashboard_address=None)
+
+
 def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | None = None,
               progress=None, rows_sink=None) -> dict:
     """Evaluate the whole sweep chunk by chunk (in parallel when asked) and return the
@@ -649,11 +690,12 @@ def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | Non
         from dask.distributed import as_completed
 
         with connect(scheduler) as client:
-            futures = [client.submit(evaluate_chunk, spec_data, sw, a, b, rows, pure=False)
-                       for a, b in bounds]
+            futures = [client.submit(evaluate_chunk, spec_data, sw, a, b, rows, e, pure=False)
+                       for (a, b), e in zip(bounds, samplers(sw, bounds, copies=True))]
+            order = {fut.key: i for i, fut in enumerate(futures)}
             done = {}
             for fut in as_completed(futures):
-                done[futures.index(fut)] = fut.result()
+                done[order[fut.key]] = fut.result()
             for i in range(len(bounds)):
                 take(done[i])
     elif workers > 1 and len(bounds) > 1:
@@ -666,15 +708,15 @@ def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | Non
         try:
             for res in pool.map(evaluate_chunk, itertools.repeat(spec_data), itertools.repeat(sw),
                                 [a for a, _ in bounds], [b for _, b in bounds],
-                                itertools.repeat(rows)):
+                                itertools.repeat(rows), samplers(sw, bounds, copies=True)):
                 take(res)
         except BaseException:     # Ctrl-C or an error: stop at once, no queued chunk runs
             pool.shutdown(wait=False, cancel_futures=True)
             raise
         pool.shutdown()
     else:
-        for a, b in bounds:
-            take(evaluate_chunk(spec_data, sw, a, b, rows))
+        for (a, b), e in zip(bounds, samplers(sw, bounds)):
+            take(evaluate_chunk(spec_data, sw, a, b, rows, e))
     return {"counts": counts, "fails": fails, "head": head, "front": front}
 
 
