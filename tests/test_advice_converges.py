@@ -280,6 +280,61 @@ def test_novikov_face_width_fix_passes_when_followed(face):
     _property(data)
 
 
+def _novikov() -> dict:
+    code, out, err = cli("template", "novikov")
+    assert code == 0, err
+    return tomllib.loads(out)
+
+
+def test_novikov_strength_advice_widens_the_face_as_printed(tmp_path):
+    """At twice the template's torque (88 kN·m) σ_H and both σ_F fail: one face width
+    within b_w/d1 <= 1.5 (d1 = 130.1 mm) passes all three, and the pair passes as printed."""
+    data = _novikov()
+    data["load"]["torque2"] = 88000.0
+    c, _, (code, _, checks) = _follow(tmp_path, "novikov", data, "SIGMA_H")
+    assert set(c["fix"]) == {"gear.face_width"}
+    assert 100.0 < c["fix"]["gear.face_width"] <= 1.5 * 130.1
+    assert all(checks[k]["passed"] for k in ("SIGMA_H", "SIGMA_F_PINION", "SIGMA_F_WHEEL"))
+    assert code == 0
+
+
+def test_novikov_strength_advice_beyond_the_face_is_a_standard_module(tmp_path):
+    """At three times the torque no face width within 1.5·d1 passes: the advice is the
+    next first-series module with the teeth and helix angle kept, the face scaled."""
+    data = _novikov()
+    data["load"]["torque2"] = 132000.0
+    c, _, (code, _, checks) = _follow(tmp_path, "novikov", data, "SIGMA_F_WHEEL")
+    assert c["fix"]["gear.module"] in (12.0, 16.0)
+    assert c["fix"]["gear.face_width"] <= 1.5 * 130.1 * c["fix"]["gear.module"] / 10.0
+    assert checks["SIGMA_F_WHEEL"]["passed"] and code == 0
+
+
+@settings(max_examples=12, deadline=None)
+@given(torque=st.floats(50000.0, 200000.0), face=st.floats(40.0, 120.0),
+       hb=st.sampled_from(((350.0, 320.0), (300.0, 280.0), (250.0, 220.0))),
+       given_a=st.booleans())
+def test_novikov_strength_fix_passes_when_followed(torque, face, hb, given_a):
+    """Face width, hardness or module: each printed fix passes its checks when followed,
+    and a face width advised stays within b_w/d1 <= 1.5."""
+    data = _novikov()
+    data["load"]["torque2"] = round(torque)
+    data["gear"]["face_width"] = round(face, 1)
+    data["material"]["pinion"]["hardness"], data["material"]["wheel"]["hardness"] = hb
+    if given_a:
+        del data["gear"]["helix_angle"]
+        data["gear"]["center_distance"] = 450.0
+    try:
+        doc = run_data(data).document()
+    except InputError:           # refused input: nothing to advise
+        return
+    _property(data)
+    for c in doc["checks"]:
+        if c["code"].startswith("SIGMA_") and "fix" in c:
+            m = c["fix"].get("gear.module", data["gear"]["module"])
+            d1 = doc["results"]["geometry"]["d1"] * m / data["gear"]["module"]
+            assert c["fix"].get("gear.face_width", 0.0) <= 1.5 * d1 + 1e-9
+
+
 # ------------------------------------------------------------------------- shaft, bearing,
 # Geneva, wave gear, drive: advice found by re-rating (geardesign.core.advice)
 
