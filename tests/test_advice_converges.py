@@ -625,6 +625,57 @@ def test_drive_part_advice_is_bounded():
     assert sum("fix" in c for c in doc["checks"]) >= 3
 
 
+def _drive_thermal() -> dict:
+    return _spec("drive_thermal_two_stage.toml")
+
+
+def test_drive_motor_torque_fix_is_the_next_rated_power(tmp_path):
+    """At 1 400 N·m the machine needs 56.9 N·m (8.68 kW at 1 455 min⁻¹) of a 7.5 kW motor:
+    the fix is the next rated power of IEC 60072-1, 11 kW, and the check passes with it."""
+    data = _drive_thermal()
+    data["load"]["torque"] = 1400.0
+    c, _, (_, _, checks), _ = _follow_data(data, "MOTOR_TORQUE")
+    assert c["fix"] == {"motor.power": 11.0}
+    assert "choose a motor of at least" not in c["message"]
+    assert checks["MOTOR_TORQUE"]["passed"]
+
+
+def test_drive_motor_torque_fix_in_the_specs_terms(tmp_path):
+    """A motor given by its torque is advised a torque: that of 11 kW at 1 455 min⁻¹,
+    30 000·11/(π·1 455) = 72.19 -> 72.2 N·m."""
+    data = _drive_thermal()
+    data["load"]["torque"] = 1400.0
+    del data["motor"]["power"]
+    data["motor"]["torque"] = 49.2
+    c, _, (_, _, checks), _ = _follow_data(data, "MOTOR_TORQUE")
+    assert c["fix"] == {"motor.torque": 72.2}
+    assert checks["MOTOR_TORQUE"]["passed"]
+
+
+def test_drive_thermal_fix_a_fan_a_housing_or_a_cooler(tmp_path):
+    """The heat balance fails: at 50 °C ambient and 60 °C permissible no fan of 10 m/s
+    carries the 133 W (it gives 110 W), an oil cooler does (the balance's 0.07 kW rounded
+    up to 0.1 kW); a housing given by its area of 0.1 m² is finned (within 1.5 times);
+    every fix passes the heat balance as printed and breaks no check that passed."""
+    data = _drive_thermal()
+    data["thermal"].update(ambient=50.0, max_oil_temperature=60.0)
+    c, _, (_, _, checks), before = _follow_data(data, "THERMAL")
+    assert c["fix"] == {"thermal.cooler": 0.1}
+    assert checks["THERMAL"]["passed"]
+    assert not [k for k, x in checks.items() if x["severity"] == "error" and not x["passed"]
+                and before[k]["passed"]]
+    data = _drive_thermal()
+    data["thermal"]["area"] = 0.1
+    c, _, (_, _, checks), _ = _follow_data(data, "THERMAL")
+    assert set(c["fix"]) == {"thermal.area"} and c["fix"]["thermal.area"] <= 0.15
+    assert checks["THERMAL"]["passed"]
+    data = _drive_thermal()
+    data["thermal"].update(ambient=30.0, max_oil_temperature=50.0)
+    c, _, (_, _, checks), _ = _follow_data(data, "THERMAL")
+    assert c["fix"] == {"thermal.fan_velocity": 5.0}       # a fan of 5 m/s suffices
+    assert checks["THERMAL"]["passed"]
+
+
 # ------------------------------------------------------------------------- ball clutch,
 # overload clutch, rim, Geneva: levers beyond the first
 

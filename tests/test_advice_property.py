@@ -77,7 +77,10 @@ KNOBS: dict[str, list] = {
         ("scale", ("shaft[1].step[2].diameter", "shaft[1].step[3].diameter",
                    "shaft[1].step[4].diameter"), (0.7, 0.85, 1.0)),
         ("scale", ("shaft[0].key[0].length",), (0.3, 0.5, 1.0)),
-        ("scale", ("shaft[1].key[0].length",), (0.5, 1.0))],
+        ("scale", ("shaft[1].key[0].length",), (0.5, 1.0)),
+        ("set", "load.torque", (None, 1400.0)),
+        ("pick", None, ({}, {"thermal.ambient": 45.0, "thermal.max_oil_temperature": 55.0},
+                        {"thermal.ambient": 50.0, "thermal.max_oil_temperature": 60.0}))],
 }
 
 CPU = {"drive": 0.2, "drive_shafts": 0.3, "epicycle_rim": 0.1}

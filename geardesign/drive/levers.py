@@ -28,9 +28,27 @@ The fixes are then written into the drive spec together and the drive re-rated o
 the shafts' slopes and the keys on a thicker step follow, and a check carries its fix only
 when it passes then.  A part that no change within its proportions makes pass keeps its
 words (the shaft's and the connection's messages name the next lever: a larger bearing
-bore, a spline or an interference fit)."""
+bore, a spline or an interference fit).
+
+**Motor.** ``MOTOR_TORQUE`` (the machine needs more than the motor's nominal torque): the
+next rated powers of :data:`MOTOR_POWERS` at or above the torque needed at the motor speed,
+in the spec's own terms: ``motor.power`` [kW], or ``motor.torque`` [N·m] when the spec
+gives the torque (that power's torque at the motor speed, T = 30 000·P/(π·n), rounded up
+to 0.1 N·m).  The drive is re-rated (a larger motor raises the peak torque of the static
+checks).
+
+**Heat balance.** ``THERMAL`` (the sump above its permissible temperature), each re-rated
+with the heat balance: a fan on the housing (``thermal.fan_velocity``, :data:`FAN_SPEEDS`
+above the present one, at most the 10 m/s of a fan on the input shaft), a larger housing
+area when the spec gives it (``thermal.area``, finned, at most :data:`AREA_MAX_FACTOR`
+times), then an oil cooler (``thermal.cooler``) from the balance's own figure: the losses
+at the permissible temperature beyond what the housing gives off there, rounded up to
+0.1 kW.  The permissible temperature is the oil's, not a lever."""
 
 from __future__ import annotations
+
+import math
+import re
 
 from geardesign.core.advice import Lever
 
@@ -227,7 +245,91 @@ PART_CODES = tuple(
 """The checks of the drive's parts."""
 
 
+# ------------------------------------------------------------------ motor, heat balance
+
+MOTOR_POWERS = (0.06, 0.09, 0.12, 0.18, 0.25, 0.37, 0.55, 0.75, 1.1, 1.5, 2.2, 3.0, 4.0, 5.5,
+                7.5, 11.0, 15.0, 18.5, 22.0, 30.0, 37.0, 45.0, 55.0, 75.0, 90.0, 110.0, 132.0,
+                160.0, 200.0, 250.0, 315.0, 355.0, 400.0, 450.0, 500.0, 560.0, 630.0, 710.0,
+                800.0, 900.0, 1000.0)
+"""Rated output powers of motors [kW], [IEC60072-1] (the same series as GOST 12139-84)."""
+
+MOTOR_STEPS = 3
+"""Rated powers tried at and above the one needed."""
+
+FAN_SPEEDS = (5.0, 10.0)
+"""Air velocities of a fan along the housing tried [m/s] (a fan on the input shaft blows
+5–10 m/s; 10 m/s is the figure of the check's own words)."""
+
+AREA_MAX_FACTOR = 1.5
+"""Largest housing area advised, times the given one (cooling fins)."""
+
+COOLER_FACTORS = (1.0, 1.25, 1.6, 2.5)
+"""Oil coolers tried, times the figure of the balance."""
+
+
+def _inputs(res, table: str) -> dict:
+    v = res.inputs.get(table) if isinstance(res.inputs, dict) else None
+    return v if isinstance(v, dict) else {}
+
+
+def _failed(res, code: str):
+    return next((c for c in res.failed if c.code == code), None)
+
+
+def _larger_motor(data: dict, res):
+    c = _failed(res, "MOTOR_TORQUE")
+    n = _inputs(res, "motor").get("speed")
+    if c is None or not c.value or not n:
+        return
+    need = c.value * n * math.pi / 30000.0                   # kW at the motor speed
+    given_torque = isinstance((data.get("motor") or {}).get("torque"), (int, float))
+    for P in [p for p in MOTOR_POWERS if p >= need * (1.0 - 1e-9)][:MOTOR_STEPS]:
+        if given_torque:
+            yield (("motor.torque", math.ceil(P * 30000.0 / (math.pi * n) * 10.0) / 10.0),)
+        else:
+            yield (("motor.power", P),)
+
+
+def _fan(data: dict, res):
+    if _failed(res, "THERMAL") is None:
+        return
+    v = _inputs(res, "thermal").get("fan_velocity") or 0.0
+    for x in FAN_SPEEDS:
+        if x > v:
+            yield (("thermal.fan_velocity", x),)
+
+
+def _area(data: dict, res):
+    A = (data.get("thermal") or {}).get("area")
+    if _failed(res, "THERMAL") is None or not isinstance(A, (int, float)):
+        return
+    for f in (1.2, AREA_MAX_FACTOR):
+        yield (("thermal.area", round(A * f, 2)),)
+
+
+_COOLER = re.compile(r"an oil cooler of ([0-9.]+) kW")
+
+
+def _cooler(data: dict, res):
+    c = _failed(res, "THERMAL")
+    m = None if c is None else _COOLER.search(c.message)
+    if m is None:
+        return
+    need = float(m.group(1))
+    seen = set()
+    for f in COOLER_FACTORS:
+        x = max(0.1, math.ceil(need * f * 10.0 - 1e-9) / 10.0)
+        if x not in seen:
+            seen.add(x)
+            yield (("thermal.cooler", x),)
+
+
 LEVERS = tuple(Lever((f"STAGE_{i + 1}",), _stage_fixes(i),
                      f"the change stage {i + 1}'s report advises, at the drive's key path")
                for i in range(MAX_STAGES)) + (
-    Lever(PART_CODES, part_fixes, "each part re-rated alone", per_check=True),)
+    Lever(PART_CODES, part_fixes, "each part re-rated alone", per_check=True),
+    Lever(("MOTOR_TORQUE",), _larger_motor, "the next rated motor power, IEC 60072-1",
+          supersedes=(r"choose a motor of at least [0-9.]+ kW",)),
+    Lever(("THERMAL",), _fan, "a fan blowing along the housing"),
+    Lever(("THERMAL",), _area, "a finned housing, within 1.5 times the area"),
+    Lever(("THERMAL",), _cooler, "an oil cooler, rated from the heat balance"))
