@@ -227,6 +227,52 @@ def test_planetary_every_fix_passes_when_followed(sun, planet, extra, offset):
     _property(data)
 
 
+def _planetary_template() -> dict:
+    code, out, err = cli("template", "planetary")
+    assert code == 0, err
+    return tomllib.loads(out)
+
+
+def test_planetary_strength_advice_one_face_width_for_every_mesh(tmp_path):
+    """At 120 N·m the sun–planet contact fails (σ_H = 583 > 441 MPa): one face width,
+    within b_w/d_sun <= 1.6 (d_sun = 54 mm), passes it as printed; the old words that scaled
+    one mesh's centre distance (which moves the shifts of the other mesh) are left out."""
+    data = _planetary_template()
+    data["operation"]["torque"] = 120.0
+    c, _, (code, _, checks) = _follow(tmp_path, "planetary", data,
+                                      "SUN_PLANET_CONTACT_FATIGUE")
+    assert set(c["fix"]) == {"train.face_width"}
+    assert 30.0 < c["fix"]["train.face_width"] <= 1.6 * 54.0
+    assert "increase the centre distance by" not in c["message"]
+    assert checks["SUN_PLANET_CONTACT_FATIGUE"]["passed"] and code == 0
+
+
+def test_planetary_strength_advice_scales_the_train_to_a_standard_module(tmp_path):
+    """At 400 N·m four checks of two meshes fail and no face width within 1.6·d_sun
+    passes: all carry one change, the train scaled to m = 6 (teeth 18/27/72 kept, so the
+    assembly condition (18 + 72)/3 and the neighbour clearance stay), and it passes."""
+    data = _planetary_template()
+    data["operation"]["torque"] = 400.0
+    c, _, (code, _, checks) = _follow(tmp_path, "planetary", data, "PLANET_RING_CONTACT_FATIGUE")
+    assert c["fix"] == {"train.module": 6.0, "train.face_width": 60.0,
+                        "train.center_distance": 136.0}
+    _, _, before = _run_cli(tmp_path, "planetary", data)
+    assert all(x.get("fix") == c["fix"] for x in before.values()
+               if not x["passed"] and x["severity"] == "error")
+    assert code == 0 and all(x["passed"] for x in checks.values() if x["severity"] == "error")
+
+
+@settings(max_examples=12, deadline=None)
+@given(torque=st.floats(60.0, 600.0), face=st.floats(12.0, 40.0),
+       method=st.sampled_from(("GOST 21354-87", "ISO 6336:2019")))
+def test_planetary_strength_fix_passes_when_followed(torque, face, method):
+    data = _planetary_template()
+    data["operation"]["torque"] = round(torque, 1)
+    data["train"]["face_width"] = round(face, 1)
+    data["strength"]["method"] = method
+    _property_refused_ok(data)
+
+
 # ------------------------------------------------------------------------- spur face width
 
 
