@@ -738,6 +738,19 @@ def test_ball_clutch_spring_stress_fix_keeps_the_rate(tmp_path):
     assert checks["SPRING_STRESS"]["passed"] and checks["SPRING_SOLID"]["passed"]
 
 
+def test_pzdn_coupling_gear_fix_at_the_pzdns_keys(tmp_path):
+    """The coupling gear at 9 times its torque fails the spur contact check: the spur
+    report's own fix (a standard module with the face width scaled) is carried up as
+    ``coupling_gear.module`` / ``coupling_gear.face_width`` and passes when followed."""
+    code, out, err = cli("template", "pzdn")
+    data = tomllib.loads(out)
+    data.pop("startup", None)
+    data["coupling_gear"].update(torque=200.0, peak_torque=400.0)
+    c, _, (_, _, checks) = _follow(tmp_path, "pzdn", data, "COUPLING_GEAR")
+    assert c["fix"] == {"coupling_gear.module": 5.0, "coupling_gear.face_width": 40.0}
+    assert checks["COUPLING_GEAR"]["passed"]
+
+
 def test_pzdn_stop_pitch_arbor_fixes_pass(tmp_path):
     base = _spec("pzdn_ko2_one_spring.toml")
     for change, code, key in (({"stop_angle": 40.0}, "COUPLING_SLIP_1", "stop_angle"),
