@@ -659,6 +659,28 @@ def test_drive_shaft_fix_keeps_the_bearing_seats(tmp_path):
     assert checks["SHAFT_3"]["passed"]
 
 
+def test_drive_shaft_at_its_bearing_seat_advised_a_larger_bore(tmp_path):
+    """The output shaft on 6308 bearings (40 mm seats, 35 mm output end) fails its static
+    check at the output end, which may not outgrow the seat it is mounted through: no
+    scale with the seats kept passes.  The fix is the next bores of the same series (6310,
+    50 mm) with their seats, the other steps scaled alike; followed, the shaft passes and
+    the bearings with it."""
+    data = _drive_shafts()
+    sh = data["shaft"][2]
+    sh["support_a"] = {"designation": "6308"}
+    sh["support_b"] = {"designation": "6308"}
+    for i, d in ((0, 40.0), (3, 40.0), (4, 38.0), (5, 35.0)):
+        sh["step"][i]["diameter"] = d
+    c, after, (_, _, checks), before = _follow_data(data, "SHAFT_3")
+    assert c["fix"]["shaft[2].support_a.designation"] == "6310"
+    assert c["fix"]["shaft[2].support_b.designation"] == "6310"
+    assert c["fix"]["shaft[2].step[0].diameter"] == c["fix"]["shaft[2].step[3].diameter"] == 50.0
+    assert all(after["shaft"][2]["step"][i]["diameter"] <= 50.0 for i in (4, 5))
+    assert checks["SHAFT_3"]["passed"]
+    assert not [k for k, x in checks.items() if x["severity"] == "error" and not x["passed"]
+                and before[k]["passed"]]
+
+
 def test_drive_part_advice_is_bounded():
     """The part fixes cost one re-rating of the drive, not one per candidate."""
     from tests.conftest import bounded_work

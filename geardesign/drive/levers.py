@@ -21,7 +21,10 @@ stages or heat balance:
 * ``SHAFT_<i>``: the shaft calculator re-rated with the drive's loads and supports, the
   steps scaled alike (:func:`geardesign.shaft.levers.scaled_steps`) but the bearing seats
   kept (their diameter is the bearing's bore) and the steps outboard of them no larger than
-  the seat, at ``shaft[k].step[n].diameter``.
+  the seat, at ``shaft[k].step[n].diameter``.  When no such scale passes (the shaft fails at or outboard
+  of a seat), the next bores of the same bearing type and series with their seats and the
+  other steps scaled alike (:func:`_bore_fix`), at ``shaft[k].support_a.designation`` with
+  the steps.
 
 The fixes are then written into the drive spec together and the drive re-rated once
 (``per_check``): the heat balance (a larger bearing loses more), the mesh misalignment from
@@ -57,6 +60,9 @@ MAX_STAGES = 12
 
 MAX_SHAFT_TRIES = 6
 """Scales of a drive's shaft re-rated at most (each a shaft analysis)."""
+
+MAX_BORE_TRIES = 3
+"""Scales of a drive's shaft with larger bearing bores re-rated at most."""
 
 
 def _stage_fixes(i: int):
@@ -208,6 +214,71 @@ def _shaft_fix(report, k: int):
     return None
 
 
+def _bore_fix(report, k: int, shaft: dict):
+    """The least scale of a drive shaft's steps with the bearing seats grown to the next
+    bores of the same bearing type and series (:func:`geardesign.bearing.catalogue.candidates`),
+    the bearings changed with them, re-rated by the shaft calculator alone; ``None`` when
+    a support has no catalogue row or none within the scales passes."""
+    from geardesign.bearing import catalogue as CAT
+    from geardesign.core.advice import passes
+    from geardesign.core.errors import InputError
+    from geardesign.core.registry import load_data
+    from geardesign.shaft.levers import SCALES, first_scale, scaled_steps
+
+    part = dict(report.document()["inputs"], kind="shaft")
+    steps = part.get("step") or []
+    supports = part.get("support") or []
+    if not steps or not supports:
+        return None
+    spans, z = [], 0.0
+    for i, s in enumerate(steps):
+        spans.append((z, z + s["length"], i))
+        z += s["length"]
+    seats = []                                   # (drive key, catalogue row, seat steps)
+    for sup in supports:
+        side = str(sup.get("name", "")).lower()
+        des = (shaft.get(f"support_{side}") or {}).get("designation")
+        row = CAT.find(des) if isinstance(des, str) else None
+        x = sup.get("position")
+        idx = {i for a, b, i in spans if x is not None and a - 1e-9 <= x <= b + 1e-9}
+        if row is None or not idx:
+            return None
+        seats.append((f"shaft[{k}].support_{side}.designation", row, idx))
+    diameters = [s["diameter"] for s in steps]
+    todo = {c.code for c in report.failed}
+    passing = {c.code for c in report.checks if c.severity == "error" and c.passed}
+    last, tries = None, 0
+    k0 = first_scale(report)
+    for scale in (k for k in SCALES if k >= k0 - 1e-9):
+        grown, bearings = list(diameters), []
+        for key, row, idx in seats:
+            need = max(diameters[i] for i in idx) * scale
+            bore = next((b for b in CAT.bores(row.type) if b >= need - 1e-9 and b > row.d),
+                        None)
+            rows = [] if bore is None else CAT.candidates(row.type, bore, [row.series])
+            if not rows:
+                return None
+            bearings.append((key, rows[0].designation))
+            for i in idx:
+                grown[i] = bore
+        fix = scaled_steps(grown, scale, set().union(*(idx for _, _, idx in seats)))
+        if fix == last:
+            continue
+        last, tries = fix, tries + 1
+        if tries > MAX_BORE_TRIES:
+            return None
+        trial = dict(part, step=[dict(s, diameter=d) for s, (_, d) in zip(steps, fix)])
+        try:
+            calc, spec = load_data(trial)
+            again = calc.rate(spec)
+        except (InputError, ArithmeticError, ValueError):
+            return None
+        if passes(again, todo, passing, {c.code for c in report.checks}):
+            return tuple(bearings) + tuple(
+                (f"shaft[{k}].{key}", d) for (key, d), d0 in zip(fix, diameters) if d != d0)
+    return None
+
+
 def _shafts_fixes(data: dict, res) -> dict:
     out = {}
     for k, sh, _, report in _analysed(data, res, "shaft_reports", lambda sh: (sh,)):
@@ -217,6 +288,12 @@ def _shafts_fixes(data: dict, res) -> dict:
                 out[f"SHAFT_{sh.get('index')}"] = (
                     fix, "the steps between the bearing seats scaled alike, rounded up to "
                     "whole mm, rated with the drive's loads")
+                continue
+            fix = _bore_fix(report, k, sh)
+            if fix:
+                out[f"SHAFT_{sh.get('index')}"] = (
+                    fix, "the next bearing bores of the same series with their seats, the "
+                    "other steps scaled alike, rated with the drive's loads")
     return out
 
 
