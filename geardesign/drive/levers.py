@@ -165,42 +165,43 @@ def _connections(data: dict, res) -> dict:
     return out
 
 
-def _seats(part: dict) -> set[int]:
-    """The steps of a shaft spec (the shaft calculator's) on which a support sits."""
+def _seat_steps(part: dict, x) -> set[int]:
+    """The steps of a shaft spec (the shaft calculator's) under the position ``x``."""
     seats, z = set(), 0.0
-    spans = []
     for i, s in enumerate(part["step"]):
-        spans.append((z, z + s["length"], i))
+        if x is not None and z - 1e-9 <= x <= z + s["length"] + 1e-9:
+            seats.add(i)
         z += s["length"]
-    for sup in part.get("support") or []:
-        x = sup.get("position")
-        seats |= {i for a, b, i in spans if x is not None and a - 1e-9 <= x <= b + 1e-9}
     return seats
 
 
-def _shaft_fix(report, k: int):
-    """The least scale of a drive shaft's steps (seats kept) that passes its checks,
-    re-rated by the shaft calculator alone; ``None`` when none within the scales does."""
+def _seats(part: dict) -> set[int]:
+    """The steps of a shaft spec (the shaft calculator's) on which a support sits."""
+    return set().union(set(), *(_seat_steps(part, sup.get("position"))
+                                for sup in part.get("support") or []))
+
+
+def _first_passing(report, k: int, trials, max_tries: int):
+    """The first of ``trials`` (``(extra, steps_fix)``: drive keys set with it, the step
+    diameters ``((step[i].diameter, d), ...)``) at which the shaft calculator, re-rating
+    the spec the drive built (the nested ``report``'s inputs) alone, passes the failed
+    checks and breaks none that passed; at most ``max_tries`` distinct ones re-rated.  The
+    fix at the drive's keys, or ``None``."""
     from geardesign.core.advice import passes
     from geardesign.core.errors import InputError
     from geardesign.core.registry import load_data
-    from geardesign.shaft.levers import scale_order, scaled_steps
 
     part = dict(report.document()["inputs"], kind="shaft")    # the spec the drive built
-    steps = part.get("step") or []
-    if not steps:
-        return None
-    seats = _seats(part)
+    steps = part["step"]
     diameters = [s["diameter"] for s in steps]
     todo = {c.code for c in report.failed}
     passing = {c.code for c in report.checks if c.severity == "error" and c.passed}
     last, tries = None, 0
-    for scale in scale_order(report):
-        fix = scaled_steps(diameters, scale, seats)
+    for extra, fix in trials:
         if fix == last:
             continue
         last, tries = fix, tries + 1
-        if tries > MAX_SHAFT_TRIES:
+        if tries > max_tries:
             return None
         trial = dict(part, step=[dict(s, diameter=d) for s, (_, d) in zip(steps, fix)])
         try:
@@ -209,9 +210,23 @@ def _shaft_fix(report, k: int):
         except (InputError, ArithmeticError, ValueError):
             return None
         if passes(again, todo, passing, {c.code for c in report.checks}):
-            return tuple((f"shaft[{k}].{key}", d) for (key, d), d0 in zip(fix, diameters)
-                         if d != d0)
+            return tuple(extra) + tuple((f"shaft[{k}].{key}", d)
+                                        for (key, d), d0 in zip(fix, diameters) if d != d0)
     return None
+
+
+def _shaft_fix(report, k: int):
+    """The least scale of a drive shaft's steps (seats kept) that passes its checks,
+    re-rated by the shaft calculator alone; ``None`` when none within the scales does."""
+    from geardesign.shaft.levers import scale_order, scaled_steps
+
+    part = report.document()["inputs"]
+    if not part.get("step"):
+        return None
+    seats = _seats(part)
+    diameters = [s["diameter"] for s in part["step"]]
+    return _first_passing(report, k, (((), scaled_steps(diameters, scale, seats))
+                                      for scale in scale_order(report)), MAX_SHAFT_TRIES)
 
 
 def _bore_fix(report, k: int, shaft: dict):
@@ -220,63 +235,39 @@ def _bore_fix(report, k: int, shaft: dict):
     the bearings changed with them, re-rated by the shaft calculator alone; ``None`` when
     a support has no catalogue row or none within the scales passes."""
     from geardesign.bearing import catalogue as CAT
-    from geardesign.core.advice import passes
-    from geardesign.core.errors import InputError
-    from geardesign.core.registry import load_data
     from geardesign.shaft.levers import SCALES, first_scale, scaled_steps
 
-    part = dict(report.document()["inputs"], kind="shaft")
-    steps = part.get("step") or []
-    supports = part.get("support") or []
-    if not steps or not supports:
+    part = report.document()["inputs"]
+    if not part.get("step") or not part.get("support"):
         return None
-    spans, z = [], 0.0
-    for i, s in enumerate(steps):
-        spans.append((z, z + s["length"], i))
-        z += s["length"]
     seats = []                                   # (drive key, catalogue row, seat steps)
-    for sup in supports:
+    for sup in part["support"]:
         side = str(sup.get("name", "")).lower()
         des = (shaft.get(f"support_{side}") or {}).get("designation")
         row = CAT.find(des) if isinstance(des, str) else None
-        x = sup.get("position")
-        idx = {i for a, b, i in spans if x is not None and a - 1e-9 <= x <= b + 1e-9}
+        idx = _seat_steps(part, sup.get("position"))
         if row is None or not idx:
             return None
         seats.append((f"shaft[{k}].support_{side}.designation", row, idx))
-    diameters = [s["diameter"] for s in steps]
-    todo = {c.code for c in report.failed}
-    passing = {c.code for c in report.checks if c.severity == "error" and c.passed}
-    last, tries = None, 0
-    k0 = first_scale(report)
-    for scale in (k for k in SCALES if k >= k0 - 1e-9):
-        grown, bearings = list(diameters), []
-        for key, row, idx in seats:
-            need = max(diameters[i] for i in idx) * scale
-            bore = next((b for b in CAT.bores(row.type) if b >= need - 1e-9 and b > row.d),
-                        None)
-            rows = [] if bore is None else CAT.candidates(row.type, bore, [row.series])
-            if not rows:
-                return None
-            bearings.append((key, rows[0].designation))
-            for i in idx:
-                grown[i] = bore
-        fix = scaled_steps(grown, scale, set().union(*(idx for _, _, idx in seats)))
-        if fix == last:
-            continue
-        last, tries = fix, tries + 1
-        if tries > MAX_BORE_TRIES:
-            return None
-        trial = dict(part, step=[dict(s, diameter=d) for s, (_, d) in zip(steps, fix)])
-        try:
-            calc, spec = load_data(trial)
-            again = calc.rate(spec)
-        except (InputError, ArithmeticError, ValueError):
-            return None
-        if passes(again, todo, passing, {c.code for c in report.checks}):
-            return tuple(bearings) + tuple(
-                (f"shaft[{k}].{key}", d) for (key, d), d0 in zip(fix, diameters) if d != d0)
-    return None
+    diameters = [s["diameter"] for s in part["step"]]
+
+    def trials():
+        k0 = first_scale(report)
+        for scale in (x for x in SCALES if x >= k0 - 1e-9):
+            grown, bearings = list(diameters), []
+            for key, row, idx in seats:
+                need = max(diameters[i] for i in idx) * scale
+                bore = next((b for b in CAT.bores(row.type) if b >= need - 1e-9 and b > row.d),
+                            None)
+                rows = [] if bore is None else CAT.candidates(row.type, bore, [row.series])
+                if not rows:
+                    return
+                bearings.append((key, rows[0].designation))
+                for i in idx:
+                    grown[i] = bore
+            yield bearings, scaled_steps(grown, scale, set().union(*(i for _, _, i in seats)))
+
+    return _first_passing(report, k, trials(), MAX_BORE_TRIES)
 
 
 def _shafts_fixes(data: dict, res) -> dict:
