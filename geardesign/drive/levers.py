@@ -315,10 +315,9 @@ PART_CODES = tuple(
 
 # ------------------------------------------------------------------ motor, heat balance
 
-MOTOR_POWERS = (0.06, 0.09, 0.12, 0.18, 0.25, 0.37, 0.55, 0.75, 1.1, 1.5, 2.2, 3.0, 4.0, 5.5,
-                7.5, 11.0, 15.0, 18.5, 22.0, 30.0, 37.0, 45.0, 55.0, 75.0, 90.0, 110.0, 132.0,
-                160.0, 200.0, 250.0, 315.0, 355.0, 400.0, 450.0, 500.0, 560.0, 630.0, 710.0,
-                800.0, 900.0, 1000.0)
+MOTOR_POWERS = (0.06, 0.09, 0.12, 0.18, 0.25, 0.37, 0.55, 0.75, 1.1, 1.5, 2.2, 3, 4, 5.5, 7.5,
+                11, 15, 18.5, 22, 30, 37, 45, 55, 75, 90, 110, 132, 160, 200, 250, 315, 355,
+                400, 450, 500, 560, 630, 710, 800, 900, 1000)
 """Rated output powers of motors [kW], [IEC60072-1] (the same series as GOST 12139-84)."""
 
 MOTOR_STEPS = 3
@@ -355,16 +354,14 @@ def _larger_motor(data: dict, res):
         if given_torque:
             yield (("motor.torque", math.ceil(P * 30000.0 / (math.pi * n) * 10.0) / 10.0),)
         else:
-            yield (("motor.power", P),)
+            yield (("motor.power", float(P)),)
 
 
 def _fan(data: dict, res):
     if _failed(res, "THERMAL") is None:
         return
     v = _inputs(res, "thermal").get("fan_velocity") or 0.0
-    for x in FAN_SPEEDS:
-        if x > v:
-            yield (("thermal.fan_velocity", x),)
+    yield from ((("thermal.fan_velocity", x),) for x in FAN_SPEEDS if x > v)
 
 
 def _area(data: dict, res):
@@ -383,13 +380,9 @@ def _cooler(data: dict, res):
     m = None if c is None else _COOLER.search(c.message)
     if m is None:
         return
-    need = float(m.group(1))
-    seen = set()
-    for f in COOLER_FACTORS:
-        x = max(0.1, math.ceil(need * f * 10.0 - 1e-9) / 10.0)
-        if x not in seen:
-            seen.add(x)
-            yield (("thermal.cooler", x),)
+    kw = sorted({max(0.1, math.ceil(float(m.group(1)) * f * 10.0 - 1e-9) / 10.0)
+                 for f in COOLER_FACTORS})
+    yield from ((("thermal.cooler", x),) for x in kw)
 
 
 LEVERS = tuple(Lever((f"STAGE_{i + 1}",), _stage_fixes(i),
