@@ -227,6 +227,52 @@ def test_planetary_every_fix_passes_when_followed(sun, planet, extra, offset):
     _property(data)
 
 
+def _planetary_template() -> dict:
+    code, out, err = cli("template", "planetary")
+    assert code == 0, err
+    return tomllib.loads(out)
+
+
+def test_planetary_strength_advice_one_face_width_for_every_mesh(tmp_path):
+    """At 120 N·m the sun–planet contact fails (σ_H = 583 > 441 MPa): one face width,
+    within b_w/d_sun <= 1.6 (d_sun = 54 mm), passes it as printed; the old words that scaled
+    one mesh's centre distance (which moves the shifts of the other mesh) are left out."""
+    data = _planetary_template()
+    data["operation"]["torque"] = 120.0
+    c, _, (code, _, checks) = _follow(tmp_path, "planetary", data,
+                                      "SUN_PLANET_CONTACT_FATIGUE")
+    assert set(c["fix"]) == {"train.face_width"}
+    assert 30.0 < c["fix"]["train.face_width"] <= 1.6 * 54.0
+    assert "increase the centre distance by" not in c["message"]
+    assert checks["SUN_PLANET_CONTACT_FATIGUE"]["passed"] and code == 0
+
+
+def test_planetary_strength_advice_scales_the_train_to_a_standard_module(tmp_path):
+    """At 400 N·m four checks of two meshes fail and no face width within 1.6·d_sun
+    passes: all carry one change, the train scaled to m = 6 (teeth 18/27/72 kept, so the
+    assembly condition (18 + 72)/3 and the neighbour clearance stay), and it passes."""
+    data = _planetary_template()
+    data["operation"]["torque"] = 400.0
+    c, _, (code, _, checks) = _follow(tmp_path, "planetary", data, "PLANET_RING_CONTACT_FATIGUE")
+    assert c["fix"] == {"train.module": 6.0, "train.face_width": 60.0,
+                        "train.center_distance": 136.0}
+    _, _, before = _run_cli(tmp_path, "planetary", data)
+    assert all(x.get("fix") == c["fix"] for x in before.values()
+               if not x["passed"] and x["severity"] == "error")
+    assert code == 0 and all(x["passed"] for x in checks.values() if x["severity"] == "error")
+
+
+@settings(max_examples=12, deadline=None)
+@given(torque=st.floats(60.0, 600.0), face=st.floats(12.0, 40.0),
+       method=st.sampled_from(("GOST 21354-87", "ISO 6336:2019")))
+def test_planetary_strength_fix_passes_when_followed(torque, face, method):
+    data = _planetary_template()
+    data["operation"]["torque"] = round(torque, 1)
+    data["train"]["face_width"] = round(face, 1)
+    data["strength"]["method"] = method
+    _property_refused_ok(data)
+
+
 # ------------------------------------------------------------------------- spur face width
 
 
@@ -278,6 +324,61 @@ def test_novikov_face_width_fix_passes_when_followed(face):
     except InputError:
         return
     _property(data)
+
+
+def _novikov() -> dict:
+    code, out, err = cli("template", "novikov")
+    assert code == 0, err
+    return tomllib.loads(out)
+
+
+def test_novikov_strength_advice_widens_the_face_as_printed(tmp_path):
+    """At twice the template's torque (88 kN·m) σ_H and both σ_F fail: one face width
+    within b_w/d1 <= 1.5 (d1 = 130.1 mm) passes all three, and the pair passes as printed."""
+    data = _novikov()
+    data["load"]["torque2"] = 88000.0
+    c, _, (code, _, checks) = _follow(tmp_path, "novikov", data, "SIGMA_H")
+    assert set(c["fix"]) == {"gear.face_width"}
+    assert 100.0 < c["fix"]["gear.face_width"] <= 1.5 * 130.1
+    assert all(checks[k]["passed"] for k in ("SIGMA_H", "SIGMA_F_PINION", "SIGMA_F_WHEEL"))
+    assert code == 0
+
+
+def test_novikov_strength_advice_beyond_the_face_is_a_standard_module(tmp_path):
+    """At three times the torque no face width within 1.5·d1 passes: the advice is the
+    next first-series module with the teeth and helix angle kept, the face scaled."""
+    data = _novikov()
+    data["load"]["torque2"] = 132000.0
+    c, _, (code, _, checks) = _follow(tmp_path, "novikov", data, "SIGMA_F_WHEEL")
+    assert c["fix"]["gear.module"] in (12.0, 16.0)
+    assert c["fix"]["gear.face_width"] <= 1.5 * 130.1 * c["fix"]["gear.module"] / 10.0
+    assert checks["SIGMA_F_WHEEL"]["passed"] and code == 0
+
+
+@settings(max_examples=12, deadline=None)
+@given(torque=st.floats(50000.0, 200000.0), face=st.floats(40.0, 120.0),
+       hb=st.sampled_from(((350.0, 320.0), (300.0, 280.0), (250.0, 220.0))),
+       given_a=st.booleans())
+def test_novikov_strength_fix_passes_when_followed(torque, face, hb, given_a):
+    """Face width, hardness or module: each printed fix passes its checks when followed,
+    and a face width advised stays within b_w/d1 <= 1.5."""
+    data = _novikov()
+    data["load"]["torque2"] = round(torque)
+    data["gear"]["face_width"] = round(face, 1)
+    data["material"]["pinion"]["hardness"], data["material"]["wheel"]["hardness"] = hb
+    if given_a:
+        del data["gear"]["helix_angle"]
+        data["gear"]["center_distance"] = 450.0
+    try:
+        doc = run_data(data).document()
+    except InputError:           # refused input: nothing to advise
+        return
+    _property(data)
+    for c in doc["checks"]:
+        if c["code"].startswith("SIGMA_") and "fix" in c:
+            m = c["fix"].get("gear.module", data["gear"]["module"])
+            d1 = doc["results"]["geometry"]["d1"] * m / data["gear"]["module"]
+            assert c["fix"].get("gear.face_width", 0.0) <= 1.5 * d1 + 1e-9
 
 
 # ------------------------------------------------------------------------- shaft, bearing,
@@ -558,6 +659,28 @@ def test_drive_shaft_fix_keeps_the_bearing_seats(tmp_path):
     assert checks["SHAFT_3"]["passed"]
 
 
+def test_drive_shaft_at_its_bearing_seat_advised_a_larger_bore(tmp_path):
+    """The output shaft on 6308 bearings (40 mm seats, 35 mm output end) fails its static
+    check at the output end, which may not outgrow the seat it is mounted through: no
+    scale with the seats kept passes.  The fix is the next bores of the same series (6310,
+    50 mm) with their seats, the other steps scaled alike; followed, the shaft passes and
+    the bearings with it."""
+    data = _drive_shafts()
+    sh = data["shaft"][2]
+    sh["support_a"] = {"designation": "6308"}
+    sh["support_b"] = {"designation": "6308"}
+    for i, d in ((0, 40.0), (3, 40.0), (4, 38.0), (5, 35.0)):
+        sh["step"][i]["diameter"] = d
+    c, after, (_, _, checks), before = _follow_data(data, "SHAFT_3")
+    assert c["fix"]["shaft[2].support_a.designation"] == "6310"
+    assert c["fix"]["shaft[2].support_b.designation"] == "6310"
+    assert c["fix"]["shaft[2].step[0].diameter"] == c["fix"]["shaft[2].step[3].diameter"] == 50.0
+    assert all(after["shaft"][2]["step"][i]["diameter"] <= 50.0 for i in (4, 5))
+    assert checks["SHAFT_3"]["passed"]
+    assert not [k for k, x in checks.items() if x["severity"] == "error" and not x["passed"]
+                and before[k]["passed"]]
+
+
 def test_drive_part_advice_is_bounded():
     """The part fixes cost one re-rating of the drive, not one per candidate."""
     from tests.conftest import bounded_work
@@ -568,6 +691,57 @@ def test_drive_part_advice_is_bounded():
     with bounded_work(0.3, "a drive with three failed parts, advised"):
         doc = run_data(data).document()
     assert sum("fix" in c for c in doc["checks"]) >= 3
+
+
+def _drive_thermal() -> dict:
+    return _spec("drive_thermal_two_stage.toml")
+
+
+def test_drive_motor_torque_fix_is_the_next_rated_power(tmp_path):
+    """At 1 400 N·m the machine needs 56.9 N·m (8.68 kW at 1 455 min⁻¹) of a 7.5 kW motor:
+    the fix is the next rated power of IEC 60072-1, 11 kW, and the check passes with it."""
+    data = _drive_thermal()
+    data["load"]["torque"] = 1400.0
+    c, _, (_, _, checks), _ = _follow_data(data, "MOTOR_TORQUE")
+    assert c["fix"] == {"motor.power": 11.0}
+    assert "choose a motor of at least" not in c["message"]
+    assert checks["MOTOR_TORQUE"]["passed"]
+
+
+def test_drive_motor_torque_fix_in_the_specs_terms(tmp_path):
+    """A motor given by its torque is advised a torque: that of 11 kW at 1 455 min⁻¹,
+    30 000·11/(π·1 455) = 72.19 -> 72.2 N·m."""
+    data = _drive_thermal()
+    data["load"]["torque"] = 1400.0
+    del data["motor"]["power"]
+    data["motor"]["torque"] = 49.2
+    c, _, (_, _, checks), _ = _follow_data(data, "MOTOR_TORQUE")
+    assert c["fix"] == {"motor.torque": 72.2}
+    assert checks["MOTOR_TORQUE"]["passed"]
+
+
+def test_drive_thermal_fix_a_fan_a_housing_or_a_cooler(tmp_path):
+    """The heat balance fails: at 50 °C ambient and 60 °C permissible no fan of 10 m/s
+    carries the 133 W (it gives 110 W), an oil cooler does (the balance's 0.07 kW rounded
+    up to 0.1 kW); a housing given by its area of 0.1 m² is finned (within 1.5 times);
+    every fix passes the heat balance as printed and breaks no check that passed."""
+    data = _drive_thermal()
+    data["thermal"].update(ambient=50.0, max_oil_temperature=60.0)
+    c, _, (_, _, checks), before = _follow_data(data, "THERMAL")
+    assert c["fix"] == {"thermal.cooler": 0.1}
+    assert checks["THERMAL"]["passed"]
+    assert not [k for k, x in checks.items() if x["severity"] == "error" and not x["passed"]
+                and before[k]["passed"]]
+    data = _drive_thermal()
+    data["thermal"]["area"] = 0.1
+    c, _, (_, _, checks), _ = _follow_data(data, "THERMAL")
+    assert set(c["fix"]) == {"thermal.area"} and c["fix"]["thermal.area"] <= 0.15
+    assert checks["THERMAL"]["passed"]
+    data = _drive_thermal()
+    data["thermal"].update(ambient=30.0, max_oil_temperature=50.0)
+    c, _, (_, _, checks), _ = _follow_data(data, "THERMAL")
+    assert c["fix"] == {"thermal.fan_velocity": 5.0}       # a fan of 5 m/s suffices
+    assert checks["THERMAL"]["passed"]
 
 
 # ------------------------------------------------------------------------- ball clutch,
@@ -584,6 +758,19 @@ def test_ball_clutch_spring_stress_fix_keeps_the_rate(tmp_path):
     assert c["fix"] == {"spring.wire_diameter": 2.1, "spring.active_coils": 5.5,
                         "spring.free_length": 42.8}
     assert checks["SPRING_STRESS"]["passed"] and checks["SPRING_SOLID"]["passed"]
+
+
+def test_pzdn_coupling_gear_fix_at_the_pzdns_keys(tmp_path):
+    """The coupling gear at 9 times its torque fails the spur contact check: the spur
+    report's own fix (a standard module with the face width scaled) is carried up as
+    ``coupling_gear.module`` / ``coupling_gear.face_width`` and passes when followed."""
+    code, out, err = cli("template", "pzdn")
+    data = tomllib.loads(out)
+    data.pop("startup", None)
+    data["coupling_gear"].update(torque=200.0, peak_torque=400.0)
+    c, _, (_, _, checks) = _follow(tmp_path, "pzdn", data, "COUPLING_GEAR")
+    assert c["fix"] == {"coupling_gear.module": 5.0, "coupling_gear.face_width": 40.0}
+    assert checks["COUPLING_GEAR"]["passed"]
 
 
 def test_pzdn_stop_pitch_arbor_fixes_pass(tmp_path):

@@ -61,7 +61,9 @@ KNOBS: dict[str, list] = {
              ("set", "spring[1].arbor_diameter", (None, 30.0, 44.0)),
              ("set", "spring[0].ends_fixed_axially", (None, True)),
              ("set", "spring[1].pitch", (None, 4.6, 5.0)),
-             ("scale", ("spring[1].coil_diameter",), (0.4, 1.0, 1.3))],
+             ("scale", ("spring[1].coil_diameter",), (0.4, 1.0, 1.3)),
+             ("scale", ("coupling_gear.face_width",), (0.3, 0.6, 1.0)),
+             ("scale", ("coupling_gear.torque", "coupling_gear.peak_torque"), (1.0, 3.0, 9.0))],
     "epicycle_rim": [("pick", None, ({}, {"planets.count": 4}, {"planets.count": 5},
                                      {"planets.angles": [0.0, 40.0, 201.0]},
                                      {"planets.angles": [0.0, 40.0, 200.0]},
@@ -79,7 +81,10 @@ KNOBS: dict[str, list] = {
         ("scale", ("shaft[1].step[2].diameter", "shaft[1].step[3].diameter",
                    "shaft[1].step[4].diameter"), (0.7, 0.85, 1.0)),
         ("scale", ("shaft[0].key[0].length",), (0.3, 0.5, 1.0)),
-        ("scale", ("shaft[1].key[0].length",), (0.5, 1.0))],
+        ("scale", ("shaft[1].key[0].length",), (0.5, 1.0)),
+        ("set", "load.torque", (None, 1400.0)),
+        ("pick", None, ({}, {"thermal.ambient": 45.0, "thermal.max_oil_temperature": 55.0},
+                        {"thermal.ambient": 50.0, "thermal.max_oil_temperature": 60.0}))],
 }
 
 CPU = {"drive": 0.2, "drive_shafts": 0.3, "epicycle_rim": 0.1}

@@ -164,8 +164,10 @@ def test_contact_and_bending_fatigue_below_minimum(tmp_path):
     bad = failed(checks)
     assert "SUN_PLANET_CONTACT_FATIGUE" in bad and "SUN_PLANET_BENDING_FATIGUE_PLANET" in bad
     msg = checks["SUN_PLANET_CONTACT_FATIGUE"]["message"]
-    assert msg.startswith("sun–planet: contact stress σ_H = ") and \
-        "increase the centre distance by" in msg and "harder sun material" in msg
+    assert msg.startswith("sun–planet: contact stress σ_H = ") and "harder sun material" in msg
+    # the train scaled to a standard module replaces the words "increase the centre
+    # distance by …" when it passes (found by re-rating)
+    assert "increase the centre distance by" in msg or "set train.module = " in msg
     assert "planet root stress" in checks["SUN_PLANET_BENDING_FATIGUE_PLANET"]["message"]
     assert doc["results"]["strength_sun_planet"]["Y_A2"] < 1.0   # planet loaded both ways
     assert doc["results"]["strength_sun_planet"]["Y_A1"] == 1.0

@@ -171,9 +171,13 @@ def advise(calc, spec, res: Result, levers: Iterable[Lever]) -> Result:
     for c in res.checks:
         if c.code in found and not c.passed and not c.fix:
             fix, what = found[c.code]
-            own = without(c.message, superseded.get(c.code, ()))
-            c = dataclasses.replace(c, fix=fix, message=f"{own}; set {fix_text(fix)} "
-                                    f"({what}; it passes when re-rated)")
+            clauses = superseded.get(c.code, ())
+            tail = f"; set {fix_text(fix)} ({what}; it passes when re-rated)"
+            # the advice stays the end of the message (Check.advice), without the clauses
+            # the fix replaces, as the message
+            advice = (without(c.advice, clauses) + tail).lstrip("; ") if c.advice else ""
+            c = dataclasses.replace(c, fix=fix, message=without(c.message, clauses) + tail,
+                                    advice=advice)
         checks.append(c)
     res.checks = checks
     return res

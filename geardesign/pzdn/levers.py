@@ -187,4 +187,32 @@ def _levers(n: int) -> tuple:
     )
 
 
-LEVERS = tuple(lever for n in range(1, MAX_SPRINGS + 1) for lever in _levers(n))
+def _coupling_gear(data: dict, res):
+    """The fixes of the coupling gear's own failed checks (its nested spur report), at the
+    pzdn's keys: ``gear.face_width`` -> ``coupling_gear.face_width`` (and the module, the
+    shifts: the fields of ``[coupling_gear]``); merged into one change, then each alone."""
+    from geardesign.pzdn.spec import COUPLING_GEAR
+
+    if not isinstance(data.get("coupling_gear"), dict):
+        return
+    names = {f.key for f in COUPLING_GEAR.fields}
+    spur = next((r for key, _, r in res.parts if key == "coupling_gear_rating"), None)
+    fixes = []
+    for c in () if spur is None else spur.failed:
+        fix = tuple((f"coupling_gear.{k[5:]}", v) for k, v in c.fix)
+        if not c.fix or not all(k.startswith("gear.") and k[5:] in names for k, _ in c.fix):
+            return                       # a failed check that the pzdn's keys cannot pass
+        if fix not in fixes:
+            fixes.append(fix)
+    merged: dict = {}
+    for fix in fixes:
+        for k, v in fix:
+            merged.setdefault(k, v)
+    if len(fixes) > 1 and all(merged[k] == v for fix in fixes for k, v in fix):
+        yield tuple(merged.items())
+    yield from fixes
+
+
+LEVERS = tuple(lever for n in range(1, MAX_SPRINGS + 1) for lever in _levers(n)) + (
+    Lever(("COUPLING_GEAR",), _coupling_gear, "the change the coupling gear's own report "
+          "advises, at the [coupling_gear] keys"),)
