@@ -22,10 +22,12 @@ from geardesign.spur.strength import gost21354 as G
 from geardesign.spur.strength.iso6336 import part2, part3
 
 MOUNTING_FACTOR = {"both_straddle": 1.00, "one_straddle": 1.10, "cantilever": 1.25}
-"""Mounting factor K_Hβ-be by the mounting of pinion and wheel.  [ISO10300-1] table 6."""
+"""Mounting factor K_Hβ-be by the mounting of pinion and wheel.  [ISO10300-1] table 6, not
+consulted: unverified (the report's METHOD_UNVERIFIED warning, docs/bevel.md)."""
 
 Z_K = 0.8
-"""Bevel gear factor Z_K (method B1).  [ISO10300-2] §7."""
+"""Bevel gear factor Z_K (method B1).  [ISO10300-2] §7, not consulted: unverified (the
+report's METHOD_UNVERIFIED warning, docs/bevel.md)."""
 
 Y_ST = 2.0
 """Stress correction factor of the reference test gear.  [ISO6336-3]."""
@@ -36,7 +38,8 @@ THETA = {  # (θ_H, θ_F) = (a_H + b_H·u, a_F + b_F·u) for circular teeth
     "both_hard": ((0.81, 0.15), (0.65, 0.11)),
 }
 """Bevel factors of circular teeth θ_H, θ_F against the pair's hardness ([Dunaev] §2.6,
-table 2.6); straight teeth: :data:`THETA_STRAIGHT`."""
+table 2.6, written without the table at hand: unverified, the report's METHOD_UNVERIFIED
+warning); straight teeth: :data:`THETA_STRAIGHT`."""
 
 THETA_STRAIGHT = 0.85
 """θ_H = θ_F = 0.85 for straight bevel teeth ([Dunaev] §2.6; [Ivanov] ch. 4)."""

@@ -20,6 +20,25 @@ EPS_MIN = 1.1
 
 MEMBERS = ("pinion", "wheel")
 
+VERIFIED = {
+    True: "the spiral pair's cones, mean-section modules, diameters and heights "
+          "([ISO23509] spiral example, docs/bevel.md)",
+    False: "",
+}
+"""What of each tooth form has been checked against a published worked example (by
+``teeth == "spiral"``); docs/bevel.md lists the cases."""
+
+UNVERIFIED = {
+    True: ("addendum/dedendum angles (standard depth, not the cutter's duplex taper), "
+           "virtual gears and contact ratios, tooth thickness and chordal dimensions, forces, "
+           "strength by ISO 10300 (Z_K, Z_LS, K_Hβ-be) and by GOST 21354 (θ_H, θ_F of "
+           "circular teeth)"),
+    False: ("geometry (cones, heights, diameters, tooth thickness, chordal dimensions), "
+            "virtual gears and contact ratios, forces, strength by ISO 10300 (Z_K, Z_LS, "
+            "K_Hβ-be) and by GOST 21354 (θ_H = θ_F = 0.85)"),
+}
+"""The parts not yet checked against a published worked example, by tooth form."""
+
 
 def _member_rows(sec, members, table) -> None:
     """One row per (key, attribute, unit, symbol, name, source) of ``table`` for each member,
@@ -147,6 +166,13 @@ def gost_rows(res: Result, sol: Solution) -> None:
 
 def checks(res: Result, sol: Solution) -> None:
     g, rt = sol.geometry, sol.inputs.rating
+    done = VERIFIED[g.spiral]
+    res.checks.append(check(
+        "METHOD_UNVERIFIED", False, "warning",
+        "not yet checked against a published worked example: " + UNVERIFIED[g.spiral]
+        + (f"; checked: {done}" if done else "")
+        + "; compare these figures with an independent calculation before signing",
+        "", None, None, S.PUBLISHED))
     for name, m in zip(MEMBERS, g.members):
         res.checks.append(check(
             "UNDERCUT", m.x >= m.x_min - 1e-9, "error",
