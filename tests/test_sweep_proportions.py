@@ -160,10 +160,12 @@ def _warnings(doc: dict) -> list[str]:
 @pytest.mark.parametrize("kind", known_kinds())
 def test_every_template_is_a_clean_example(tmp_path, kind):
     """Every template is a clean example: its second line says what it shows, and it runs
-    without a failed check or warning (published cases with their warnings are in specs/)."""
+    without a failed check or warning (published cases with their warnings are in specs/).
+    The one warning a template keeps is ``METHOD_UNVERIFIED``: a calculator whose numbers are
+    not yet all checked against a published example says so in every result (docs/bevel.md)."""
     code, text, err = cli("template", kind)
     assert code == 0 and err == ""
     assert "# This example: " in text.split("\n", 3)[1]
     code, out, err = cli("run", write_spec(tmp_path, text), "--format", "json")
     assert code == 0, err
-    assert _warnings(json.loads(out)) == []
+    assert [w for w in _warnings(json.loads(out)) if w != "METHOD_UNVERIFIED"] == []
