@@ -197,7 +197,7 @@ def _evaluate_iso(c: dict, f: Fixed) -> dict:
         return _given(iso, key, computed)
 
     # ------------------------------------------------------------------ materials, life
-    M = [IR._material(i, mats[i], iso.gears[i], IR._Rows({})) for i in range(2)]
+    M = [IR._material(i, mats[i], iso.gears[i], IR.Writer({})) for i in range(2)]
     sHlim = [m["sigma_Hlim"] for m in M]
     types = [m["type"] for m in M]
     n = (duty.n1, duty.n1 / u)

@@ -21,7 +21,7 @@ from geardesign.spur.strength.iso6336 import part3 as P3
 from geardesign.spur.strength.iso6336 import part5 as P5
 from geardesign.spur.strength.iso6336 import part21 as P21
 from geardesign.spur.strength.iso6336 import tables as T
-from geardesign.spur.strength.common import Rating
+from geardesign.spur.strength.iso6336.record import SECTIONS, IsoRating, Writer  # noqa: F401
 from geardesign.spur.strength.verdict import verdict
 from geardesign.spur.tolerances import iso1328
 
@@ -30,12 +30,6 @@ S1, S2, S3 = "[ISO6336-1]", "[ISO6336-2]", "[ISO6336-3]"
 S5, S6, S1328 = "[ISO6336-5]", "[ISO6336-6]", "[ISO1328-1]"
 S21 = "[ISO6336-21]"
 WHO = ("pinion", "wheel")
-
-SECTIONS = {"iso6336_materials": "ISO 6336: materials", "iso6336_factors": "ISO 6336: load factors",
-            "iso6336_contact": "ISO 6336: pitting", "iso6336_bending": "ISO 6336: tooth bending",
-            "iso6336_static": "ISO 6336: static (peak torque)",
-            "iso6336_scuffing": "ISO/TS 6336-21: scuffing (integral temperature)",
-            "iso6336_spectrum": "ISO 6336: load spectrum (Miner)"}
 
 Z_BIG = 100000
 """Teeth of the rack that stands in for an internal gear in the form-factor calculation."""
@@ -111,24 +105,7 @@ def default_setting(setting) -> IsoSetting:
     return IsoSetting(grade=setting.grade)
 
 
-class _Rows:
-    """Rows and values of the rating, with the ``[iso_factors]`` overrides."""
-
-    def __init__(self, overrides: dict):
-        self.r = Rating()
-        self.o = overrides
-
-    def put(self, sec, key, value, unit, symbol, name, source):
-        return self.r.put(sec, key, value, unit, symbol, name, source)
-
-    def factor(self, sec, key, computed, unit, symbol, name, source):
-        if self.o.get(key) is not None:
-            return self.r.put(sec, key, float(self.o[key]), unit, symbol, name + " (given)", "spec")
-        value = computed() if callable(computed) else computed
-        return self.r.put(sec, key, value, unit, symbol, name, source)
-
-
-def _material(i: int, mat, ig: IsoGear, R: _Rows) -> dict:
+def _material(i: int, mat, ig: IsoGear, R: Writer) -> dict:
     """ISO material data of gear ``i`` (type, σ_Hlim, σ_Flim and their sources)."""
     k, who = i + 1, WHO[i]
     typ = ig.material or P5.type_from_treatment(mat.treatment, mat.label)
@@ -165,10 +142,11 @@ def _material(i: int, mat, ig: IsoGear, R: _Rows) -> dict:
             "range": T.MATERIAL_LINES[typ]["range"], "scale": line.scale}
 
 
-def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
-    """Rate the pair to ISO 6336:2019 (method B; K_Hβ by method C)."""
+def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> IsoRating:
+    """Rate the pair to ISO 6336:2019 (method B; K_Hβ by method C): the frozen
+    :class:`~geardesign.spur.strength.iso6336.record.IsoRating` of every value."""
     iso = iso or default_setting(setting)
-    R = _Rows(iso.overrides)
+    R = Writer(iso.overrides)
     p = g.inp
     internal = bool(getattr(g, "internal", False))
     helical = p.beta > 0.0
@@ -512,7 +490,7 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
                   f"{who}", S2)
         for i in range(2):
             k, who = i + 1, WHO[i]
-            s = R.r.v[f"sigma_F{k}"] * ratio / K_A
+            s = R.v[f"sigma_F{k}"] * ratio / K_A
             R.put(St, f"sigma_Fst{k}", s, "MPa", f"σ_F,st{k}", f"root stress at the peak torque, "
                   f"{who}", S3)
             pts = T.YNT_CURVES[T.YNT_GROUP[types[i]]]
@@ -529,10 +507,10 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
     # ------------------------------------------------------------------ load spectrum
     if duty.life.blocks:
         _spectrum(R, g, duty, types, sHlim, M, N_L, iso)
-    return R.r
+    return R.record()
 
 
-def _scuffing(R: _Rows, g, mats, setting, iso: IsoSetting, types, F_t: float, v: float,
+def _scuffing(R: Writer, g, mats, setting, iso: IsoSetting, types, F_t: float, v: float,
               K_A: float, K_rest: float, c_ga: float, C_a: float) -> None:
     """Scuffing by the integral temperature method ([ISO6336-21]): the factors, Θ_int,
     Θ_intS and the safety factors, in the section ``iso6336_scuffing``."""
@@ -599,8 +577,10 @@ def _scuffing(R: _Rows, g, mats, setting, iso: IsoSetting, types, F_t: float, v:
                     "X_BE", "geometry factor at the pinion tip", S21)
     X_eps_c, branch = P21.contact_ratio_factor(eps_1, eps_2)
     X_eps = R.factor(Sc, "X_eps", X_eps_c, "-", "X_ε", f"contact ratio factor ({branch})", S21)
-    R.r.v["X_eps_branch"] = branch if "X_eps" not in iso.overrides else ""
-    R.r.v["nu40_scuffing"] = iso.nu40
+    R.put(Sc, "X_eps_branch", branch if "X_eps" not in iso.overrides else "", None, "X_ε branch",
+          "branch of the X_ε table (the scuffing advice)", S21, row=False)
+    R.put(Sc, "nu40_scuffing", iso.nu40, "mm^2/s", "ν40", "kinematic viscosity at 40 °C (the "
+          "scuffing advice)", "spec", row=False)
     e_f, e_a = (eps_2, eps_1) if sc.driving == "pinion" else (eps_1, eps_2)
     X_Q = R.factor(Sc, "X_Q", lambda: P21.approach_factor(e_f, e_a), "-", "X_Q",
                    f"approach factor (driving: {sc.driving}, ε_f/ε_a = {e_f / e_a:.3f})", S21)
@@ -649,13 +629,13 @@ def _scuffing(R: _Rows, g, mats, setting, iso: IsoSetting, types, F_t: float, v:
           "Θ_oil)", S21)
 
 
-def _spectrum(R: _Rows, g, duty, types, sHlim, M, N_L, iso: IsoSetting) -> None:
+def _spectrum(R: Writer, g, duty, types, sHlim, M, N_L, iso: IsoSetting) -> None:
     """Miner's damage sums and the safety factors of the spectrum.  Each block's stress is the
     nominal one scaled with its torque (σ_H ∝ √T, σ_F ∝ T; the load factors kept at their
     nominal-torque values)."""
     from geardesign.spur.strength.iso6336 import part6 as P6
 
-    v, Sp = R.r.v, "iso6336_spectrum"
+    v, Sp = R.v, "iso6336_spectrum"
     life = duty.life
     R.put(Sp, "method", "Palmgren–Miner on the S-N curves of parts 2 and 3; block stresses "
           "scaled from the nominal torque", None, "Σn/N", "damage accumulation", S6)
@@ -878,7 +858,7 @@ def passes(v: dict, kind: str) -> bool:
     return bool(judged.contact_passes if kind == "H" else judged.bending_passes)
 
 
-def rating_checks(rating: Rating, internal: bool = False, members=WHO,
+def rating_checks(rating: IsoRating, internal: bool = False, members=WHO,
                   found: dict | None = None) -> list[Check]:
     """:func:`checks` of a finished rating (what a calculator calls)."""
     v = rating.v
