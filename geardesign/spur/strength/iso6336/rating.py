@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from geardesign.core import xp
 from geardesign.core.result import Check, check
 from geardesign.spur.strength.iso6336 import part1 as P1
 from geardesign.spur.strength.iso6336 import part2 as P2
@@ -196,6 +197,8 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> IsoRating:
           "spec" if iso.F_beta is not None else S_tol)
     f_Hb = tol["f_Hbeta"]
     for k, (gear, who) in enumerate(zip(gears, WHO), 1):
+        if not xp.scalar(gear.d, m_n, b):
+            break       # candidates of a sweep: the range is the re-check's warning
         outside = iso1328.outside_validity(gear.d, m_n, b, iso.tolerance_standard)
         if outside:
             R.put(F, f"tolerance_range{k}", _range_words(iso.tolerance_standard, abs(gear.d),
@@ -203,17 +206,23 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> IsoRating:
                   f"ISO 1328-1 tolerances outside the edition's range, {who}", S_tol)
 
     # ------------------------------------------------------------------ stiffness
-    cb = math.cos(g.beta_b)
-    z_n1 = p.z1 / (cb * cb * math.cos(p.beta))
-    z_n2 = None if internal else p.z2 / (cb * cb * math.cos(p.beta))
+    cb = xp.cos(g.beta_b)
+    virtual = cb * cb * xp.cos(p.beta)
+    z_n1 = p.z1 / virtual
+    z_n2_signed = (-p.z2 if internal else p.z2) / virtual
+    z_n2 = None if internal else z_n2_signed
     R.put(F, "z_n1", z_n1, "-", "z_n1", "virtual number of teeth z/(cos²β_b cos β), pinion", S1)
-    R.put(F, "z_n2", (-p.z2 if internal else p.z2) / (cb * cb * math.cos(p.beta)), "-", "z_n2",
+    R.put(F, "z_n2", z_n2_signed, "-", "z_n2",
           "virtual number of teeth z/(cos²β_b cos β), wheel"
           + (" (internal gear: negative; infinite in c'_th)" if internal else ""), S1)
     x2 = -p.x2 if internal else p.x2      # ISO 21771 sign for an internal gear
     # the standard's pinion is the gear with fewer teeth (a sun larger than its planet)
-    stiff = ((z_n2, x2, z_n1, p.x1) if z_n2 is not None and z_n2 < z_n1
-             else (z_n1, p.x1, z_n2, x2))
+    if z_n2 is None:
+        stiff = (z_n1, p.x1, z_n2, x2)
+    else:
+        swap = z_n2 < z_n1
+        stiff = (xp.where(swap, z_n2, z_n1), xp.where(swap, x2, p.x1),
+                 xp.where(swap, z_n1, z_n2), xp.where(swap, p.x1, x2))
     c_th = R.factor(F, "c_th", lambda: P1.theoretical_single_stiffness(*stiff[::2], *stiff[1::2]),
                     "N/(mm·µm)", "c'_th", "theoretical single stiffness (gear with fewer "
                     "teeth as the pinion)", S1)
@@ -222,8 +231,9 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> IsoRating:
     h_fP = h_fPs[0]
     C_B = R.put(F, "C_B", P1.basic_rack_factor(h_fPs[0], h_fPs[1], a_n), "-", "C_B",
                 "basic rack factor", S1)
-    C_R = R.put(F, "C_R", min(P1.blank_factor(ig.web_ratio, (ig.rim_thickness or m_n) / m_n)
-                              for ig in iso.gears), "-", "C_R", "gear blank factor", S1)
+    C_R = R.put(F, "C_R", xp.minimum(*(P1.blank_factor(ig.web_ratio,
+                                                       (ig.rim_thickness or m_n) / m_n)
+                                      for ig in iso.gears)), "-", "C_R", "gear blank factor", S1)
     R.put(F, "C_M", P1.C_M, "-", "C_M", "correction factor of the single stiffness", S1)
     c_p = R.factor(F, "c_prime", lambda: P1.single_stiffness(c_th, C_R, C_B, p.beta, line_load),
                    "N/(mm·µm)", "c'", "single stiffness", S1)
@@ -263,7 +273,8 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> IsoRating:
                 "lower limit of the main resonance range", S1)
     # running-in removes at most the deviation itself (160/σ_Hlim·f_pb exceeds f_pb for
     # σ_Hlim < 160 MPa): the effective deviations are not negative
-    K_v_calc, rng = P1.dynamic_factor(N, N_S, c_p, max(f_pb - y_a, 0.0), max(f_fa - y_f, 0.0),
+    K_v_calc, rng = P1.dynamic_factor(N, N_S, c_p, xp.maximum(f_pb - y_a, 0.0),
+                                      xp.maximum(f_fa - y_f, 0.0),
                                       C_a, line_load,
                                       g.eps_gamma)
     R.put(F, "K_v_range", rng, None, "range", "resonance range of K_v", S1)
@@ -293,9 +304,9 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> IsoRating:
     F_by = R.put(F, "F_betay", F_bx - y_b, "µm", "F_βy", "effective equivalent misalignment", S1)
     K_Hb = R.factor(F, "K_Hbeta", lambda: P1.face_load_factor(F_by, c_gb, F_m_b), "-", "K_Hβ",
                     "face load factor, contact (method C)", S1)
-    b_h = min(b / gr.h for gr in gears)
-    R.put(F, "N_F", P1.n_f(b_h), "-", "N_F", f"exponent of K_Fβ (b/h = {b_h:.3f}, at least 3)",
-          S1)
+    b_h = xp.minimum(b / g.g1.h, b / g.g2.h)
+    R.put(F, "N_F", P1.n_f(b_h), "-", "N_F", f"exponent of K_Fβ (b/h = {_num(b_h, '.3f')}, at "
+          "least 3)", S1)
     K_Fb = R.factor(F, "K_Fbeta", lambda: P1.face_load_factor_bending(K_Hb, b_h), "-", "K_Fβ",
                     "face load factor, bending", S1)
 
@@ -303,7 +314,7 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> IsoRating:
     Z_eps = R.factor("iso6336_contact", "Z_eps", lambda: P2.z_eps(g.eps_alpha, g.eps_beta, helical),
                      "-", "Z_ε", "contact ratio factor", S2)
     F_tH_b = F_t * K_A * K_g * K_v * K_Hb / b
-    f_eff = max(max(f_pb, f_fa) - y_a, 0.0)
+    f_eff = xp.maximum(xp.maximum(f_pb, f_fa) - y_a, 0.0)
     K_alpha = P1.transverse_load_factor(g.eps_gamma, c_ga, f_eff, F_tH_b)
     KHa_max = R.put(F, "K_Halpha_max", P1.transverse_limit_contact(g.eps_gamma, g.eps_alpha, Z_eps),
                     "-", "K_Hα,max", "upper limit of K_Hα: ε_γ/(ε_α Z_ε²)", S1)
@@ -374,7 +385,7 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> IsoRating:
                       S2)
         ZX = R.factor(C, f"Z_X{k}", lambda: P2.z_x(types[i], m_n), "-", f"Z_X{k}",
                       f"size factor, contact, {who}", S2)
-        if N_L[i] < N_ref:
+        if xp.scalar(N_L[i]) and N_L[i] < N_ref:    # a row of one pair (not of a sweep)
             R.put(C, f"ZLvR{k}", infl["Z_L"] * infl["Z_v"] * infl["Z_R"], "-", f"Z_LvR{k}",
                   f"Z_L·Z_v·Z_R at N_L (interpolated towards 1 at the static point), {who}", S2)
         G = sHlim[i] * ZNT * infl["Z_L"] * infl["Z_v"] * infl["Z_R"] * ZW * ZX
@@ -387,7 +398,7 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> IsoRating:
 
     # ------------------------------------------------------------------ bending
     B = "iso6336_bending"
-    Y_beta = R.factor(B, "Y_beta", lambda: P3.y_beta(g.eps_beta, p.beta) if helical else 1.0,
+    Y_beta = R.factor(B, "Y_beta", lambda: xp.where(helical, P3.y_beta(g.eps_beta, p.beta), 1.0),
                       "-", "Y_β", "helix angle factor", S3)
     eps_an = g.eps_alpha / (cb * cb)
     Y_DT = R.factor(B, "Y_DT", lambda: P3.y_dt(eps_an, A), "-", "Y_DT", "deep tooth factor", S3)
@@ -426,7 +437,7 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> IsoRating:
               f"{who}", S3)
         R.put(B, f"h_Fe{k}", tf.h_Fe, "mm", f"h_Fe{k}", f"bending moment arm, {who}", S3)
         R.put(B, f"rho_F{k}", tf.rho_F, "mm", f"ρ_F{k}", f"root fillet radius, {who}", S3)
-        R.put(B, f"alpha_Fen{k}", math.degrees(tf.alpha_Fen), "deg", f"α_Fen{k}",
+        R.put(B, f"alpha_Fen{k}", xp.degrees(tf.alpha_Fen), "deg", f"α_Fen{k}",
               f"load direction angle at the outer single contact point, {who}", S3)
         R.put(B, f"q_s{k}", tf.q_s, "-", f"q_s{k}", f"notch parameter, {who}", S3)
         YF = R.factor(B, f"Y_F{k}", tf.Y_F, "-", f"Y_F{k}", f"tooth form factor{how}, {who}", S3)
@@ -673,6 +684,11 @@ def _spectrum(R: Writer, g, duty, types, sHlim, M, N_L, iso: IsoSetting) -> None
         R.put(Sp, f"D_F{k}", D, "-", f"D_F{k}", f"damage sum, bending (stresses as computed), {who}", S6)
         R.put(Sp, f"S_Fspec{k}", S, "-", f"S_F,spec{k}", f"safety factor for bending of the "
               f"spectrum (D = 1 at S·σ_Fi), {who}", S6)
+
+
+def _num(x, spec: str) -> str:
+    """``x`` formatted for a row's name; a sweep's array of candidates reads "per candidate"."""
+    return format(x, spec) if xp.scalar(x) else "per candidate"
 
 
 # ----------------------------------------------------------------------------- checks
