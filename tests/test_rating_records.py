@@ -214,3 +214,38 @@ def test_iso_checks_read_the_record(name, m_n, z1, z2, beta, b_w):
     j = verdict(r.v)
     assert (got["ISO_PITTING_PINION"], got["ISO_PITTING_WHEEL"]) == j.contact_ok
     assert (got["ISO_BENDING_PINION"], got["ISO_BENDING_WHEEL"]) == j.bending_ok
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.lists(pairs, min_size=1, max_size=12), st.sampled_from(SPEC_NAMES))
+def test_iso_rate_on_arrays_is_rate_on_each_pair(cands, name):
+    """The ISO 6336 rate() on a chunk of candidates gives, for every value it reports
+    (materials, load factors, pitting, bending), the value of rate() on each pair; only the
+    rows of one pair (the tolerance range, Z_LvR) are absent from a chunk."""
+    from geardesign.spur.strength.iso6336 import rating as IR
+
+    f = _fixed(name)
+    iso = f.iso or IR.default_setting(f.setting)
+    arr = {k: np.array([float(c[i]) for c in cands])
+           for i, k in enumerate(("m_n", "z1", "z2", "x1", "x2", "beta", "b_w"))}
+    duty = dataclasses.replace(f.duty, T_peak=None, life=dataclasses.replace(f.duty.life,
+                                                                             blocks=()))
+    with np.errstate(all="ignore"):
+        g = pair_core(*(arr[k] for k in ("m_n", "z1", "z2", "x1", "x2", "beta", "b_w")),
+                      f.rack, f.tip_shortening)
+        g.update(m_n=arr["m_n"], b_w=arr["b_w"], beta=arr["beta"])
+        many = values(IR.rate(pair_view(g, f.rack), f.mats, duty, f.setting, iso))
+    for i, c in enumerate(cands):
+        try:
+            g1, _ = _rating(f, c[0], c[1], c[2], c[3], c[4], c[5], c[6])
+            one_v = values(IR.rate(g1, f.mats, duty, f.setting, iso))
+        except (GeometryError, ValueError, ZeroDivisionError):
+            continue
+        assert set(one_v) - set(many) <= {"tolerance_range1", "tolerance_range2", "ZLvR1",
+                                          "ZLvR2"}
+        for key, want in one_v.items():
+            if isinstance(want, str) or key not in many:
+                continue
+            got = many[key]
+            got = float(got[i]) if np.ndim(got) else float(got)
+            assert math.isclose(got, float(want), rel_tol=1e-9, abs_tol=1e-9), (key, got, want)
