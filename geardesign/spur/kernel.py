@@ -10,10 +10,9 @@ keeps only what is array-specific: the view, the check flags and the chunk's col
 ``tests/test_sweep_kernel.py`` guards kernel == calculator on 10 000 random pairs
 (1e-9 relative).
 
-ISO 6336:2019 (:func:`evaluate` of a :class:`Fixed` with ``method = ISO_NAME``) strings the
-functions of :mod:`geardesign.spur.strength.iso6336` (parts 1, 2, 3, 5 and ISO 1328-1) in
-the order of :func:`geardesign.spur.strength.iso6336.rating.rate`, with the ``[iso]`` and
-``[iso_factors]`` inputs of the spec; pairs that the calculator does not rate by ISO
+ISO 6336:2019 (:func:`evaluate` of a :class:`Fixed` with ``method = ISO_NAME``) is
+:func:`geardesign.spur.strength.iso6336.rating.rate` itself on the same view, with the
+``[iso]`` and ``[iso_factors]`` inputs of the spec; pairs that the calculator does not rate by ISO
 (:func:`geardesign.spur.calculator.ratable`: ε_α < 1, an active limit beyond the tangency
 point, a pointed tooth) fail ``STRENGTH_NOT_RATED``.  No load spectrum, no scuffing (a sweep
 refuses those with ISO).
@@ -28,7 +27,6 @@ it reports with the scalar calculator (``geardesign sweep --emit-spec``).
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, replace
 from types import SimpleNamespace
 

@@ -5,8 +5,14 @@ it; the checks that judge the result.
 :func:`rate` has the signature of the GOST rating (``rate(geometry, materials, duty,
 setting)``) plus the ISO inputs :class:`IsoSetting`; without them the defaults of
 :func:`default_setting` apply (a calculator that only knows the GOST inputs, e.g. the
-planetary meshes, still gets an ISO rating).  Rows go to the sections ``iso6336_*``, so that
-both methods' results stay apart in one report.
+planetary meshes, still gets an ISO rating).  It returns the frozen record
+:class:`~geardesign.spur.strength.iso6336.record.IsoRating`, whose rows (the sections
+``iso6336_*``, so that both methods' results stay apart in one report) come from its fields'
+metadata through :func:`geardesign.spur.strength.common.rows`.  The load factors, pitting
+and bending are written with :mod:`geardesign.core.xp`: the calculator rates one pair with
+numbers, the sweep kernel (:mod:`geardesign.spur.kernel`) a chunk of external candidates
+with numpy arrays through the same function (scuffing, the peak torque and a spectrum: one
+pair only).
 """
 
 from __future__ import annotations
