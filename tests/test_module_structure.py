@@ -21,11 +21,12 @@ SPLITTING = "being split (issue 28)"
 LONG = {
     # modules other work of issue 28 is splitting now
     "spur/calculator.py": SPLITTING + ": spur inputs, solve and report",
-    "spur/strength/iso6336/rating.py": SPLITTING + ": the ISO 6336 rating returns a record",
+    "spur/strength/iso6336/rating.py": "the ISO 6336 rating (one rate() for a pair and for "
+        "a sweep's arrays) and its checks; " + SPLITTING + ": the scuffing, spectrum and "
+        "checks apart from rate()",
     "spur/strength/iso6336/spec.py": SPLITTING + ": the ISO 6336 inputs with the spur split",
     "spur/strength/iso6336/part3.py": SPLITTING + ": ISO 6336-3 beside the GOST package",
     "spur/checks.py": SPLITTING + ": one checks module for any rating record",
-    "spur/kernel.py": SPLITTING + ": the kernel calls the shared rate() on arrays",
     "spur/sweep.py": SPLITTING + ": the sweep re-checks variants through spur.solve",
     "spur/geometry.py": SPLITTING + ": shared gear geometry moves to geardesign/gears",
     "spur/internal.py": SPLITTING + ": internal pairs move to geardesign/gears",

@@ -127,3 +127,125 @@ def test_one_verdict_for_both_methods():
     assert not j.passes and j.margin == pytest.approx(0.9)
     j = verdict({**iso, "S_Hspec1": 1.1, "S_Hspec2": 1.05, "S_Fspec1": 1.5, "S_Fspec2": 1.3})
     assert j.contact_passes and not j.bending_passes     # the spectrum's safety factors
+
+
+# ----------------------------------------------------------------------------- ISO 6336
+
+SCUFFING = "spur_iso_scuffing_nrel_stage3.toml"
+ISO_SPECS = SPEC_NAMES + (SCUFFING,)
+VALUE_ONLY = {"X_eps_branch", "nu40_scuffing"}     # read by the scuffing advice, not shown
+
+
+def _iso_rating(name, overrides=None, beta=0.2, **pair):
+    """The ISO rating of a pair (m_n 3, 21:64, b_w 40 unless given) with the spec's
+    materials and duty; the scuffing spec's own pair (its rack and oil fit only that)."""
+    from geardesign.spur.strength.iso6336 import rating as IR
+
+    if name == SCUFFING:
+        from geardesign.spur.spec_inputs import _strength_inputs, solve_geometry
+        from geardesign.spur.strength.iso6336.spec import iso_setting
+
+        _, spec = load_data(load_toml(SPECS / name), name)
+        geom, _ = solve_geometry(spec)
+        mats, duty, setting = _strength_inputs(spec, spec.data["gear"])
+        return IR.rate(geom, mats, duty, setting, iso_setting(spec, overrides))
+    f = _fixed(name)
+    iso = f.iso or IR.default_setting(f.setting)
+    if overrides:
+        iso = dataclasses.replace(iso, overrides=overrides)
+    g = pair_geometry(PairInput(pair.get("m_n", 3.0), pair.get("z1", 21), pair.get("z2", 64),
+                                0.2, 0.1, beta, pair.get("b_w", 40.0), f.rack,
+                                tip_shortening=f.tip_shortening))
+    return IR.rate(g, f.mats, f.duty, f.setting, iso)
+
+
+@pytest.mark.parametrize("name", ISO_SPECS)
+@pytest.mark.parametrize("beta", [0.0, 0.25])
+def test_iso_rows_follow_the_values_and_carry_metadata(name, beta):
+    from geardesign.spur.strength.iso6336.record import SECTIONS, IsoRating
+
+    r = _iso_rating(name, {"K_Hbeta": 1.3, "Y_F2": 2.4, "Z_NT1": 1.05}, beta=beta)
+    assert isinstance(r, IsoRating)
+    out, v = rows(r), values(r)
+    assert v == r.v and [x.key for x in r.rows] == [x.key for x in out]
+    assert list(v) == list(r.order)                       # in the order computed
+    assert [x.key for x in out] == [k for k in v if k not in VALUE_ONLY]
+    assert len({x.key for x in out}) == len(out)
+    for x in out:
+        assert x.value == v[x.key]
+        assert x.section in SECTIONS
+        assert x.symbol is not None and x.name and x.source
+        assert "{" not in x.name
+    given_rows = {x.key for x in out if x.name.endswith("(given)")}
+    assert {"K_Hbeta", "Y_F2", "Z_NT1"} <= given_rows
+    assert all(x.source == "spec" for x in out if x.key in {"K_Hbeta", "Y_F2", "Z_NT1"})
+    assert v["K_Hbeta"] == 1.3 and v["Y_F2"] == 2.4 and v["Z_NT1"] == 1.05
+    # every section a frozen record of its own; Z_ε computed among the load factors
+    assert r.contact.SECTION == "iso6336_contact" and "Z_eps" in dataclasses.asdict(r.contact)
+    assert list(v).index("Z_eps") < list(v).index("K_Halpha")
+
+
+def test_iso_record_is_frozen_and_sections_by_inputs():
+    r = _iso_rating(SCUFFING)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        r.bending.S_F1 = 0.0
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        r.contact = None
+    assert r.scuffing is not None and r.scuffing.S_intS == r.v["S_intS"]
+    assert "X_eps_branch" in r.v and "X_eps_branch" not in {x.key for x in r.rows}
+    plain = _iso_rating(SPEC_NAMES[0])
+    assert plain.scuffing is None and "S_intS" not in plain.v
+
+
+@settings(max_examples=10, deadline=None)
+@given(st.sampled_from(SPEC_NAMES), st.sampled_from([1.5, 2.0, 3.0, 5.0]),
+       st.integers(14, 40), st.integers(25, 150), st.sampled_from([0.0, 0.1, 0.3]),
+       st.floats(10.0, 150.0))
+def test_iso_checks_read_the_record(name, m_n, z1, z2, beta, b_w):
+    """rating_checks of the record judges as the verdict of its values, one check per gear
+    and kind."""
+    from geardesign.spur.strength.iso6336.rating import rating_checks
+
+    try:
+        r = _iso_rating(name, beta=beta, m_n=m_n, z1=z1, z2=z2, b_w=b_w)
+    except GeometryError:
+        return
+    got = {c.code: c.passed for c in rating_checks(r)}
+    j = verdict(r.v)
+    assert (got["ISO_PITTING_PINION"], got["ISO_PITTING_WHEEL"]) == j.contact_ok
+    assert (got["ISO_BENDING_PINION"], got["ISO_BENDING_WHEEL"]) == j.bending_ok
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.lists(pairs, min_size=1, max_size=12), st.sampled_from(SPEC_NAMES))
+def test_iso_rate_on_arrays_is_rate_on_each_pair(cands, name):
+    """The ISO 6336 rate() on a chunk of candidates gives, for every value it reports
+    (materials, load factors, pitting, bending), the value of rate() on each pair; only the
+    rows of one pair (the tolerance range, Z_LvR) are absent from a chunk."""
+    from geardesign.spur.strength.iso6336 import rating as IR
+
+    f = _fixed(name)
+    iso = f.iso or IR.default_setting(f.setting)
+    arr = {k: np.array([float(c[i]) for c in cands])
+           for i, k in enumerate(("m_n", "z1", "z2", "x1", "x2", "beta", "b_w"))}
+    duty = dataclasses.replace(f.duty, T_peak=None, life=dataclasses.replace(f.duty.life,
+                                                                             blocks=()))
+    with np.errstate(all="ignore"):
+        g = pair_core(*(arr[k] for k in ("m_n", "z1", "z2", "x1", "x2", "beta", "b_w")),
+                      f.rack, f.tip_shortening)
+        g.update(m_n=arr["m_n"], b_w=arr["b_w"], beta=arr["beta"])
+        many = values(IR.rate(pair_view(g, f.rack), f.mats, duty, f.setting, iso))
+    for i, c in enumerate(cands):
+        try:
+            g1, _ = _rating(f, c[0], c[1], c[2], c[3], c[4], c[5], c[6])
+            one_v = values(IR.rate(g1, f.mats, duty, f.setting, iso))
+        except (GeometryError, ValueError, ZeroDivisionError):
+            continue
+        assert set(one_v) - set(many) <= {"tolerance_range1", "tolerance_range2", "ZLvR1",
+                                          "ZLvR2"}
+        for key, want in one_v.items():
+            if isinstance(want, str) or key not in many:
+                continue
+            got = many[key]
+            got = float(got[i]) if np.ndim(got) else float(got)
+            assert math.isclose(got, float(want), rel_tol=1e-9, abs_tol=1e-9), (key, got, want)

@@ -10,10 +10,9 @@ keeps only what is array-specific: the view, the check flags and the chunk's col
 ``tests/test_sweep_kernel.py`` guards kernel == calculator on 10 000 random pairs
 (1e-9 relative).
 
-ISO 6336:2019 (:func:`evaluate` of a :class:`Fixed` with ``method = ISO_NAME``) strings the
-functions of :mod:`geardesign.spur.strength.iso6336` (parts 1, 2, 3, 5 and ISO 1328-1) in
-the order of :func:`geardesign.spur.strength.iso6336.rating.rate`, with the ``[iso]`` and
-``[iso_factors]`` inputs of the spec; pairs that the calculator does not rate by ISO
+ISO 6336:2019 (:func:`evaluate` of a :class:`Fixed` with ``method = ISO_NAME``) is
+:func:`geardesign.spur.strength.iso6336.rating.rate` itself on the same view, with the
+``[iso]`` and ``[iso_factors]`` inputs of the spec; pairs that the calculator does not rate by ISO
 (:func:`geardesign.spur.calculator.ratable`: ε_α < 1, an active limit beyond the tangency
 point, a pointed tooth) fail ``STRENGTH_NOT_RATED``.  No load spectrum, no scuffing (a sweep
 refuses those with ISO).
@@ -28,7 +27,6 @@ it reports with the scalar calculator (``geardesign sweep --emit-spec``).
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, replace
 from types import SimpleNamespace
 
@@ -71,15 +69,6 @@ def fixed_from_spec(spec) -> Fixed:
     return Fixed(p.rack, mats, duty, setting, tip)
 
 
-def _given(s, key: str, computed):
-    """The spec's ``[factors]`` value of ``key`` where given (as the scalar rating's
-    ``_factor``), else the computed one."""
-    v = s.overrides.get(key)
-    if v is None:
-        return computed
-    return np.full(np.shape(computed), float(v)) if np.ndim(computed) else float(v)
-
-
 def evaluate(c: dict, f: Fixed) -> dict:
     """Geometry, checks and GOST 21354-87 fatigue rating of the candidates ``c`` (arrays of
     equal length, keys :data:`INPUTS`).  Returns a dict of arrays: the geometry of
@@ -106,7 +95,7 @@ def pair_view(g: dict, rack=None):
     """The pair geometry of :func:`pair_core`'s arrays as the rating reads it
     (``inp``, ``g1``, ``g2`` and the pair values, as :class:`~geardesign.spur.geometry.PairGeometry`)."""
     inp = SimpleNamespace(m_n=g["m_n"], b_w=g["b_w"], beta=g["beta"], x1=g["x1"], x2=g["x2"],
-                          rack=rack)
+                          z1=g["z1"], z2=g["z2"], rack=rack)
     gears = [SimpleNamespace(**{k: g[k + i] for k in ("z", "x", "d", "d_b", "d_w", "d_a", "d_f",
                                                        "h", "rho_p", "s_an")})
              for i in "12"]
@@ -168,200 +157,55 @@ def _flags(out: dict, ok: dict, valid) -> dict:
 # ----------------------------------------------------------------------------- ISO 6336
 
 
+ISO_COLUMNS = ("F_t", "v", "w", "N_L1", "N_L2", "K_A", "grade", "C_M", "sigma_Hlim1",
+               "sigma_Flim1", "sigma_Hlim2", "sigma_Flim2", "f_pb", "f_falpha", "F_beta",
+               "f_Hbeta", "c_th", "C_B", "C_R", "c_prime", "c_gamma_alpha", "c_gamma_beta",
+               "y_alpha", "y_f", "C_a", "m_red", "n_E1", "N", "N_S", "K_v", "f_sh", "f_ma",
+               "F_betax", "y_beta", "F_betay", "K_Hbeta", "N_F", "K_Fbeta", "K_Halpha_max",
+               "K_Falpha_max", "K_Halpha", "K_Falpha", "Z_eps", "Z_H", "Z_E", "Z_beta", "M1",
+               "M2", "Z_B", "Z_D", "sigma_H0", "sigma_H1", "sigma_H2", "Z_L", "Z_v", "rho_red",
+               "Z_R", "S_Hmin", "Z_NT1", "Z_W1", "Z_X1", "sigma_HG1", "sigma_HP1", "S_H1",
+               "Z_NT2", "Z_W2", "Z_X2", "sigma_HG2", "sigma_HP2", "S_H2", "Y_beta", "Y_DT",
+               "S_Fmin", "s_Fn1", "h_Fe1", "rho_F1", "alpha_Fen1", "q_s1", "Y_F1", "Y_S1",
+               "Y_B1", "sigma_F01", "sigma_F1", "Y_NT1", "Y_deltarelT1", "Y_RrelT1", "Y_X1",
+               "Y_M1", "sigma_FG1", "sigma_FP1", "S_F1", "s_Fn2", "h_Fe2", "rho_F2",
+               "alpha_Fen2", "q_s2", "Y_F2", "Y_S2", "Y_B2", "sigma_F02", "sigma_F2", "Y_NT2",
+               "Y_deltarelT2", "Y_RrelT2", "Y_X2", "Y_M2", "sigma_FG2", "sigma_FP2", "S_F2")
+"""The ISO 6336 rating's values a chunk returns as columns."""
+
+
 def _evaluate_iso(c: dict, f: Fixed) -> dict:
-    """ISO 6336:2019 rating of the candidates: :func:`iso6336.rating.rate` step by step
-    (method B; K_Hβ by method C), external pairs, no spectrum, no scuffing."""
-    from geardesign.core import xp
-    from geardesign.spur.strength.iso6336 import part1 as P1
-    from geardesign.spur.strength.iso6336 import part2 as P2
-    from geardesign.spur.strength.iso6336 import part3 as P3
-    from geardesign.spur.strength.iso6336 import rating as IR
-    from geardesign.spur.strength.iso6336 import tables as IT
-    from geardesign.spur.tolerances import iso1328
+    """ISO 6336:2019 rating of the candidates: :func:`iso6336.rating.rate` itself on the
+    view of the candidates' arrays (method B; K_Hβ by method C), external pairs, no
+    spectrum, no scuffing, no peak torque (the re-check's)."""
+    from geardesign.spur.strength.iso6336.rating import rate as iso_rate
 
-    m_n, z1, z2, x1, x2, beta, b = (c[k] for k in INPUTS)
-    g = pair_core(m_n, z1, z2, x1, x2, beta, b, f.rack, f.tip_shortening)
+    m_n, z1, z2, x1, x2, beta, b_w = (c[k] for k in INPUTS)
+    g = pair_core(m_n, z1, z2, x1, x2, beta, b_w, f.rack, f.tip_shortening)
     out = dict(g)
-    iso, duty, setting, mats = f.iso, f.duty, f.setting, f.mats
-    rack = f.rack
-    helical = beta > 0.0
-    d1, u = g["d1"], g["u"]
-    eps_a, eps_b, eps_g = g["eps_alpha"], g["eps_beta"], g["eps_gamma"]
-    a_n = rack.alpha_n
-    A = iso.grade if iso.grade is not None else setting.grade
-    F_t = 2000.0 * duty.T1 / d1
-    v = math.pi * d1 * duty.n1 / 60000.0
-    K_A, K_g = duty.K_A, iso.K_gamma
-
-    def given(key, computed):
-        return _given(iso, key, computed)
-
-    # ------------------------------------------------------------------ materials, life
-    M = [IR._material(i, mats[i], iso.gears[i], IR._Rows({})) for i in range(2)]
-    sHlim = [m["sigma_Hlim"] for m in M]
-    types = [m["type"] for m in M]
-    n = (duty.n1, duty.n1 / u)
-    N_L = [60.0 * n[i] * duty.life.c[i] * duty.life.L_h for i in range(2)]
-    line_load = K_A * K_g * F_t / b
-    out.update(F_t=F_t, v=v, w=line_load, N_L1=N_L[0], N_L2=N_L[1], K_A=K_A, grade=float(A),
-               C_M=P1.C_M)
-    for i in range(2):
-        k = str(i + 1)
-        out.update({"sigma_Hlim" + k: sHlim[i], "sigma_Flim" + k: M[i]["sigma_Flim"]})
-
-    # ------------------------------------------------------------------ accuracy
-    tol = iso1328.rating_deviations(g["d1"], g["d2"], m_n, b, g["alpha_t"], A,
-                                    iso.tolerance_standard)
-    f_pb = iso.f_pb if iso.f_pb is not None else tol["f_pb"]
-    f_fa = iso.f_falpha if iso.f_falpha is not None else tol["f_falpha"]
-    F_beta = iso.F_beta if iso.F_beta is not None else tol["F_beta"]
-    f_Hb = tol["f_Hbeta"]
-
-    # ------------------------------------------------------------------ stiffness
-    cb = np.cos(g["beta_b"])
-    z_n1 = z1 / (cb * cb * np.cos(beta))
-    z_n2 = z2 / (cb * cb * np.cos(beta))
-    swap = z_n2 < z_n1          # the standard's pinion: the gear with fewer teeth
-    c_th = given("c_th", P1.theoretical_single_stiffness(
-        np.where(swap, z_n2, z_n1), np.where(swap, z_n1, z_n2),
-        np.where(swap, x2, x1), np.where(swap, x1, x2)))
-    h_fP = rack.h_a + rack.c
-    C_B = P1.basic_rack_factor(h_fP, h_fP, a_n)
-    C_R = xp.minimum(*(P1.blank_factor(ig.web_ratio, (ig.rim_thickness or m_n) / m_n)
-                       for ig in iso.gears))
-    c_p = given("c_prime", P1.single_stiffness(c_th, C_R, C_B, beta, line_load))
-    c_ga = given("c_gamma_alpha", P1.mesh_stiffness_alpha(c_p, eps_a))
-    c_gb = P1.mesh_stiffness_beta(c_ga)
-
-    # ------------------------------------------------------------------ running-in
-    y_a = P1.pair_mean(*(P1.running_in_alpha(f_pb, types[i], sHlim[i], v) for i in range(2)))
-    y_f = P1.pair_mean(*(P1.running_in_alpha(f_fa, types[i], sHlim[i], v) for i in range(2)))
-    C_a = iso.C_a if iso.C_a is not None else \
-        P1.pair_mean(*(P1.tip_relief_running_in(s_) for s_ in sHlim))
-
-    # ------------------------------------------------------------------ dynamic factor
-    m1 = P1.gear_mass(g["d_a1"], g["d_f1"], g["d_b1"], iso.gears[0].inner_diameter)
-    m2 = P1.gear_mass(g["d_a2"], g["d_f2"], g["d_b2"], iso.gears[1].inner_diameter)
-    m_red = P1.reduced_mass(m1, m2, *iso.meshes)
-    n_E1 = P1.resonance_speed(z1, c_ga, m_red)
-    N = duty.n1 / n_E1
-    N_S = P1.lower_resonance_limit(line_load)
-    K_v_calc, _ = P1.dynamic_factor(N, N_S, c_p, np.maximum(f_pb - y_a, 0.0),
-                                    np.maximum(f_fa - y_f, 0.0), C_a, line_load, eps_g)
-    K_v = given("K_v", K_v_calc)
-
-    # ------------------------------------------------------------------ face load factors
-    F_m_b = F_t * K_A * K_g * K_v / b
-    f_sh = iso.f_sh if iso.f_sh is not None else P1.shaft_deflection(
-        F_m_b, b, d1, iso.K_prime, iso.shaft_span, iso.pinion_offset, iso.shaft_diameter)
-    f_ma = iso.f_ma if iso.f_ma is not None else f_Hb
-    F_bx = P1.initial_misalignment(f_sh, f_ma, iso.modification, F_m_b, f_Hb)
-    y_b = P1.pair_mean(*(P1.running_in_beta(F_bx, types[i], sHlim[i], v) for i in range(2)))
-    F_by = F_bx - y_b
-    K_Hb = given("K_Hbeta", P1.face_load_factor(F_by, c_gb, F_m_b))
-    b_h = np.minimum(b / g["h1"], b / g["h2"])
-    K_Fb = given("K_Fbeta", P1.face_load_factor_bending(K_Hb, b_h))
-
-    # ------------------------------------------------------------------ transverse load factors
-    Z_eps = given("Z_eps", P2.z_eps(eps_a, eps_b, helical))
-    F_tH_b = F_t * K_A * K_g * K_v * K_Hb / b
-    f_eff = np.maximum(np.maximum(f_pb, f_fa) - y_a, 0.0)
-    K_alpha = P1.transverse_load_factor(eps_g, c_ga, f_eff, F_tH_b)
-    KHa_max = P1.transverse_limit_contact(eps_g, eps_a, Z_eps)
-    KFa_max = P1.transverse_limit_bending(eps_g, eps_a)
-    K_Ha = given("K_Halpha", P1.limited(K_alpha, KHa_max)[0])
-    K_Fa = given("K_Falpha", P1.limited(K_alpha, KFa_max)[0])
-    out.update(f_pb=f_pb, f_falpha=f_fa, F_beta=F_beta, f_Hbeta=f_Hb, c_th=c_th, C_B=C_B,
-               C_R=C_R, c_prime=c_p, c_gamma_alpha=c_ga, c_gamma_beta=c_gb, y_alpha=y_a,
-               y_f=y_f, C_a=C_a, m_red=m_red, n_E1=n_E1, N=N, N_S=N_S, K_v=K_v, f_sh=f_sh,
-               f_ma=f_ma, F_betax=F_bx, y_beta=y_b, F_betay=F_by, K_Hbeta=K_Hb,
-               N_F=P1.n_f(b_h), K_Fbeta=K_Fb, K_Halpha_max=KHa_max, K_Falpha_max=KFa_max,
-               K_Halpha=K_Ha, K_Falpha=K_Fa, Z_eps=Z_eps)
-
-    # ------------------------------------------------------------------ pitting
-    Z_H = given("Z_H", P2.z_h(g["beta_b"], g["alpha_t"], g["alpha_tw"]))
-    mt1, mt2 = mats
-    Z_E = given("Z_E", P2.z_e(mt1.E, mt1.nu, mt2.E, mt2.nu))
-    Z_b = given("Z_beta", P2.z_beta(beta))
-    ZB, ZD, M1, M2 = P2.single_pair_factors(g["alpha_tw"], (g["d_a1"], g["d_a2"]),
-                                            (g["d_b1"], g["d_b2"]), (z1, z2), eps_a, eps_b,
-                                            helical)
-    Z_BD = [given("Z_B", ZB), given("Z_D", ZD)]
-    sH0 = P2.nominal_contact_stress(Z_H, Z_E, Z_eps, Z_b, F_t, d1, b, u)
-    sH = [P2.contact_stress(Z_BD[i], sH0, K_A, K_g, K_v, K_Hb, K_Ha) for i in range(2)]
-    s_min = min(sHlim)
-    Z_L = given("Z_L", P2.z_l(s_min, iso.nu40))
-    Z_v = given("Z_v", P2.z_v(s_min, v))
-    Rz = [iso.gears[i].Rz_flank if iso.gears[i].Rz_flank is not None
-          else 6.0 * setting.Ra[i] for i in range(2)]
-    rho = P2.rho_red(g["d_b1"], g["d_b2"], g["alpha_tw"])
-    Z_R = given("Z_R", P2.z_r(s_min, Rz[0], Rz[1], rho))
-    out.update(Z_H=Z_H, Z_E=Z_E, Z_beta=Z_b, M1=M1, M2=M2, Z_B=Z_BD[0], Z_D=Z_BD[1],
-               sigma_H0=sH0, sigma_H1=sH[0], sigma_H2=sH[1], Z_L=Z_L, Z_v=Z_v, rho_red=rho,
-               Z_R=Z_R, S_Hmin=iso.S_Hmin)
-    hard = [t in IT.SURFACE_HARDENED for t in types]
-    for i in range(2):
-        k = str(i + 1)
-        soft_vs_hard = hard[1 - i] and not hard[i] and types[i] not in IT.CAST_IRON_GREY
-        ZW_ref = P2.z_w(mats[i].HB, Rz[1 - i], Rz[i], rho, v, iso.nu40) if soft_vs_hard else 1.0
-        N_st, N_ref = P2.reference_cycles_contact(types[i], iso.limited_pitting)
-        ZNT = given("Z_NT" + k, P2.z_nt(types[i], N_L[i], iso.limited_pitting, iso.optimum))
-        infl = [P2.interpolated(ref, N_L[i], N_st, N_ref) for ref in (Z_L, Z_v, Z_R)]
-        ZW = given("Z_W" + k, P2.interpolated(ZW_ref, N_L[i], N_st, N_ref))
-        ZX = given("Z_X" + k, P2.z_x(types[i], m_n))
-        G = sHlim[i] * ZNT * infl[0] * infl[1] * infl[2] * ZW * ZX
-        out.update({"Z_NT" + k: ZNT, "Z_W" + k: ZW, "Z_X" + k: ZX, "sigma_HG" + k: G,
-                    "sigma_HP" + k: G / iso.S_Hmin, "S_H" + k: P2.safety(G, sH[i])})
-
-    # ------------------------------------------------------------------ bending
-    Y_beta = given("Y_beta", np.where(helical, P3.y_beta(eps_b, beta), 1.0))
-    Y_DT = given("Y_DT", P3.y_dt(eps_a / (cb * cb), A))
-    out.update(Y_beta=Y_beta, Y_DT=Y_DT, S_Fmin=iso.S_Fmin)
-    for i in range(2):
-        k = str(i + 1)
-        tf = P3.tooth_form(g["z" + k], g["x" + k], m_n, a_n, beta, g["beta_b"], g["d" + k],
-                           g["d_a" + k], eps_a, h_fP * m_n, rack.rho_f * m_n,
-                           iso.protuberance * m_n)
-        YF = given("Y_F" + k, tf.Y_F)
-        YS = given("Y_S" + k, tf.Y_S)
-        YB = given("Y_B" + k, P3.y_b(iso.gears[i].rim_thickness, g["h" + k], m_n))
-        sF0 = P3.nominal_root_stress(F_t, b, m_n, YF, YS, Y_beta, YB, Y_DT)
-        sF = P3.root_stress(sF0, K_A, K_g, K_v, K_Fb, K_Fa)
-        N_st, N_ref = P3.reference_cycles_bending(types[i])
-        YNT = given("Y_NT" + k, P3.y_nt(types[i], N_L[i], iso.optimum))
-        sigma_02 = mats[i].sigma_T
-        rp = P3.rho_prime(types[i], 3.4 * mats[i].HB, sigma_02)
-        Yd_st = P3.y_delta_rel_static(types[i], YS, sigma_02)
-        Yd = given("Y_deltarelT" + k,
-                   P2.interpolated(P3.y_delta_rel(tf.q_s, rp), N_L[i], N_st, N_ref, Yd_st))
-        YR = given("Y_RrelT" + k, P2.interpolated(P3.y_r_rel(types[i], iso.gears[i].Rz_root),
-                                                 N_L[i], N_st, N_ref))
-        YX = given("Y_X" + k, P2.interpolated(P3.y_x(types[i], m_n), N_L[i], N_st, N_ref))
-        rev = duty.reverse_ratio if duty.reverse_ratios is None else duty.reverse_ratios[i]
-        YM = given("Y_M" + k, P3.y_m(rev))
-        G = M[i]["sigma_Flim"] * P3.Y_ST * YNT * Yd * YR * YX * YM
-        out.update({"s_Fn" + k: tf.s_Fn, "h_Fe" + k: tf.h_Fe, "rho_F" + k: tf.rho_F,
-                    "alpha_Fen" + k: np.degrees(tf.alpha_Fen), "q_s" + k: tf.q_s,
-                    "Y_F" + k: YF, "Y_S" + k: YS, "Y_B" + k: YB, "sigma_F0" + k: sF0,
-                    "sigma_F" + k: sF, "Y_NT" + k: YNT, "Y_deltarelT" + k: Yd,
-                    "Y_RrelT" + k: YR, "Y_X" + k: YX, "Y_M" + k: YM, "sigma_FG" + k: G,
-                    "sigma_FP" + k: G / iso.S_Fmin, "S_F" + k: G / sF})
+    g.update(m_n=m_n, b_w=b_w, beta=beta)
+    rating = iso_rate(pair_view(g, f.rack), f.mats, replace(f.duty, T_peak=None), f.setting,
+                      f.iso)
+    v = values(rating)
+    out.update((k, v[k]) for k in ISO_COLUMNS)
+    judged = verdict(v)
+    del rating, v
 
     # ------------------------------------------------------------------ checks
-    ok = _geometry_ok(g, helical)
+    ok = _geometry_ok(g, beta > 0.0)
     # the calculator rates by ISO only a pair that can mesh as computed (calculator.ratable)
+    eps_a = g["eps_alpha"]
     ratable = ((eps_a >= 1.0) & (g["rho_p1"] > 0.0) & (g["rho_p2"] > 0.0)
                & (g["s_an1"] > 0.0) & (g["s_an2"] > 0.0))
     ok["STRENGTH_NOT_RATED"] = ratable
-    judged = verdict(out)
     for i, who in enumerate(("PINION", "WHEEL")):
         ok["ISO_PITTING_" + who] = ratable & judged.contact_ok[i]
         ok["ISO_BENDING_" + who] = ratable & judged.bending_ok[i]
     # the sweep's columns: the larger contact stress and the smaller permissible one
-    out["sigma_H"] = np.maximum(sH[0], sH[1])
+    out["sigma_H"] = np.maximum(out["sigma_H1"], out["sigma_H2"])
     out["sigma_HP"] = np.minimum(out["sigma_HP1"], out["sigma_HP2"])
     out["margin"] = judged.margin
-    valid = np.asarray(g["valid"], dtype=bool) & _iso_inputs_fit(g, iso)
+    valid = np.asarray(g["valid"], dtype=bool) & _iso_inputs_fit(g, f.iso)
     return _flags(out, ok, valid)
 
 

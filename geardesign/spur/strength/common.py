@@ -64,7 +64,8 @@ class Value:
 
 
 def q(unit: str | None, symbol: str, name, source, *, key: str | None = None,
-      gear: bool = False, group: str | None = None, default=dataclasses.MISSING):
+      gear: bool = False, group: str | None = None, row: bool = True,
+      default=dataclasses.MISSING):
     """A reported field of a rating record.
 
     ``unit`` (None for a text value), ``symbol`` and ``name`` are the row's; ``source`` a
@@ -73,9 +74,10 @@ def q(unit: str | None, symbol: str, name, source, *, key: str | None = None,
     at the gear's index) and from ``k`` (1, 2) and ``who`` (pinion, wheel), or be a function
     of that context.  ``gear``: a (pinion, wheel) pair, one row per gear, key and symbol
     with ``{k}``; consecutive per-gear fields of one ``group`` are reported gear by gear.
-    A field that is ``None`` gives no row."""
+    A field that is ``None`` gives no row; ``row=False``: a value the checks read (in
+    :func:`values`) that the report does not show."""
     meta = {"unit": unit, "symbol": symbol, "name": name, "source": source,
-            "key": key, "gear": gear, "group": group}
+            "key": key, "gear": gear, "group": group, "row": row}
     return field(default=default, metadata={"report": meta})
 
 
@@ -150,10 +152,17 @@ def _items(rec):
                 yield f, meta, i, _key(f, meta, None if i is None else i + 1), value
 
 
+def _ordered(record, items: dict) -> dict:
+    """``items`` by key in the order the record gives (``record.order``: the keys in the
+    order they were computed, across sections), else as they come (field order)."""
+    order = getattr(record, "order", None)
+    return {key: items[key] for key in order if key in items} if order else items
+
+
 def values(record) -> dict:
     """The rating's values by report key (the keys of the rows), numbers or arrays."""
-    return {key: value for _, rec in _section_records(record)
-            for _, _, _, key, value in _items(rec)}
+    return _ordered(record, {key: value for _, rec in _section_records(record)
+                             for _, _, _, key, value in _items(rec)})
 
 
 def _text(template, ctx: dict) -> str:
@@ -164,15 +173,18 @@ def _text(template, ctx: dict) -> str:
 
 def rows(record) -> list[Value]:
     """The report rows of a rating record, from its fields' metadata: key, value, unit,
-    symbol, name and source per row, in field order, per-gear groups gear by gear.  A factor
+    symbol, name and source per row, in field order (or the record's ``order``), per-gear
+    groups gear by gear.  A factor
     the designer gave (``record.given``) reads "(given)" with the source "spec"; a material
     value from the spec (``record.from_spec``) has the source "spec"."""
     given = getattr(record, "given", frozenset())
     from_spec = getattr(record, "from_spec", frozenset())
-    out = []
+    out = {}
     for section, rec in _section_records(record):
         base = {f.name: getattr(rec, f.name) for f in dataclasses.fields(rec)}
         for f, meta, i, key, value in _items(rec):
+            if not meta.get("row", True):
+                continue
             ctx = base
             if i is not None:
                 ctx = {n: (x[i] if isinstance(x, tuple) else x) for n, x in base.items()}
@@ -185,8 +197,8 @@ def rows(record) -> list[Value]:
             if isinstance(value, bool):
                 value = "yes" if value else "no"
             symbol = meta["symbol"].format(k=i + 1) if i is not None else meta["symbol"]
-            out.append(Value(section, key, value, meta["unit"], symbol, name, source))
-    return out
+            out[key] = Value(section, key, value, meta["unit"], symbol, name, source)
+    return list(_ordered(record, out).values())
 
 
 # ----------------------------------------------------------------------------- row writer

@@ -5,8 +5,14 @@ it; the checks that judge the result.
 :func:`rate` has the signature of the GOST rating (``rate(geometry, materials, duty,
 setting)``) plus the ISO inputs :class:`IsoSetting`; without them the defaults of
 :func:`default_setting` apply (a calculator that only knows the GOST inputs, e.g. the
-planetary meshes, still gets an ISO rating).  Rows go to the sections ``iso6336_*``, so that
-both methods' results stay apart in one report.
+planetary meshes, still gets an ISO rating).  It returns the frozen record
+:class:`~geardesign.spur.strength.iso6336.record.IsoRating`, whose rows (the sections
+``iso6336_*``, so that both methods' results stay apart in one report) come from its fields'
+metadata through :func:`geardesign.spur.strength.common.rows`.  The load factors, pitting
+and bending are written with :mod:`geardesign.core.xp`: the calculator rates one pair with
+numbers, the sweep kernel (:mod:`geardesign.spur.kernel`) a chunk of external candidates
+with numpy arrays through the same function (scuffing, the peak torque and a spectrum: one
+pair only).
 """
 
 from __future__ import annotations
@@ -14,6 +20,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from geardesign.core import xp
 from geardesign.core.result import Check, check
 from geardesign.spur.strength.iso6336 import part1 as P1
 from geardesign.spur.strength.iso6336 import part2 as P2
@@ -21,7 +28,7 @@ from geardesign.spur.strength.iso6336 import part3 as P3
 from geardesign.spur.strength.iso6336 import part5 as P5
 from geardesign.spur.strength.iso6336 import part21 as P21
 from geardesign.spur.strength.iso6336 import tables as T
-from geardesign.spur.strength.common import Rating
+from geardesign.spur.strength.iso6336.record import SECTIONS, IsoRating, Writer  # noqa: F401
 from geardesign.spur.strength.verdict import verdict
 from geardesign.spur.tolerances import iso1328
 
@@ -30,12 +37,6 @@ S1, S2, S3 = "[ISO6336-1]", "[ISO6336-2]", "[ISO6336-3]"
 S5, S6, S1328 = "[ISO6336-5]", "[ISO6336-6]", "[ISO1328-1]"
 S21 = "[ISO6336-21]"
 WHO = ("pinion", "wheel")
-
-SECTIONS = {"iso6336_materials": "ISO 6336: materials", "iso6336_factors": "ISO 6336: load factors",
-            "iso6336_contact": "ISO 6336: pitting", "iso6336_bending": "ISO 6336: tooth bending",
-            "iso6336_static": "ISO 6336: static (peak torque)",
-            "iso6336_scuffing": "ISO/TS 6336-21: scuffing (integral temperature)",
-            "iso6336_spectrum": "ISO 6336: load spectrum (Miner)"}
 
 Z_BIG = 100000
 """Teeth of the rack that stands in for an internal gear in the form-factor calculation."""
@@ -111,24 +112,7 @@ def default_setting(setting) -> IsoSetting:
     return IsoSetting(grade=setting.grade)
 
 
-class _Rows:
-    """Rows and values of the rating, with the ``[iso_factors]`` overrides."""
-
-    def __init__(self, overrides: dict):
-        self.r = Rating()
-        self.o = overrides
-
-    def put(self, sec, key, value, unit, symbol, name, source):
-        return self.r.put(sec, key, value, unit, symbol, name, source)
-
-    def factor(self, sec, key, computed, unit, symbol, name, source):
-        if self.o.get(key) is not None:
-            return self.r.put(sec, key, float(self.o[key]), unit, symbol, name + " (given)", "spec")
-        value = computed() if callable(computed) else computed
-        return self.r.put(sec, key, value, unit, symbol, name, source)
-
-
-def _material(i: int, mat, ig: IsoGear, R: _Rows) -> dict:
+def _material(i: int, mat, ig: IsoGear, R: Writer) -> dict:
     """ISO material data of gear ``i`` (type, σ_Hlim, σ_Flim and their sources)."""
     k, who = i + 1, WHO[i]
     typ = ig.material or P5.type_from_treatment(mat.treatment, mat.label)
@@ -165,10 +149,11 @@ def _material(i: int, mat, ig: IsoGear, R: _Rows) -> dict:
             "range": T.MATERIAL_LINES[typ]["range"], "scale": line.scale}
 
 
-def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
-    """Rate the pair to ISO 6336:2019 (method B; K_Hβ by method C)."""
+def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> IsoRating:
+    """Rate the pair to ISO 6336:2019 (method B; K_Hβ by method C): the frozen
+    :class:`~geardesign.spur.strength.iso6336.record.IsoRating` of every value."""
     iso = iso or default_setting(setting)
-    R = _Rows(iso.overrides)
+    R = Writer(iso.overrides)
     p = g.inp
     internal = bool(getattr(g, "internal", False))
     helical = p.beta > 0.0
@@ -218,6 +203,8 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
           "spec" if iso.F_beta is not None else S_tol)
     f_Hb = tol["f_Hbeta"]
     for k, (gear, who) in enumerate(zip(gears, WHO), 1):
+        if not xp.scalar(gear.d, m_n, b):
+            break       # candidates of a sweep: the range is the re-check's warning
         outside = iso1328.outside_validity(gear.d, m_n, b, iso.tolerance_standard)
         if outside:
             R.put(F, f"tolerance_range{k}", _range_words(iso.tolerance_standard, abs(gear.d),
@@ -225,17 +212,23 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
                   f"ISO 1328-1 tolerances outside the edition's range, {who}", S_tol)
 
     # ------------------------------------------------------------------ stiffness
-    cb = math.cos(g.beta_b)
-    z_n1 = p.z1 / (cb * cb * math.cos(p.beta))
-    z_n2 = None if internal else p.z2 / (cb * cb * math.cos(p.beta))
+    cb = xp.cos(g.beta_b)
+    virtual = cb * cb * xp.cos(p.beta)
+    z_n1 = p.z1 / virtual
+    z_n2_signed = (-p.z2 if internal else p.z2) / virtual
+    z_n2 = None if internal else z_n2_signed
     R.put(F, "z_n1", z_n1, "-", "z_n1", "virtual number of teeth z/(cos²β_b cos β), pinion", S1)
-    R.put(F, "z_n2", (-p.z2 if internal else p.z2) / (cb * cb * math.cos(p.beta)), "-", "z_n2",
+    R.put(F, "z_n2", z_n2_signed, "-", "z_n2",
           "virtual number of teeth z/(cos²β_b cos β), wheel"
           + (" (internal gear: negative; infinite in c'_th)" if internal else ""), S1)
     x2 = -p.x2 if internal else p.x2      # ISO 21771 sign for an internal gear
     # the standard's pinion is the gear with fewer teeth (a sun larger than its planet)
-    stiff = ((z_n2, x2, z_n1, p.x1) if z_n2 is not None and z_n2 < z_n1
-             else (z_n1, p.x1, z_n2, x2))
+    if z_n2 is None:
+        stiff = (z_n1, p.x1, z_n2, x2)
+    else:
+        swap = z_n2 < z_n1
+        stiff = (xp.where(swap, z_n2, z_n1), xp.where(swap, x2, p.x1),
+                 xp.where(swap, z_n1, z_n2), xp.where(swap, p.x1, x2))
     c_th = R.factor(F, "c_th", lambda: P1.theoretical_single_stiffness(*stiff[::2], *stiff[1::2]),
                     "N/(mm·µm)", "c'_th", "theoretical single stiffness (gear with fewer "
                     "teeth as the pinion)", S1)
@@ -244,8 +237,9 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
     h_fP = h_fPs[0]
     C_B = R.put(F, "C_B", P1.basic_rack_factor(h_fPs[0], h_fPs[1], a_n), "-", "C_B",
                 "basic rack factor", S1)
-    C_R = R.put(F, "C_R", min(P1.blank_factor(ig.web_ratio, (ig.rim_thickness or m_n) / m_n)
-                              for ig in iso.gears), "-", "C_R", "gear blank factor", S1)
+    C_R = R.put(F, "C_R", xp.minimum(*(P1.blank_factor(ig.web_ratio,
+                                                       (ig.rim_thickness or m_n) / m_n)
+                                      for ig in iso.gears)), "-", "C_R", "gear blank factor", S1)
     R.put(F, "C_M", P1.C_M, "-", "C_M", "correction factor of the single stiffness", S1)
     c_p = R.factor(F, "c_prime", lambda: P1.single_stiffness(c_th, C_R, C_B, p.beta, line_load),
                    "N/(mm·µm)", "c'", "single stiffness", S1)
@@ -285,7 +279,8 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
                 "lower limit of the main resonance range", S1)
     # running-in removes at most the deviation itself (160/σ_Hlim·f_pb exceeds f_pb for
     # σ_Hlim < 160 MPa): the effective deviations are not negative
-    K_v_calc, rng = P1.dynamic_factor(N, N_S, c_p, max(f_pb - y_a, 0.0), max(f_fa - y_f, 0.0),
+    K_v_calc, rng = P1.dynamic_factor(N, N_S, c_p, xp.maximum(f_pb - y_a, 0.0),
+                                      xp.maximum(f_fa - y_f, 0.0),
                                       C_a, line_load,
                                       g.eps_gamma)
     R.put(F, "K_v_range", rng, None, "range", "resonance range of K_v", S1)
@@ -315,9 +310,9 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
     F_by = R.put(F, "F_betay", F_bx - y_b, "µm", "F_βy", "effective equivalent misalignment", S1)
     K_Hb = R.factor(F, "K_Hbeta", lambda: P1.face_load_factor(F_by, c_gb, F_m_b), "-", "K_Hβ",
                     "face load factor, contact (method C)", S1)
-    b_h = min(b / gr.h for gr in gears)
-    R.put(F, "N_F", P1.n_f(b_h), "-", "N_F", f"exponent of K_Fβ (b/h = {b_h:.3f}, at least 3)",
-          S1)
+    b_h = xp.minimum(b / g.g1.h, b / g.g2.h)
+    R.put(F, "N_F", P1.n_f(b_h), "-", "N_F", f"exponent of K_Fβ (b/h = {_num(b_h, '.3f')}, at "
+          "least 3)", S1)
     K_Fb = R.factor(F, "K_Fbeta", lambda: P1.face_load_factor_bending(K_Hb, b_h), "-", "K_Fβ",
                     "face load factor, bending", S1)
 
@@ -325,7 +320,7 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
     Z_eps = R.factor("iso6336_contact", "Z_eps", lambda: P2.z_eps(g.eps_alpha, g.eps_beta, helical),
                      "-", "Z_ε", "contact ratio factor", S2)
     F_tH_b = F_t * K_A * K_g * K_v * K_Hb / b
-    f_eff = max(max(f_pb, f_fa) - y_a, 0.0)
+    f_eff = xp.maximum(xp.maximum(f_pb, f_fa) - y_a, 0.0)
     K_alpha = P1.transverse_load_factor(g.eps_gamma, c_ga, f_eff, F_tH_b)
     KHa_max = R.put(F, "K_Halpha_max", P1.transverse_limit_contact(g.eps_gamma, g.eps_alpha, Z_eps),
                     "-", "K_Hα,max", "upper limit of K_Hα: ε_γ/(ε_α Z_ε²)", S1)
@@ -396,7 +391,7 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
                       S2)
         ZX = R.factor(C, f"Z_X{k}", lambda: P2.z_x(types[i], m_n), "-", f"Z_X{k}",
                       f"size factor, contact, {who}", S2)
-        if N_L[i] < N_ref:
+        if xp.scalar(N_L[i]) and N_L[i] < N_ref:    # a row of one pair (not of a sweep)
             R.put(C, f"ZLvR{k}", infl["Z_L"] * infl["Z_v"] * infl["Z_R"], "-", f"Z_LvR{k}",
                   f"Z_L·Z_v·Z_R at N_L (interpolated towards 1 at the static point), {who}", S2)
         G = sHlim[i] * ZNT * infl["Z_L"] * infl["Z_v"] * infl["Z_R"] * ZW * ZX
@@ -409,7 +404,7 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
 
     # ------------------------------------------------------------------ bending
     B = "iso6336_bending"
-    Y_beta = R.factor(B, "Y_beta", lambda: P3.y_beta(g.eps_beta, p.beta) if helical else 1.0,
+    Y_beta = R.factor(B, "Y_beta", lambda: xp.where(helical, P3.y_beta(g.eps_beta, p.beta), 1.0),
                       "-", "Y_β", "helix angle factor", S3)
     eps_an = g.eps_alpha / (cb * cb)
     Y_DT = R.factor(B, "Y_DT", lambda: P3.y_dt(eps_an, A), "-", "Y_DT", "deep tooth factor", S3)
@@ -448,7 +443,7 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
               f"{who}", S3)
         R.put(B, f"h_Fe{k}", tf.h_Fe, "mm", f"h_Fe{k}", f"bending moment arm, {who}", S3)
         R.put(B, f"rho_F{k}", tf.rho_F, "mm", f"ρ_F{k}", f"root fillet radius, {who}", S3)
-        R.put(B, f"alpha_Fen{k}", math.degrees(tf.alpha_Fen), "deg", f"α_Fen{k}",
+        R.put(B, f"alpha_Fen{k}", xp.degrees(tf.alpha_Fen), "deg", f"α_Fen{k}",
               f"load direction angle at the outer single contact point, {who}", S3)
         R.put(B, f"q_s{k}", tf.q_s, "-", f"q_s{k}", f"notch parameter, {who}", S3)
         YF = R.factor(B, f"Y_F{k}", tf.Y_F, "-", f"Y_F{k}", f"tooth form factor{how}, {who}", S3)
@@ -512,7 +507,7 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
                   f"{who}", S2)
         for i in range(2):
             k, who = i + 1, WHO[i]
-            s = R.r.v[f"sigma_F{k}"] * ratio / K_A
+            s = R.v[f"sigma_F{k}"] * ratio / K_A
             R.put(St, f"sigma_Fst{k}", s, "MPa", f"σ_F,st{k}", f"root stress at the peak torque, "
                   f"{who}", S3)
             pts = T.YNT_CURVES[T.YNT_GROUP[types[i]]]
@@ -529,10 +524,10 @@ def rate(g, mats, duty, setting, iso: IsoSetting | None = None) -> Rating:
     # ------------------------------------------------------------------ load spectrum
     if duty.life.blocks:
         _spectrum(R, g, duty, types, sHlim, M, N_L, iso)
-    return R.r
+    return R.record()
 
 
-def _scuffing(R: _Rows, g, mats, setting, iso: IsoSetting, types, F_t: float, v: float,
+def _scuffing(R: Writer, g, mats, setting, iso: IsoSetting, types, F_t: float, v: float,
               K_A: float, K_rest: float, c_ga: float, C_a: float) -> None:
     """Scuffing by the integral temperature method ([ISO6336-21]): the factors, Θ_int,
     Θ_intS and the safety factors, in the section ``iso6336_scuffing``."""
@@ -599,8 +594,10 @@ def _scuffing(R: _Rows, g, mats, setting, iso: IsoSetting, types, F_t: float, v:
                     "X_BE", "geometry factor at the pinion tip", S21)
     X_eps_c, branch = P21.contact_ratio_factor(eps_1, eps_2)
     X_eps = R.factor(Sc, "X_eps", X_eps_c, "-", "X_ε", f"contact ratio factor ({branch})", S21)
-    R.r.v["X_eps_branch"] = branch if "X_eps" not in iso.overrides else ""
-    R.r.v["nu40_scuffing"] = iso.nu40
+    R.put(Sc, "X_eps_branch", branch if "X_eps" not in iso.overrides else "", None, "X_ε branch",
+          "branch of the X_ε table (the scuffing advice)", S21, row=False)
+    R.put(Sc, "nu40_scuffing", iso.nu40, "mm^2/s", "ν40", "kinematic viscosity at 40 °C (the "
+          "scuffing advice)", "spec", row=False)
     e_f, e_a = (eps_2, eps_1) if sc.driving == "pinion" else (eps_1, eps_2)
     X_Q = R.factor(Sc, "X_Q", lambda: P21.approach_factor(e_f, e_a), "-", "X_Q",
                    f"approach factor (driving: {sc.driving}, ε_f/ε_a = {e_f / e_a:.3f})", S21)
@@ -649,13 +646,13 @@ def _scuffing(R: _Rows, g, mats, setting, iso: IsoSetting, types, F_t: float, v:
           "Θ_oil)", S21)
 
 
-def _spectrum(R: _Rows, g, duty, types, sHlim, M, N_L, iso: IsoSetting) -> None:
+def _spectrum(R: Writer, g, duty, types, sHlim, M, N_L, iso: IsoSetting) -> None:
     """Miner's damage sums and the safety factors of the spectrum.  Each block's stress is the
     nominal one scaled with its torque (σ_H ∝ √T, σ_F ∝ T; the load factors kept at their
     nominal-torque values)."""
     from geardesign.spur.strength.iso6336 import part6 as P6
 
-    v, Sp = R.r.v, "iso6336_spectrum"
+    v, Sp = R.v, "iso6336_spectrum"
     life = duty.life
     R.put(Sp, "method", "Palmgren–Miner on the S-N curves of parts 2 and 3; block stresses "
           "scaled from the nominal torque", None, "Σn/N", "damage accumulation", S6)
@@ -693,6 +690,11 @@ def _spectrum(R: _Rows, g, duty, types, sHlim, M, N_L, iso: IsoSetting) -> None:
         R.put(Sp, f"D_F{k}", D, "-", f"D_F{k}", f"damage sum, bending (stresses as computed), {who}", S6)
         R.put(Sp, f"S_Fspec{k}", S, "-", f"S_F,spec{k}", f"safety factor for bending of the "
               f"spectrum (D = 1 at S·σ_Fi), {who}", S6)
+
+
+def _num(x, spec: str) -> str:
+    """``x`` formatted for a row's name; a sweep's array of candidates reads "per candidate"."""
+    return format(x, spec) if xp.scalar(x) else "per candidate"
 
 
 # ----------------------------------------------------------------------------- checks
@@ -878,7 +880,7 @@ def passes(v: dict, kind: str) -> bool:
     return bool(judged.contact_passes if kind == "H" else judged.bending_passes)
 
 
-def rating_checks(rating: Rating, internal: bool = False, members=WHO,
+def rating_checks(rating: IsoRating, internal: bool = False, members=WHO,
                   found: dict | None = None) -> list[Check]:
     """:func:`checks` of a finished rating (what a calculator calls)."""
     v = rating.v

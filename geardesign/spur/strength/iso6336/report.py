@@ -37,7 +37,7 @@ def add_iso_strength(res, geom, spec, inputs, rating=None, iso=None) -> dict:
                                                                 v["sigma_Hlim2"]) else None)}
 
 
-def iso_rating(spec) -> "IR.Rating":
+def iso_rating(spec) -> "IR.IsoRating":
     """The ISO 6336 rating record of a spur spec, without report rows or advice: for a
     caller that needs a factor of it (e.g. a drive's K_Hβ with the misalignment its shafts
     give).  The spec must rate strength (torque and materials)."""
