@@ -54,18 +54,50 @@ def element_mass(m: float, L: float) -> np.ndarray:
                                  [-13 * L, -3 * L * L, -22 * L, 4 * L * L]])
 
 
+def _element_stiffnesses(EI: np.ndarray, L: np.ndarray) -> np.ndarray:
+    """:func:`element_stiffness` of every element at once, shape (elements, 4, 4)."""
+    c = EI / L ** 3
+    L6, L4, L2 = 6 * L, 4 * L * L, 2 * L * L     # the products of element_stiffness
+    one = np.ones_like(L)
+    k = np.array([[12.0 * one, L6, -12.0 * one, L6],
+                  [L6, L4, -L6, L2],
+                  [-12.0 * one, -L6, 12.0 * one, -L6],
+                  [L6, L2, -L6, L4]])
+    return np.moveaxis(c * k, -1, 0)
+
+
+def _element_masses(m: np.ndarray, L: np.ndarray) -> np.ndarray:
+    """:func:`element_mass` of every element at once, shape (elements, 4, 4)."""
+    L4, L3 = 4 * L * L, -3 * L * L               # the products of element_mass
+    one = np.ones_like(L)
+    k = np.array([[156.0 * one, 22 * L, 54.0 * one, -13 * L],
+                  [22 * L, L4, 13 * L, L3],
+                  [54.0 * one, 13 * L, 156.0 * one, -22 * L],
+                  [-13 * L, L3, -22 * L, L4]])
+    return np.moveaxis(m / 420.0 * k, -1, 0)
+
+
+def _scatter(ke: np.ndarray, n: int) -> np.ndarray:
+    """Global matrix (2n × 2n) of the chain of element matrices ``ke`` (elements, 4, 4):
+    element e occupies the dofs 2e … 2e+3.  For one (a, b) the target entries of the
+    elements are distinct, and an entry takes at most two contributions, so the sums are
+    those of adding the elements one by one."""
+    K = np.zeros((2 * n, 2 * n))
+    base = 2 * np.arange(n - 1)
+    for a in range(4):
+        for b in range(4):
+            K[base + a, base + b] += ke[:, a, b]
+    return K
+
+
 def assemble(x: np.ndarray, EI: np.ndarray, mass: np.ndarray | None = None):
     """Global stiffness (and mass) matrices of the chain of elements between the nodes ``x``;
     ``EI[e]`` and ``mass[e]`` belong to element e = (x[e], x[e+1])."""
     n = len(x)
-    K = np.zeros((2 * n, 2 * n))
-    M = np.zeros((2 * n, 2 * n)) if mass is not None else None
-    for e in range(n - 1):
-        L = x[e + 1] - x[e]
-        s = slice(2 * e, 2 * e + 4)
-        K[s, s] += element_stiffness(EI[e], L)
-        if M is not None:
-            M[s, s] += element_mass(mass[e], L)
+    L = np.diff(np.asarray(x, dtype=float))
+    K = _scatter(_element_stiffnesses(np.asarray(EI, dtype=float), L), n)
+    M = _scatter(_element_masses(np.asarray(mass, dtype=float), L), n) \
+        if mass is not None else None
     return K, M
 
 
@@ -81,59 +113,94 @@ def _supported(K: np.ndarray, supports: list[tuple[int, float | None]]) -> np.nd
     return np.array([i for i in range(K.shape[0]) if i not in fixed])
 
 
-def solve_plane(x: np.ndarray, EI: np.ndarray, forces: np.ndarray, couples: np.ndarray,
-                supports: list[tuple[int, float | None]]) -> PlaneSolution:
-    """Static solution in one plane.
+def solve(x: np.ndarray, EI: np.ndarray, mass: np.ndarray, point_masses: np.ndarray,
+          planes: list[tuple[np.ndarray, np.ndarray]],
+          supports: list[tuple[int, float | None]]) -> tuple[list[PlaneSolution], float]:
+    """Static solutions of the planes and the lowest natural circular frequency of bending
+    [rad/s], on one factorisation of the stiffness matrix.
 
     Parameters
     ----------
     x : node positions [mm], increasing.
-    EI : bending stiffness of each element [N·mm²].
-    forces, couples : nodal transverse forces [N] and couples [N·mm].
+    EI : bending stiffness of each element [N·mm²]; ``mass`` its mass [kg].
+    point_masses : masses at the nodes [kg] (gears), on the deflection dofs.
+    planes : per plane, the nodal transverse forces [N] and couples [N·mm].
     supports : (node index, radial stiffness [N/mm] or None for a rigid support).
+
+    Statics: K·u = F on the free dofs.  The force of each support on the shaft: a rigid one
+    from the residual K·u − F, a spring −k·w.  Internal forces from the element end forces
+    f = k_e·u_e (module docstring).
+
+    Frequency: the generalised eigenvalue problem K·φ = λ·M·φ with the consistent shaft mass
+    and the point masses (their rotary inertia and the gyroscopic effect are neglected).
+    With K in N/mm and M in kg, λ is in 10⁻³ s⁻² (N/(mm·kg) = 1000 s⁻²): ω = √(1000·λ).  It
+    is solved as the largest μ = 1/λ of M·φ = μ·K·φ (well conditioned when the point masses
+    outweigh the shaft by orders of magnitude), by power iteration y = K⁻¹·M·x with the
+    Rayleigh quotient μ = yᵀMy / yᵀMx ([GolubVanLoan] §7.3, §8.2), which converges to the
+    largest μ as (μ₂/μ₁)²ᵏ; should it not settle, by the dense symmetric eigenvalue problem
+    of L⁻¹·M·L⁻ᵀ (K = L·Lᵀ).  K not positive definite (the shaft not held) raises
+    ``numpy.linalg.LinAlgError``.
     """
     n = len(x)
-    K, _ = assemble(x, EI)
-    F = np.zeros(2 * n)
-    F[0::2] = forces
-    F[1::2] = couples
-    Ks = K.copy()
-    free = _supported(Ks, supports)
-    u = np.zeros(2 * n)
-    u[free] = np.linalg.solve(Ks[np.ix_(free, free)], F[free])
-    # force of each support on the shaft: rigid from the residual, springs from -k·w
-    residual = K @ u - F
-    reactions = np.array([residual[2 * node] if k is None else -k * u[2 * node]
-                          for node, k in supports])
-    M_left = np.zeros(n)
-    M_right = np.zeros(n)
-    V_right = np.zeros(n)
-    for e in range(n - 1):
-        f = element_stiffness(EI[e], x[e + 1] - x[e]) @ u[2 * e:2 * e + 4]
-        M_right[e] = -f[1]
-        M_left[e + 1] = f[3]
-        V_right[e] = f[0]
-    return PlaneSolution(u[0::2], u[1::2], M_left, M_right, V_right, reactions)
-
-
-def first_bending_frequency(x: np.ndarray, EI: np.ndarray, mass: np.ndarray,
-                            point_masses: np.ndarray,
-                            supports: list[tuple[int, float | None]]) -> float:
-    """Lowest natural circular frequency of bending [rad/s]: the generalised eigenvalue
-    problem K·φ = λ·M·φ with the consistent shaft mass and the point masses (gears) on the
-    deflection dofs (their rotary inertia and the gyroscopic effect are neglected).
-
-    With K in N/mm and M in kg, λ is in 10⁻³ s⁻² (N/(mm·kg) = 1000 s⁻²): ω = √(1000·λ).
-    It is solved as the largest μ = 1/λ of M·φ = μ·K·φ, which stays well conditioned when
-    the point masses outweigh the shaft by orders of magnitude.
-    """
     K, M = assemble(x, EI, mass)
     M[0::2, 0::2] += np.diag(point_masses)
-    free = _supported(K, supports)
-    # largest μ of M·φ = μ·K·φ (K positive definite, M may be nearly singular) = 1/λ_min:
-    # with K = L·Lᵀ it is the largest eigenvalue of the symmetric L⁻¹·M·L⁻ᵀ (numpy only)
-    Kf, Mf = K[np.ix_(free, free)], M[np.ix_(free, free)]
-    L = np.linalg.cholesky(Kf)
-    C = np.linalg.solve(L, np.linalg.solve(L, Mf).T)
-    mu = float(np.linalg.eigvalsh(0.5 * (C + C.T))[-1])
-    return float(np.sqrt(1000.0 / mu)) if mu > 0 else float("inf")
+    Ks = K.copy()
+    free = _supported(Ks, supports)
+    Kf, Mf = Ks[np.ix_(free, free)], M[np.ix_(free, free)]
+    chol = np.linalg.cholesky(Kf)            # raises LinAlgError unless K is positive definite
+    F = np.zeros((2 * n, len(planes)))
+    for j, (forces, couples) in enumerate(planes):
+        F[0::2, j] = forces
+        F[1::2, j] = couples
+    nf = len(free)
+    X = np.linalg.solve(Kf, np.hstack([F[free], np.eye(nf)]))
+    U = np.zeros((2 * n, len(planes)))
+    U[free] = X[:, :len(planes)]
+    mu = _largest_mu(X[:, len(planes):], Mf, chol)
+    omega = float(np.sqrt(1000.0 / mu)) if mu > 0 else float("inf")
+
+    L = np.diff(np.asarray(x, dtype=float))
+    ke = _element_stiffnesses(np.asarray(EI, dtype=float), L)
+    e = np.arange(n - 1)
+    dofs = 2 * e[:, None] + np.arange(4)[None, :]
+    residual = K @ U - F
+    out = []
+    for j in range(len(planes)):
+        u = U[:, j]
+        reactions = np.array([residual[2 * node, j] if k is None else -k * u[2 * node]
+                              for node, k in supports])
+        f = np.einsum("eab,eb->ea", ke, u[dofs])
+        M_left, M_right, V_right = np.zeros(n), np.zeros(n), np.zeros(n)
+        M_right[:-1] = -f[:, 1]
+        M_left[1:] = f[:, 3]
+        V_right[:-1] = f[:, 0]
+        out.append(PlaneSolution(u[0::2].copy(), u[1::2].copy(), M_left, M_right, V_right,
+                                 reactions))
+    return out, omega
+
+
+POWER_ITERATIONS = 500       # beyond: the dense eigenvalue problem
+POWER_TOL = 1e-14            # relative change of the Rayleigh quotient that ends the iteration
+
+
+def _largest_mu(K_inv: np.ndarray, M: np.ndarray, chol: np.ndarray) -> float:
+    """Largest μ of M·φ = μ·K·φ (:func:`solve`): power iteration on K⁻¹·M, else dense."""
+    x = K_inv @ M.sum(axis=1)                # deflection under the weights: first-mode-like
+    mu_old = 0.0
+    for _ in range(POWER_ITERATIONS):
+        nx = float(np.linalg.norm(x))
+        if not nx > 0:
+            break
+        x = x / nx
+        Mx = M @ x
+        y = K_inv @ Mx
+        My = M @ y
+        den = float(y @ Mx)
+        if not den > 0:
+            break
+        mu = float(y @ My) / den
+        if abs(mu - mu_old) <= POWER_TOL * abs(mu):
+            return mu
+        mu_old, x = mu, y
+    C = np.linalg.solve(chol, np.linalg.solve(chol, M).T)
+    return float(np.linalg.eigvalsh(0.5 * (C + C.T))[-1])

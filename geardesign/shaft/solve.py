@@ -279,9 +279,7 @@ def analyse(steps: list[Step], loads: list[Load], supports: list[Support],
         mpt[i] += ld.mass
     sup = [(_index(x, s.position), s.stiffness) for s in supports]
     try:
-        py = beam.solve_plane(x, EI, Fy, Cy, sup)
-        pz = beam.solve_plane(x, EI, Fz, Cz, sup)
-        omega = beam.first_bending_frequency(x, EI, el_mass, mpt, sup)
+        (py, pz), omega = beam.solve(x, EI, el_mass, mpt, [(Fy, Cy), (Fz, Cz)], sup)
     except np.linalg.LinAlgError:
         raise _singular(steps, supports, EI, el_step) from None
 
