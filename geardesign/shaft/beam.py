@@ -39,23 +39,17 @@ class PlaneSolution:
 
 def element_stiffness(EI: float, L: float) -> np.ndarray:
     """Bending stiffness matrix of one element [N/mm, N, N·mm] (module docstring)."""
-    c = EI / L ** 3
-    return c * np.array([[12.0, 6 * L, -12.0, 6 * L],
-                         [6 * L, 4 * L * L, -6 * L, 2 * L * L],
-                         [-12.0, -6 * L, 12.0, -6 * L],
-                         [6 * L, 2 * L * L, -6 * L, 4 * L * L]])
+    return _element_stiffnesses(np.array([EI], dtype=float), np.array([L], dtype=float))[0]
 
 
 def element_mass(m: float, L: float) -> np.ndarray:
     """Consistent mass matrix of one element of mass ``m`` [kg] and length ``L`` [mm]."""
-    return m / 420.0 * np.array([[156.0, 22 * L, 54.0, -13 * L],
-                                 [22 * L, 4 * L * L, 13 * L, -3 * L * L],
-                                 [54.0, 13 * L, 156.0, -22 * L],
-                                 [-13 * L, -3 * L * L, -22 * L, 4 * L * L]])
+    return _element_masses(np.array([m], dtype=float), np.array([L], dtype=float))[0]
 
 
 def _element_stiffnesses(EI: np.ndarray, L: np.ndarray) -> np.ndarray:
-    """:func:`element_stiffness` of every element at once, shape (elements, 4, 4)."""
+    """The stiffness matrices k_e (module docstring) of the elements of bending stiffness
+    ``EI`` [N·mm²] and length ``L`` [mm], shape (elements, 4, 4)."""
     c = EI / L ** 3
     L6, L4, L2 = 6 * L, 4 * L * L, 2 * L * L     # the products of element_stiffness
     one = np.ones_like(L)
@@ -67,7 +61,8 @@ def _element_stiffnesses(EI: np.ndarray, L: np.ndarray) -> np.ndarray:
 
 
 def _element_masses(m: np.ndarray, L: np.ndarray) -> np.ndarray:
-    """:func:`element_mass` of every element at once, shape (elements, 4, 4)."""
+    """The consistent mass matrices m_e (module docstring) of the elements of mass ``m``
+    [kg] and length ``L`` [mm], shape (elements, 4, 4)."""
     L4, L3 = 4 * L * L, -3 * L * L               # the products of element_mass
     one = np.ones_like(L)
     k = np.array([[156.0 * one, 22 * L, 54.0 * one, -13 * L],
@@ -135,10 +130,10 @@ def solve(x: np.ndarray, EI: np.ndarray, mass: np.ndarray, point_masses: np.ndar
     and the point masses (their rotary inertia and the gyroscopic effect are neglected).
     With K in N/mm and M in kg, λ is in 10⁻³ s⁻² (N/(mm·kg) = 1000 s⁻²): ω = √(1000·λ).  It
     is solved as the largest μ = 1/λ of M·φ = μ·K·φ (well conditioned when the point masses
-    outweigh the shaft by orders of magnitude), by power iteration y = K⁻¹·M·x with the
-    Rayleigh quotient μ = yᵀMy / yᵀMx ([GolubVanLoan] §7.3, §8.2), which converges to the
-    largest μ as (μ₂/μ₁)²ᵏ; should it not settle, by the dense symmetric eigenvalue problem
-    of L⁻¹·M·L⁻ᵀ (K = L·Lᵀ).  K not positive definite (the shaft not held) raises
+    outweigh the shaft by orders of magnitude): the largest eigenvalue of the symmetric
+    C = L⁻¹·M·L⁻ᵀ (K = L·Lᵀ) by power iteration with the Rayleigh quotient μ = xᵀCx
+    ([GolubVanLoan] §7.3, §8.2), which converges as (μ₂/μ₁)²ᵏ; should it not settle, by the
+    dense symmetric eigenvalue problem.  K not positive definite (the shaft not held) raises
     ``numpy.linalg.LinAlgError``.
     """
     n = len(x)
@@ -152,11 +147,11 @@ def solve(x: np.ndarray, EI: np.ndarray, mass: np.ndarray, point_masses: np.ndar
     for j, (forces, couples) in enumerate(planes):
         F[0::2, j] = forces
         F[1::2, j] = couples
-    nf = len(free)
-    X = np.linalg.solve(Kf, np.hstack([F[free], np.eye(nf)]))
     U = np.zeros((2 * n, len(planes)))
-    U[free] = X[:, :len(planes)]
-    mu = _largest_mu(X[:, len(planes):], Mf, chol)
+    U[free] = np.linalg.solve(Kf, F[free])
+    L_inv = np.linalg.solve(chol, np.eye(len(free)))
+    C = L_inv @ Mf @ L_inv.T
+    mu = _largest_mu(0.5 * (C + C.T))
     omega = float(np.sqrt(1000.0 / mu)) if mu > 0 else float("inf")
 
     L = np.diff(np.asarray(x, dtype=float))
@@ -183,24 +178,19 @@ POWER_ITERATIONS = 500       # beyond: the dense eigenvalue problem
 POWER_TOL = 1e-14            # relative change of the Rayleigh quotient that ends the iteration
 
 
-def _largest_mu(K_inv: np.ndarray, M: np.ndarray, chol: np.ndarray) -> float:
-    """Largest μ of M·φ = μ·K·φ (:func:`solve`): power iteration on K⁻¹·M, else dense."""
-    x = K_inv @ M.sum(axis=1)                # deflection under the weights: first-mode-like
+def _largest_mu(C: np.ndarray) -> float:
+    """Largest eigenvalue of the symmetric C = L⁻¹·M·L⁻ᵀ (the largest μ of M·φ = μ·K·φ,
+    :func:`solve`): power iteration with the Rayleigh quotient, else the dense problem."""
+    x = C.sum(axis=1)
     mu_old = 0.0
     for _ in range(POWER_ITERATIONS):
         nx = float(np.linalg.norm(x))
         if not nx > 0:
             break
         x = x / nx
-        Mx = M @ x
-        y = K_inv @ Mx
-        My = M @ y
-        den = float(y @ Mx)
-        if not den > 0:
-            break
-        mu = float(y @ My) / den
+        y = C @ x
+        mu = float(x @ y)
         if abs(mu - mu_old) <= POWER_TOL * abs(mu):
             return mu
         mu_old, x = mu, y
-    C = np.linalg.solve(chol, np.linalg.solve(chol, M).T)
-    return float(np.linalg.eigvalsh(0.5 * (C + C.T))[-1])
+    return float(np.linalg.eigvalsh(C)[-1])
