@@ -18,6 +18,10 @@ and the JSON document of its result.
 ``python -m geardesign run SPEC -f json`` of this checkout, the drive golden and
 ``specs/spur_plain.toml``, each a new process; its CPU time (user + system, from
 ``resource.getrusage(RUSAGE_CHILDREN)``), medians over the runs.
+
+Figures (2 shared cores under load, 11 rounds, 9 cold runs): drive golden 121.4 → 71.6 ms
+(1.62×), two-stage GOST + ISO drive 579 → 126 ms (4.84×); cold drive golden / spur_plain
+2.21 (799 / 361 ms; 3.06 at 5a58329).
 """
 
 from __future__ import annotations
