@@ -61,8 +61,13 @@ def test_banded_solution_equals_the_dense_one(seed, n):
     x, EI, mass, pm, sup = _shaft(seed, n)
     rng = np.random.default_rng(seed + 1)
     F, C = rng.uniform(-1e4, 1e4, n), rng.uniform(-1e5, 1e5, n)
-    (p,), omega = beam.solve(x, EI, mass, pm, [(F.tolist(), C.tolist())], sup)
     K0, Kf, Mf, free = _dense_model(x, EI, mass, pm, sup)
+    try:
+        (p,), omega = beam.solve(x, EI, mass, pm, [(F.tolist(), C.tolist())], sup)
+    except beam.NotPositiveDefinite:
+        # refused as singular to working precision: only a model that is nearly so
+        assert np.linalg.cond(Kf) > 1e13
+        return
     rhs = np.zeros(2 * n)
     rhs[0::2], rhs[1::2] = F, C
     u = np.zeros(2 * n)

@@ -110,7 +110,7 @@ def dense(B: list[list[float]]) -> list[list[float]]:
 def cholesky(B: list[list[float]]) -> list[list[float]]:
     """Banded Cholesky factor of the symmetric positive definite matrix with upper band
     ``B``: row i of the result holds L[i][i−3 … i] ([GolubVanLoan] algorithm 4.3.5).
-    Raises :class:`NotPositiveDefinite`."""
+    Raises :class:`NotPositiveDefinite` for a pivot that is not positive."""
     N = len(B)
     Lo = [[0.0] * (BAND + 1) for _ in range(N)]      # Lo[i][k] = L[i][i - BAND + k]
     for i in range(N):

@@ -23,6 +23,7 @@ from geardesign.shaft.din743 import rating as DR
 from geardesign.spur.geometry import STEEL_DENSITY
 
 ARCMIN = math.pi / (180.0 * 60.0)
+EI_RATIO_SINGULAR = 1e-12      # smallest / largest EI of the steps below which K is singular
 
 
 @dataclass(frozen=True)
@@ -282,6 +283,10 @@ def analyse(steps: list[Step], loads: list[Load], supports: list[Support],
         Fxn[i] += ld.Fx
         mpt[i] += ld.mass
     sup = [(_index(x, s.position), s.stiffness) for s in supports]
+    if min(EI) <= EI_RATIO_SINGULAR * max(EI):
+        # a step 10⁻¹² as stiff as another: the stiffness matrix is singular to working
+        # precision (its pivots are rounding), whatever the factorisation's luck
+        raise _singular(steps, supports, EI, el_step)
     try:
         (py, pz), omega = beam.solve(x, EI, el_mass, mpt, [(Fy, Cy), (Fz, Cz)], sup)
     except beam.NotPositiveDefinite:
