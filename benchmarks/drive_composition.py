@@ -13,6 +13,15 @@ paired ratios old/new.  The cases: the drive golden with shafts, keys and heat b
 21354-87 and ISO 6336 (``specs/drive_two_stage_reducer.toml`` with both methods), and the
 spur golden ``specs/spur_plain.toml`` for scale.  A run is the calculator's ``compute``
 and the JSON document of its result.
+
+``--cold N`` adds the cold ratio of the issue's acceptance: N alternating runs of
+``python -m geardesign run SPEC -f json`` of this checkout, the drive golden and
+``specs/spur_plain.toml``, each a new process; its CPU time (user + system, from
+``resource.getrusage(RUSAGE_CHILDREN)``), medians over the runs.
+
+Figures (2 shared cores under load, 11 rounds, 9 cold runs): drive golden 121.4 → 71.6 ms
+(1.62×), two-stage GOST + ISO drive 579 → 126 ms (4.84×); cold drive golden / spur_plain
+2.21 (799 / 361 ms; 3.06 at 5a58329).
 """
 
 from __future__ import annotations
@@ -113,11 +122,38 @@ CASES = [("drive golden: shafts, keys, heat balance", "drive_reducer_shafts_keys
          ("spur golden (scale)", "spur_plain.toml", None)]
 
 
+def cold_cpu(name: str) -> float:
+    """CPU time [s] of one ``python -m geardesign run specs/NAME -f json`` process."""
+    import resource
+
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    subprocess.run([sys.executable, "-m", "geardesign", "run", str(SPECS / name), "-f",
+                    "json"], cwd=ROOT, check=False, stdout=subprocess.DEVNULL)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+
+
+def cold(runs: int) -> None:
+    """Cold CPU of the drive golden against the spur golden (alternating, medians)."""
+    drive, spur = [], []
+    for i in range(runs):
+        pair = [("d", CASES[0][1]), ("s", "spur_plain.toml")]
+        for tag, name in (pair if i % 2 == 0 else pair[::-1]):
+            (drive if tag == "d" else spur).append(cold_cpu(name))
+    d, s = statistics.median(drive), statistics.median(spur)
+    print(f"cold CPU: drive golden {1e3 * d:.0f} ms, spur_plain {1e3 * s:.0f} ms, "
+          f"ratio {d / s:.2f}")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--base", default="5a58329")
     ap.add_argument("--rounds", type=int, default=15)
+    ap.add_argument("--cold", type=int, default=0, metavar="N",
+                    help="also N alternating cold runs of the drive golden and spur_plain")
     args = ap.parse_args()
+    if args.cold:
+        cold(args.cold)
     with tempfile.TemporaryDirectory() as tmp:
         old_root = Path(tmp) / "base"
         subprocess.run(["git", "worktree", "add", "--detach", str(old_root), args.base],

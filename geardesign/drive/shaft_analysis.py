@@ -202,7 +202,10 @@ def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed:
         m = SC.model(spec)
     except InputError as exc:
         raise _named(exc, f"{key}.") from None
-    r = analyse(m["steps"], m["loads"], m["supports"], m["material"], m["options"])
+    try:
+        r = analyse(m["steps"], m["loads"], m["supports"], m["material"], m["options"])
+    except InputError as exc:       # the beam cannot be solved: its step or support named
+        raise _named(exc, f"{key}.") from None
     result = SC.report(spec, m, r)
     run = ShaftRun(idx, key, sh["name"] or f"shaft {idx}", start, speed, rotation, gears, r,
                    result, loads=loads, E=m["material"].E)

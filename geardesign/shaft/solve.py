@@ -11,9 +11,9 @@ planes (e.g. F_a·d/2 of a helical gear), positive when they turn the slope dw/d
 from __future__ import annotations
 
 import math
+from bisect import bisect_left
 from dataclasses import dataclass
-
-import numpy as np
+from itertools import accumulate
 
 from geardesign.core.errors import InputError, Problem
 from geardesign.shaft import beam
@@ -23,6 +23,7 @@ from geardesign.shaft.din743 import rating as DR
 from geardesign.spur.geometry import STEEL_DENSITY
 
 ARCMIN = math.pi / (180.0 * 60.0)
+EI_RATIO_SINGULAR = 1e-12      # smallest / largest EI of the steps below which K is singular
 
 
 @dataclass(frozen=True)
@@ -183,15 +184,15 @@ class ShaftResult:
 def _clean(*planes: beam.PlaneSolution) -> None:
     """Set round-off (below 1e-9 of the largest moment) to zero, so that a section without
     bending reports no bending rather than a stress of 1e-11 MPa."""
-    big = max([float(np.max(np.abs(a))) for p in planes for a in (p.M_left, p.M_right)]
-              + [0.0])
+    big = max([abs(v) for p in planes for a in (p.M_left, p.M_right) for v in a] + [0.0])
+    tiny = 1e-9 * max(big, 1e-300)
     for p in planes:
         for a in (p.M_left, p.M_right, p.V_right):
-            a[np.abs(a) < 1e-9 * max(big, 1e-300)] = 0.0
+            a[:] = [0.0 if abs(v) < tiny else v for v in a]
 
 
 def node_positions(steps: list[Step], loads: list[Load], supports: list[Support],
-                   refine: int = 80) -> tuple[np.ndarray, list[float]]:
+                   refine: int = 80) -> tuple[list[float], list[float]]:
     """Nodes: every step boundary, load and support, and enough points between them that
     no element is longer than L/refine (for the mass matrix and smooth diagrams)."""
     bounds = [0.0]
@@ -213,11 +214,17 @@ def node_positions(steps: list[Step], loads: list[Load], supports: list[Support]
         k = max(1, math.ceil((b - a) / h - 1e-9))
         xs.extend(a + (b - a) * i / k for i in range(k))
     xs.append(key[-1])
-    return np.array(xs), bounds
+    return xs, bounds
 
 
-def _index(x: np.ndarray, v: float) -> int:
-    return int(np.argmin(np.abs(x - v)))
+def _index(x: list[float], v: float) -> int:
+    """The node nearest to ``v`` (the first of equals; ``x`` increasing)."""
+    i = bisect_left(x, v)
+    if i == 0:
+        return 0
+    if i == len(x) or abs(x[i - 1] - v) <= abs(x[i] - v):
+        return i - 1
+    return i
 
 
 def _step_at(bounds: list[float], xm: float) -> int:
@@ -227,14 +234,14 @@ def _step_at(bounds: list[float], xm: float) -> int:
     return len(bounds) - 2
 
 
-def _singular(steps: list[Step], supports: list[Support], EI: np.ndarray,
+def _singular(steps: list[Step], supports: list[Support], EI: list[float],
               el_step: list[int]) -> InputError:
     """The beam model cannot be solved (its stiffness matrix is singular): the error names
     what the user gave that causes it.  Springs given as support stiffness that are soft
     against the shaft; else the slenderest step, whose bending stiffness is negligible
     against the others' (a diameter in metres among millimetres)."""
     springs = [(k, s.stiffness) for k, s in enumerate(supports) if s.stiffness is not None]
-    weakest = int(np.argmin(EI))
+    weakest = min(range(len(EI)), key=EI.__getitem__)
     k = el_step[weakest]
     if springs:
         k_s, value = min(springs, key=lambda t: t[1])
@@ -245,7 +252,7 @@ def _singular(steps: list[Step], supports: list[Support], EI: np.ndarray,
     return InputError(Problem(
         f"step[{k}].diameter", f"the shaft cannot be solved as a beam (its stiffness matrix is "
         f"singular): this step's bending stiffness EI = {EI[weakest]:.3g} N·mm² is "
-        f"{EI[weakest] / float(EI.max()):.1e} of the stiffest step's; diameters are in mm "
+        f"{EI[weakest] / max(EI):.1e} of the stiffest step's; diameters are in mm "
         f"(in metres {steps[k].diameter:g} would be {steps[k].diameter * 1e3:g} mm)",
         steps[k].diameter))
 
@@ -255,19 +262,17 @@ def analyse(steps: list[Step], loads: list[Load], supports: list[Support],
     """Beam model, diagrams, critical speed, static and fatigue safety of every section."""
     x, bounds = node_positions(steps, loads, supports)
     n = len(x)
-    mids = 0.5 * (x[:-1] + x[1:])
-    el_step = [_step_at(bounds, m) for m in mids]
-    d = np.array([steps[i].diameter for i in el_step])
-    d0 = np.array([steps[i].bore for i in el_step])
-    I = math.pi / 64.0 * (d ** 4 - d0 ** 4)
-    A = math.pi / 4.0 * (d ** 2 - d0 ** 2)
-    EI = material.E * I
+    el_step = [_step_at(bounds, 0.5 * (x[e] + x[e + 1])) for e in range(n - 1)]
+    d = [steps[i].diameter for i in el_step]
+    d0 = [steps[i].bore for i in el_step]
+    EI = [material.E * (math.pi / 64.0 * (a ** 4 - b ** 4)) for a, b in zip(d, d0)]
     rho = material.density * 1e-9               # kg/mm³
-    el_mass = rho * A * np.diff(x)
+    el_mass = [rho * (math.pi / 4.0 * (a ** 2 - b ** 2)) * (x[e + 1] - x[e])
+               for e, (a, b) in enumerate(zip(d, d0))]
 
-    Fy, Fz = np.zeros(n), np.zeros(n)
-    Cy, Cz = np.zeros(n), np.zeros(n)
-    Tn, Fxn, mpt = np.zeros(n), np.zeros(n), np.zeros(n)
+    Fy, Fz = [0.0] * n, [0.0] * n
+    Cy, Cz = [0.0] * n, [0.0] * n
+    Tn, Fxn, mpt = [0.0] * n, [0.0] * n, [0.0] * n
     for ld in loads:
         i = _index(x, ld.position)
         Fy[i] += ld.Fy
@@ -278,27 +283,29 @@ def analyse(steps: list[Step], loads: list[Load], supports: list[Support],
         Fxn[i] += ld.Fx
         mpt[i] += ld.mass
     sup = [(_index(x, s.position), s.stiffness) for s in supports]
+    if min(EI) <= EI_RATIO_SINGULAR * max(EI):
+        # a step 10⁻¹² as stiff as another: the stiffness matrix is singular to working
+        # precision (its pivots are rounding), whatever the factorisation's luck
+        raise _singular(steps, supports, EI, el_step)
     try:
-        py = beam.solve_plane(x, EI, Fy, Cy, sup)
-        pz = beam.solve_plane(x, EI, Fz, Cz, sup)
-        omega = beam.first_bending_frequency(x, EI, el_mass, mpt, sup)
-    except np.linalg.LinAlgError:
+        (py, pz), omega = beam.solve(x, EI, el_mass, mpt, [(Fy, Cy), (Fz, Cz)], sup)
+    except beam.NotPositiveDefinite:
         raise _singular(steps, supports, EI, el_step) from None
 
     # axial reaction at the support that takes it; internal torque and axial force
     axial_idx = next((k for k, s in enumerate(supports) if s.axial), 0)
-    Rx = -float(Fxn.sum())
-    Fx_all = Fxn.copy()
+    Rx = -math.fsum(Fxn)
+    Fx_all = list(Fxn)
     Fx_all[sup[axial_idx][0]] += Rx
-    N_int = -np.cumsum(Fx_all)       # just right of each node
-    T_int = np.cumsum(Tn)
+    N_int = [-v for v in accumulate(Fx_all)]       # just right of each node
+    T_int = list(accumulate(Tn))
 
     _clean(py, pz)
-    M_y, M_z = py.M_right / 1e3, pz.M_right / 1e3
+    M_y, M_z = [v / 1e3 for v in py.M_right], [v / 1e3 for v in pz.M_right]
     M_y[-1], M_z[-1] = py.M_left[-1] / 1e3, pz.M_left[-1] / 1e3
-    M_res = np.hypot(M_y, M_z)
-    slope = np.hypot(py.theta, pz.theta)
-    w = np.hypot(py.w, pz.w)
+    M_res = [math.hypot(a, b) for a, b in zip(M_y, M_z)]
+    slope = [math.hypot(a, b) for a, b in zip(py.theta, pz.theta)]
+    w = [math.hypot(a, b) for a, b in zip(py.w, pz.w)]
 
     n_cr = omega * 30.0 / math.pi
 
@@ -340,9 +347,9 @@ def analyse(steps: list[Step], loads: list[Load], supports: list[Support],
     critical = min(sections, key=lambda s: s.S) if sections else None
     critical_static = min(sections, key=lambda s: s.S_static) if sections else None
     return ShaftResult(
-        bounds[-1], float(el_mass.sum()), x.tolist(), M_y.tolist(), M_z.tolist(),
-        M_res.tolist(), py.V_right.tolist(), pz.V_right.tolist(), T_int.tolist(),
-        N_int.tolist(), py.w.tolist(), pz.w.tolist(), w.tolist(), slope.tolist(),
+        bounds[-1], math.fsum(el_mass), list(x), M_y, M_z,
+        M_res, list(py.V_right), list(pz.V_right), T_int,
+        N_int, list(py.w), list(pz.w), w, slope,
         sup_res, load_res, sections, omega, n_cr, critical, critical_static)
 
 
