@@ -184,7 +184,8 @@ def _pdf_ready(fmt_name: str, output: Optional[Path]) -> None:
     if why:
         _err(f"geardesign: --format pdf: {why}; install: {INSTALL_HINT}")
         raise typer.Exit(2)
-    if output is None and sys.stdout.isatty():
+    if output is None and (sys.stdout.isatty() or not hasattr(sys.stdout, "buffer")):
+        # a terminal, or a text-only stream (an embedding program's): no place for bytes
         _err("geardesign: --format pdf writes a file: give --output FILE.pdf")
         raise typer.Exit(2)
 

@@ -169,6 +169,17 @@ def test_pdf_refused_without_a_browser(tmp_path):
     assert r.stderr.count("\n") == 1 and "pip install 'geardesign[report]'" in r.stderr
 
 
+def test_pdf_to_a_text_only_stream_is_one_line(monkeypatch):
+    """An embedding program's standard output without a byte buffer (a StringIO) has no
+    place for a PDF: one line asking for --output, exit 2 (it was an internal error)."""
+    from tests.helpers_cli import cli
+
+    code, out, err = cli("run", SPECS / "spur_plain.toml", "--format", "pdf")
+    assert code == 2 and out == ""
+    assert err.strip().count("\n") == 0
+    assert "give --output FILE.pdf" in err or "install" in err   # (no browser: the hint)
+
+
 def test_cold_html_report_imports_no_matplotlib(tmp_path):
     r = subprocess.run([sys.executable, "-X", "importtime", "-m", "geardesign", "run",
                         str(SPECS / "spur_plain.toml"), "--format", "html", "-o",

@@ -35,6 +35,7 @@ import os
 import re
 import signal
 import stat
+import threading
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, Iterator
@@ -328,6 +329,26 @@ def _protect() -> bool:
     return True
 
 
+@contextmanager
+def signals_deferred():
+    """Hold SIGINT, SIGTERM and SIGHUP while the block runs, and deliver them after it.
+
+    For calls into compiled code that cannot pass an exception on (a Cython ``noexcept``
+    function prints a KeyboardInterrupt raised inside it as "Exception ignored" and goes
+    on, e.g. SciPy's Sobol' kernel reading its direction numbers): a Ctrl-C during such a
+    call would be lost and the run finish as if complete.  Outside the main thread, or
+    where signals cannot be masked, the block runs as it is."""
+    if not hasattr(signal, "pthread_sigmask") or \
+            threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, _HANDLED)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)
+
+
 def worker_signals() -> None:
     """In a worker process: ignore SIGINT (the parent stops the pool and reports the
     interruption once) and forget the parent's temporary files."""
@@ -383,6 +404,11 @@ class AtomicFile:
         if self.direct:
             return
         tmp = str(self.tmp)
+        if tmp not in _LIVE:
+            # the signal handler removed it (a Ctrl-C whose KeyboardInterrupt was swallowed,
+            # e.g. raised inside a finaliser): the run was interrupted, not complete
+            self._forget()
+            raise KeyboardInterrupt
         try:
             if self._st is not None:
                 mode = stat.S_IMODE(self._st.st_mode)

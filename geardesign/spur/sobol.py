@@ -163,6 +163,9 @@ def _loaded():
 
 def engine(d: int, seed, start: int = 0):
     """A scrambled Sobol' engine of dimension ``d`` positioned at point ``start``."""
-    kernel = _loaded()
-    eng = _Engine(kernel, d, seed) if kernel is not None else _Quiet(d, seed)
-    return eng.fast_forward(start)
+    from geardesign.core.io import signals_deferred
+
+    with signals_deferred():   # compiled code that would swallow a Ctrl-C
+        kernel = _loaded()
+        eng = _Engine(kernel, d, seed) if kernel is not None else _Quiet(d, seed)
+        return eng.fast_forward(start)
