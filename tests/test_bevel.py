@@ -74,7 +74,11 @@ def test_cone_and_virtual_gear_identities(args):
     assert math.isclose(g.u_v, W.z_v / P.z_v, rel_tol=1e-12)
     if abs(p.Sigma - math.pi / 2) < 1e-12:
         assert math.isclose(g.u_v, g.u ** 2, rel_tol=1e-12)
-    assert math.isclose(g.eps_vg ** 2, g.eps_va ** 2 + g.eps_vb ** 2, rel_tol=1e-12)
+    # [ISO10300-1] annex A: ε_vγ = ε_vα + ε_vβ, ε_vβ over the effective face width 0.85·b
+    assert math.isclose(g.eps_vg, g.eps_va + g.eps_vb, rel_tol=1e-12)
+    assert math.isclose(g.eps_vb, 0.85 * g.b * math.sin(p.beta_m) / (math.pi * g.m_nm),
+                        rel_tol=1e-12, abs_tol=1e-15)
+    assert math.isclose(g.eps_va * g.p_vet, g.g_va, rel_tol=1e-12)
     assert math.isclose(g.m_nm, g.m_tm * math.cos(p.beta_m), rel_tol=1e-12)
     # constant clearance: each tip cone parallel to the mating root cone
     if p.depth == "constant_clearance":

@@ -80,9 +80,12 @@ class Geometry:
     u_v: float            # virtual gear ratio z_v2/z_v1
     a_v: float            # virtual centre distance
     g_va: float           # length of action of the virtual gear
+    p_vet: float          # transverse base pitch of the virtual gear
+    b_eff: float          # effective face width b_v,eff = 0.85·b
     eps_va: float         # transverse contact ratio ε_vα
-    eps_vb: float         # face contact ratio ε_vβ
-    eps_vg: float         # total contact ratio ε_vγ
+    eps_vb: float         # face contact ratio ε_vβ (effective face width)
+    eps_vg: float         # virtual contact ratio ε_vγ = ε_vα + ε_vβ
+    rho_rel: float        # equivalent radius of curvature normal to the contact line
     pinion: Member
     wheel: Member
 
@@ -143,25 +146,49 @@ def virtual_ratio(u: float, delta1: float, delta2: float) -> float:
     return u * math.cos(delta1) / math.cos(delta2)
 
 
+EFFECTIVE_FACE = 0.85
+"""Effective face width over the face width, b_v,eff = 0.85·b: the contact pattern of a
+pair checked under a light test load.  [ISO10300-1] annex A; [ISOTR10300-30] sample 1
+(b_v,eff = 21.590 mm of b = 25.4 mm)."""
+
+
 def contact_ratios(d_va: tuple[float, float], d_vb: tuple[float, float], a_v: float,
-                   alpha_vt: float, m_nm: float, beta_m: float, b: float
-                   ) -> tuple[float, float, float, float]:
-    """Length of action g_vα [mm] and the contact ratios ε_vα, ε_vβ, ε_vγ of the virtual
-    cylindrical gear pair (mean section, no backlash).
+                   alpha_vt: float, m_nm: float, beta_m: float, b_eff: float
+                   ) -> tuple[float, float, float, float, float]:
+    """Length of action g_vα [mm], transverse base pitch p_vet [mm] and the contact ratios
+    ε_vα, ε_vβ, ε_vγ of the virtual cylindrical gear pair (mean section, no backlash).
 
     .. math::
         g_{vα} = \\tfrac12\\Big(\\sqrt{d_{va1}^2 - d_{vb1}^2} + \\sqrt{d_{va2}^2 - d_{vb2}^2}\\Big)
-                 - a_v \\sin α_{vt},\\quad
-        ε_{vα} = \\frac{g_{vα} \\cos β_m}{π m_{nm} \\cos α_{vt}},\\quad
-        ε_{vβ} = \\frac{b \\sin β_m}{π m_{nm}},\\quad ε_{vγ} = \\sqrt{ε_{vα}^2 + ε_{vβ}^2}
+                 - a_v \\sin α_{vt},\\quad p_{vet} = \\frac{π m_{nm} \\cos α_{vt}}{\\cos β_m},\\quad
+        ε_{vα} = \\frac{g_{vα}}{p_{vet}},\\quad
+        ε_{vβ} = \\frac{b_{v,eff} \\sin β_m}{π m_{nm}},\\quad ε_{vγ} = ε_{vα} + ε_{vβ}
 
-    [ISO10300-1] §6 (method B1).
+    with the effective face width b_v,eff (:data:`EFFECTIVE_FACE`).  [ISO10300-1] annex A
+    (method B1, formulae A.17, A.18, A.23-A.25); checked against [ISOTR10300-30] sample 1.
     """
     g = 0.5 * sum(math.sqrt(max(a * a - c * c, 0.0)) for a, c in zip(d_va, d_vb))
     g -= a_v * math.sin(alpha_vt)
-    eps_a = g * math.cos(beta_m) / (math.pi * m_nm * math.cos(alpha_vt))
-    eps_b = b * math.sin(beta_m) / (math.pi * m_nm)
-    return g, eps_a, eps_b, math.hypot(eps_a, eps_b)
+    p_vet = math.pi * m_nm * math.cos(alpha_vt) / math.cos(beta_m)
+    eps_a = g / p_vet
+    eps_b = b_eff * math.sin(beta_m) / (math.pi * m_nm)
+    return g, p_vet, eps_a, eps_b, eps_a + eps_b
+
+
+def relative_curvature(alpha_n: float, beta_m: float, d_v1: float, d_v2: float) -> float:
+    """Equivalent radius of curvature ρ_rel [mm] normal to the contact line at the mean point
+    (no hypoid offset).
+
+    .. math::
+        ρ_t = \\frac{\\sin α_n}{\\cos^2 β_m\\,(2/d_{v1} + 2/d_{v2})},\\quad
+        \\tan β_B = \\tan β_m \\sin α_n,\\quad ρ_{rel} = ρ_t \\cos^2 β_B
+
+    (R_m tan δ = d_v/2).  [ISO10300-1] annex A, formulae A.37-A.39 with α_lim = 0;
+    [ISOTR10300-30] sample 1 (ρ_t = 13.173, β_B = 13.468°, ρ_rel = 12.459 mm).
+    """
+    rho_t = math.sin(alpha_n) / (math.cos(beta_m) ** 2 * (2.0 / d_v1 + 2.0 / d_v2))
+    beta_B = math.atan(math.tan(beta_m) * math.sin(alpha_n))
+    return rho_t * math.cos(beta_B) ** 2
 
 
 def chordal(s: float, h_a: float, d_v: float) -> tuple[float, float]:
@@ -233,7 +260,9 @@ def pair_geometry(p: Pair) -> Geometry:
             undercut_shift_limit(z_v, alpha_vt, p.beta_m, rack), s_am, s_ae))
     P, W = parts
     a_v = 0.5 * (P.d_v + W.d_v)
-    g, ea, eb, eg = contact_ratios((P.d_va, W.d_va), (P.d_vb, W.d_vb), a_v, alpha_vt, m_nm,
-                                   p.beta_m, p.b)
+    b_eff = EFFECTIVE_FACE * p.b
+    g, p_vet, ea, eb, eg = contact_ratios((P.d_va, W.d_va), (P.d_vb, W.d_vb), a_v, alpha_vt,
+                                          m_nm, p.beta_m, b_eff)
     return Geometry(p.spiral, p.Sigma, u, p.beta_m, p.alpha_n, alpha_vt, beta_vb, m_te, m_tm,
-                    m_nm, R_e, R_m, p.b, virtual_ratio(u, d1, d2), a_v, g, ea, eb, eg, P, W)
+                    m_nm, R_e, R_m, p.b, virtual_ratio(u, d1, d2), a_v, g, p_vet, b_eff, ea,
+                    eb, eg, relative_curvature(p.alpha_n, p.beta_m, P.d_v, W.d_v), P, W)

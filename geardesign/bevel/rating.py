@@ -22,12 +22,19 @@ from geardesign.spur.strength import gost21354 as G
 from geardesign.spur.strength.iso6336 import part2, part3
 
 MOUNTING_FACTOR = {"both_straddle": 1.00, "one_straddle": 1.10, "cantilever": 1.25}
-"""Mounting factor K_Hβ-be by the mounting of pinion and wheel.  [ISO10300-1] table 6, not
-consulted: unverified (the report's METHOD_UNVERIFIED warning, docs/bevel.md)."""
+"""Mounting factor K_Hβ-be by the mounting of pinion and wheel, contact pattern checked
+under a light test load.  [ISO10300-1] table (K_Hβ-be); the value 1.10 (one member
+straddle-, the other cantilever-mounted) is checked by [ISOTR10300-30] sample 1
+(K_Hβ-C = 1.5·1.10 = 1.650); 1.00 and 1.25 are the neighbouring rows, not checked."""
 
-Z_K = 0.8
-"""Bevel gear factor Z_K (method B1).  [ISO10300-2] §7, not consulted: unverified (the
-report's METHOD_UNVERIFIED warning, docs/bevel.md)."""
+Z_K = 1.2
+"""Bevel gear factor Z_K of the permissible contact stress, method B1:
+σ_HP = σ_Hlim·Z_K (the other factors 1).  [ISO10300-2] method B1, formula (4);
+[ISOTR10300-30] sample 1 (σ_HP1 = 1 617.8 MPa = 1 500·Z_NT Z_L Z_v Z_R·1.2)."""
+
+E_LS = 3.0
+"""Exponent of the parabolic peak-load distribution along the contact lines (low profile
+crowning).  [ISO10300-2] method B1, formula (7); [ISOTR10300-30] sample 1."""
 
 Y_ST = 2.0
 """Stress correction factor of the reference test gear.  [ISO6336-3]."""
@@ -112,10 +119,10 @@ def forces(inp: Inputs, g: Geometry) -> Forces:
 
 @dataclass(frozen=True)
 class IsoMember:
-    Y_F: float
-    Y_S: float
+    Y_Fa: float           # tooth form factor, load at the tip
+    Y_Sa: float           # stress correction factor, load at the tip
+    sigma_F0: float
     sigma_F: float
-    sigma_FP: float       # Y_ST·σ_Flim / S_Fmin
     S_H: float
     S_F: float
 
@@ -127,16 +134,17 @@ class IsoRating:
     K_Hbeta_be: float
     K_Hbeta: float
     K_Fbeta: float
+    F_n: float            # normal force at the mean point [N]
+    l_bm: float           # length of the middle contact line [mm]
     Z_E: float
-    Z_H: float
     Z_MB: float
     Z_LS: float
-    Z_beta: float
     Z_K: float
-    Y_LS: float
-    b_eH: float
     sigma_H0: float
     sigma_H: float
+    Y_eps: float
+    Y_BS: float
+    Y_LS: float
     pinion: IsoMember
     wheel: IsoMember
 
@@ -150,7 +158,8 @@ def mid_zone_factor(g: Geometry) -> float:
                   \\big[\\sqrt{(d_{va2}/d_{vb2})^2 - 1} - F_2 π/z_{v2}\\big]}}
 
     F_1 = 2, F_2 = 2(ε_vα − 1) for ε_vβ = 0; F_1 = F_2 = ε_vα for ε_vβ ≥ 1; linear between.
-    [ISO10300-2] §6 (method B1); the spur counterpart is Z_B of [ISO6336-2].
+    [ISO10300-2] method B1, formula (6) and its table; [ISOTR10300-30] sample 1
+    (Z_M-B = 0.916).
     """
     ea, eb = g.eps_va, min(g.eps_vb, 1.0)
     F1 = 2.0 + (ea - 2.0) * eb
@@ -161,62 +170,131 @@ def mid_zone_factor(g: Geometry) -> float:
     return math.tan(g.alpha_vt) / math.sqrt(max(s1 * s2, 1e-6))
 
 
-def load_sharing(g: Geometry) -> float:
-    """Load sharing factor Z_LS: 1 for straight teeth (and ε_vγ ≤ 2), else
+def contact_line(g: Geometry, f: float) -> float:
+    """Length l_b [mm] of the contact line at the signed distance f [mm] from the middle of
+    the zone of action of the virtual gear (no hypoid offset), 0 outside the zone.
 
-    .. math:: Z_{LS} = \\Big(1 + 2\\big[1 - (2/ε_{vγ})^{1.5}\\big]\\sqrt{1 - 4/ε_{vγ}^2}\\Big)^{-1/2}
+    .. math::
+        l_{b0} = \\frac{g_{vα}}{\\sin β_{vb}}\\ (b_{v,eff} \\text{ for } β_{vb} = 0),\\quad
+        f_{max} = \\tfrac12 (g_{vα} + b_{v,eff} \\tan β_{vb}) \\cos β_{vb},
 
-    [ISO10300-2] §7 (method B1); Y_LS = Z_LS² in [ISO10300-3].
+    .. math::
+        C_{lb} = \\sqrt{(f/f_{max})^2 + k^2 [1 - (f/f_{max})^2]},\\quad
+        k = 1 - \\sqrt{b_{v,eff}/b_v},\\quad l_b = l_{b0} (1 - C_{lb})
 
-    >>> class _G: eps_vb = 1.5; eps_vg = 2.5
-    >>> round(load_sharing(_G), 4)
-    0.8634
+    [ISO10300-1] annex A, formulae A.26-A.36 (a = 0); [ISOTR10300-30] sample 1
+    (l_bm = 22.442 mm).
     """
-    if g.eps_vb <= 0.0 or g.eps_vg <= 2.0:
+    tb = math.tan(g.beta_vb)
+    f_max = 0.5 * (g.g_va + g.b_eff * tb) * math.cos(g.beta_vb)
+    r = f / f_max
+    if abs(r) >= 1.0:
+        return 0.0
+    l_b0 = g.g_va / math.sin(g.beta_vb) if tb > 0.0 else g.b_eff
+    k = 1.0 - math.sqrt(g.b_eff / g.b)
+    return l_b0 * (1.0 - math.sqrt(r * r + k * k * (1.0 - r * r)))
+
+
+def load_sharing(g: Geometry) -> tuple[float, float]:
+    """Load sharing factor Z_LS and the middle contact line l_bm [mm]: the peak loads
+    p* = 1 − |f/f_max|^e_LS of the tip, middle and root contact lines (f_t = −f_r =
+    p_vet cos β_vb, f_m = 0) over their areas A = π/4·p*·l_b:
+
+    .. math:: Z_{LS} = \\sqrt{A_m/(A_t + A_m + A_r)}
+
+    A line outside the zone of action carries nothing: a straight pair (ε_vα < 2) has
+    Z_LS = 1.  The line positions are those of ε_vβ ≥ 1, used for every pair.
+    [ISO10300-2] method B1, formulae (7)-(10); [ISO10300-1] annex A table A.2;
+    [ISOTR10300-30] sample 1 (Z_LS = 0.935).  Y_LS = Z_LS² in [ISO10300-3].
+    """
+    tb = math.tan(g.beta_vb)
+    f_max = 0.5 * (g.g_va + g.b_eff * tb) * math.cos(g.beta_vb)
+    f_t = g.p_vet * math.cos(g.beta_vb)
+    l_bm = contact_line(g, 0.0)
+    A_m = l_bm
+    A_tr = 2.0 * (1.0 - min(f_t / f_max, 1.0) ** E_LS) * contact_line(g, f_t)
+    return math.sqrt(A_m / (A_m + A_tr)), l_bm
+
+
+def contact_ratio_factor(eps_va: float, eps_vb: float) -> float:
+    """Contact ratio factor Y_ε of the root stress (load at the tip):
+    0.25 + 0.75/ε_vα for ε_vβ = 0, 0.625 for ε_vβ ≥ 1, linear between.
+    [ISO10300-3] method B1; [ISOTR10300-30] sample 1 (Y_ε = 0.625).
+
+    >>> contact_ratio_factor(1.5, 0.0), contact_ratio_factor(1.5, 2.0)
+    (0.75, 0.625)
+    """
+    y0 = 0.25 + 0.75 / eps_va
+    return y0 - min(eps_vb, 1.0) * (y0 - 0.625)
+
+
+def spiral_angle_factor(g: Geometry, l_bm: float) -> float:
+    """Bevel spiral angle factor Y_BS (1 for straight teeth): with the developed tooth
+    length b_a = b/cos β_m, the part covered by the contact line l_bb = l_bm cos β_vb/cos β_m
+    and x = 2 b_a/(h_m1 + h_m2) (h_m the mean whole depths),
+
+    .. math::
+        Y_{BS} = \\frac{a_{BS}}{c_{BS}}\\Big(\\frac{l_{bb}}{b_a} - 1.05\\,b_{BS}\\Big)^2 + 1,
+
+    a_BS = −0.0182x² + 0.4736x − 0.32, b_BS = −0.0032x² + 0.0526x + 0.712,
+    c_BS = −0.005x² + 0.085x + 0.54.  [ISO10300-3] method B1, formulae (30)-(35);
+    [ISOTR10300-30] sample 1 (Y_BS = 1.054).
+    """
+    if g.beta_m <= 0.0:
         return 1.0
-    e = g.eps_vg
-    return (1.0 + 2.0 * (1.0 - (2.0 / e) ** 1.5) * math.sqrt(1.0 - 4.0 / (e * e))) ** -0.5
+    b_a = g.b / math.cos(g.beta_m)
+    l_bb = l_bm * math.cos(g.beta_vb) / math.cos(g.beta_m)
+    x = 2.0 * b_a / sum(m.h_am + m.h_fm for m in g.members)
+    a = -0.0182 * x * x + 0.4736 * x - 0.32
+    b = -0.0032 * x * x + 0.0526 * x + 0.712
+    c = -0.0050 * x * x + 0.0850 * x + 0.54
+    return a / c * (l_bb / b_a - 1.05 * b) ** 2 + 1.0
 
 
 def iso_rating(inp: Inputs, g: Geometry, f: Forces) -> IsoRating:
-    """Contact and bending stresses and safety factors, method B1.
+    """Contact and bending stresses and safety factors, method B1 (no hypoid offset).
 
     .. math::
-        σ_{H0} = \\sqrt{\\frac{F_{mt}}{d_{v1} b_{eH}}\\frac{u_v + 1}{u_v}}\\,
-                 Z_{M-B} Z_H Z_E Z_{LS} Z_β Z_K,\\quad
-        σ_H = σ_{H0}\\sqrt{K_A K_v K_{Hβ} K_{Hα}},\\quad b_{eH} = 0.85 b
+        σ_{H0} = \\sqrt{\\frac{F_n}{l_{bm} ρ_{rel}}}\\, Z_{M-B} Z_{LS} Z_E,\\quad
+        F_n = \\frac{F_{mt}}{\\cos α_n \\cos β_m},\\quad
+        σ_H = σ_{H0}\\sqrt{K_A K_v K_{Hβ} K_{Hα}},\\quad σ_{HP} = σ_{Hlim} Z_K
 
     .. math::
-        σ_F = \\frac{F_{mt}}{b\\, m_{mn}} Y_F Y_S Y_{LS}\\, K_A K_v K_{Fβ} K_{Fα}
+        σ_{F0} = \\frac{F_{mt}}{b\\, m_{mn}} Y_{Fa} Y_{Sa} Y_ε Y_{BS} Y_{LS},\\quad
+        σ_F = σ_{F0} K_A K_v K_{Fβ} K_{Fα},\\quad σ_{FP} = Y_{ST} σ_{Flim}
 
-    K_Hβ = 1.5·K_Hβ-be (method C), K_Fβ = K_Hβ/K_F0 with K_F0 = 1 (no cutter radius
-    given); Z_β = √cos β_m.  Y_F, Y_S at the outer point of single contact of the virtual
-    gear ([ISO6336-3] method B, called), which carries the load-sharing of Y_ε; the
-    bevel spiral factor Y_BS = 1.  [ISO10300-2], [ISO10300-3] method B1; [ISO10300-1] §7.
+    K_Hβ = 1.5·K_Hβ-be (method C), K_Fβ = K_Hβ/K_F0 with K_F0 = 1 (no cutter radius given),
+    K_Fα = K_Hα.  Y_Fa, Y_Sa with the load at the tip of the virtual gear in the normal
+    section z_vn: the tooth form of [ISO6336-3] method B (``spur`` function, called) with
+    the single-contact point moved to the tip (ε_αn = 1) and the thickness modification
+    x_sm = x_τ/2 (the tangential shift), the method of [ISO10300-3] §6.4.1.2.  [ISO10300-2], [ISO10300-3]
+    method B1; [ISO10300-1] §8; every factor checked against [ISOTR10300-30] sample 1.
     """
     ld, mt, p, rt = inp.load, inp.material, inp.pair, inp.rating
     K_be = MOUNTING_FACTOR[ld.mounting]
     K_Hb = 1.5 * K_be
     K_Fb = K_Hb
     Z_E = part2.z_e(mt.E, mt.nu, mt.E, mt.nu)
-    Z_H = part2.z_h(g.beta_vb, g.alpha_vt, g.alpha_vt)
-    Z_MB, Z_LS = mid_zone_factor(g), load_sharing(g)
-    Z_beta = math.sqrt(math.cos(g.beta_m))
-    b_eH = 0.85 * g.b
-    s_H0 = (math.sqrt(f.F_mt / (g.pinion.d_v * b_eH) * (g.u_v + 1.0) / g.u_v)
-            * Z_MB * Z_H * Z_E * Z_LS * Z_beta * Z_K)
+    Z_MB = mid_zone_factor(g)
+    Z_LS, l_bm = load_sharing(g)
+    F_n = f.F_mt / (math.cos(g.alpha_n) * math.cos(g.beta_m))
+    s_H0 = math.sqrt(F_n / (l_bm * g.rho_rel)) * Z_MB * Z_LS * Z_E
     K = ld.K_A * ld.K_v
     s_H = s_H0 * math.sqrt(K * K_Hb * ld.K_alpha)
+    Y_eps = contact_ratio_factor(g.eps_va, g.eps_vb)
+    Y_BS = spiral_angle_factor(g, l_bm)
+    cb2 = math.cos(g.beta_vb) ** 2
     members = []
     for i, m in enumerate(g.members):
         tf = part3.tooth_form(m.z_v, m.x, g.m_nm, g.alpha_n, g.beta_m, g.beta_vb, m.d_v,
-                              m.d_va, g.eps_va, (p.ha + p.c) * g.m_nm, p.rho_a0 * g.m_nm)
-        s_F = (f.F_mt / (g.b * g.m_nm) * tf.Y_F * tf.Y_S * Z_LS ** 2
-               * K * K_Fb * ld.K_alpha)
-        members.append(IsoMember(tf.Y_F, tf.Y_S, s_F, Y_ST * mt.sigma_Flim[i] / rt.S_Fmin,
-                                 mt.sigma_Hlim[i] / s_H, Y_ST * mt.sigma_Flim[i] / s_F))
-    return IsoRating(K_be, K_Hb, K_Fb, Z_E, Z_H, Z_MB, Z_LS, Z_beta, Z_K, Z_LS ** 2, b_eH,
-                     s_H0, s_H, *members)
+                              m.d_va, cb2, (p.ha + p.c) * g.m_nm, p.rho_a0 * g.m_nm,
+                              x_sm=0.5 * m.xt)
+        s_F0 = f.F_mt / (g.b * g.m_nm) * tf.Y_F * tf.Y_S * Y_eps * Y_BS * Z_LS ** 2
+        s_F = s_F0 * K * K_Fb * ld.K_alpha
+        members.append(IsoMember(tf.Y_F, tf.Y_S, s_F0, s_F, mt.sigma_Hlim[i] * Z_K / s_H,
+                                 Y_ST * mt.sigma_Flim[i] / s_F))
+    return IsoRating(K_be, K_Hb, K_Fb, F_n, l_bm, Z_E, Z_MB, Z_LS, Z_K, s_H0, s_H,
+                     Y_eps, Y_BS, Z_LS ** 2, *members)
 
 
 # ----------------------------------------------------------------------------- GOST 21354

@@ -22,20 +22,21 @@ MEMBERS = ("pinion", "wheel")
 
 VERIFIED = {
     True: "the spiral pair's cones, mean-section modules, diameters and heights "
-          "([ISO23509] spiral example, docs/bevel.md)",
-    False: "",
+          "([ISO23509] spiral example), its virtual gears, contact ratios and the ISO 10300 "
+          "method B1 stresses ([ISOTR10300-30] sample 1; docs/bevel.md)",
+    False: "the virtual gears and the ISO 10300 method B1 formulas shared with spiral teeth "
+           "([ISOTR10300-30] sample 1, a spiral pair; docs/bevel.md)",
 }
 """What of each tooth form has been checked against a published worked example (by
 ``teeth == "spiral"``); docs/bevel.md lists the cases."""
 
 UNVERIFIED = {
     True: ("addendum/dedendum angles (standard depth, not the cutter's duplex taper), "
-           "virtual gears and contact ratios, tooth thickness and chordal dimensions, forces, "
-           "strength by ISO 10300 (Z_K, Z_LS, K_Hβ-be) and by GOST 21354 (θ_H, θ_F of "
-           "circular teeth)"),
+           "tooth thickness and chordal dimensions, the axial and radial forces, ISO 10300 "
+           "K_Hβ-be other than 1.10, and strength by GOST 21354 (θ_H, θ_F of circular teeth)"),
     False: ("geometry (cones, heights, diameters, tooth thickness, chordal dimensions), "
-            "virtual gears and contact ratios, forces, strength by ISO 10300 (Z_K, Z_LS, "
-            "K_Hβ-be) and by GOST 21354 (θ_H = θ_F = 0.85)"),
+            "the axial and radial forces, ISO 10300 for straight teeth (Z_LS = 1, Y_BS = 1, "
+            "K_Hβ-be other than 1.10) and strength by GOST 21354 (θ_H = θ_F = 0.85)"),
 }
 """The parts not yet checked against a published worked example, by tooth form."""
 
@@ -127,19 +128,22 @@ def iso_rows(res: Result, sol: Solution) -> None:
         ("K_Hbeta_be", "-", "K_Hβ-be", "mounting factor", S.ISO_K),
         ("K_Hbeta", "-", "K_Hβ", "face load factor, contact", S.ISO_K),
         ("K_Fbeta", "-", "K_Fβ", "face load factor, bending", S.ISO_K),
+        ("F_n", "N", "F_n", "normal force at the mean point", S.ISO_H),
+        ("l_bm", "mm", "l_bm", "length of the middle contact line", S.VIRTUAL),
         ("Z_E", "√MPa", "Z_E", "elasticity factor", S.ISO_H),
-        ("Z_H", "-", "Z_H", "zone factor", S.ISO_H),
         ("Z_MB", "-", "Z_M-B", "mid-zone factor", S.ISO_H),
         ("Z_LS", "-", "Z_LS", "load sharing factor", S.ISO_H),
-        ("Z_beta", "-", "Z_β", "spiral angle factor", S.ISO_H),
-        ("Z_K", "-", "Z_K", "bevel gear factor", S.ISO_H),
-        ("Y_LS", "-", "Y_LS", "load sharing factor, bending", S.ISO_F),
-        ("b_eH", "mm", "b_eH", "effective face width (0.85·b)", S.ISO_H),
+        ("Z_K", "-", "Z_K", "bevel gear factor (permissible stress)", S.ISO_H),
         ("sigma_H0", "MPa", "σ_H0", "nominal contact stress", S.ISO_H),
-        ("sigma_H", "MPa", "σ_H", "contact stress", S.ISO_H)))
+        ("sigma_H", "MPa", "σ_H", "contact stress", S.ISO_H),
+        ("Y_eps", "-", "Y_ε", "contact ratio factor, bending", S.ISO_F),
+        ("Y_BS", "-", "Y_BS", "bevel spiral angle factor", S.ISO_F),
+        ("Y_LS", "-", "Y_LS", "load sharing factor, bending", S.ISO_F)))
     _member_rows(sec, (r.pinion, r.wheel), (
-        ("Y_F", "Y_F", "-", "Y_F", "tooth form factor", S.TOOTH_FORM),
-        ("Y_S", "Y_S", "-", "Y_S", "stress correction factor", S.TOOTH_FORM),
+        ("Y_Fa", "Y_Fa", "-", "Y_Fa", "tooth form factor (load at the tip)", S.TOOTH_FORM),
+        ("Y_Sa", "Y_Sa", "-", "Y_Sa", "stress correction factor (load at the tip)",
+         S.TOOTH_FORM),
+        ("sigma_F0", "sigma_F0", "MPa", "σ_F0", "nominal root stress", S.ISO_F),
         ("sigma_F", "sigma_F", "MPa", "σ_F", "root stress", S.ISO_F),
         ("S_H", "S_H", "-", "S_H", "pitting safety", S.ISO_H),
         ("S_F", "S_F", "-", "S_F", "bending safety", S.ISO_F)))

@@ -47,7 +47,7 @@ class ToothForm:
 
 def tooth_form(z: int, x: float, m_n: float, alpha_n: float, beta: float, beta_b: float,
                d: float, d_a: float, eps_alpha: float, h_fP: float, rho_fP: float,
-               s_pr: float = 0.0) -> ToothForm:
+               s_pr: float = 0.0, x_sm: float = 0.0) -> ToothForm:
     """Form factor Y_F and stress correction factor Y_S of an external tooth (method B).
 
     The rack (dedendum h_fP, root radius ρ_fP, residual protuberance s_pr, all [mm])
@@ -74,11 +74,13 @@ def tooth_form(z: int, x: float, m_n: float, alpha_n: float, beta: float, beta_b
         Y_S = (1.2 + 0.13L)\\,q_s^{1/(1.21 + 2.3/L)},\\; L = s_{Fn}/h_{Fe},\\;
         q_s = s_{Fn}/(2ρ_F)
 
-    [ISO6336-3] method B, tooth form factor Y_F and stress correction factor Y_S.
+    [ISO6336-3] method B, tooth form factor Y_F and stress correction factor Y_S.  A tooth
+    thickness modification x_sm (bevel gears, [ISO10300-3] §6.4.1.2) adds −x_sm·m_n to E
+    and 2x_sm/z_n to γ_e.
     """
     cb = xp.cos(beta_b)
     z_n = z / (cb * cb * xp.cos(beta))
-    E = (math.pi / 4.0 * m_n - h_fP * xp.tan(alpha_n) + s_pr / xp.cos(alpha_n)
+    E = ((math.pi / 4.0 - x_sm) * m_n - h_fP * xp.tan(alpha_n) + s_pr / xp.cos(alpha_n)
          - (1.0 - xp.sin(alpha_n)) * rho_fP / xp.cos(alpha_n))
     G = rho_fP / m_n - h_fP / m_n + x
     H = 2.0 / z_n * (math.pi / 2.0 - E / m_n) - math.pi / 3.0
@@ -104,7 +106,8 @@ def tooth_form(z: int, x: float, m_n: float, alpha_n: float, beta: float, beta_b
         math.pi * d * xp.cos(beta) * xp.cos(alpha_n) / z * (eps_an - 1.0))
     d_en = 2.0 * xp.sqrt(root * root + d_bn * d_bn / 4.0)
     alpha_en = xp.acos(d_bn / d_en)
-    gamma_e = (0.5 * math.pi + 2.0 * x * xp.tan(alpha_n)) / z_n + inv(alpha_n) - inv(alpha_en)
+    gamma_e = ((0.5 * math.pi + 2.0 * (x * xp.tan(alpha_n) + x_sm)) / z_n + inv(alpha_n)
+               - inv(alpha_en))
     alpha_Fen = alpha_en - gamma_e
     h_Fe = 0.5 * m_n * ((xp.cos(gamma_e) - xp.sin(gamma_e) * xp.tan(alpha_Fen))
                         * d_en / m_n - z_n * xp.cos(math.pi / 3.0 - th)
