@@ -20,14 +20,15 @@ from geardesign.core.spec import ValidatedSpec, load_toml
 from geardesign.drive import split as SPLIT
 from geardesign.drive.shaft_loads import _shaft_rotation, run_bearing, shaft_cases, shaft_loads
 from geardesign.drive import stages as ST
+from geardesign.drive.bevel_stage import run_bevel
 from geardesign.drive.spur_stage import run_spur
 from geardesign.drive.stages import Duty, StageRun, values
 
 DRIVE_KEYS = ("name", "file", "efficiency")
 
 ADAPTERS = {"spur": run_spur, "worm": ST.run_worm, "novikov": ST.run_novikov,
-            "planetary": ST.run_planetary}
-"""The stage adapters by kind (:mod:`.spur_stage`, :mod:`.stages`)."""
+            "planetary": ST.run_planetary, "bevel": run_bevel}
+"""The stage adapters by kind (:mod:`.spur_stage`, :mod:`.bevel_stage`, :mod:`.stages`)."""
 
 
 def _torque_from_power(P: float, n: float) -> float:
@@ -95,7 +96,7 @@ def resolve_stages(stages: list, base: Path | None, where: str = "stage",
         else:
             if st.get("kind") is None:
                 raise InputError(Problem(f"{key}.kind", "missing; give the stage's calculator "
-                                         "(kind = \"spur\", \"worm\", \"novikov\", \"planetary\") and its "
+                                         "(kind = \"spur\", \"bevel\", \"worm\", \"novikov\", \"planetary\") and its "
                                          "tables, or file = a spec file"))
             if st["kind"] == "drive":
                 raise InputError.at(f"{key}.kind", "drive", "an inline stage cannot be a "

@@ -9,7 +9,7 @@ from geardesign.shaft import spec as SHAFT_SPEC
 from geardesign.spur.strength import METHODS
 from geardesign.spur.strength.tables import REGIMES
 
-STAGE_KINDS = ("spur", "worm", "novikov", "planetary", "drive")
+STAGE_KINDS = ("spur", "bevel", "worm", "novikov", "planetary", "drive")
 
 MOTOR = Table("motor", "the driving motor", (
     Field("power", "number", "nominal power", "kW", "P_m", default=None, gt=0, maximum=1e5,
@@ -59,7 +59,8 @@ GEAR_ON_SHAFT = Table("gear", "a gear on the shaft", (
     Field("mate_angle", "number", "direction from this shaft's axis to the mating gear's axis",
           "deg", "θ", default=0.0, minimum=-360.0, maximum=360.0),
     Field("axial_sign", "integer", "direction of the gear's axial force: +1 towards bearing B, "
-          "-1 towards A", default=1, choices=(-1, 1)),
+          "-1 towards A (a bevel gear: the direction of its back, the large end; the bevel "
+          "calculator signs the force by hand and rotation)", default=1, choices=(-1, 1)),
     Field("mass", "number", "mass of the gear (critical speed of an analysed shaft)", "kg",
           "m", default=None, minimum=0.0, maximum=1e5,
           hint="default: a solid steel disc of the pitch diameter and the face width"),

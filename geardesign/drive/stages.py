@@ -134,6 +134,7 @@ def _named(exc: InputError, where: str) -> InputError:
 _SET_BY_DRIVE = {
     "spur": ("load", ("torque1", "speed1")), "novikov": ("load", ("torque2", "speed1")),
     "worm": ("load", ("torque2", "speed1")), "planetary": ("operation", ("torque", "speed")),
+    "bevel": ("load", ("torque", "speed")),
 }
 """The loads a drive always sets on a stage (its own values are not used)."""
 
