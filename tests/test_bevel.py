@@ -229,3 +229,59 @@ def test_forces_balance_at_any_shaft_angle(args, rotation, driver):
         for k in (0, 1):
             total[k] += m.F_a * a[k] + m.F_r * r[k]
     assert max(map(abs, total)) <= 1e-9 * f.F_mt
+
+
+# --------------------------------------------------------------------------- design mode
+
+DESIGN = SPECS / "bevel_design_spiral.toml"
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.sampled_from([STRAIGHT, SPIRAL]), st.floats(0.2, 5.0), st.floats(1.0, 5.0),
+       st.integers(14, 30))
+def test_design_proposes_the_least_passing_module(path, k, u, z1):
+    """The proposed pair passes every rating asked for, and the module one step smaller of the
+    first series (same teeth, same K_be) does not: the first size from the torque."""
+    from geardesign.bevel.design import face_width, passes, propose
+    from geardesign.core.errors import InputError
+    from geardesign.spur.strength.tables import MODULES_1
+
+    inp = _inputs(path)
+    inp = dataclasses.replace(inp, load=dataclasses.replace(inp.load, T1=inp.load.T1 * k))
+    try:
+        prop, trial = propose(inp, u, z1, 0.285)
+    except InputError:
+        return          # nothing in the series carries it: said in one line
+    sol = solve(trial)
+    assert passes(sol)
+    assert trial.pair.b <= 0.285 * sol.geometry.R_e + 1e-9
+    i = MODULES_1.index(prop.module)
+    if i > 0:
+        smaller = dataclasses.replace(trial.pair, m=MODULES_1[i - 1])
+        b = face_width(smaller, 0.285)
+        assert b <= 0.285 * GEO.pair_geometry(dataclasses.replace(smaller, b=b)).R_e + 1e-9
+        assert not passes(solve(dataclasses.replace(trial, pair=dataclasses.replace(
+            smaller, b=b))))
+
+
+def test_design_spec_reports_the_proposal():
+    from geardesign.bevel.calculator import compute
+
+    res = compute(load(DESIGN)[1])
+    v = {row.key: row.value for sec in res.sections for row in sec.rows}
+    assert (v["z1_proposed"], v["z2_proposed"]) == (18, 45)
+    assert v["module_proposed"] in (1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0)
+    assert v["m_nm"] == v["module_proposed"]
+    assert not any(c.code.endswith(("_PITTING", "_BENDING")) and not c.passed
+                   for c in res.checks)
+
+
+def test_design_and_size_keys_exclude_each_other(tmp_path):
+    text = DESIGN.read_text(encoding="utf-8").replace("x1 = 0.3", "x1 = 0.3\nmodule = 3.0")
+    assert run_bad(tmp_path, text) == [
+        "s.toml: pair.module = 3.0: leave it out: [design] proposes the module, the teeth "
+        "and the face width (or remove [design])"]
+    text = DESIGN.read_text(encoding="utf-8").replace("[design]\nratio = 2.5\nz1 = 18\n", "")
+    lines = run_bad(tmp_path, text)
+    assert len(lines) == 4 and all("missing; give it, or a [design] table" in x
+                                   for x in lines)

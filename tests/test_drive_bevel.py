@@ -105,3 +105,19 @@ def test_duty_application_factor_only_where_the_stage_gives_none():
     d = bevel_data(st, 10.0, 100.0, DUTY, "w")
     assert d["load"]["application_factor"] == 1.5
     assert (d["load"]["torque"], d["load"]["speed"]) == (10.0, 100.0)
+
+
+def test_bevel_stage_in_design_mode_is_sized_for_the_drive_torque():
+    """A bevel stage with [design] is proposed for the torque the drive gives it: a larger
+    torque never gets a smaller module."""
+    st = _stage()
+    st["pair"] = {k: v for k, v in st["pair"].items()
+                  if k not in ("module", "z1", "z2", "face_width")}
+    st["design"] = {"ratio": 2.5, "z1": 17}
+    mods = []
+    for T in (20.0, 80.0, 320.0):
+        run = run_bevel(st, T, 1455.0, DUTY, None, "stage[0]")
+        v = {r.key: r.value for s in run.result.sections for r in s.rows}
+        assert run.margin >= 1.0 and v["z1_proposed"] == 17
+        mods.append(v["module_proposed"])
+    assert mods == sorted(mods) and mods[0] < mods[-1]

@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from geardesign.core.errors import Problems
+from geardesign.core.errors import Problem, Problems
 
 DELTA_MAX = math.radians(89.5)
 """Largest pitch cone angle: a crown (δ = 90°) or internal bevel gear is not covered."""
@@ -136,15 +136,40 @@ def _pair_rules(p: Pair, given: dict, problems: Problems) -> None:
                     f"ISO 23509 recommends b <= R_e/3 = {R_e / 3:.4g} mm")
 
 
+SIZE_KEYS = ("module", "z1", "z2", "face_width")
+"""The keys of ``[pair]`` that the design mode proposes."""
+
+
+def _size_rules(pr: dict, design: dict | None, problems: Problems) -> None:
+    """Either the pair's size (module, teeth, face width) or a ``[design]`` table."""
+    for key in SIZE_KEYS:
+        if design is None and pr.get(key) is None:
+            problems.add(Problem(f"pair.{key}", "missing; give it, or a [design] table "
+                                 "(ratio = ...) to have the pair proposed"))
+        elif design is not None and pr.get(key) is not None:
+            problems.at(f"pair.{key}", pr[key], "leave it out: [design] proposes the "
+                        "module, the teeth and the face width (or remove [design])")
+
+
 def read(data: dict) -> Inputs:
-    """Typed inputs from a validated spec; every cross-key problem in one round."""
+    """Typed inputs from a validated spec; every cross-key problem in one round.  With a
+    ``[design]`` table the pair's module and face width are placeholders (1 mm) and its
+    teeth z1 = design.z1, z2 = round(u·z1): :func:`geardesign.bevel.design.propose` sizes it."""
     pr, ld, mt, rt = data["pair"], data["load"], data["material"], data["rating"]
-    pair = Pair(pr["teeth"] == "spiral", pr["module"], pr["module_at"], pr["z1"], pr["z2"],
-                math.radians(pr["shaft_angle"]), pr["face_width"],
+    design = data.get("design")
+    problems = Problems()
+    _size_rules(pr, design, problems)
+    problems.raise_all()
+    if design is not None:
+        z1 = design["z1"]
+        size = (1.0, z1, max(z1, round(design["ratio"] * z1)), 1.0)
+    else:
+        size = (pr["module"], pr["z1"], pr["z2"], pr["face_width"])
+    pair = Pair(pr["teeth"] == "spiral", size[0], pr["module_at"], size[1], size[2],
+                math.radians(pr["shaft_angle"]), size[3],
                 math.radians(pr["spiral_angle"]), pr["hand"],
                 math.radians(pr["pressure_angle"]), pr["addendum"], pr["clearance"],
                 pr["root_radius"], pr["x1"], pr["xt1"], pr["depth"])
-    problems = Problems()
     problems.stage(_pair_rules, pair, pr, problems)
     problems.raise_all()
     load = Load(ld["torque"] * 1e3, ld["speed"], ld["rotation"], ld["driver"],

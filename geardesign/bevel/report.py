@@ -121,6 +121,22 @@ def force_rows(res: Result, sol: Solution) -> None:
         ("F_r", "F_r", "N", "F_r", "radial force (+: toward its axis)", S.FORCES)))
 
 
+def design_rows(res: Result, proposal, sol: Solution) -> None:
+    """The proposal of the design mode (:mod:`geardesign.bevel.design`)."""
+    g = sol.geometry
+    sec = res.section("design", "Design mode: proposed pair")
+    which = "mean normal m_nm" if g.spiral else "outer transverse m_te"
+    for key, value, unit, sym, name in (
+            ("z1_proposed", proposal.z1, "-", "z1", "pinion teeth"),
+            ("z2_proposed", proposal.z2, "-", "z2", "wheel teeth"),
+            ("module_proposed", proposal.module, "mm", "m", f"module ({which}, GOST 9563 "
+             f"first series)"),
+            ("face_width_proposed", proposal.face_width, "mm", "b", "face width (K_be·R_e)"),
+            ("ratio_deviation", proposal.u_dev, "%", "Δu", "deviation of z2/z1 from the ratio"),
+            ("modules_rated", proposal.tried, "-", "", "modules rated")):
+        sec.add(key, value, unit, sym, name, S.DESIGN)
+
+
 def iso_rows(res: Result, sol: Solution) -> None:
     r = sol.iso
     sec = res.section("iso10300", "ISO 10300 method B1")

@@ -16,3 +16,4 @@ UNDERCUT = "[GOST16532] on the virtual gear ([GOST19624] table 1 note)"
 PRACTICE = "design practice ([Dunaev] §2.6)"
 PUBLISHED = ("[BevGear2023] ([ISO23509] spiral bevel example), [ISOTR10300-30] sample 1; "
              "docs/bevel.md, published cases")
+DESIGN = "design mode by re-rating ([GOST9563] first-series modules), docs/bevel.md"

@@ -11,17 +11,19 @@ PAIR = Table("pair", "bevel gear pair geometry", (
           "(circular-arc teeth, GOST 19326, ISO 23509)", default="straight",
           choices=("straight", "spiral")),
     Field("module", "number", "module: outer transverse m_te (straight) or mean normal m_nm "
-          "(spiral), see module_at", "mm", "m", minimum=0.05, maximum=100, example=4.0),
+          "(spiral), see module_at", "mm", "m", minimum=0.05, maximum=100, example=4.0,
+          default=None, hint="required unless [design] proposes it"),
     Field("module_at", "string", "where the module is given: outer transverse (m_te) or mean "
           "normal (m_nm)", default="outer", choices=("outer", "mean")),
     Field("z1", "integer", "number of teeth of the pinion", symbol="z1", minimum=5,
-          maximum=200, example=20),
+          maximum=200, example=20, default=None, hint="required unless [design] proposes it"),
     Field("z2", "integer", "number of teeth of the wheel", symbol="z2", minimum=5,
-          maximum=400, example=50),
+          maximum=400, example=50, default=None, hint="required unless [design] proposes it"),
     Field("shaft_angle", "number", "shaft angle Σ = δ1 + δ2", "deg", "Σ", default=90.0,
           minimum=10, maximum=170),
     Field("face_width", "number", "face width along the pitch cone generator", "mm", "b",
-          gt=0, maximum=2000, example=30.0),
+          gt=0, maximum=2000, example=30.0, default=None,
+          hint="required unless [design] proposes it"),
     Field("spiral_angle", "number", "mean spiral angle (0 for straight teeth)", "deg", "β_m",
           default=0.0, minimum=0, maximum=45),
     Field("hand", "string", "hand of spiral of the pinion (the wheel has the other)",
@@ -90,9 +92,20 @@ RATING = Table("rating", "rating method and required safety factors", (
           default=1.3, minimum=0.5, maximum=5.0),
 ), implicit=True)
 
+DESIGN = Table("design", "design mode: propose z1, z2, the module and the face width for the "
+               "load and the materials (leave pair.module, z1, z2, face_width out)", (
+    Field("ratio", "number", "gear ratio u = z2/z1 wanted", symbol="u", minimum=1.0,
+          maximum=10.0, example=2.5),
+    Field("z1", "integer", "number of teeth of the pinion", symbol="z1", default=20,
+          minimum=8, maximum=60, hint="handbooks: 18…30 (fewer for large ratios)"),
+    Field("face_ratio", "number", "face width over the outer cone distance K_be = b/R_e",
+          symbol="K_be", default=0.285, minimum=0.15, maximum=0.35,
+          hint="handbooks: 0.285; ISO 23509: at most 1/3"),
+), required=False, in_template=False)
+
 SCHEMA = SpecSchema(
     kind="bevel",
     description="bevel gear pair: geometry, ISO 10300 and GOST strength, shaft forces",
-    tables=(PAIR, LOAD, MATERIAL, RATING),
+    tables=(PAIR, LOAD, MATERIAL, RATING, DESIGN),
     title_example="straight bevel pair m_te = 4, 20/50 teeth, Σ = 90°",
 )

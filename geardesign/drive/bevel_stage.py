@@ -39,13 +39,17 @@ def bevel_data(data: dict, T_in: float, n_in: float, duty: Duty, where: str) -> 
     return d
 
 
-def _report(spec, sol, where: str, original: dict) -> Result:
-    """The stage's report as the bevel calculator writes it, with the loads the drive set."""
+def _report(spec, proposal, sol, where: str, original: dict) -> Result:
+    """The stage's report as the bevel calculator writes it (with the proposal of its
+    design mode), with the loads the drive set."""
     from geardesign.bevel import CALCULATOR
-    from geardesign.bevel.report import report
+    from geardesign.bevel.report import design_rows, report
     from geardesign.core.result import guard
 
-    res = guard(report(CALCULATOR.new_result(spec), sol))
+    res = CALCULATOR.new_result(spec)
+    if proposal is not None:
+        design_rows(res, proposal, sol)
+    res = guard(report(res, sol))
     _set_by_drive(res, spec.data, original)
     return res
 
@@ -68,13 +72,12 @@ def run_bevel(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | Non
               where: str) -> StageRun:
     """A bevel stage solved once; its members carry the calculator's signed forces at the
     mean cone (radius d_m/2)."""
-    from geardesign.bevel import inputs as INP
-    from geardesign.bevel import solve as SOLVE
+    from geardesign.bevel.calculator import solution
 
     d = bevel_data(data, T_in, n_in, duty, where)
     try:
         _, spec = load_data(d, where)
-        sol = SOLVE.solve(INP.read(spec.data))
+        proposal, sol = solution(spec.data)
     except InputError as exc:
         raise _named(exc, where) from None
     g, f = sol.geometry, sol.forces
@@ -89,4 +92,4 @@ def run_bevel(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | Non
     members = (Member(P.F_t, P.F_r, P.F_a, g.pinion.d_m / 2.0),
                Member(W.F_t, W.F_r, W.F_a, g.wheel.d_m / 2.0))
     return StageRun("bevel", g.u, e, src, T_in, n_in, T_in * g.u * e, n_in / g.u, members,
-                    m[worst], worst, False, None, lambda: _report(spec, sol, where, data))
+                    m[worst], worst, False, None, lambda: _report(spec, proposal, sol, where, data))
