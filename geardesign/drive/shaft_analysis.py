@@ -37,7 +37,7 @@ from geardesign.core.registry import load_data
 from geardesign.core.result import DataTable, Result, check
 from geardesign.drive.shafts import GearLoad, external_loads, gear_force
 from geardesign.shaft import calculator as SC
-from geardesign.spur.geometry import disc_mass
+from geardesign.gears.geometry import disc_mass
 from geardesign.shaft.solve import ARCMIN, Load, ShaftResult, Support, analyse
 from geardesign.shaft.spec import BEARING_TYPES
 

@@ -20,7 +20,7 @@ from geardesign.shaft import beam
 from geardesign.shaft import strength as ST
 from geardesign.shaft.din743 import part2 as P2
 from geardesign.shaft.din743 import rating as DR
-from geardesign.spur.geometry import STEEL_DENSITY
+from geardesign.gears.geometry import STEEL_DENSITY
 
 ARCMIN = math.pi / (180.0 * 60.0)
 EI_RATIO_SINGULAR = 1e-12      # smallest / largest EI of the steps below which K is singular

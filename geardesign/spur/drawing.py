@@ -2,7 +2,7 @@
 pair, the test dimensions of each gear with their limits, and the drawing data table
 (GOST 2.403-75 / ISO 1340 parameter table).
 
-Internal pairs (:class:`~geardesign.spur.internal.InternalPairGeometry`): the same
+Internal pairs (:class:`~geardesign.gears.internal.InternalPairGeometry`): the same
 tolerances (the internal gear's by its own d, b), its tooth thickness allowances those of
 its teeth (≤ 0: wider spaces; [DIN3967], :mod:`~geardesign.spur.tolerances.backlash`), the
 least backlash at a_w + f_a, the dimension between two balls or pins and the radial
@@ -22,7 +22,7 @@ from dataclasses import dataclass
 from geardesign.core.errors import InputError, Problem
 from geardesign.core.result import DataTable, Result, check
 from geardesign.core.spec import ValidatedSpec
-from geardesign.spur.geometry import PairGeometry
+from geardesign.gears.geometry import PairGeometry
 from geardesign.spur.measurement import (
     MeasurementError,
     Tooth,
