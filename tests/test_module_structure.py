@@ -28,7 +28,6 @@ LONG = {
     "spur/strength/iso6336/part3.py": SPLITTING + ": ISO 6336-3 beside the GOST package",
     "spur/checks.py": SPLITTING + ": one checks module for any rating record",
     "spur/sweep.py": SPLITTING + ": the sweep re-checks variants through spur.solve",
-    "spur/drawing.py": SPLITTING + ": tolerances shared with the rating (gears/tolerances)",
     "drive/calculator.py": SPLITTING + ": the drive composes stages through solve()",
     "drive/lubrication.py": SPLITTING + ": the drive composes stages through solve()",
     "drive/shaft_analysis.py": SPLITTING + ": the drive composes stages through solve()",

@@ -127,7 +127,7 @@ def from_spec(spec: ValidatedSpec) -> Inputs:
     if strength is None:
         _drop_unused_defaults(spec, STRENGTH_ONLY)
     if d.get("accuracy") is not None:
-        from geardesign.spur.drawing import assume_expansion
+        from geardesign.spur.drawing_data import assume_expansion
 
         assume_expansion(spec)
     methods = tuple(chosen(d["options"])) if strength is not None else ()
