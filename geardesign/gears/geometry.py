@@ -1,8 +1,10 @@
 """Geometry of an external spur or helical involute gear pair (GOST 16532-70).
 
 Pure functions on plain data.  Lengths in mm, angles in radians.  Index 1 is the pinion,
-2 the wheel.  The planetary, PZDN and drive calculators call these functions for every
-external mesh; nothing here knows about spec files.
+2 the wheel.  The spur, planetary, PZDN, worm, bevel and drive calculators call these
+functions for every external mesh; nothing here knows about spec files.  The span (base
+tangent length) is :mod:`geardesign.gears.span`, the internal pair
+:mod:`geardesign.gears.internal`.
 
 References
 ----------
