@@ -144,3 +144,16 @@ def test_a_calculator_package_does_not_import_its_calculator():
     eager = [k for k, mod in KINDS.items() if mod not in known
              and any(t.startswith(mod + ".") for t in g[mod])]
     assert not eager, f"packages importing their own modules in __init__: {eager}"
+
+
+def test_shared_gear_code_depends_on_no_calculator():
+    """``geardesign.gears`` (geometry, span, internal pairs, losses) is shared by the spur,
+    planetary, pzdn, worm, bevel and drive calculators: it imports none of them, only
+    core code, the involute and itself."""
+    from geardesign.core.registry import KINDS
+
+    g = import_graph()
+    calculators = tuple(f"{mod}." for mod in KINDS.values())
+    bad = {m: sorted(t for t in ts if t in KINDS.values() or t.startswith(calculators))
+           for m, ts in g.items() if m == "geardesign.gears" or m.startswith("geardesign.gears.")}
+    assert not any(bad.values()), bad
