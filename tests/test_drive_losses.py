@@ -17,7 +17,7 @@ from geardesign.core.spec import load_toml
 from geardesign.drive import losses as L
 from geardesign.drive import thermal as TH
 from geardesign.planetary import efficiency as EFF
-from geardesign.spur import geometry as G
+from geardesign.gears import geometry as G
 from tests.helpers_cli import cli, run_bad, write_spec
 
 ROOT = Path(__file__).resolve().parent.parent

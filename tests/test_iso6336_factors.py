@@ -12,7 +12,7 @@ import math
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from geardesign.spur.geometry import BasicRack, PairInput, pair_geometry
+from geardesign.gears.geometry import BasicRack, PairInput, pair_geometry
 from geardesign.spur.strength import gost21354 as G
 from geardesign.spur.strength.iso6336 import part1 as P1
 from geardesign.spur.strength.iso6336 import part2 as P2
@@ -70,7 +70,7 @@ def test_reduced_mass_of_a_shared_sun(m_s, m_p, n_p):
 def test_sum_of_velocities_is_the_kinematic_sum_at_the_pitch_point(z1, z2, x1, x2, beta, n1):
     """v_ΣC = ω1 ρ_C1 + ω2 ρ_C2 with ρ_Ci = ½ d_bi tan α_wt, from the base circles (not
     from the operating pitch circle the function uses) on shifted pairs."""
-    from geardesign.spur.geometry import GeometryError
+    from geardesign.gears.geometry import GeometryError
 
     try:    # a pair that cannot mesh (inv α_tw <= 0) is refused by the geometry
         g = pair_geometry(PairInput(3.0, z1, z2, x1, x2, math.radians(beta), 30.0,

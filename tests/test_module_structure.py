@@ -28,23 +28,16 @@ LONG = {
     "spur/strength/iso6336/part3.py": SPLITTING + ": ISO 6336-3 beside the GOST package",
     "spur/checks.py": SPLITTING + ": one checks module for any rating record",
     "spur/sweep.py": SPLITTING + ": the sweep re-checks variants through spur.solve",
-    "spur/geometry.py": SPLITTING + ": shared gear geometry moves to geardesign/gears",
-    "spur/internal.py": SPLITTING + ": internal pairs move to geardesign/gears",
-    "spur/drawing.py": SPLITTING + ": tolerances shared with the rating (gears/tolerances)",
     "drive/calculator.py": SPLITTING + ": the drive composes stages through solve()",
     "drive/lubrication.py": SPLITTING + ": the drive composes stages through solve()",
     "drive/shaft_analysis.py": SPLITTING + ": the drive composes stages through solve()",
     "worm/calculator.py": SPLITTING + ": worm inputs, solve and report",
-    "shaft/calculator.py": SPLITTING + ": the shaft's rows move to a report module",
-    "shaft/solve.py": SPLITTING + ": the DIN 743 and GOST 25.504 parts move to packages",
     "cli.py": SPLITTING + ": the commands' option handling apart from the dispatch",
     "core/spec.py": SPLITTING + ": schema types apart from validation",
     "core/render.py": SPLITTING + ": the HTML report in its own package",
     "core/io.py": SPLITTING + ": the writers apart from the readers",
     "rexs/importer.py": SPLITTING + ": one reader per REXS component type (shafts, stages, "
                         "bearings, load case) apart from the spec writer",
-    "shaft/inputs.py": SPLITTING + ": the step, load and support rules apart from the "
-                       "material and method keys",
     "rendering/figures.py": SPLITTING + ": one module of pictures per calculator kind",
     "rendering/html.py": SPLITTING + ": the first screen apart from the sections",
     "spur/spec_inputs.py": SPLITTING + ": the ISO 6336 readers apart from the pair and duty",
@@ -60,7 +53,7 @@ LONG = {
 }
 """Modules over :data:`MAX_LINES` lines, each with its reason."""
 
-SPLIT = ("novikov", "bearing", "planetary")
+SPLIT = ("novikov", "bearing", "planetary", "shaft")
 """Calculators in the shape inputs → solve → report."""
 
 SHORT_CALCULATOR = 60

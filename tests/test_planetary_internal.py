@@ -1,4 +1,4 @@
-"""Internal-gear geometry (geardesign.spur.internal) and its strength rating: identities,
+"""Internal-gear geometry (geardesign.gears.internal) and its strength rating: identities,
 the sign conventions, and the tip-interference formula against a brute-force simulation
 of the tooth tips' paths."""
 
@@ -12,10 +12,14 @@ from hypothesis import strategies as st
 
 from geardesign.core.registry import run_data
 from geardesign.involute import inv
-from geardesign.spur.geometry import BasicRack, GeometryError
-from geardesign.spur.internal import (InternalPairInput, internal_pair_geometry,
-                                      shift_difference_for_center_distance, x_from_iso,
-                                      x_to_iso)
+from geardesign.gears.geometry import BasicRack, GeometryError
+from geardesign.gears.internal import (
+    InternalPairInput,
+    internal_pair_geometry,
+    shift_difference_for_center_distance,
+    x_from_iso,
+    x_to_iso,
+)
 from geardesign.spur.strength import gost21354 as G
 
 RACK = BasicRack(math.radians(20.0))

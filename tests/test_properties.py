@@ -6,8 +6,13 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from geardesign.involute import inv, inv_inverse
-from geardesign.spur.geometry import (
-    BasicRack, GeometryError, PairInput, pair_geometry, shift_sum_for_center_distance)
+from geardesign.gears.geometry import (
+    BasicRack,
+    GeometryError,
+    PairInput,
+    pair_geometry,
+    shift_sum_for_center_distance,
+)
 from geardesign.spur.kinematics import balanced_shift_split, sliding_at_ends
 
 pairs = st.builds(

@@ -58,6 +58,7 @@ CASES = {
     "gear_hardness": GEAR.replace("hardness_HB = 250.0\n", ""),
     "gear_grade": GEAR.replace('grade = "45"', 'grade = "46"', 1),
     "gear_treatment": GEAR.replace('treatment = "improved"', 'treatment = "carburized"\nhardness_HRC = 60.0', 1),
+    "gear_shift_sum": GEAR.replace("\nz2 = 42\n", "\nz2 = 42\nx1 = -1.0\nx2 = -1.0\n"),
     "c12_both": STARTUP + 'C12_spring = "x"\n',
     "c12_neither": STARTUP.replace("C12 = 8.33\n", ""),
     "c12_unknown": STARTUP.replace("C12 = 8.33\n", 'C12_spring = "x"\n'),
@@ -156,6 +157,9 @@ EXPECTED = {
     ],
     'gear_treatment': [
         's.toml: coupling_gear.pinion.treatment = "carburized": not a treatment for steel 45; use one of normalized, improved, induction',
+    ],
+    'gear_shift_sum': [
+        's.toml: coupling_gear.x1 + coupling_gear.x2 = -2.0: too negative: inv α_tw = -0.00857757 <= 0, no working pressure angle exists; x1 + x2 must be > -1.2694',
     ],
     'c12_both': [
         's.toml: startup.C12_spring = "x": give C12 or C12_spring, not both',

@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 
 from geardesign.core.registry import load_data
 from geardesign.core.spec import load_toml
-from geardesign.spur.geometry import GeometryError, PairInput, pair_core, pair_geometry
+from geardesign.gears.geometry import GeometryError, PairInput, pair_core, pair_geometry
 from geardesign.spur.kernel import fixed_from_spec, pair_view
 from geardesign.spur.strength.common import rows, values
 from geardesign.spur.strength.gost21354.rating import GostRating, rate

@@ -11,7 +11,8 @@ from hypothesis import strategies as st
 
 from geardesign.core.registry import run_data
 from geardesign.shaft import strength as ST
-from geardesign.shaft.solve import (ARCMIN, Load, Material, Options, Step, Support, analyse)
+from geardesign.shaft.records import ARCMIN, Load, Material, Options, Step, Support
+from geardesign.shaft.solve import analyse
 from tests.helpers_cli import cli, failed_errors, run_bad, run_failing, write_spec
 
 E = 2.06e5

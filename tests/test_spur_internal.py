@@ -2,7 +2,7 @@
 
 The spur result of an internal pair must equal the planetary calculator's planet–ring mesh
 for the same gears: geometry, checks and GOST 21354-87 stresses.  Both calculators call
-the same functions (:mod:`geardesign.spur.internal`,
+the same functions (:mod:`geardesign.gears.internal`,
 :func:`geardesign.spur.checks.internal_mesh_checks`, the spur rating), so the comparison
 is to rounding (1e-9).  The planetary train is a stepped 2K-H train whose second crown
 (planet2, meshing only the ring) is the pinion: it has its own tip circle (no Δy of a sun

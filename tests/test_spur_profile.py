@@ -19,7 +19,7 @@ import pytest
 
 from geardesign.core.registry import run_data
 from geardesign.spur.export import write_profile
-from geardesign.spur.geometry import BasicRack, PairInput, pair_geometry
+from geardesign.gears.geometry import BasicRack, PairInput, pair_geometry
 from geardesign.spur.profile import flank, mesh, outline
 
 A20 = math.radians(20.0)

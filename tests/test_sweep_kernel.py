@@ -14,7 +14,7 @@ import pytest
 from geardesign.core.errors import InputError
 from geardesign.core.registry import load_data, run_data
 from geardesign.core.spec import load_toml
-from geardesign.spur.geometry import GeometryError, PairInput, pair_geometry
+from geardesign.gears.geometry import GeometryError, PairInput, pair_geometry
 from geardesign.spur.kernel import evaluate, fixed_from_spec
 from geardesign.spur.strength.rating import rate
 from tests.conftest import SPECS

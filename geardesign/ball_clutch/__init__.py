@@ -6,14 +6,15 @@ Modules: :mod:`.clutch` (forces and limit torque), :mod:`.spring` (helical sprin
 :mod:`.contact` (Hertz ball contact), :mod:`.spec`, :mod:`.calculator`.
 """
 
-from geardesign.ball_clutch.calculator import compute
-from geardesign.ball_clutch.spec import SCHEMA
-from geardesign.core.registry import Calculator
+from __future__ import annotations
 
-CALCULATOR = Calculator(
-    kind="ball_clutch",
+from geardesign.core.registry import lazy_calculator
+
+# the calculator is built on first use (geardesign.ball_clutch.calculator.compute and
+# geardesign.ball_clutch.spec.SCHEMA): importing one of the package's modules does not import the
+# calculation, and the calculator's modules import the package without a cycle
+__getattr__ = lazy_calculator(
+    "ball_clutch",
     summary="ball overrunning-safety clutch: limit torque, speed effect, spring, ball contact",
     methods=("Malashchenko et al. 2025", "Wahl spring formulas", "Hertz contact"),
-    schema=SCHEMA,
-    compute=compute,
 )

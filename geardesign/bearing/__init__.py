@@ -8,16 +8,16 @@ including the catalogue selection of ``mode = "select"``), :mod:`.report` and
 :mod:`.checks` (records -> rows and checks), :mod:`.calculator`.
 """
 
-from geardesign.bearing.calculator import compute, precheck
-from geardesign.bearing.spec import SCHEMA
-from geardesign.core.registry import Calculator
+from __future__ import annotations
 
-CALCULATOR = Calculator(
-    kind="bearing",
+from geardesign.core.registry import lazy_calculator
+
+# the calculator is built on first use (geardesign.bearing.calculator.compute and
+# geardesign.bearing.spec.SCHEMA): importing one of the package's modules does not import the
+# calculation, and the calculator's modules import the package without a cycle
+__getattr__ = lazy_calculator(
+    "bearing",
     summary="rolling-bearing life: equivalent load, L10, a1·a23 or a1·a_ISO, spectra, static "
             "safety, catalogue selection",
     methods=("GOST 18855-94", "ISO 281:2007 (GOST 18855-2013)", "ISO 76"),
-    schema=SCHEMA,
-    compute=compute,
-    precheck=precheck,
 )

@@ -19,7 +19,7 @@ import math
 from dataclasses import dataclass
 
 from geardesign.bevel.inputs import Pair, pitch_angles
-from geardesign.spur.geometry import BasicRack, tip_thickness, undercut_shift_limit
+from geardesign.gears.geometry import BasicRack, tip_thickness, undercut_shift_limit
 
 
 @dataclass(frozen=True)
@@ -131,7 +131,7 @@ def transverse_angles(alpha_n: float, beta_m: float) -> tuple[float, float]:
 
     [ISO10300-1] §6 (method B1); the helical relations of ``spur.geometry``.
     """
-    from geardesign.spur.geometry import transverse_angles as helical
+    from geardesign.gears.geometry import transverse_angles as helical
 
     return helical(alpha_n, beta_m)
 

@@ -7,15 +7,16 @@ deviations of a fit), :mod:`.tables` (the CSV and TOML data), :mod:`.spec` (the 
 per connection type), :mod:`.calculator` (record -> report rows and checks).
 """
 
-from geardesign.connection.calculator import compute
-from geardesign.connection.spec import SCHEMA
-from geardesign.core.registry import Calculator
+from __future__ import annotations
 
-CALCULATOR = Calculator(
-    kind="connection",
+from geardesign.core.registry import lazy_calculator
+
+# the calculator is built on first use (geardesign.connection.calculator.compute and
+# geardesign.connection.spec.SCHEMA): importing one of the package's modules does not import the
+# calculation, and the calculator's modules import the package without a cycle
+__getattr__ = lazy_calculator(
+    "connection",
     summary="shaft-hub connection: parallel key, involute spline or interference fit",
     methods=("GOST 23360-78 / DIN 6885-1, DIN 6892", "DIN 5480 / GOST 6033-80",
              "DIN 7190-1, ISO 286"),
-    schema=SCHEMA,
-    compute=compute,
 )

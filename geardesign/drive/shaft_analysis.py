@@ -37,8 +37,10 @@ from geardesign.core.registry import load_data
 from geardesign.core.result import DataTable, Result, check
 from geardesign.drive.shafts import GearLoad, external_loads, gear_force
 from geardesign.shaft import calculator as SC
-from geardesign.spur.geometry import disc_mass
-from geardesign.shaft.solve import ARCMIN, Load, ShaftResult, Support, analyse
+from geardesign.gears.geometry import disc_mass
+from geardesign.shaft.records import ARCMIN, Load, Support
+from geardesign.shaft.records import ShaftRecord as ShaftResult
+from geardesign.shaft.solve import analyse
 from geardesign.shaft.spec import BEARING_TYPES
 
 ISO_METHOD = "ISO 6336:2019"

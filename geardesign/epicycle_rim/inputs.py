@@ -157,7 +157,7 @@ def _planets(spec: ValidatedSpec) -> Planets:
 def sun_planet_pair(ring: Ring, pl: Planets):
     """The sun-planet pair of the spacing check (GOST 13755 rack, α = 20°); an input error
     names the shifts when the pair cannot be built."""
-    from geardesign.spur.geometry import BasicRack, GeometryError, PairInput, pair_geometry
+    from geardesign.gears.geometry import BasicRack, GeometryError, PairInput, pair_geometry
 
     try:
         return pair_geometry(PairInput(ring.module, pl.z_sun, pl.z_planet, pl.x_sun,

@@ -6,14 +6,15 @@ dynamic moment and power of the spindle block), :mod:`.spec` (the spec schema),
 :mod:`.calculator` (spec -> result).
 """
 
-from geardesign.core.registry import Calculator
-from geardesign.geneva.calculator import compute
-from geardesign.geneva.spec import SCHEMA
+from __future__ import annotations
 
-CALCULATOR = Calculator(
-    kind="geneva",
+from geardesign.core.registry import lazy_calculator
+
+# the calculator is built on first use (geardesign.geneva.calculator.compute and
+# geardesign.geneva.spec.SCHEMA): importing one of the package's modules does not import the
+# calculation, and the calculator's modules import the package without a cycle
+__getattr__ = lazy_calculator(
+    "geneva",
     summary="Geneva indexing drive: motion law, geometry, spindle-block dynamic power",
     methods=("Geneva kinematics (theory of machines)", "spindle-block model of rotary devices (RotaryDevices)"),
-    schema=SCHEMA,
-    compute=compute,
 )

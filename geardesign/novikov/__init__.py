@@ -13,17 +13,17 @@ allowables come from the shared code (:mod:`geardesign.spur.strength.gost21354`,
 :mod:`geardesign.materials.gear_steel`).
 """
 
-from geardesign.core.registry import Calculator
-from geardesign.novikov.calculator import compute, precheck
-from geardesign.novikov.spec import SCHEMA
+from __future__ import annotations
 
-CALCULATOR = Calculator(
-    kind="novikov",
+from geardesign.core.registry import lazy_calculator
+
+# the calculator is built on first use (geardesign.novikov.calculator.compute and
+# geardesign.novikov.spec.SCHEMA): importing one of the package's modules does not import the
+# calculation, and the calculator's modules import the package without a cycle
+__getattr__ = lazy_calculator(
+    "novikov",
     summary="Novikov DLZ pair (GOST 15023-76 rack): geometry, axial overlap, multi-pair "
             "engagement, phase bending and contact stresses",
     methods=("GOST 15023-76", "Korotkin 2017 (NOVGOST-17)", "Cyclogram 2017",
              "GOST 1643-81", "GOST 21354-87"),
-    schema=SCHEMA,
-    compute=compute,
-    precheck=precheck,
 )

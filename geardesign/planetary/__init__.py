@@ -8,7 +8,7 @@ Modules: :mod:`.kinematics`, :mod:`.assembly`, :mod:`.geometry`, :mod:`.efficien
 :mod:`.inputs` (with :mod:`.train`, :mod:`.shifts`), :mod:`.solve`, :mod:`.report` (with
 :mod:`.report_strength`), :mod:`.calculator`.  The tooth loss factor is shared gear code:
 :mod:`geardesign.gears.losses`.  Internal-gear geometry is shared code:
-:mod:`geardesign.spur.internal`.
+:mod:`geardesign.gears.internal`.
 """
 
 from __future__ import annotations

@@ -1,10 +1,10 @@
 """Geometry of every mesh of a planetary train: the external sun–planet mesh by
-:func:`geardesign.spur.geometry.pair_geometry` (GOST 16532-70), the internal planet–ring
-meshes by :func:`geardesign.spur.internal.internal_pair_geometry` (GOST 19274-73), the
+:func:`geardesign.gears.geometry.pair_geometry` (GOST 16532-70), the internal planet–ring
+meshes by :func:`geardesign.gears.internal.internal_pair_geometry` (GOST 19274-73), the
 shifts that make the meshes coaxial, and the mesh quality indices of Matusevich et al.
 
 Pure functions; lengths mm, angles rad.  Ring shifts are in the GOST 19274-73 sign
-(:mod:`geardesign.spur.internal`).
+(:mod:`geardesign.gears.internal`).
 
 References
 ----------
@@ -20,8 +20,8 @@ import math
 from dataclasses import dataclass
 
 from geardesign.planetary.kinematics import Train
-from geardesign.spur import geometry as G
-from geardesign.spur import internal as I
+from geardesign.gears import geometry as G
+from geardesign.gears import internal as I
 from geardesign.spur.kinematics import Sliding, balanced_shift_split, sliding_at_ends
 
 
@@ -153,8 +153,8 @@ def mesh_geometry(lay: Layout, shifts: dict) -> list[Mesh]:
     its tip diameter (with the tip shortening Δy of that external mesh) in its ring mesh,
     as a real planet has one tip circle (KISSsoft does the same).
 
-    Raises GeometryError (codes of :func:`geardesign.spur.geometry.pair_geometry` and
-    :func:`geardesign.spur.internal.internal_pair_geometry`) with ``mesh`` set on it."""
+    Raises GeometryError (codes of :func:`geardesign.gears.geometry.pair_geometry` and
+    :func:`geardesign.gears.internal.internal_pair_geometry`) with ``mesh`` set on it."""
     train = lay.train
     out: list[Mesh] = []
     planet_geometry = {}

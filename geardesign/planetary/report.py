@@ -20,7 +20,7 @@ from geardesign.planetary.solve import (
     central_of,
 )
 from geardesign.planetary.report_strength import strength_report
-from geardesign.spur import internal as I
+from geardesign.gears import internal as I
 
 
 def geometry_rows(res: Result, inp: Inputs, sol: Solution) -> None:

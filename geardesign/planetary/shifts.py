@@ -11,8 +11,8 @@ from geardesign.core.errors import InputError, Problem
 from geardesign.core.spec import ValidatedSpec
 from geardesign.planetary import checks as C
 from geardesign.planetary import geometry as PG
-from geardesign.spur import geometry as G
-from geardesign.spur import internal as I
+from geardesign.gears import geometry as G
+from geardesign.gears import internal as I
 
 X_AGREE = 1e-3     # |given shift − shift from a_w| accepted when both are given
 

@@ -19,7 +19,7 @@ from geardesign.planetary import kinematics as K
 from geardesign.planetary.inputs import Inputs, input_torque, speeds
 from geardesign.planetary.train import MIN_RING_EXCESS
 from geardesign.planetary.shifts import _gost_to_user
-from geardesign.spur import geometry as G
+from geardesign.gears import geometry as G
 from geardesign.spur.kinematics import velocities
 
 

@@ -21,7 +21,7 @@ from dataclasses import dataclass, replace
 
 from geardesign.planetary.geometry import Mesh
 from geardesign.planetary.kinematics import Speeds, Train
-from geardesign.spur import geometry as G
+from geardesign.gears import geometry as G
 from geardesign.spur.strength.rating import Duty, Life, Setting
 
 

@@ -28,7 +28,7 @@ from geardesign.planetary import assembly as A
 from geardesign.planetary import geometry as PG
 from geardesign.planetary.checks import gear_checks, mesh_checks
 from geardesign.planetary.kinematics import Train
-from geardesign.spur.geometry import GeometryError, PairInput
+from geardesign.gears.geometry import GeometryError, PairInput
 from geardesign.spur.kinematics import balanced_shift_split
 
 MAX_EVALUATED = 200  # geometries computed before the search gives up (keeps it fast)

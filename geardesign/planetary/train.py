@@ -9,8 +9,8 @@ import math
 from geardesign.core.errors import InputError, Problem
 from geardesign.planetary import geometry as PG
 from geardesign.planetary import kinematics as K
-from geardesign.spur import geometry as G
-from geardesign.spur import internal as I
+from geardesign.gears import geometry as G
+from geardesign.gears import internal as I
 
 MIN_RING_EXCESS = I.MIN_TEETH_DIFFERENCE  # ring teeth over its planet crown's, at least
 

@@ -12,16 +12,16 @@ spur calculator), :mod:`.plot` (optional matplotlib plot), :mod:`.spec`; the cal
 :mod:`.report_startup`), joined by :mod:`.calculator`.
 """
 
-from geardesign.core.registry import Calculator
-from geardesign.pzdn.calculator import compute, precheck
-from geardesign.pzdn.spec import SCHEMA
+from __future__ import annotations
 
-CALCULATOR = Calculator(
-    kind="pzdn",
+from geardesign.core.registry import lazy_calculator
+
+# the calculator is built on first use (geardesign.pzdn.calculator.compute and
+# geardesign.pzdn.spec.SCHEMA): importing one of the package's modules does not import the
+# calculation, and the calculator's modules import the package without a cycle
+__getattr__ = lazy_calculator(
+    "pzdn",
     summary="PZDN torsion-spring coupling of knitting-machine drives: spring sizing, coupling "
             "gear, three-mass start-up dynamics, KO-2 regression",
     methods=("KO-2 thesis (Lopukhov), corrected", "EN 13906-3", "Shigley §10-12"),
-    schema=SCHEMA,
-    compute=compute,
-    precheck=precheck,
 )

@@ -3,12 +3,13 @@ rated by the spur calculator, not by a second copy of the gear formulas.
 
 The thesis sizes the mesh with a course-book procedure (module from the bending strength,
 check of σ_F and σ_H).  The module estimate is the spur strength code's bending design
-formula, and the check itself is a ``kind = "spur"``
-spec built from the PZDN spec and run through :func:`geardesign.core.registry.run_data`:
-geometry to GOST 16532-70, σ_H and σ_F to GOST 21354-87, with the thesis' load factors
-passed as overrides when given.  The torque of the coupling is shared by the planet meshes:
-the pinion torque per mesh is T/n_w (torque on the pinion) or T/(n_w·u) (torque on the
-wheel); the thesis' F_t = 2T/(n_w·d2) = 210.48 N is the second case.
+formula, and the check itself is the spur calculator's: the coupling table becomes typed
+spur inputs (:func:`spur_inputs`, the spur input rules), :func:`geardesign.spur.solve.solve`
+rates them once (geometry to GOST 16532-70, σ_H and σ_F to GOST 21354-87 or ISO 6336, the
+thesis' load factors passed as overrides when given) and the pzdn report reads that record.
+The torque of the coupling is shared by the planet meshes: the pinion torque per mesh is
+T/n_w (torque on the pinion) or T/(n_w·u) (torque on the wheel); the thesis'
+F_t = 2T/(n_w·d2) = 210.48 N is the second case.
 """
 
 from __future__ import annotations
@@ -58,7 +59,10 @@ def spur_spec(g: dict, module: float, face_width: float, T1: float,
 
 
 def _pzdn_key(key: str) -> str:
-    """Map a key path of the generated spur spec back to the pzdn spec."""
+    """Map a key path of the generated spur spec back to the pzdn spec; each part of a key
+    joining several (``gear.x1 + gear.x2``) alike."""
+    if " + " in key:
+        return " + ".join(_pzdn_key(k) for k in key.split(" + "))
     for spur, ours in (("material.pinion.", "coupling_gear.pinion."),
                        ("material.wheel.", "coupling_gear.wheel."),
                        ("factors.", "coupling_gear.factors."), ("gear.", "coupling_gear."),
@@ -71,16 +75,51 @@ def _pzdn_key(key: str) -> str:
     return "coupling_gear" + (f" ({key})" if key else "")
 
 
-def rate(spec: dict):
-    """Run the spur calculator on ``spec``; its input problems are reported against the
-    pzdn keys."""
-    from geardesign.core.registry import run_data
+def _at_pzdn_keys(exc: InputError) -> InputError:
+    """The spur input problems of the coupling gear against the pzdn keys."""
+    return InputError([Problem(_pzdn_key(p.key), p.message, p.value) for p in exc.problems])
+
+
+def spur_inputs(spec: dict):
+    """The typed spur inputs (:class:`geardesign.spur.inputs.Inputs`) of the coupling gear:
+    the tables of :func:`spur_spec` validated and read by the spur calculator's own input
+    rules (:func:`geardesign.spur.inputs.from_spec`); its input problems are reported
+    against the pzdn keys."""
+    from geardesign.core.registry import _say_default, load_data
+    from geardesign.spur.inputs import from_spec
 
     try:
-        return run_data(spec, "coupling gear")
+        _, vs = load_data(spec, "coupling gear", expect_kind="spur")
+        try:
+            return from_spec(vs)
+        except InputError as exc:
+            raise InputError([_say_default(p, vs) for p in exc.problems]) from None
     except InputError as exc:
-        raise InputError([Problem(_pzdn_key(p.key), p.message, p.value)
-                          for p in exc.problems]) from None
+        raise _at_pzdn_keys(exc) from None
+
+
+def rate(inputs):
+    """The coupling gear solved by :func:`geardesign.spur.solve.solve`: the typed record
+    (geometry, the rating of the chosen method)."""
+    from geardesign.core.registry import _say_default
+    from geardesign.spur.solve import solve
+
+    try:
+        return solve(inputs)
+    except InputError as exc:
+        raise _at_pzdn_keys(InputError([_say_default(p, inputs.spec)
+                                        for p in exc.problems])) from None
+
+
+def spur_report(record):
+    """The spur calculator's report of the coupling gear's record
+    (:func:`geardesign.spur.calculator.advised_report`), nested in the pzdn report."""
+    from geardesign.spur.calculator import advised_report
+
+    try:
+        return advised_report(record)
+    except InputError as exc:
+        raise _at_pzdn_keys(exc) from None
 
 
 def weaker_gear(Y_F: tuple[float, float], sigma_FP: tuple[float, float]) -> int:

@@ -64,13 +64,15 @@ def _coupling_rows(res: Result, g: dict, est: CouplingResult) -> None:
             "spec" if g["module"] is not None else "GOST 9563-60 (rounded up)")
     sec.add("b_w", est.face_width, "mm", "b_w", "face width used",
             "spec" if g["face_width"] is not None else "ψ_bd·m·z1")
-    spur = est.spur
+    from geardesign.pzdn.coupling import spur_report
+
+    spur = spur_report(est.spur)
     res.methods.extend(m for m in spur.methods if m not in res.methods)
     # the spur calculator's own report is nested under this one; the main figures are
-    # repeated here from it (not recomputed)
+    # read from its record (not recomputed)
     res.parts.append(("coupling_gear_rating", "Coupling gear: the spur calculator's report",
                       spur))
-    v = {row.key: row.value for sec_ in spur.sections for row in sec_.rows}
+    v = est.spur.values
     for key, unit, sym, name in (
             ("sigma_H", "MPa", "σ_H", "contact stress"),
             ("sigma_HP", "MPa", "σ_HP", "allowable contact stress of the pair"),

@@ -3,9 +3,10 @@ unchanged), from the functions of :mod:`.spring`, :mod:`.coupling`, :mod:`.regre
 and (start-up) :mod:`.solve_startup`.  :mod:`.report` turns the record into rows and
 checks.
 
-The coupling gear is rated by the spur calculator (:func:`geardesign.pzdn.coupling.rate`
-on the generated spur spec), whose result is kept whole in the record; an input problem of
-that spec is reported against the pzdn keys.
+The coupling gear is solved by the spur calculator's typed interface
+(:func:`geardesign.pzdn.coupling.rate`: :func:`geardesign.spur.solve.solve` on the spur
+inputs of the coupling table), whose record is kept whole; an input problem of the gear is
+reported against the pzdn keys.
 """
 
 from __future__ import annotations
@@ -109,7 +110,7 @@ class CouplingResult:
     m_est: float                 # [mm]
     module: float                # [mm]
     face_width: float            # [mm]
-    spur: object                 # the spur calculator's Result
+    spur: object                 # the spur record (geardesign.spur.solve.Record)
 
 
 def _coupling(c: Coupling) -> CouplingResult:
@@ -132,9 +133,8 @@ def _coupling(c: Coupling) -> CouplingResult:
     m_est = CG.module_estimate(T_est, K_Fb, Y_F[weak], g["psi_bd"], g["z1"], sFP[weak])
     module = g["module"] if g["module"] is not None else CG.round_module(m_est, GT.MODULES_1)
     b = g["face_width"] if g["face_width"] is not None else g["psi_bd"] * module * g["z1"]
-    # the spur calculator rates the gear from a generated spur spec (where the typed
-    # geardesign.spur.solve will be called)
-    spur = CG.rate(CG.spur_spec(g, module, b, T1, T1_peak))
+    # the spur calculator rates the gear: its typed inputs, solved once
+    spur = CG.rate(CG.spur_inputs(CG.spur_spec(g, module, b, T1, T1_peak)))
     return CouplingResult(u, T1, T1_peak, Y_F, sFP, weak, K_Fb, f.get("K_Fbeta") is not None,
                           m_est, module, b, spur)
 

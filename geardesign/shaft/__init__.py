@@ -5,9 +5,12 @@ applied in the Russian machine-design textbooks ([Dunaev]; [Ivanov]), or by DIN 
 ([DIN743-1]; [DIN743-2]; [DIN743-3]; ``[shaft] method = "DIN743"``).
 
 Modules: :mod:`.beam` (finite elements), :mod:`.strength` (section formulas and factor
-tables of the GOST method), :mod:`.din743` (the DIN 743 method, one module per part), :mod:`.solve` (plain-data API: :func:`.solve.analyse`), :mod:`.inputs` (spec ->
-plain data, input rules), :mod:`.spec` (the spec schema), :mod:`.calculator` (report rows
-and checks).
+tables of the GOST method) and :mod:`.section_gost` (a place rated by it), :mod:`.din743`
+(the DIN 743 method, one module per part, :mod:`.din743.section` a place rated by it),
+:mod:`.records` (the typed inputs and records), :mod:`.solve` (the typed API:
+:func:`.solve.solve`, :func:`.solve.analyse`), :mod:`.inputs` and :mod:`.material_inputs`
+(spec -> typed inputs, input rules), :mod:`.spec` (the spec schema), :mod:`.report`,
+:mod:`.checks` and :mod:`.scaling` (rows, checks, advice), :mod:`.calculator` (joins them).
 """
 
 from __future__ import annotations

@@ -21,7 +21,7 @@ from geardesign.spur.spec_inputs import (
     solve_geometry,
 )
 
-__all__ = ["compute", "precheck", "add_geometry_rows", "internal_rows", "ratable",
+__all__ = ["compute", "precheck", "advised_report", "add_geometry_rows", "internal_rows", "ratable",
            "pair_input_from_spec", "internal_input_from_spec", "solve_geometry",
            "_strength_inputs"]
 
@@ -44,3 +44,27 @@ def precheck(spec: ValidatedSpec, problems: Problems) -> None:
 def compute(spec: ValidatedSpec) -> Result:
     """The spur report of a validated spec: inputs, solve, report."""
     return report(solve(from_spec(spec)))
+
+
+def advised_report(record) -> Result:
+    """The spur calculator's result of a solved pair, as a run of its spec gives it: the
+    report (:func:`geardesign.spur.report.report`), the result guard, and the advice of the
+    failed checks found by re-rating (:func:`geardesign.core.advice.advise` with the spur
+    levers; left out while a re-rating reads verdicts only).  ``record.inputs.spec`` must be
+    set.  Other calculators that nest a spur report (the pzdn coupling gear) call this."""
+    from geardesign.core.advice import advise, rerating
+    from geardesign.core.errors import InputError
+    from geardesign.core.registry import _say_default
+    from geardesign.core.result import guard
+    from geardesign.spur import CALCULATOR
+
+    spec = record.inputs.spec
+    try:
+        res = guard(report(record))
+    except InputError as exc:
+        raise InputError([_say_default(p, spec) for p in exc.problems]) from exc
+    if res.failed and not rerating():
+        from geardesign.spur.levers import LEVERS
+
+        res = advise(CALCULATOR, spec, res, LEVERS)
+    return res

@@ -14,7 +14,8 @@ from dataclasses import dataclass
 
 from geardesign.core.result import Check, check, fix_text
 from geardesign.spur import sources as S
-from geardesign.spur.geometry import PairGeometry, span_measurable
+from geardesign.gears.geometry import PairGeometry
+from geardesign.gears.span import span_measurable
 from geardesign.spur.kinematics import Sliding
 
 EPS_MIN = 1.0
@@ -181,7 +182,7 @@ def internal_mesh_checks(g, code: str, names: InternalNames, src: str, src_tip: 
 def _tip_at_shift(g: PairGeometry, i: int, x: float) -> float:
     """Normal tip thickness [mm] gear ``i`` would have with the shift ``x`` (nominal tip,
     d_a = d + 2(h_a* + x)m_n), for advice on the shift."""
-    from geardesign.spur.geometry import tip_thickness
+    from geardesign.gears.geometry import tip_thickness
 
     p, gear = g.inp, g.gears[i]
     d_a = gear.d + 2.0 * (p.rack.h_a + x) * p.m_n

@@ -21,7 +21,7 @@ import math
 
 from geardesign.core.errors import InputError, Problem
 from geardesign.core.spec import ValidatedSpec
-from geardesign.spur.geometry import (
+from geardesign.gears.geometry import (
     BasicRack, GeometryError, disc_mass, PairGeometry, PairInput, pair_geometry,
     shift_sum_for_center_distance)
 from geardesign.spur.kinematics import balanced_shift_split, sliding_at_ends

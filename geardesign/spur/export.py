@@ -48,7 +48,7 @@ def line_of_action(g) -> dict:
     (a_w, 0), an internal gear at (−a_w, 0)): tangency points N1, N2 on the base circles
     and the ends A, E of the path of contact (where the tip circles cut it), and the pitch
     point P.  Internal pair: N2 lies on the same side, N2 = N1 − g_w·n, and the contact
-    starts at ρ1 = ρ_a2 − g_w ([ISO21771]; :mod:`geardesign.spur.internal`)."""
+    starts at ρ1 = ρ_a2 − g_w ([ISO21771]; :mod:`geardesign.gears.internal`)."""
     a = g.alpha_tw
     r_b1, r_b2 = 0.5 * g.g1.d_b, 0.5 * g.g2.d_b
     n = np.array([math.sin(a), math.cos(a)])          # direction of increasing ρ1

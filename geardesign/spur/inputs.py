@@ -14,7 +14,7 @@ from typing import Any, NamedTuple
 
 from geardesign.core.errors import Problems
 from geardesign.core.spec import ValidatedSpec
-from geardesign.spur.geometry import PairInput
+from geardesign.gears.geometry import PairInput
 from geardesign.spur.spec_inputs import (
     STRENGTH_ONLY,
     _contact_ratio_domain,
@@ -49,8 +49,8 @@ class Design:
 class Inputs:
     """Everything :func:`geardesign.spur.solve.solve` reads.
 
-    ``pair``: :class:`~geardesign.spur.geometry.PairInput` (or an internal pair's
-    :class:`~geardesign.spur.internal.InternalPairInput`); ``how``: how the shifts were
+    ``pair``: :class:`~geardesign.gears.geometry.PairInput` (or an internal pair's
+    :class:`~geardesign.gears.internal.InternalPairInput`); ``how``: how the shifts were
     obtained; ``strength``: :class:`Strength` or ``None`` (geometry only); ``methods``: the
     rating methods (GOST 21354-87, ISO 6336:2019); ``iso``: the ISO 6336 setting
     (:class:`~geardesign.spur.strength.iso6336.rating.IsoSetting`) when rated by ISO 6336,
@@ -127,7 +127,7 @@ def from_spec(spec: ValidatedSpec) -> Inputs:
     if strength is None:
         _drop_unused_defaults(spec, STRENGTH_ONLY)
     if d.get("accuracy") is not None:
-        from geardesign.spur.drawing import assume_expansion
+        from geardesign.spur.drawing_data import assume_expansion
 
         assume_expansion(spec)
     methods = tuple(chosen(d["options"])) if strength is not None else ()

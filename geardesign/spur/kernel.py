@@ -32,7 +32,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from geardesign.spur.geometry import BasicRack, pair_core
+from geardesign.gears.geometry import BasicRack, pair_core
 from geardesign.spur.strength.common import values
 from geardesign.spur.strength.gost21354.rating import rate as gost_rate
 from geardesign.spur.strength.verdict import verdict

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from geardesign.spur.geometry import GeometryError, PairGeometry, PairInput, pair_core
+from geardesign.gears.geometry import GeometryError, PairGeometry, PairInput, pair_core
 
 
 def specific_sliding(rho1: float, rho2: float, u: float) -> tuple[float, float]:

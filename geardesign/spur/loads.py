@@ -9,7 +9,7 @@ import math
 from dataclasses import dataclass
 
 from geardesign.core import xp
-from geardesign.spur.geometry import PairGeometry
+from geardesign.gears.geometry import PairGeometry
 
 
 def torque_from_power(P: float, n: float) -> float:

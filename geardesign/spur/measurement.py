@@ -17,7 +17,7 @@ import math
 from dataclasses import dataclass
 
 from geardesign.involute import inv, inv_inverse
-from geardesign.spur.geometry import base_tangent_length, span_measurable
+from geardesign.gears.span import base_tangent_length, span_measurable
 
 
 class MeasurementError(ValueError):
@@ -245,7 +245,7 @@ def constant_chord(t: Tooth, s_n: float | None = None) -> Chordal:
 def span(z: int, x: float, m_n: float, alpha_n: float, beta: float, k: int,
          d_low: float, d_a: float, b: float, key: str) -> tuple[float, float]:
     """Span W over ``k`` teeth and the diameter d_W where the calliper touches (external
-    gear; :func:`geardesign.spur.geometry.base_tangent_length`).  A k for which the calliper
+    gear; :func:`geardesign.gears.span.base_tangent_length`).  A k for which the calliper
     would not touch the flanks between ``d_low`` and the tip (or, helical, the face is
     narrower than W·sin β_b) raises :class:`MeasurementError` naming ``key``."""
     alpha_t = math.atan(math.tan(alpha_n) / math.cos(beta))

@@ -9,7 +9,7 @@ angle at each radius is the smaller of the two.  Helical gears: the transverse s
 the rack (α_t, π·m_t) with the rounding radius taken in the transverse section (the
 involute part is exact; the fillet approximate).  No tip chamfer or rounding.
 
-An internal gear (gear 2 of an :class:`~geardesign.spur.internal.InternalPairGeometry`):
+An internal gear (gear 2 of an :class:`~geardesign.gears.internal.InternalPairGeometry`):
 its space is shaped like an external tooth of thickness e_t = π m_t − s_t, so the
 half-space angle is η(r) = e_t/d + inv α_t − inv α_r and the half-tooth angle
 θ(r) = π/z − η(r), from its (inner) tip circle to the outer end of its involute (the form
@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from geardesign.involute import inv
-from geardesign.spur.geometry import PairGeometry
+from geardesign.gears.geometry import PairGeometry
 
 
 @dataclass(frozen=True)

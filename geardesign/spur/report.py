@@ -9,10 +9,10 @@ from __future__ import annotations
 import math
 
 from geardesign.core.result import Result, Section, check
-from geardesign.spur import internal as I
+from geardesign.gears import internal as I
 from geardesign.spur import sources as S
 from geardesign.spur.checks import ADVICE_FACE_MAX, LOAD_INPUTS, geometry_checks
-from geardesign.spur.geometry import PairGeometry
+from geardesign.gears.geometry import PairGeometry
 from geardesign.spur.solve import GOST, ISO, Record
 
 def _pair(sec: Section, key: str, values: tuple, unit: str, symbol: str, name: str,
@@ -118,7 +118,7 @@ def add_geometry_rows(res: Result, g: PairGeometry, how: str) -> None:
 
 def internal_rows(sec: Section, g) -> None:
     """Rows of an internal mesh's tip and cutting interference (an
-    :class:`~geardesign.spur.internal.InternalPairGeometry`), in the spur report and in
+    :class:`~geardesign.gears.internal.InternalPairGeometry`), in the spur report and in
     every planet–ring mesh of the planetary report."""
     if g.delta_tip is not None:
         sec.add("delta_tip", g.delta_tip, "-", "δ", "tip interference measure (≥ 0: none)",
@@ -212,7 +212,7 @@ def _add_gost_strength(res: Result, geom: PairGeometry, spec, inputs, rating) ->
 
         from geardesign.spur.checks import (face_advice_limit, least_passing,
                                             reconciled_widths)
-        from geardesign.spur.geometry import pair_geometry
+        from geardesign.gears.geometry import pair_geometry
 
         rate = method("GOST 21354-87").rate
         inp = geom.inp

@@ -15,7 +15,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any, Mapping
 
-from geardesign.spur.geometry import PairGeometry, pair_geometry
+from geardesign.gears.geometry import PairGeometry, pair_geometry
 from geardesign.spur.kinematics import Sliding, Velocities, sliding_at_ends, velocities
 
 GOST = "GOST 21354-87"
@@ -35,7 +35,7 @@ def ratable(g) -> bool:
 class Record:
     """A solved spur pair.
 
-    ``geometry``: :class:`~geardesign.spur.geometry.PairGeometry` (or the internal pair's);
+    ``geometry``: :class:`~geardesign.gears.geometry.PairGeometry` (or the internal pair's);
     ``sliding``: specific sliding at the ends of action; ``velocities``: with a speed;
     ``ratings``: method name -> that method's rating (``.v``: factors, stresses, safety
     factors by symbol); ``forces``: the mesh forces' rating when GOST 21354-87 is not
@@ -161,7 +161,7 @@ def _plain(x):
 
 def geometry(pair) -> PairGeometry:
     """The geometry of a pair input: external ([GOST16532]) or internal ([GOST19274])."""
-    from geardesign.spur import internal as I
+    from geardesign.gears import internal as I
 
     if isinstance(pair, I.InternalPairInput):
         return I.internal_pair_geometry(pair)

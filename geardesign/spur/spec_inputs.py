@@ -10,8 +10,8 @@ import math
 
 from geardesign.core.errors import InputError, Problem, Problems
 from geardesign.core.spec import ValidatedSpec
-from geardesign.spur import internal as I
-from geardesign.spur.geometry import (
+from geardesign.gears import internal as I
+from geardesign.gears.geometry import (
     BasicRack,
     GeometryError,
     PairGeometry,

@@ -32,7 +32,7 @@ import numpy as np
 
 from geardesign.core.errors import InputError, Problem
 from geardesign.spur.checks import PSI_BA_WINDOW, PSI_BD_MAX, PSI_BD_MIN, face_width_ratio_ok
-from geardesign.spur.geometry import disc_mass, disc_volume
+from geardesign.gears.geometry import disc_mass, disc_volume
 
 CHUNK = 50_000
 """Candidates per kernel call (about 60 MB of arrays at a time: 10⁷ candidates run in

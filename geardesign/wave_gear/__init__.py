@@ -9,15 +9,16 @@ Modules: :mod:`.rim` (K_zh), :mod:`.flexwheel` (kinematics, stresses, endurance)
 :mod:`.spec`, :mod:`.calculator`.
 """
 
-from geardesign.core.registry import Calculator
-from geardesign.wave_gear.calculator import compute
-from geardesign.wave_gear.spec import SCHEMA
+from __future__ import annotations
 
-CALCULATOR = Calculator(
-    kind="wave_gear",
+from geardesign.core.registry import lazy_calculator
+
+# the calculator is built on first use (geardesign.wave_gear.calculator.compute and
+# geardesign.wave_gear.spec.SCHEMA): importing one of the package's modules does not import the
+# calculation, and the calculator's modules import the package without a cycle
+__getattr__ = lazy_calculator(
+    "wave_gear",
     summary="wave-gear flexible wheel: rim stiffness factor K_zh, stress increase K_0, endurance",
     methods=("Tkachenko, Ustinenko, Borisenko 2017", "GOST 13755-81",
              "thin-ring bending"),
-    schema=SCHEMA,
-    compute=compute,
 )

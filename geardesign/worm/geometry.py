@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from geardesign.spur.geometry import (
+from geardesign.gears.geometry import (
     BasicRack, GeometryError, transverse_angles, undercut_shift_limit)
 from geardesign.worm import tables
 

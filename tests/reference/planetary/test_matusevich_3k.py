@@ -52,8 +52,8 @@ import pytest
 
 from geardesign.planetary import geometry as PG
 from geardesign.planetary.kinematics import Train, ratio
-from geardesign.spur.geometry import BasicRack, PairInput, pair_geometry
-from geardesign.spur.internal import InternalPairInput, internal_pair_geometry
+from geardesign.gears.geometry import BasicRack, PairInput, pair_geometry
+from geardesign.gears.internal import InternalPairInput, internal_pair_geometry
 from geardesign.spur.kinematics import sliding_at_ends
 from tests.conftest import assert_ref
 from tests.reference.planetary._util import planetary

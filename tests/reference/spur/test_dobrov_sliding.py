@@ -18,7 +18,7 @@ recomputation and are regression values (tests/regression/test_spur_method_note.
 
 import math
 
-from geardesign.spur.geometry import BasicRack, PairInput, pair_geometry
+from geardesign.gears.geometry import BasicRack, PairInput, pair_geometry
 from geardesign.spur.kinematics import relative_sliding
 
 G = pair_geometry(PairInput(1.0, 18, 34, 0.0, 0.0, 0.0, 10.0, BasicRack(math.radians(20))))

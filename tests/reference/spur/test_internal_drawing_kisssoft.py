@@ -150,7 +150,7 @@ CONTACT = {1: (8, 2589.383, 2555.762), 2: (11, 1956.100, 1948.395)}
 
 @pytest.mark.parametrize("n", [1, 2])
 def test_ring_contact_diameters_at_the_mean_allowance(n):
-    from geardesign.spur.geometry import base_tangent_length
+    from geardesign.gears.span import base_tangent_length
     from geardesign.spur.measurement import Tooth, over_balls
 
     s = STAGES[n]

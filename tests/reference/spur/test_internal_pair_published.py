@@ -24,7 +24,7 @@ geometry of internal pairs.
 
 import math
 
-from geardesign.spur.geometry import shift_sum_for_center_distance
+from geardesign.gears.geometry import shift_sum_for_center_distance
 from tests.conftest import assert_ref, flat, spur
 
 KHK = {"internal": True, "module": 3.0, "z1": 16, "z2": 24, "x1": 0.0, "x2": 0.5,

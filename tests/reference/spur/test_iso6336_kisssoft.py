@@ -32,8 +32,8 @@ import math
 
 from geardesign.core.registry import run_data
 from geardesign.materials.gear_steel import resolve
-from geardesign.spur.geometry import BasicRack, PairInput, pair_geometry
-from geardesign.spur.internal import InternalPairInput, internal_pair_geometry
+from geardesign.gears.geometry import BasicRack, PairInput, pair_geometry
+from geardesign.gears.internal import InternalPairInput, internal_pair_geometry
 from geardesign.spur.strength.iso6336 import part2 as P2
 from geardesign.spur.strength.iso6336 import part3 as P3
 from geardesign.spur.strength.iso6336.rating import IsoGear, IsoSetting, rate

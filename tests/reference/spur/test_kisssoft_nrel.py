@@ -15,7 +15,7 @@ to the same relation.
 
 import math
 
-from geardesign.spur.geometry import base_tangent_length
+from geardesign.gears.span import base_tangent_length
 from tests.conftest import assert_ref, flat, spur
 
 GEAR = {"module": 14.0, "z1": 24, "z2": 95, "helix_angle": 10.0, "face_width": 360.0,

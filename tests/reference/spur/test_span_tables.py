@@ -8,7 +8,7 @@
 
 import math
 
-from geardesign.spur.geometry import base_tangent_length
+from geardesign.gears.span import base_tangent_length
 from tests.conftest import assert_ref, flat, spur
 
 A20 = math.radians(20.0)

@@ -16,7 +16,7 @@ import math
 
 import pytest
 
-from geardesign.spur.geometry import BasicRack, PairInput, pair_geometry
+from geardesign.gears.geometry import BasicRack, PairInput, pair_geometry
 from geardesign.spur.strength import gost21354 as G
 
 FE_SINGLE_PAIR = (765.0, 785.0, 766.0)

@@ -24,7 +24,7 @@ import math
 
 import pytest
 
-from geardesign.spur.geometry import base_tangent_length
+from geardesign.gears.span import base_tangent_length
 from tests.conftest import assert_ref, dms, flat, spur
 
 ANGLE_TOL = 3.0 / 3600.0  # 3 arc seconds

@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 
 from geardesign.core import xp
 from geardesign.materials.gear_steel import GearMaterial
-from geardesign.spur.geometry import PairGeometry
+from geardesign.gears.geometry import PairGeometry
 from geardesign.spur.loads import cycles, equivalent_cycles, mesh_forces
 from geardesign.spur.strength.common import Duty, Life, Rating, Record, opt, q  # noqa: F401
 from geardesign.spur.strength.gost21354 import formulas as G

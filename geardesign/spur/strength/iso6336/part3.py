@@ -21,8 +21,8 @@ from dataclasses import dataclass
 from geardesign.core import xp
 from geardesign.core.roots import bracket_root
 from geardesign.involute import inv
-from geardesign.spur.geometry import GeometryError
-from geardesign.spur.internal import working_pressure_angle
+from geardesign.gears.geometry import GeometryError
+from geardesign.gears.internal_formulas import working_pressure_angle
 from geardesign.spur.strength.iso6336 import tables as T
 
 Y_ST = 2.0

@@ -56,7 +56,7 @@ def _advice(v: dict, geom, mats, duty, setting, iso) -> dict | None:
     from dataclasses import replace
 
     from geardesign.spur.checks import face_advice_limit, least_passing, reconciled_widths
-    from geardesign.spur.geometry import pair_geometry
+    from geardesign.gears.geometry import pair_geometry
 
     fails = [kind for kind in ("H", "F") if not IR.passes(v, kind)]
     if not fails:
