@@ -22,6 +22,8 @@ from geardesign.core.errors import InputError, Problem
 
 VERSION = "1.5"
 CUSTOM = "custom_geardesign__"
+KINDS = ("spur", "planetary", "worm", "drive")
+"""Spec kinds ``export`` writes (a drive of spur, planetary and worm stages)."""
 
 TREATMENT_ISO6336 = {
     "normalized": "normalized_wrought_low_carbon_steel",
@@ -75,6 +77,24 @@ def A(aid: str, value, unit: str = "none", vtype: str | None = None) -> dict:
     return {"id": aid, "unit": unit, vtype: value}
 
 
+TEXT_SUFFIX = "__str"
+"""Suffix of a custom attribute whose text value reads as a number or a boolean ("0", the
+GOST regime; "true"): XML does not state the value type, the import keeps it text."""
+
+
+def text_suffix(v) -> str:
+    if not isinstance(v, str):
+        return ""
+    low = v.strip().lower()
+    if low in ("true", "false"):
+        return TEXT_SUFFIX
+    try:
+        float(low)
+    except ValueError:
+        return ""
+    return TEXT_SUFFIX
+
+
 def _custom(prefix: str, table: dict, skip=()) -> list[dict]:
     """The scalar keys of ``table`` (nested tables flattened with ``__``) as custom
     attributes; lists are not written."""
@@ -85,20 +105,22 @@ def _custom(prefix: str, table: dict, skip=()) -> list[dict]:
         if isinstance(v, dict):
             out.extend(_custom(f"{prefix}{k}__", v))
         elif isinstance(v, (bool, int, float, str)):
-            out.append(A(f"{CUSTOM}{prefix}{k}", v))
+            out.append(A(f"{CUSTOM}{prefix}{k}{text_suffix(v)}", v))
         elif isinstance(v, list) and v and all(isinstance(x, str) for x in v):
             out.append(A(f"{CUSTOM}{prefix}{k}", list(v), vtype="string_array"))
     return out
 
 
 def export_spec(path: Path, fmt: str = "xml") -> str:
-    """The REXS text of the spec at ``path``; a spec of another kind, or one whose stages
-    are not spur stages, is one :class:`InputError` line."""
+    """The REXS text of the spec at ``path`` (a spur, planetary, worm or drive spec); a
+    spec of another kind, or a drive with a stage of another kind, is one
+    :class:`InputError` line."""
     from geardesign.core import registry
+    from geardesign.core.spec import load_toml
 
     calc, spec = registry.load(path)
-    if calc.kind not in ("spur", "drive"):
-        raise InputError(Problem("kind", f"export writes spur and drive specs; this is a "
+    if calc.kind not in KINDS:
+        raise InputError(Problem("kind", f"export writes {', '.join(KINDS)} specs; this is a "
                                          f"{calc.kind} spec", calc.kind))
     result = calc.compute(spec)
     doc = result.document()
@@ -106,8 +128,10 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
     unit = b.new("gear_unit", doc.get("title") or path.stem)
     casing = b.new("gear_casing", "casing")
     b.rel("assembly", ("assembly", unit), ("part", casing))
+    load_at = 0            # the shaft of the input torque (index into the shafts)
     if calc.kind == "spur":
         stages = [doc]
+        kinds = [("spur", None, None, None)]
         data = spec.data
         ld = doc["inputs"].get("load") or {}
         T_in, n_in = ld.get("torque1"), ld.get("speed1")
@@ -118,25 +142,37 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
         unit["attributes"] += _custom("spur__", {k: v for k, v in data.items()
                                                   if k not in ("gear", "rack", "material")},
                                       skip=("kind",))
+    elif calc.kind in ("planetary", "worm"):
+        stages, data, shafts_spec = [doc], {}, []
+        raw = load_toml(path)
+        kinds = [(calc.kind, raw, doc.get("title") or path.stem, None)]
+        unit["attributes"].append(A(f"{CUSTOM}source_kind", calc.kind))
+        T_in, n_in, life, load_at = _stage_load(calc.kind, doc)
     else:
+        from geardesign.drive.calculator import resolve_stages
+
         stages = doc["results"].get("stage_reports") or []
-        for k, st in enumerate(stages, 1):
-            if st.get("kind") != "spur":
+        resolved = resolve_stages(spec.data["stage"] or [], spec.base_dir)
+        kinds = []
+        for k, (st, (_, name, sdata, eta)) in enumerate(zip(stages, resolved), 1):
+            if st.get("kind") not in ("spur", "planetary", "worm"):
                 raise InputError(Problem(f"stage[{k - 1}]", f"is a {st.get('kind')} stage; "
-                                         f"export writes drives of spur stages"))
+                                         f"export writes drives of spur, planetary and worm "
+                                         f"stages"))
+            kinds.append((st["kind"], sdata, name, eta))
         data = spec.data
         drv = doc["results"]["drive"]
         T_in, n_in = drv.get("T_in"), data["motor"]["speed"]
         life = data["load"].get("life_hours")
         shafts_spec = data.get("shaft") or []
-        for table in ("motor", "load", "split"):
-            unit["attributes"] += _custom(f"{table}__", data.get(table) or {})
+        for table, value in data.items():     # [motor], [load], [split], [thermal], ...
+            if isinstance(value, dict):
+                unit["attributes"] += _custom(f"{table}__", value)
     if life:
         unit["attributes"].append(A("operating_time", float(life), "h"))
     n_shafts = len(stages) + 1
     by_index = {int(s["index"]): s for s in shafts_spec}
     shafts = []
-    pos = [0.0, 0.0]
     for i in range(1, n_shafts + 1):
         sh = b.new("shaft", (by_index.get(i) or {}).get("name") or f"shaft {i}")
         b.rel("assembly", ("assembly", unit), ("part", sh))
@@ -150,6 +186,12 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
                                                             if k in ("axial_sign", "mass")})
     centres = [(0.0, 0.0)]
     for k, st in enumerate(stages, 1):
+        kind, sdata, sname, eta = kinds[k - 1]
+        if kind != "spur":
+            centres.append(centres[-1])
+            comp = _other_stage(b, kind, sdata, st, sname or f"stage {k}", shafts, k, unit)
+            comp["attributes"] += _drive_keys(calc.kind, k, eta)
+            continue
         inp = st["inputs"]
         geo = st["results"]["geometry"]
         gear = inp["gear"]
@@ -164,6 +206,7 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
             A("overlap_contact_ratio", float(geo["eps_beta"])),
             A("total_contact_ratio", float(geo["eps_gamma"])),
         ]
+        stage["attributes"] += _drive_keys(calc.kind, k, eta)
         ka = inp.get("load", {}).get("application_factor")
         if ka is not None:
             stage["attributes"].append(A("application_factor_iso_6336_2006", float(ka)))
@@ -219,7 +262,7 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
             A("u_coordinate_on_shaft", float((by_index.get(1) or {}).get("coupling") or 0.0),
               "mm"),
             A("transmits_torque", True), A("defines_torque", True)])
-        b.rel("assembly", ("assembly", shafts[0]), ("part", load))
+        b.rel("assembly", ("assembly", shafts[load_at]), ("part", load))
         shafts[0]["attributes"].append(A("defines_speed", True))
         blocks = ((doc["inputs"].get("load") or {}).get("spectrum") or []) \
             if calc.kind == "spur" else []
@@ -238,11 +281,77 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
                                  "attributes": [A("operating_time_fraction",
                                                   100.0 * float(blk["time_share"]), "%")]})
             cases.append({"id": k, "components": comps})
+    _external_loads(b, shafts, by_index)
     model = {"version": VERSION, "applicationId": "geardesign",
              "applicationVersion": _version(), "date": "1970-01-01T00:00:00+00:00",
              "relations": b.relations, "components": b.components,
              "load_spectrum": {"id": 1, "load_cases": cases}}
     return _json(model) if fmt == "json" else _xml(model)
+
+
+def _stage_load(kind: str, doc: dict) -> tuple:
+    """(input torque [N·m], input speed [1/min], life [h], index of the torque's shaft) of a
+    planetary or worm spec: the planetary's input member (shaft 1, the input); the worm's
+    wheel torque T2 on the wheel shaft (shaft 2) with the worm speed, as the worm
+    calculator takes them."""
+    inp, res = doc["inputs"], doc["results"]
+    if kind == "worm":
+        ld = inp.get("load") or {}
+        return ld.get("torque2"), ld.get("speed1"), ld.get("life"), 1
+    op = inp.get("operation") or {}
+    member = op.get("input")
+    T = (res.get("power") or {}).get(f"T_{member}") if op.get("torque") or op.get("power") \
+        else None
+    n = (res.get("kinematics") or {}).get(f"n_{member}")
+    life = (inp.get("strength") or {}).get("life_hours")
+    return (abs(T) if T is not None else None), (abs(n) if n else None), life, 0
+
+
+def _other_stage(b: _Builder, kind: str, sdata: dict, doc: dict, name: str, shafts: list,
+                 k: int, unit: dict) -> dict:
+    """A planetary or worm stage between shafts k-1 (input) and k (output)
+    (:mod:`geardesign.rexs.stages`); a planetary's third member (held, or the control
+    member of a differential) gets a shaft of its own."""
+    from geardesign.rexs import stages as ST
+
+    if kind == "worm":
+        return ST.worm(b, A, sdata, doc, name, (shafts[k - 1], shafts[k]), unit)
+    op = doc["inputs"].get("operation") or {}
+    where = {op.get("input"): shafts[k - 1], op.get("output"): shafts[k]}
+    for member in ST.MEMBERS:
+        if member not in where:
+            where[member] = b.new("shaft", f"{name} {member} shaft")
+            b.rel("assembly", ("assembly", unit), ("part", where[member]))
+    return ST.planetary(b, A, sdata, doc, name, where, unit)
+
+
+def _drive_keys(kind: str, k: int, eta) -> list[dict]:
+    """The drive's own keys of stage k: its place in the chain and a given efficiency."""
+    if kind != "drive":
+        return []
+    out = [A(f"{CUSTOM}drive__order", int(k))]
+    if eta is not None:
+        out.append(A(f"{CUSTOM}drive__efficiency", float(eta)))
+    return out
+
+
+def _external_loads(b: _Builder, shafts: list, by_index: dict) -> None:
+    """The forces of ``[[shaft.load]]`` as ``external_load`` components at
+    ``u_coordinate_on_shaft`` [mm]: ``force_u_direction`` the axial force, the radial force
+    F at the angle θ (from the drive's x axis, as the mate angle) as ``force_v_direction``
+    = F cos θ and ``force_w_direction`` = F sin θ [N] (REXS's v–w plane is the drive's
+    x–y plane, as for ``support_vector``); the name and the mass as custom attributes."""
+    for i, sd in by_index.items():
+        for n, ld in enumerate(sd.get("load") or [], 1):
+            F, th = float(ld.get("force", 0.0)), math.radians(float(ld.get("angle", 0.0)))
+            attrs = [A("u_coordinate_on_shaft", float(ld.get("position", 0.0)), "mm"),
+                     A("transmits_torque", False),
+                     A("force_u_direction", float(ld.get("axial", 0.0)), "N"),
+                     A("force_v_direction", F * math.cos(th), "N"),
+                     A("force_w_direction", F * math.sin(th), "N")]
+            attrs += _custom("", {kk: v for kk, v in ld.items() if kk in ("mass", "name")})
+            c = b.new("external_load", ld.get("name") or f"shaft {i} load {n}", attrs)
+            b.rel("assembly", ("assembly", shafts[i - 1]), ("part", c))
 
 
 def _version() -> str:
@@ -281,6 +390,9 @@ def _shaft_details(b: _Builder, shafts: list, by_index: dict, casing: dict) -> N
         sh["attributes"] += _custom("", {k: v for k, v in sd.items()
                                          if k in ("fixed", "method", "stiffness_a",
                                                   "stiffness_b", "coupling")})
+        if sd.get("key"):   # REXS 1.5 has no shaft-hub connection: the spec's tables
+            sh["attributes"].append(A(f"{CUSTOM}key__json", json.dumps(sd["key"]),
+                                      vtype="string"))
         for side, key in (("a", "bearing_a"), ("b", "bearing_b")):
             sup = sd.get(f"support_{side}") or {}
             u = float(sd.get(key, 0.0) or 0.0)

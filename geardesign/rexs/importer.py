@@ -77,6 +77,7 @@ class _Reader:
         self.used_materials: set[str] = set()
         self.stage_tables: dict[str, dict] = {}
         self.spectrum: list[dict] = []
+        self.applied: set[str] = set()        # external loads written as [[shaft.load]]
         self._check_relations()
 
     # ---------------------------------------------------------------- helpers
@@ -139,12 +140,15 @@ def import_model(model: Model, label: str = "model") -> Imported:
     :class:`ModelError` line (what is missing, which component)."""
     r = _Reader(model, label)
     m = model
-    for kind, what in (("planetary_stage", "planetary"), ("worm_stage", "worm"),
-                       ("bevel_stage", "bevel")):
-        found = m.of_type(kind)
-        if found:
-            raise ModelError(f"{what} stages ({kind} {found[0].id} \"{found[0].name}\") are not "
-                             f"imported: the import reads cylindrical stages in one chain")
+    found = m.of_type("bevel_stage")
+    if found:
+        raise ModelError(f"bevel stages (bevel_stage {found[0].id} \"{found[0].name}\") are "
+                         f"not imported: the import reads cylindrical, planetary and worm "
+                         f"stages")
+    if m.of_type("planetary_stage", "worm_stage"):
+        from geardesign.rexs.import_stages import import_other
+
+        return import_other(r, label)
     stages = []
     for st in m.of_type("cylindrical_stage"):
         rels = [x for x in m.relations if x.type == "stage" and x.role("stage") == st.id]
@@ -168,7 +172,52 @@ def import_model(model: Model, label: str = "model") -> Imported:
         raise ModelError("the model has no cylindrical stage: nothing a drive spec can hold "
                          f"(component types: {', '.join(sorted({c.type for c in m.components.values()}))})")
 
-    # the load case: the one with the largest input torque
+    T_in, case_no, torque_load, case, speed, load_shaft = _load_case(r)
+    r.spectrum = _spectrum(r, gu_of(m), torque_load, speed[1], T_in, speed[0])
+
+    # the chain of stages from the shaft that carries the torque
+    chain = _chain(r, stages, load_shaft)
+    order = [load_shaft] + [r.shaft_of(b) for _, _, b in chain]
+    if speed[1] not in order:
+        raise ModelError(f"the shaft {speed[1].id} whose speed is given is not on the chain of "
+                         f"stages from shaft {load_shaft.id}")
+    if speed[1].id != load_shaft.id:
+        raise ModelError(f"the speed is given on shaft {speed[1].id}, the torque on shaft "
+                         f"{load_shaft.id}: the drive needs both at the input")
+    out, head = _head(r, label, T_in, case_no, torque_load, speed)
+    stated = []
+    for i, (st, a, b) in enumerate(chain, 1):
+        stated.append(_stage(r, out, i, st, a, b))
+    r.read.update({"cylindrical_stage", "cylindrical_gear", "external_load", "shaft",
+                   "gear_unit"})
+    for st, a, b in stages:
+        if (st, a, b) not in chain:
+            r.skip(st, "not on the chain of stages from the input shaft")
+
+    _lubricant(r, out)
+    for mat in m.of_type("material"):
+        if mat.id not in r.used_materials:
+            r.skip(mat, "names no grade of the library, or no heat treatment (gears rated "
+                        f"as {DEFAULT_MATERIAL['grade']})")
+    _shafts(r, out, order, chain)
+    for c in m.components.values():
+        if c.type not in READ_TYPES:
+            r.skip(c, "not computed by the drive")
+    for ld in m.of_type("external_load"):
+        if ld is not torque_load and ld.id not in r.applied:
+            at = r.merged(ld, case)
+            forces = [k for k in ("force_u_direction", "force_v_direction", "force_w_direction")
+                      if k in at and number(at[k], f"component {ld.id}") != 0]
+            if forces:
+                r.skip(ld, f"its forces ({', '.join(forces)}) are not applied")
+    return _assemble(r, head, out, stated)
+
+
+def _load_case(r: "_Reader") -> tuple:
+    """(T_in [N·m], load case number or None, the torque's external_load, the load case's
+    attributes, (speed, shaft, source), the torque's shaft): the load case of the largest
+    input torque and the speed of a shaft."""
+    m = r.m
     loads = m.of_type("external_load")
     shafts = {c.id: c for c in m.of_type("shaft")}
     cases = m.load_cases or [{}]
@@ -206,17 +255,15 @@ def import_model(model: Model, label: str = "model") -> Imported:
                 break
     if speed is None:
         raise ModelError("the model states no shaft speed (rotational_speed of a shaft)")
-    r.spectrum = _spectrum(r, gu_of(m), torque_load, speed[1], T_in, speed[0])
+    return T_in, case_no, torque_load, case, speed, load_shaft
 
-    # the chain of stages from the shaft that carries the torque
-    chain = _chain(r, stages, load_shaft)
-    order = [load_shaft] + [r.shaft_of(b) for _, _, b in chain]
-    if speed[1] not in order:
-        raise ModelError(f"the shaft {speed[1].id} whose speed is given is not on the chain of "
-                         f"stages from shaft {load_shaft.id}")
-    if speed[1].id != load_shaft.id:
-        raise ModelError(f"the speed is given on shaft {speed[1].id}, the torque on shaft "
-                         f"{load_shaft.id}: the drive needs both at the input")
+
+def _head(r: "_Reader", label: str, T_in: float, case_no, torque_load: Component,
+          speed: tuple) -> tuple["Writer", list[str]]:
+    """The drive spec's heading comments, [motor], [load] and [split] (from the load case
+    and the gear unit's custom attributes); the stage tables the gear unit carries go to
+    ``r.stage_tables``."""
+    m = r.m
     out = Writer()
     head = [f"# Imported from {label}: REXS {m.version} ({m.fmt.upper()}), written by "
             f"{m.application} {m.application_version} on {m.date}.".rstrip(),
@@ -230,8 +277,9 @@ def import_model(model: Model, label: str = "model") -> Imported:
     extra = custom(gu) if gu is not None else {}
     motor = {k[len("motor__"):]: v for k, v in extra.items() if k.startswith("motor__")}
     load = {k[len("load__"):]: v for k, v in extra.items() if k.startswith("load__")}
-    split = {k[len("split__"):]: v for k, v in extra.items() if k.startswith("split__")}
     spur = {k[len("spur__"):]: v for k, v in extra.items() if k.startswith("spur__")}
+    tables = {k: v for k, v in extra.items() if "__" in k
+              and k.split("__", 1)[0] not in ("motor", "load", "spur")}
     stage_tables: dict[str, dict] = {}
     for k, v in spur.items():     # a spur spec exported: its load keys go to the drive
         t, _, key = k.rpartition("__")
@@ -268,37 +316,17 @@ def import_model(model: Model, label: str = "model") -> Imported:
                     f"per drive spec).")
     out.blank()
     r.stage_tables = stage_tables
-    if split:
-        out.table("split")
-        for k, (v, s_) in split.items():
-            out.kv(k, v, s_)
+    if tables:      # the drive's other tables ([split], [thermal], ...) as exported
+        from geardesign.rexs.stages import nest, write_tables
+
+        write_tables(out, "", nest({k.replace("__", "."): v for k, v in tables.items()}))
         out.blank()
+    return out, head
 
-    stated = []
-    for i, (st, a, b) in enumerate(chain, 1):
-        stated.append(_stage(r, out, i, st, a, b))
-    r.read.update({"cylindrical_stage", "cylindrical_gear", "external_load", "shaft",
-                   "gear_unit"})
-    for st, a, b in stages:
-        if (st, a, b) not in chain:
-            r.skip(st, "not on the chain of stages from the input shaft")
 
-    _lubricant(r, out)
-    for mat in m.of_type("material"):
-        if mat.id not in r.used_materials:
-            r.skip(mat, "names no grade of the library, or no heat treatment (gears rated "
-                        f"as {DEFAULT_MATERIAL['grade']})")
-    _shafts(r, out, order, chain)
-    for c in m.components.values():
-        if c.type not in READ_TYPES:
-            r.skip(c, "not computed by the drive")
-    for ld in loads:
-        if ld is not torque_load:
-            at = r.merged(ld, case)
-            forces = [k for k in ("force_u_direction", "force_v_direction", "force_w_direction")
-                      if k in at and number(at[k], f"component {ld.id}") != 0]
-            if forces:
-                r.skip(ld, f"its forces ({', '.join(forces)}) are not applied")
+def _assemble(r: "_Reader", head: list[str], out: "Writer", stated: list) -> Imported:
+    """The spec text: heading, the "Not imported" list, the tables."""
+    m = r.m
     head.append("# Not imported (component type: components):")
     if not r.not_imported:
         head.append("#   nothing")
@@ -319,10 +347,15 @@ CUSTOM = "custom_geardesign__"
 def custom(c: Component) -> dict[str, tuple]:
     """The ``custom_geardesign__<table>__<key>`` attributes of ``c`` (written by
     ``geardesign export`` for keys REXS has no attribute for): path → (value, source)."""
+    from geardesign.rexs.exporter import TEXT_SUFFIX
+
     out = {}
     for aid, a in c.attributes.items():
         if aid.startswith(CUSTOM):
             v = a.value
+            if aid.endswith(TEXT_SUFFIX):
+                out[aid[len(CUSTOM):-len(TEXT_SUFFIX)]] = (str(v), src(c, aid))
+                continue
             if isinstance(v, list):
                 v = [str(x) for x in v]
             elif isinstance(v, str):
@@ -450,7 +483,10 @@ class Writer:
         elif isinstance(value, float):
             v = fmt(value)
         elif isinstance(value, list):
-            v = "[" + ", ".join(_q(x) for x in value) + "]"
+            v = "[" + ", ".join(_q(x) if isinstance(x, str) else
+                                "true" if x is True else "false" if x is False else
+                                str(x) if isinstance(x, int) else fmt(x)
+                                for x in value) + "]"
         else:
             v = _q(value)
         self.lines.append(f"{key} = {v}" + (f"  # {source}" if source else ""))
@@ -503,6 +539,9 @@ def _stage(r: _Reader, out: Writer, i: int, st: Component, a: Component, b: Comp
     out.table("stage", array=True)
     out.kv("name", st.name or f"stage {st.id}", f"component {st.id} ({st.type}) name")
     out.kv("kind", "spur", "a cylindrical stage")
+    extra = {k: v for k, v in custom(st).items() if not k.startswith("drive__")}
+    if "drive__efficiency" in custom(st):
+        out.kv("efficiency", *custom(st)["drive__efficiency"])
     out.table("stage.gear")
     mn, s_mn = r.value(a, "normal_module", "mm")
     mn2, _ = r.value(b, "normal_module", "mm")
@@ -573,7 +612,6 @@ def _stage(r: _Reader, out: Writer, i: int, st: Component, a: Component, b: Comp
             out.kv("x1", xs[0][0], xs[0][1])
     if internal:
         out.kv("internal", True, "a negative number_of_teeth: an internal gear")
-    extra = custom(st)
     gear_keys = {k.split("__", 1)[1]: v for k, v in extra.items() if k.startswith("gear__")}
     for k, (v, s_) in gear_keys.items():
         out.kv(k, v, s_)
@@ -702,6 +740,7 @@ def _shafts(r: _Reader, out: Writer, order: list, chain: list) -> None:
         lines.kv("bearing_a", brs[0][0], brs[0][2])
         lines.kv("bearing_b", brs[1][0], brs[1][2])
         shaft_extra = custom(sh)
+        keys = shaft_extra.pop("key__json", None)
         for k, (v, s_) in shaft_extra.items():
             lines.kv(k, v, s_)
         for side, (_, br, _) in zip("ab", brs if "fixed" not in shaft_extra else ()):
@@ -756,6 +795,14 @@ def _shafts(r: _Reader, out: Writer, order: list, chain: list) -> None:
                 if bore:
                     lines.kv("bore", bore, s_b)
             r.read.add("shaft_section")
+        _shaft_loads(r, lines, sh)
+        if keys is not None:
+            import json
+
+            for item in json.loads(str(keys[0])):
+                lines.table("shaft.key", array=True, note=keys[1])
+                for k, v in item.items():
+                    lines.kv(k, v, None)
         lines.blank()
         if ok:
             blocks.append(lines.lines)
@@ -782,6 +829,37 @@ def _shafts(r: _Reader, out: Writer, order: list, chain: list) -> None:
     if "gear_casing" not in r.read:
         for c in r.m.of_type("gear_casing"):
             r.skip(c, "the housing is not modelled")
+
+
+def _shaft_loads(r: _Reader, lines: "Writer", sh: Component) -> None:
+    """The external loads on ``sh`` that transmit no torque and state a force, as
+    [[shaft.load]]: position ``u_coordinate_on_shaft``, axial force ``force_u_direction``,
+    the radial force F = √(F_v² + F_w²) at the angle atan2(F_w, F_v) in the v–w plane
+    (the drive's x–y plane, as for the mate angle)."""
+    for ld in r.parts(sh.id, "external_load"):
+        at = ld.attributes
+        tt = at.get("transmits_torque")
+        if tt is not None and str(tt.value).lower() == "true":
+            continue
+        f = {k: r.value(ld, k, "N", 0.0) for k in ("force_u_direction", "force_v_direction",
+                                                   "force_w_direction")}
+        if not any(v for v, _ in f.values()):
+            continue
+        u, s_u = r.value(ld, "u_coordinate_on_shaft", "mm")
+        if u is None:
+            continue
+        Fv, Fw = f["force_v_direction"][0], f["force_w_direction"][0]
+        lines.table("shaft.load", array=True)
+        lines.kv("position", u, s_u)
+        lines.kv("force", math.hypot(Fv, Fw), src(ld, "force_v_direction") + ", "
+                 "force_w_direction: √(F_v² + F_w²)")
+        lines.kv("angle", round(math.degrees(math.atan2(Fw, Fv)), 9),
+                 "atan2(F_w, F_v), the v–w plane")
+        if f["force_u_direction"][0]:
+            lines.kv("axial", f["force_u_direction"][0], f["force_u_direction"][1])
+        for k, (v, s_) in custom(ld).items():
+            lines.kv(k, v, s_)
+        r.applied.add(ld.id)
 
 
 def _mate_angle(r: _Reader, g: Component, mate: Component) -> tuple[float, str]:
