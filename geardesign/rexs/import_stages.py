@@ -12,7 +12,7 @@ for).  A model of another program is read from the standard attributes alone.
 from __future__ import annotations
 
 from geardesign.rexs import stages as ST
-from geardesign.rexs.importer import (DEFAULT_LIFE_HOURS, Imported, ModelError, Writer, _Reader,
+from geardesign.rexs.importer import (DEFAULT_LIFE_HOURS, DEFAULT_MATERIAL, Imported, ModelError, Writer, _Reader,
                                       _assemble, _head, _load_case, _lubricant, _material,
                                       _stage, convert, custom, gu_of, src)
 from geardesign.rexs.model import Component
@@ -293,13 +293,26 @@ def _planetary(r: _Reader, out: Writer, st: Component, T_in: float, torque_load,
     out.kv("life_hours", life[0] or DEFAULT_LIFE_HOURS,
            life[1] or "assumed: the gear unit states no operating_time")
     out.blank()
+    from geardesign.drive.stages import ETA_CYLINDRICAL
+
+    out.table("efficiency")
+    out.kv("model", "given", "assumed: the model states no mesh efficiency (the H_V model "
+                             "holds for ε_α ≤ 2 only)")
+    for key in ("external", "internal"):
+        out.kv(key, ETA_CYLINDRICAL, "assumed: the drive's handbook efficiency of a "
+                                     "cylindrical mesh")
+    out.blank()
     for key, g in (("sun", sun), ("planet", planet), ("ring", ring)):
         mat = _material(r, g)
-        if mat:
-            out.table(f"material.{key}")
+        out.table(f"material.{key}")
+        if mat is None:
+            for k, v in DEFAULT_MATERIAL.items():
+                out.kv(k, v, "assumed: the model names no material of the library with its "
+                             "heat treatment" if k == "grade" else "assumed with the grade")
+        else:
             for k, (v, s_) in mat.items():
                 out.kv(k, v, s_)
-            out.blank()
+        out.blank()
     r.read.update({"planetary_stage", "planet_carrier", "cylindrical_stage",
                    "cylindrical_gear", "ring_gear"})
     return _stated(r, st, "planetary")
