@@ -207,15 +207,27 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
             A("total_contact_ratio", float(geo["eps_gamma"])),
         ]
         stage["attributes"] += _drive_keys(calc.kind, k, eta)
-        ka = inp.get("load", {}).get("application_factor")
+        ka = (inp.get("load", {}) if sdata is None else sdata.get("load") or {}).get(
+            "application_factor")
         if ka is not None:
             stage["attributes"].append(A("application_factor_iso_6336_2006", float(ka)))
-        extra = {t: inp.get(t) for t in ("rack", "options", "iso") if isinstance(inp.get(t), dict)}
-        extra["gear"] = {kk: v for kk, v in gear.items() if kk not in (
-            "module", "z1", "z2", "helix_angle", "face_width", "x1", "x2", "center_distance",
-            "pressure_angle", "shift_split")}
-        extra["load"] = {kk: v for kk, v in inp.get("load", {}).items() if kk in (
-            "regime", "meshes_pinion", "meshes_wheel", "reverse_torque_ratio")}
+        standard = ("module", "z1", "z2", "helix_angle", "face_width", "x1", "x2",
+                    "center_distance", "pressure_angle", "shift_split")
+        if sdata is not None:
+            # a drive's stage: its tables as written (the report's inputs hold what the drive
+            # set: the loads, the shaft's misalignment f_sh, the oil of the heat balance)
+            extra = {t: v for t, v in sdata.items()
+                     if isinstance(v, dict) and t not in ("gear", "material", "load")}
+            extra["gear"] = {kk: v for kk, v in (sdata.get("gear") or {}).items()
+                             if kk not in standard}
+            extra["load"] = {kk: v for kk, v in (sdata.get("load") or {}).items()
+                             if kk not in ("torque1", "speed1", "power", "application_factor")}
+        else:
+            extra = {t: inp.get(t) for t in ("rack", "options", "iso")
+                     if isinstance(inp.get(t), dict)}
+            extra["gear"] = {kk: v for kk, v in gear.items() if kk not in standard}
+            extra["load"] = {kk: v for kk, v in inp.get("load", {}).items() if kk in (
+                "regime", "meshes_pinion", "meshes_wheel", "reverse_torque_ratio")}
         stage["attributes"] += _custom("", extra)
         # shafts placed in the v-w plane by the mate angle of the driving gear
         z_in, theta = gear_pos.get((k, k), (0.0, 0.0))
@@ -390,9 +402,12 @@ def _shaft_details(b: _Builder, shafts: list, by_index: dict, casing: dict) -> N
         sh["attributes"] += _custom("", {k: v for k, v in sd.items()
                                          if k in ("fixed", "method", "stiffness_a",
                                                   "stiffness_b", "coupling")})
+        for table, value in sd.items():     # the shaft's own tables: [shaft.lubrication], ...
+            if isinstance(value, dict) and table not in ("support_a", "support_b"):
+                sh["attributes"] += _custom(f"{table}__", value)
         if sd.get("key"):   # REXS 1.5 has no shaft-hub connection: the spec's tables
-            sh["attributes"].append(A(f"{CUSTOM}key__json", json.dumps(sd["key"]),
-                                      vtype="string"))
+            keys = [{k: v for k, v in key.items() if v is not None} for key in sd["key"]]
+            sh["attributes"].append(A(f"{CUSTOM}key__json", json.dumps(keys), vtype="string"))
         for side, key in (("a", "bearing_a"), ("b", "bearing_b")):
             sup = sd.get(f"support_{side}") or {}
             u = float(sd.get(key, 0.0) or 0.0)
@@ -410,7 +425,9 @@ def _shaft_details(b: _Builder, shafts: list, by_index: dict, casing: dict) -> N
             sec = b.new("shaft_section", f"shaft {i} step {k}", [
                 A("u_coordinate_on_shaft", u, "mm"), A("length", L, "mm"),
                 A("outer_diameter_begin", d, "mm"), A("outer_diameter_end", d, "mm"),
-                A("inner_diameter_begin", bore, "mm"), A("inner_diameter_end", bore, "mm")])
+                A("inner_diameter_begin", bore, "mm"), A("inner_diameter_end", bore, "mm")]
+                + _custom("", {kk: v for kk, v in step.items()     # fillet, Rz, keyway, ...
+                               if kk not in ("length", "diameter", "bore")}))
             b.rel("assembly", ("assembly", sh), ("part", sec))
             u += L
 

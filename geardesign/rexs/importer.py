@@ -385,12 +385,14 @@ def _material(r: "_Reader", gear: Component) -> dict[str, tuple] | None:
     if mat is None:
         return None
     name = r.text(mat, "material_designation") or ""
-    grade = gear_steel.normalize_grade(name) if name else ""
-    if grade not in gear_steel.grades():
-        grade = gear_steel.equivalent_of(name) if name else None
-    if not grade:
-        return None
-    out = {"grade": (name.strip(), src(mat, "material_designation"))}
+    out = {}
+    if name:        # a grade of the library; none named: the treatment and hardness alone
+        grade = gear_steel.normalize_grade(name)
+        if grade not in gear_steel.grades():
+            grade = gear_steel.equivalent_of(name)
+        if not grade:
+            return None
+        out["grade"] = (name.strip(), src(mat, "material_designation"))
     kind = r.text(mat, "heat_treated_material_type_iso_6336_2006")
     hard = {}
     for key, aid, unit in (("hardness_HB", "surface_hardness_brinell", "HB"),
@@ -406,7 +408,7 @@ def _material(r: "_Reader", gear: Component) -> dict[str, tuple] | None:
              "nitrided_steel": "nitrided",
              "through_hardened_wrought_steel": "improved" if "hardness_HB" in hard
              else "through_hardened"}.get(kind or "")
-    if treat is None:
+    if treat is None or not (name or hard):
         return None
     out["treatment"] = (treat, src(mat, "heat_treated_material_type_iso_6336_2006"))
     out.update(hard)
@@ -741,6 +743,8 @@ def _shafts(r: _Reader, out: Writer, order: list, chain: list) -> None:
         lines.kv("bearing_b", brs[1][0], brs[1][2])
         shaft_extra = custom(sh)
         keys = shaft_extra.pop("key__json", None)
+        sub = {k: v for k, v in shaft_extra.items() if "__" in k}
+        shaft_extra = {k: v for k, v in shaft_extra.items() if "__" not in k}
         for k, (v, s_) in shaft_extra.items():
             lines.kv(k, v, s_)
         for side, (_, br, _) in zip("ab", brs if "fixed" not in shaft_extra else ()):
@@ -794,7 +798,14 @@ def _shafts(r: _Reader, out: Writer, order: list, chain: list) -> None:
                                                         " (a cone: its smaller diameter)"))
                 if bore:
                     lines.kv("bore", bore, s_b)
+                for k, (v, s_) in custom(s).items():
+                    lines.kv(k, v, s_)
             r.read.add("shaft_section")
+        if sub:             # the shaft's own tables ([shaft.lubrication], ...) as exported
+            from geardesign.rexs.stages import nest, write_tables
+
+            write_tables(lines, "shaft.", nest({k.replace("__", "."): v
+                                                for k, v in sub.items()}))
         _shaft_loads(r, lines, sh)
         if keys is not None:
             import json
