@@ -137,11 +137,10 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
         T_in, n_in = ld.get("torque1"), ld.get("speed1")
         if T_in is None and ld.get("power") is not None and n_in:
             T_in = ld["power"] * 1000.0 / (2.0 * math.pi * n_in / 60.0)
-        life = doc["inputs"]["load"].get("life_hours")
+        life = ld.get("life_hours")
         shafts_spec: list[dict] = []
-        unit["attributes"] += _custom("spur__", {k: v for k, v in data.items()
-                                                  if k not in ("gear", "rack", "material")},
-                                      skip=("kind",))
+        unit["attributes"].append(A(f"{CUSTOM}source_kind", "spur"))
+        raw_spur = load_toml(path)
     elif calc.kind in ("planetary", "worm"):
         stages, data, shafts_spec = [doc], {}, []
         raw = load_toml(path)
@@ -194,7 +193,7 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
             continue
         inp = st["inputs"]
         geo = st["results"]["geometry"]
-        gear = inp["gear"]
+        gear = inp.get("gear") or _designed(st)
         stage = b.new("cylindrical_stage", (data.get("stage") or [{}])[k - 1].get("name")
                       if calc.kind == "drive" and (data.get("stage") or [{}])[k - 1].get("name")
                       else f"stage {k}")
@@ -228,7 +227,13 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
             extra["gear"] = {kk: v for kk, v in gear.items() if kk not in standard}
             extra["load"] = {kk: v for kk, v in inp.get("load", {}).items() if kk in (
                 "regime", "meshes_pinion", "meshes_wheel", "reverse_torque_ratio")}
-        stage["attributes"] += _custom("", extra)
+        if calc.kind == "spur":     # the spec as written (geometry keys: standard attributes)
+            from geardesign.rexs.stages import SPUR_KEYS, _get, spec_customs
+
+            stage["attributes"] += spec_customs(A, raw_spur, {
+                key for key, *_ in SPUR_KEYS if _get(raw_spur, key) is not None})
+        else:
+            stage["attributes"] += _custom("", extra)
         # shafts placed in the v-w plane by the mate angle of the driving gear
         z_in, theta = gear_pos.get((k, k), (0.0, 0.0))
         z_out, _ = gear_pos.get((k + 1, k), (0.0, 0.0))
@@ -299,6 +304,13 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
              "relations": b.relations, "components": b.components,
              "load_spectrum": {"id": 1, "load_cases": cases}}
     return _json(model) if fmt == "json" else _xml(model)
+
+
+def _designed(doc: dict) -> dict:
+    """The gear keys of a spur spec in design mode: the proposal of its design section."""
+    d = doc["results"]["design"]
+    return {"module": d["module_proposed"], "z1": d["z1_proposed"], "z2": d["z2_proposed"],
+            "helix_angle": d["helix_angle_proposed"], "face_width": d["face_width_proposed"]}
 
 
 def _stage_load(kind: str, doc: dict) -> tuple:

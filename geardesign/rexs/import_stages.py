@@ -41,7 +41,6 @@ def import_other(r: _Reader, label: str) -> Imported:
     """A model with planetary or worm stages as a spec (one line when it cannot be)."""
     m = r.m
     gu = gu_of(m)
-    source = custom(gu).get("source_kind", (None,))[0] if gu is not None else None
     ordered = [c for c in m.of_type("cylindrical_stage", "planetary_stage", "worm_stage")
                if f"{ST.CUSTOM}drive__order" in c.attributes]
     if ordered:
@@ -58,33 +57,49 @@ def import_other(r: _Reader, label: str) -> Imported:
                          f"worm stage alone is imported from any program")
     st = units[0]
     kind = "planetary" if st.type == "planetary_stage" else "worm"
-    out = Writer()
-    head = [f"# Imported from {label}: REXS {m.version} ({m.fmt.upper()}), written by "
-            f"{m.application} {m.application_version} on {m.date}.".rstrip(),
-            "# Every value names its REXS source: component id, type and attribute."]
-    if source == kind:
-        out.kv("kind", kind, None)
-        tree = _restore(r, st, kind)
-        tree.pop("kind", None)
-        ST.write_tables(out, "", tree)
-        stated = [_stated(r, st, kind)]
-    else:
-        T_in, case_no, torque_load, case, speed, load_shaft = _load_case(r)
-        head.append(f"# Load case: {case_no if case_no else 'the model'} (the largest "
-                    f"torque).")
-        out.kv("kind", kind, None)
-        out.kv("title", gu.name if gu is not None and gu.name else label,
-               "gear_unit name" if gu is not None and gu.name else None)
-        out.blank()
-        life = r.value(gu, "operating_time", "h") if gu is not None else (None, None)
-        if kind == "planetary":
-            stated = [_planetary(r, out, st, T_in, torque_load, case_no, load_shaft, speed,
-                                 life)]
-        else:
-            stated = [_worm(r, out, st, T_in, torque_load, case_no, load_shaft, speed, life)]
+    out, head = Writer(), _heading(m, label)
+    T_in, case_no, torque_load, case, speed, load_shaft = _load_case(r)
+    head.append(f"# Load case: {case_no if case_no else 'the model'} (the largest torque).")
+    out.kv("kind", kind, None)
+    out.kv("title", gu.name if gu is not None and gu.name else label,
+           "gear_unit name" if gu is not None and gu.name else None)
+    out.blank()
+    life = r.value(gu, "operating_time", "h") if gu is not None else (None, None)
+    read = _planetary if kind == "planetary" else _worm
+    stated = [read(r, out, st, T_in, torque_load, case_no, load_shaft, speed, life)]
     _lubricant(r, out)
     _rest(r, kind)
     return _assemble(r, head, out, stated)
+
+
+def _heading(m, label: str) -> list[str]:
+    return [f"# Imported from {label}: REXS {m.version} ({m.fmt.upper()}), written by "
+            f"{m.application} {m.application_version} on {m.date}.".rstrip(),
+            "# Every value names its REXS source: component id, type and attribute."]
+
+
+def restore_spec(r: _Reader, label: str, kind: str) -> Imported:
+    """A spur, planetary or worm spec exported by geardesign (the gear unit's
+    ``custom_geardesign__source_kind``), restored from its stage component."""
+    ctype = {"spur": "cylindrical_stage", "planetary": "planetary_stage",
+             "worm": "worm_stage"}[kind]
+    found = r.m.of_type(ctype)
+    if len(found) != 1:
+        raise ModelError(f"a {kind} spec exported by geardesign has one {ctype}; this model "
+                         f"has {len(found)}")
+    st = found[0]
+    out = Writer()
+    out.kv("kind", kind, None)
+    tree = _restore(r, st, kind)
+    tree.pop("kind", None)
+    ST.write_tables(out, "", tree)
+    out.blank()
+    if kind == "spur":
+        r.read.update({"material", "cylindrical_gear_flank"})
+        r.used_materials.update(c.id for c in r.m.of_type("material"))
+    _lubricant(r, out)
+    _rest(r, kind)
+    return _assemble(r, _heading(r.m, label), out, [_stated(r, st, kind)])
 
 
 def _rest(r: _Reader, kind: str) -> None:
@@ -104,7 +119,7 @@ def _restore(r: _Reader, st: Component, kind: str) -> dict:
     flat = ST.restored(st)
     members = _members(r, st, kind)
     table = {k: (member, aid, unit) for k, member, aid, unit in
-             (ST.PLANETARY_KEYS if kind == "planetary" else ST.WORM_KEYS)}
+             {"planetary": ST.PLANETARY_KEYS, "worm": ST.WORM_KEYS, "spur": ST.SPUR_KEYS}[kind]}
     for path in ST.from_rexs(st) or []:
         if path not in table:
             raise ModelError(f"component {st.id} ({st.type}): {ST.FROM_REXS} names {path!r}, "
@@ -130,6 +145,19 @@ def _members(r: _Reader, st: Component, kind: str) -> dict[str, Component]:
     sun–planet cylindrical_stage), planets (their count); worm, wheel, stage."""
     m = r.m
     out: dict = {"stage": st}
+    if kind == "spur":
+        from geardesign.rexs.importer import _flank
+
+        rel = m.related("stage", stage=st.id)
+        if not rel:
+            raise ModelError(f"cylindrical_stage {st.id} has no stage relation")
+        for i, role in ((1, "gear_1"), (2, "gear_2")):
+            g = r.comp(rel[0].role(role) or "", rel[0])
+            out[f"gear{i}"] = g
+            left, right = _flank(r, g)
+            if left is not None or right is not None:
+                out[f"flank{i}"] = left or right
+        return out
     if kind == "worm":
         for rel in m.related("stage", stage=st.id):
             out["worm"] = r.comp(rel.role("gear_1") or "", rel)
@@ -175,7 +203,16 @@ def _stated(r: _Reader, st: Component, kind: str) -> dict:
     """The geometry the model states, for the comparison with the computed one."""
     mem = _members(r, st, kind)
     stated = {}
-    if kind == "worm":
+    if kind == "spur":
+        for key, role, aid in (("a_w", "stage", "center_distance"),
+                               ("d1", "gear1", "reference_circle_diameter"),
+                               ("d_a1", "gear1", "tip_diameter"),
+                               ("d2", "gear2", "reference_circle_diameter"),
+                               ("d_a2", "gear2", "tip_diameter"), ("u", "stage", "gear_ratio")):
+            v, s_ = r.value(mem[role], aid, "" if key == "u" else "mm")
+            if v is not None:
+                stated[key] = (v, s_)
+    elif kind == "worm":
         for key, role, aid in (("a_w", "stage", "center_distance"),
                                ("d1", "worm", "reference_diameter_worm_gear"),
                                ("d_a1", "worm", "tip_diameter_worm_gear"),

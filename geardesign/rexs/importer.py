@@ -75,7 +75,6 @@ class _Reader:
         self.not_imported: dict[str, list[str]] = {}
         self.read: set[str] = set()
         self.used_materials: set[str] = set()
-        self.stage_tables: dict[str, dict] = {}
         self.spectrum: list[dict] = []
         self.applied: set[str] = set()        # external loads written as [[shaft.load]]
         self._check_relations()
@@ -145,6 +144,12 @@ def import_model(model: Model, label: str = "model") -> Imported:
         raise ModelError(f"bevel stages (bevel_stage {found[0].id} \"{found[0].name}\") are "
                          f"not imported: the import reads cylindrical, planetary and worm "
                          f"stages")
+    gu = gu_of(m)
+    source = custom(gu).get("source_kind", (None,))[0] if gu is not None else None
+    if source in ("spur", "planetary", "worm"):     # a spec exported by geardesign
+        from geardesign.rexs.import_stages import restore_spec
+
+        return restore_spec(r, label, source)
     if m.of_type("planetary_stage", "worm_stage"):
         from geardesign.rexs.import_stages import import_other
 
@@ -260,9 +265,8 @@ def _load_case(r: "_Reader") -> tuple:
 
 def _head(r: "_Reader", label: str, T_in: float, case_no, torque_load: Component,
           speed: tuple) -> tuple["Writer", list[str]]:
-    """The drive spec's heading comments, [motor], [load] and [split] (from the load case
-    and the gear unit's custom attributes); the stage tables the gear unit carries go to
-    ``r.stage_tables``."""
+    """The drive spec's heading comments, [motor], [load] and the drive's other tables
+    (from the load case and the gear unit's custom attributes)."""
     m = r.m
     out = Writer()
     head = [f"# Imported from {label}: REXS {m.version} ({m.fmt.upper()}), written by "
@@ -277,18 +281,8 @@ def _head(r: "_Reader", label: str, T_in: float, case_no, torque_load: Component
     extra = custom(gu) if gu is not None else {}
     motor = {k[len("motor__"):]: v for k, v in extra.items() if k.startswith("motor__")}
     load = {k[len("load__"):]: v for k, v in extra.items() if k.startswith("load__")}
-    spur = {k[len("spur__"):]: v for k, v in extra.items() if k.startswith("spur__")}
     tables = {k: v for k, v in extra.items() if "__" in k
-              and k.split("__", 1)[0] not in ("motor", "load", "spur")}
-    stage_tables: dict[str, dict] = {}
-    for k, v in spur.items():     # a spur spec exported: its load keys go to the drive
-        t, _, key = k.rpartition("__")
-        if t == "load" and key in ("life_hours", "application_factor", "regime"):
-            load.setdefault(key, v)
-        elif t == "load" and key == "peak_torque1":
-            motor.setdefault("peak_ratio", (v[0] / T_in, v[1] + " / the input torque"))
-        elif t and t != "load":
-            stage_tables.setdefault(t.replace("__", "."), {})[key] = v
+              and k.split("__", 1)[0] not in ("motor", "load")}
     out.table("motor")
     if "power" in motor or "torque" in motor:
         out.comment(f"input torque {fmt(T_in)} N·m stated ({src(torque_load, 'torque_around_u_axis', case_no)})")
@@ -315,7 +309,6 @@ def _head(r: "_Reader", label: str, T_in: float, case_no, torque_load: Component
         head.append(f"# Load cases {', '.join(map(str, others))} are not rated (one load case "
                     f"per drive spec).")
     out.blank()
-    r.stage_tables = stage_tables
     if tables:      # the drive's other tables ([split], [thermal], ...) as exported
         from geardesign.rexs.stages import nest, write_tables
 
@@ -634,7 +627,7 @@ def _stage(r: _Reader, out: Writer, i: int, st: Component, a: Component, b: Comp
     ratio, s_u = r.value(st, "gear_ratio", "")
     if ratio is not None:
         tips["u"] = (ratio, s_u)
-    tables: dict[str, dict] = {t: dict(v) for t, v in r.stage_tables.items()}
+    tables: dict[str, dict] = {}
     for k, v in extra.items():
         if not k.startswith("gear__") and "__" in k:
             t, key = k.rsplit("__", 1)

@@ -54,6 +54,19 @@ WORM_KEYS = (
 )
 """Keys of a worm spec written as (and read from) standard REXS 1.5 attributes."""
 
+SPUR_KEYS = (
+    ("gear.module", "gear1", "normal_module", "mm"),
+    ("gear.z1", "gear1", "number_of_teeth", "none"),
+    ("gear.z2", "gear2", "number_of_teeth", "none"),
+    ("gear.helix_angle", "gear1", "helix_angle_reference_diameter", "deg"),
+    ("gear.face_width", "gear1", "face_width", "mm"),
+    ("gear.center_distance", "stage", "center_distance", "mm"),
+    ("gear.pressure_angle", "flank1", "normal_pressure_angle", "deg"),
+    ("gear.x1", "flank1", "addendum_modification_coefficient", "none"),
+    ("gear.x2", "flank2", "addendum_modification_coefficient", "none"),
+)
+"""Keys of a spur spec written as (and read from) standard REXS 1.5 attributes."""
+
 WORM_TYPES = {"ZA": "za", "ZI": "zi", "ZN": "zn", "ZK": "zk"}
 """GOST 18498-89 worm type → REXS ``flank_form`` (ZT, the toroid worm, has none)."""
 
