@@ -185,6 +185,7 @@ def _members(r: _Reader, st: Component, kind: str) -> dict[str, Component]:
                                      f"shaft (no assembly relation shaft → gear)")
             if g2.type == "ring_gear":
                 out.setdefault("ring", g2)
+                out.setdefault("planet_ring", c)
                 planets.add(g1.id)
             else:
                 out.setdefault("sun", g1)
@@ -228,6 +229,7 @@ def _stated(r: _Reader, st: Component, kind: str) -> dict:
                 stated[key] = (abs(v), s_)
     else:
         for key, role, aid in (("a_w", "sun_planet", "center_distance"),
+                               ("a_w_ring", "planet_ring", "center_distance"),
                                ("d_sun", "sun", "reference_circle_diameter"),
                                ("d_a_sun", "sun", "tip_diameter"),
                                ("d_planet", "planet", "reference_circle_diameter"),

@@ -77,6 +77,7 @@ class _Reader:
         self.used_materials: set[str] = set()
         self.spectrum: list[dict] = []
         self.applied: set[str] = set()        # external loads written as [[shaft.load]]
+        self.notes: list[str] = []            # what the drive spec cannot express
         self._check_relations()
 
     # ---------------------------------------------------------------- helpers
@@ -320,6 +321,8 @@ def _head(r: "_Reader", label: str, T_in: float, case_no, torque_load: Component
 def _assemble(r: "_Reader", head: list[str], out: "Writer", stated: list) -> Imported:
     """The spec text: heading, the "Not imported" list, the tables."""
     m = r.m
+    for note in r.notes:
+        head.append(f"# Note: {note}.")
     head.append("# Not imported (component type: components):")
     if not r.not_imported:
         head.append("#   nothing")
@@ -331,7 +334,7 @@ def _assemble(r: "_Reader", head: list[str], out: "Writer", stated: list) -> Imp
     read_types = {c.type for c in m.components.values()
                   if c.type in READ_TYPES and c.type not in r.not_imported} | (
         {t for t in r.read if t in {c.type for c in m.components.values()}})
-    return Imported(text, read_types, r.not_imported, stated)
+    return Imported(text, read_types, r.not_imported, stated, list(r.notes))
 
 
 CUSTOM = "custom_geardesign__"
@@ -727,10 +730,22 @@ def _shafts(r: _Reader, out: Writer, order: list, chain: list) -> None:
         if len(brs) < 2:
             why_not.append(f"shaft {sh.id} has {len(brs)} bearing(s); the drive's shafts have two")
             continue
+        for _, br, _ in brs:
+            rel = next(x for x in r.m.relations if x.type == "side"
+                       and x.role("assembly") == br.id and x.role("inner_part") == sh.id)
+            outer = r.m.components.get(rel.role("outer_part") or "")
+            if outer is not None and outer.type == "shaft":
+                r.notes.append(
+                    f"bearing {br.id} \"{br.name}\" sits between shaft {sh.id} and shaft "
+                    f"{outer.id} (its outer part): the drive supports every shaft on the "
+                    f"housing, so it is taken as a housing support of shaft {sh.id} and its "
+                    f"reaction is not applied to shaft {outer.id}, nor their relative speed "
+                    f"to its life")
         if len(brs) > 2:
             for _, br, _ in brs[1:-1]:
-                r.skip(br, f"a third bearing on shaft {sh.id}: the drive's shafts have two "
-                           f"(the outer two are used)")
+                r.skip(br, f"a third bearing on shaft {sh.id}: the drive's shaft is a beam on "
+                           f"two supports (statically determinate); the outer two are used and "
+                           f"this one's share of the load goes to them")
             brs = [brs[0], brs[-1]]
         lines.kv("bearing_a", brs[0][0], brs[0][2])
         lines.kv("bearing_b", brs[1][0], brs[1][2])
@@ -817,6 +832,7 @@ def _shafts(r: _Reader, out: Writer, order: list, chain: list) -> None:
         out.comment("The shafts are not imported as [[shaft]] tables (their bearings cannot be "
                     "rated): " + "; ".join(why_not))
         out.comment("Their data, as read, follow commented out.")
+        r.applied.clear()           # their [[shaft.load]] are not applied either
         for sh in order:
             r.skip(sh, "its shaft tables are commented out (bearings not rated)")
         for br in r.m.of_type("rolling_bearing_with_catalog_geometry", "concept_bearing"):
