@@ -1,9 +1,10 @@
-"""A spur or drive spec as a REXS 1.5 model (XML or JSON).
+"""A spur, planetary, worm or drive spec as a REXS 1.5 model (XML or JSON).
 
 The gear unit is written with the standard attribute ids and units of the REXS 1.5
 database (geardesign/rexs/rexs_database_1.5.json, [REXS-DB]): shafts (sections from
-``[[shaft.step]]``), cylindrical stages and gears with their flanks and materials, rolling
-bearings by catalogue designation, the load case (input torque and speed), and the computed
+``[[shaft.step]]``, external forces from ``[[shaft.load]]``), cylindrical stages and gears
+with their flanks and materials, planetary and worm stages (:mod:`geardesign.rexs.stages`),
+rolling bearings by catalogue designation, the load case (input torque and speed), and the computed
 values REXS has attributes for (reference, tip, root and base diameters, centre distance,
 ratio, transverse, overlap and total contact ratio).  A key of the spec that REXS has no
 attribute for (``bearing_scheme``, ``accuracy_grade``, the GOST regime, ...) is written as a
