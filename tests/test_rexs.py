@@ -39,25 +39,30 @@ def _run(text: str):
     return registry.run_data(tomllib.loads(text), "imported.toml")
 
 
-@pytest.mark.parametrize("name", sorted(PUBLIC))
-def test_public_model_imports_runs_and_reproduces_stated_geometry(name):
+def _imported_and_run(name: str):
+    """Import a public model and run the spec (exit 0 or 1); every component type of the
+    file is read or listed as not imported.  Returns the import and the results."""
     model = read_model(DATA / name)
     imp = import_model(model, name)
     res = _run(imp.text)
     assert res.exit_code in (0, 1)
-    doc = res.document()
-    stages = doc["results"]["stage_reports"]
+    types = {c.type for c in model.components.values()}
+    assert types == imp.read_types | set(imp.not_imported), (
+        types ^ (imp.read_types | set(imp.not_imported)))
+    assert "# Not imported" in imp.text
+    return imp, res.document()["results"]
+
+
+@pytest.mark.parametrize("name", sorted(PUBLIC))
+def test_public_model_imports_runs_and_reproduces_stated_geometry(name):
+    imp, results = _imported_and_run(name)
+    stages = results["stage_reports"]
     assert [s["component"] for s in imp.stages]
     # every centre distance the file states, at its printed precision (one decimal)
     stated = PUBLIC[name][1]
     assert len(stages) == len(stated)
     for st, a in zip(stages, stated):
         assert round(st["results"]["geometry"]["a_w"], 1) == pytest.approx(a)
-    # every component type of the file is read or listed as not imported
-    types = {c.type for c in model.components.values()}
-    assert types == imp.read_types | set(imp.not_imported), (
-        types ^ (imp.read_types | set(imp.not_imported)))
-    assert "# Not imported" in imp.text
 
 
 def test_xml_and_json_of_one_model_give_one_spec():
@@ -94,20 +99,13 @@ def _decimals(x: float) -> int:
 
 @pytest.mark.parametrize("name", sorted(STAGE_MODELS))
 def test_planetary_and_worm_models_import_run_and_reproduce_stated_geometry(name):
-    model = read_model(DATA / name)
-    imp = import_model(model, name)
-    res = _run(imp.text)
-    assert res.exit_code in (0, 1)
-    results = res.document()["results"]
+    imp, results = _imported_and_run(name)
     where = STAGE_MODELS[name][1]
     stated = imp.stages[0]["stated"]
     assert set(stated) == set(where)          # every value the file states is compared
     for key, (value, source) in stated.items():
         sec, k = where[key]
         assert round(results[sec][k], _decimals(value)) == pytest.approx(value), (key, source)
-    types = {c.type for c in model.components.values()}
-    assert types == imp.read_types | set(imp.not_imported), (
-        types ^ (imp.read_types | set(imp.not_imported)))
 
 
 def test_worm_model_is_the_worm_spec_it_states():
