@@ -41,7 +41,7 @@ LONG = {
     "core/spec.py": SPLITTING + ": schema types apart from validation",
     "core/render.py": SPLITTING + ": the HTML report in its own package",
     "core/io.py": SPLITTING + ": the writers apart from the readers",
-    "rexs/importer.py": SPLITTING + ": one reader per REXS component type (shafts, stages, "
+    "rexs/chain.py": SPLITTING + ": one reader per REXS component type (shafts, stages, "
                         "bearings, load case) apart from the spec writer",
     "shaft/inputs.py": SPLITTING + ": the step, load and support rules apart from the "
                        "material and method keys",

@@ -20,9 +20,11 @@ import math
 from pathlib import Path
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.rexs.common import CUSTOM, A, text_suffix
+from geardesign.rexs.serialize import to_json, to_xml
+from geardesign.rexs.stages import designed, drive_keys, other_stage, stage_load
 
 VERSION = "1.5"
-CUSTOM = "custom_geardesign__"
 KINDS = ("spur", "planetary", "worm", "drive")
 """Spec kinds ``export`` writes (a drive of spur, planetary and worm stages)."""
 
@@ -60,40 +62,6 @@ class _Builder:
         self.relations.append({"id": len(self.relations) + 1, "type": rtype,
                                "refs": [{"id": c["id"], "role": role, "hint": c["type"]}
                                         for role, c in refs]})
-
-
-def A(aid: str, value, unit: str = "none", vtype: str | None = None) -> dict:
-    """One attribute; the value type from the Python value unless given."""
-    if vtype is None:
-        if isinstance(value, bool):
-            vtype = "boolean"
-        elif isinstance(value, int):
-            vtype = "integer"
-        elif isinstance(value, float):
-            vtype = "floating_point"
-        elif isinstance(value, list):
-            vtype = "floating_point_array"
-        else:
-            vtype = "string"
-    return {"id": aid, "unit": unit, vtype: value}
-
-
-TEXT_SUFFIX = "__str"
-"""Suffix of a custom attribute whose text value reads as a number or a boolean ("0", the
-GOST regime; "true"): XML does not state the value type, the import keeps it text."""
-
-
-def text_suffix(v) -> str:
-    if not isinstance(v, str):
-        return ""
-    low = v.strip().lower()
-    if low in ("true", "false"):
-        return TEXT_SUFFIX
-    try:
-        float(low)
-    except ValueError:
-        return ""
-    return TEXT_SUFFIX
 
 
 def _custom(prefix: str, table: dict, skip=()) -> list[dict]:
@@ -147,7 +115,7 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
         raw = load_toml(path)
         kinds = [(calc.kind, raw, doc.get("title") or path.stem, None)]
         unit["attributes"].append(A(f"{CUSTOM}source_kind", calc.kind))
-        T_in, n_in, life, load_at = _stage_load(calc.kind, doc)
+        T_in, n_in, life, load_at = stage_load(calc.kind, doc)
     else:
         from geardesign.drive.calculator import resolve_stages
 
@@ -189,12 +157,12 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
         kind, sdata, sname, eta = kinds[k - 1]
         if kind != "spur":
             centres.append(centres[-1])
-            comp = _other_stage(b, kind, sdata, st, sname or f"stage {k}", shafts, k, unit)
-            comp["attributes"] += _drive_keys(calc.kind, k, eta)
+            comp = other_stage(b, kind, sdata, st, sname or f"stage {k}", shafts, k, unit)
+            comp["attributes"] += drive_keys(calc.kind, k, eta)
             continue
         inp = st["inputs"]
         geo = st["results"]["geometry"]
-        gear = inp.get("gear") or _designed(st)
+        gear = inp.get("gear") or designed(st)
         stage = b.new("cylindrical_stage", (data.get("stage") or [{}])[k - 1].get("name")
                       if calc.kind == "drive" and (data.get("stage") or [{}])[k - 1].get("name")
                       else f"stage {k}")
@@ -206,7 +174,7 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
             A("overlap_contact_ratio", float(geo["eps_beta"])),
             A("total_contact_ratio", float(geo["eps_gamma"])),
         ]
-        stage["attributes"] += _drive_keys(calc.kind, k, eta)
+        stage["attributes"] += drive_keys(calc.kind, k, eta)
         ka = (inp.get("load", {}) if sdata is None else sdata.get("load") or {}).get(
             "application_factor")
         if ka is not None:
@@ -229,10 +197,10 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
             extra["load"] = {kk: v for kk, v in inp.get("load", {}).items() if kk in (
                 "regime", "meshes_pinion", "meshes_wheel", "reverse_torque_ratio")}
         if calc.kind == "spur":     # the spec as written (geometry keys: standard attributes)
-            from geardesign.rexs.stages import SPUR_KEYS, _get, spec_customs
+            from geardesign.rexs.stages import SPUR_KEYS, spec_customs, spec_value
 
             stage["attributes"] += spec_customs(A, raw_spur, {
-                key for key, *_ in SPUR_KEYS if _get(raw_spur, key) is not None})
+                key for key, *_ in SPUR_KEYS if spec_value(raw_spur, key) is not None})
         else:
             stage["attributes"] += _custom("", extra)
         # shafts placed in the v-w plane by the mate angle of the driving gear
@@ -304,60 +272,7 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
              "applicationVersion": _version(), "date": "1970-01-01T00:00:00+00:00",
              "relations": b.relations, "components": b.components,
              "load_spectrum": {"id": 1, "load_cases": cases}}
-    return _json(model) if fmt == "json" else _xml(model)
-
-
-def _designed(doc: dict) -> dict:
-    """The gear keys of a spur spec in design mode: the proposal of its design section."""
-    d = doc["results"]["design"]
-    return {"module": d["module_proposed"], "z1": d["z1_proposed"], "z2": d["z2_proposed"],
-            "helix_angle": d["helix_angle_proposed"], "face_width": d["face_width_proposed"]}
-
-
-def _stage_load(kind: str, doc: dict) -> tuple:
-    """(input torque [N·m], input speed [1/min], life [h], index of the torque's shaft) of a
-    planetary or worm spec: the planetary's input member (shaft 1, the input); the worm's
-    wheel torque T2 on the wheel shaft (shaft 2) with the worm speed, as the worm
-    calculator takes them."""
-    inp, res = doc["inputs"], doc["results"]
-    if kind == "worm":
-        ld = inp.get("load") or {}
-        return ld.get("torque2"), ld.get("speed1"), ld.get("life"), 1
-    op = inp.get("operation") or {}
-    member = op.get("input")
-    T = (res.get("power") or {}).get(f"T_{member}") if op.get("torque") or op.get("power") \
-        else None
-    n = (res.get("kinematics") or {}).get(f"n_{member}")
-    life = (inp.get("strength") or {}).get("life_hours")
-    return (abs(T) if T is not None else None), (abs(n) if n else None), life, 0
-
-
-def _other_stage(b: _Builder, kind: str, sdata: dict, doc: dict, name: str, shafts: list,
-                 k: int, unit: dict) -> dict:
-    """A planetary or worm stage between shafts k-1 (input) and k (output)
-    (:mod:`geardesign.rexs.stages`); a planetary's third member (held, or the control
-    member of a differential) gets a shaft of its own."""
-    from geardesign.rexs import stages as ST
-
-    if kind == "worm":
-        return ST.worm(b, A, sdata, doc, name, (shafts[k - 1], shafts[k]), unit)
-    op = doc["inputs"].get("operation") or {}
-    where = {op.get("input"): shafts[k - 1], op.get("output"): shafts[k]}
-    for member in ST.MEMBERS:
-        if member not in where:
-            where[member] = b.new("shaft", f"{name} {member} shaft")
-            b.rel("assembly", ("assembly", unit), ("part", where[member]))
-    return ST.planetary(b, A, sdata, doc, name, where, unit)
-
-
-def _drive_keys(kind: str, k: int, eta) -> list[dict]:
-    """The drive's own keys of stage k: its place in the chain and a given efficiency."""
-    if kind != "drive":
-        return []
-    out = [A(f"{CUSTOM}drive__order", int(k))]
-    if eta is not None:
-        out.append(A(f"{CUSTOM}drive__efficiency", float(eta)))
-    return out
+    return to_json(model) if fmt == "json" else to_xml(model)
 
 
 def _external_loads(b: _Builder, shafts: list, by_index: dict) -> None:
@@ -445,64 +360,3 @@ def _shaft_details(b: _Builder, shafts: list, by_index: dict, casing: dict) -> N
             u += L
 
 
-def _json(model: dict) -> str:
-    return json.dumps({"model": model}, indent=1, ensure_ascii=False) + "\n"
-
-
-def _value_key(a: dict) -> str:
-    return next(k for k in a if k not in ("id", "unit"))
-
-
-def _xml(model: dict) -> str:
-    from xml.sax.saxutils import escape, quoteattr
-
-    def val(a):
-        k = _value_key(a)
-        v = a[k]
-        if k.endswith("_array"):
-            return "<array>" + "".join(
-                f"<c>{escape(x) if isinstance(x, str) else _num(x)}</c>" for x in v) + "</array>"
-        if isinstance(v, bool):
-            return "true" if v else "false"
-        if isinstance(v, (int, float)):
-            return _num(v)
-        return escape(str(v))
-
-    def comp(c, indent):
-        lines = [f"{indent}<component id=\"{c['id']}\" name={quoteattr(c['name'])} "
-                 f"type=\"{c['type']}\">"]
-        for a in c["attributes"]:
-            lines.append(f"{indent}  <attribute id=\"{a['id']}\" unit={quoteattr(a['unit'])}>"
-                         f"{val(a)}</attribute>")
-        lines.append(f"{indent}</component>")
-        return lines
-
-    out = ['<?xml version="1.0" encoding="UTF-8"?>',
-           f"<model applicationId=\"{model['applicationId']}\" applicationVersion="
-           f"{quoteattr(model['applicationVersion'])} date=\"{model['date']}\" "
-           f"version=\"{model['version']}\">", "  <relations>"]
-    for r in model["relations"]:
-        out.append(f"    <relation id=\"{r['id']}\" type=\"{r['type']}\">")
-        for ref in r["refs"]:
-            out.append(f"      <ref hint=\"{ref['hint']}\" id=\"{ref['id']}\" "
-                       f"role=\"{ref['role']}\"/>")
-        out.append("    </relation>")
-    out += ["  </relations>", "  <components>"]
-    for c in model["components"]:
-        out += comp(c, "    ")
-    out += ["  </components>", "  <load_spectrum id=\"1\">"]
-    for lc in model["load_spectrum"]["load_cases"]:
-        out.append(f"    <load_case id=\"{lc['id']}\">")
-        for c in lc["components"]:
-            out += comp(c, "      ")
-        out.append("    </load_case>")
-    out += ["  </load_spectrum>", "</model>"]
-    return "\n".join(out) + "\n"
-
-
-def _num(x) -> str:
-    if isinstance(x, bool):
-        return "true" if x else "false"
-    if isinstance(x, int):
-        return str(x)
-    return repr(float(x))

@@ -24,7 +24,8 @@ from __future__ import annotations
 import json
 import math
 
-CUSTOM = "custom_geardesign__"
+from geardesign.rexs.common import CUSTOM, A, custom, text_suffix
+
 SPEC = CUSTOM + "spec__"
 FROM_REXS = SPEC + "from_rexs"
 JSON_SUFFIX = "__json"
@@ -79,8 +80,6 @@ def spec_customs(A, data: dict, mapped: set[str]) -> list[dict]:
     """Custom attributes of every key of a stage spec not in ``mapped`` (nested tables
     flattened with ``__``; a list of tables or numbers as JSON text, its id ending in
     ``__json``), and the list of the mapped keys."""
-    from geardesign.rexs.exporter import text_suffix
-
     out = []
 
     def walk(prefix: str, table: dict, path: str):
@@ -100,7 +99,7 @@ def spec_customs(A, data: dict, mapped: set[str]) -> list[dict]:
     return out
 
 
-def _get(data: dict, path: str):
+def spec_value(data: dict, path: str):
     t = data
     for part in path.split("."):
         if not isinstance(t, dict) or part not in t:
@@ -116,8 +115,8 @@ def planetary(b, A, data: dict, doc: dict, stage_name: str, shafts: dict, unit: 
     g, sp, pr = sec["gears"], sec["sun_planet"], sec["planet_ring"]
     train = data.get("train") or {}
     n_p = int(train.get("planets", 3))
-    mapped = {k for k, *_ in PLANETARY_KEYS if _get(data, k) is not None
-              and not (k == "teeth.ring" and _get(data, k) < 0)}
+    mapped = {k for k, *_ in PLANETARY_KEYS if spec_value(data, k) is not None
+              and not (k == "teeth.ring" and spec_value(data, k) < 0)}
     ps = b.new("planetary_stage", stage_name, spec_customs(A, data, mapped))
     b.rel("assembly", ("assembly", unit), ("part", ps))
     carrier = b.new("planet_carrier", f"{stage_name} carrier")
@@ -179,7 +178,7 @@ def worm(b, A, data: dict, doc: dict, stage_name: str, shafts: tuple, unit: dict
     """The components of one worm stage: worm on ``shafts[0]``, wheel on ``shafts[1]``."""
     geo = doc["results"]["geometry"]
     gear = data.get("gear") or {}
-    mapped = {k for k, *_ in WORM_KEYS if _get(data, k) is not None}
+    mapped = {k for k, *_ in WORM_KEYS if spec_value(data, k) is not None}
     ws = b.new("worm_stage", stage_name, spec_customs(A, data, mapped) + [
         A("center_distance", float(geo["a_w"]), "mm"), A("gear_ratio", float(geo["u"]))])
     b.rel("assembly", ("assembly", unit), ("part", ws))
@@ -213,8 +212,6 @@ def worm(b, A, data: dict, doc: dict, stage_name: str, shafts: tuple, unit: dict
 
 def restored(c) -> dict:
     """The stage spec stored in the custom attributes of ``c``: path → (value, source)."""
-    from geardesign.rexs.importer import custom
-
     out = {}
     for k, (v, s_) in custom(c).items():
         if not k.startswith("spec__") or k == "spec__from_rexs":
@@ -267,3 +264,54 @@ def write_tables(out, prefix: str, tree: dict) -> None:
             out.table(f"{prefix}{k}", array=True, note=s_)
             for kk, vv in item.items():
                 out.kv(kk, vv, None)
+
+
+def stage_load(kind: str, doc: dict) -> tuple:
+    """(input torque [N·m], input speed [1/min], life [h], index of the torque's shaft) of a
+    planetary or worm spec: the planetary's input member (shaft 1, the input); the worm's
+    wheel torque T2 on the wheel shaft (shaft 2) with the worm speed, as the worm
+    calculator takes them."""
+    inp, res = doc["inputs"], doc["results"]
+    if kind == "worm":
+        ld = inp.get("load") or {}
+        return ld.get("torque2"), ld.get("speed1"), ld.get("life"), 1
+    op = inp.get("operation") or {}
+    member = op.get("input")
+    T = (res.get("power") or {}).get(f"T_{member}") if op.get("torque") or op.get("power") \
+        else None
+    n = (res.get("kinematics") or {}).get(f"n_{member}")
+    life = (inp.get("strength") or {}).get("life_hours")
+    return (abs(T) if T is not None else None), (abs(n) if n else None), life, 0
+
+
+def other_stage(b, kind: str, sdata: dict, doc: dict, name: str, shafts: list,
+                 k: int, unit: dict) -> dict:
+    """A planetary or worm stage between shafts k-1 (input) and k (output)
+    (:mod:`geardesign.rexs.stages`); a planetary's third member (held, or the control
+    member of a differential) gets a shaft of its own."""
+    if kind == "worm":
+        return worm(b, A, sdata, doc, name, (shafts[k - 1], shafts[k]), unit)
+    op = doc["inputs"].get("operation") or {}
+    where = {op.get("input"): shafts[k - 1], op.get("output"): shafts[k]}
+    for member in MEMBERS:
+        if member not in where:
+            where[member] = b.new("shaft", f"{name} {member} shaft")
+            b.rel("assembly", ("assembly", unit), ("part", where[member]))
+    return planetary(b, A, sdata, doc, name, where, unit)
+
+
+def drive_keys(kind: str, k: int, eta) -> list[dict]:
+    """The drive's own keys of stage k: its place in the chain and a given efficiency."""
+    if kind != "drive":
+        return []
+    out = [A(f"{CUSTOM}drive__order", int(k))]
+    if eta is not None:
+        out.append(A(f"{CUSTOM}drive__efficiency", float(eta)))
+    return out
+
+
+def designed(doc: dict) -> dict:
+    """The gear keys of a spur spec in design mode: the proposal of its design section."""
+    d = doc["results"]["design"]
+    return {"module": d["module_proposed"], "z1": d["z1_proposed"], "z2": d["z2_proposed"],
+            "helix_angle": d["helix_angle_proposed"], "face_width": d["face_width_proposed"]}
