@@ -419,3 +419,50 @@ def test_cli_start_up_does_not_import_the_exchange_code():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          cwd=Path(__file__).parent.parent, check=True).stdout
     assert out.strip() == "['geardesign.rexs.cli']"
+
+
+# ----------------------------------------------------------------------- damaged models
+
+_STAGE_MODELS_JSON = {name: json.loads(export_spec(SPECS / name, "json"))
+                      for name in ("planetary_2kh_reducer.toml", "worm_single_start_reducer.toml",
+                                   "drive_worm_spur.toml")}
+
+
+@pytest.mark.parametrize("name", sorted(_STAGE_MODELS_JSON))
+def test_a_damaged_stage_model_is_one_line_or_a_spec(name):
+    """An exported planetary or worm model with one attribute or one relation dropped, or one
+    value replaced by text: the import writes a spec or refuses in one line (InputError),
+    never an exception of another kind; the spec runs or is refused the same way."""
+    from hypothesis import given, settings, strategies as st
+
+    from geardesign.core.errors import InputError
+
+    base = _STAGE_MODELS_JSON[name]["model"]
+    n_attr = sum(len(c["attributes"]) for c in base["components"])
+
+    @settings(max_examples=40, deadline=None, derandomize=True)
+    @given(st.sampled_from(["attribute", "relation", "text"]),
+           st.integers(0, max(n_attr, len(base["relations"])) - 1))
+    def check(what, k):
+        doc = json.loads(json.dumps({"model": base}))
+        m = doc["model"]
+        attrs = [(c, a) for c in m["components"] for a in c["attributes"]]
+        if what == "relation":
+            del m["relations"][k % len(m["relations"])]
+        else:
+            c, a = attrs[k % len(attrs)]
+            if what == "attribute":
+                c["attributes"].remove(a)
+            else:
+                key = next(x for x in a if x not in ("id", "unit"))
+                a[key] = "not a value"
+        try:
+            imp = import_model(parse(json.dumps(doc).encode()), name)
+        except InputError:
+            return
+        try:
+            _run(imp.text)
+        except InputError:
+            pass
+
+    check()

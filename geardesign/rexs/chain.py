@@ -768,7 +768,13 @@ def _shafts(r: _Reader, out: Writer, order: list, chain: list) -> None:
         if keys is not None:
             import json
 
-            for item in json.loads(str(keys[0])):
+            try:
+                items = json.loads(str(keys[0]))
+            except ValueError:
+                raise ModelError(f"{keys[1]}: not JSON text") from None
+            if not isinstance(items, list) or not all(isinstance(x, dict) for x in items):
+                raise ModelError(f"{keys[1]}: not a list of tables")
+            for item in items:
                 lines.table("shaft.key", array=True, note=keys[1])
                 for k, v in item.items():
                     lines.kv(k, v, None)

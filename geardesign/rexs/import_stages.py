@@ -16,7 +16,7 @@ from geardesign.rexs.chain import (Imported, ModelError, Writer, _Reader,
                                       _assemble, _head, _load_case, _lubricant,
                                       _stage, convert, custom, gu_of, src)
 from geardesign.rexs.foreign import members, planetary, stated, worm
-from geardesign.rexs.model import Component
+from geardesign.rexs.model import Component, number
 
 REASONS = {
     "gear_casing": "the housing is not modelled",
@@ -147,7 +147,7 @@ def _drive(r: _Reader, label: str, ordered: list[Component]) -> Imported:
     cylindrical stage, see :func:`geardesign.rexs.chain._stage`)."""
     m = r.m
     key = f"{ST.CUSTOM}drive__order"
-    ordered.sort(key=lambda c: int(float(c.attributes[key].value)))
+    ordered.sort(key=lambda c: number(c.attributes[key], f"component {c.id} ({c.type})"))
     T_in, case_no, torque_load, case, speed, load_shaft = _load_case(r)
     out, head = _head(r, label, T_in, case_no, torque_load, speed)
     geometry = []

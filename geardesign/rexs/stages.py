@@ -218,7 +218,12 @@ def restored(c) -> dict:
             continue
         path = k[len("spec__"):]
         if path.endswith(JSON_SUFFIX):
-            path, v = path[: -len(JSON_SUFFIX)], json.loads(str(v))
+            try:
+                path, v = path[: -len(JSON_SUFFIX)], json.loads(str(v))
+            except ValueError:
+                from geardesign.rexs.model import ModelError
+
+                raise ModelError(f"{s_}: not JSON text") from None
         out[path.replace("__", ".")] = (v, s_)
     return out
 
