@@ -36,7 +36,7 @@ LONG = {
     "core/spec.py": SPLITTING + ": schema types apart from validation",
     "core/render.py": SPLITTING + ": the HTML report in its own package",
     "core/io.py": SPLITTING + ": the writers apart from the readers",
-    "rexs/importer.py": SPLITTING + ": one reader per REXS component type (shafts, stages, "
+    "rexs/chain.py": SPLITTING + ": one reader per REXS component type (shafts, stages, "
                         "bearings, load case) apart from the spec writer",
     "rendering/figures.py": SPLITTING + ": one module of pictures per calculator kind",
     "rendering/html.py": SPLITTING + ": the first screen apart from the sections",

@@ -1,9 +1,10 @@
-"""A spur or drive spec as a REXS 1.5 model (XML or JSON).
+"""A spur, planetary, worm or drive spec as a REXS 1.5 model (XML or JSON).
 
 The gear unit is written with the standard attribute ids and units of the REXS 1.5
 database (geardesign/rexs/rexs_database_1.5.json, [REXS-DB]): shafts (sections from
-``[[shaft.step]]``), cylindrical stages and gears with their flanks and materials, rolling
-bearings by catalogue designation, the load case (input torque and speed), and the computed
+``[[shaft.step]]``, external forces from ``[[shaft.load]]``), cylindrical stages and gears
+with their flanks and materials, planetary and worm stages (:mod:`geardesign.rexs.stages`),
+rolling bearings by catalogue designation, the load case (input torque and speed), and the computed
 values REXS has attributes for (reference, tip, root and base diameters, centre distance,
 ratio, transverse, overlap and total contact ratio).  A key of the spec that REXS has no
 attribute for (``bearing_scheme``, ``accuracy_grade``, the GOST regime, ...) is written as a
@@ -19,9 +20,13 @@ import math
 from pathlib import Path
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.rexs.common import CUSTOM, A, text_suffix
+from geardesign.rexs.serialize import to_json, to_xml
+from geardesign.rexs.stages import designed, drive_keys, other_stage, stage_load
 
 VERSION = "1.5"
-CUSTOM = "custom_geardesign__"
+KINDS = ("spur", "planetary", "worm", "drive")
+"""Spec kinds ``export`` writes (a drive of spur, planetary and worm stages)."""
 
 TREATMENT_ISO6336 = {
     "normalized": "normalized_wrought_low_carbon_steel",
@@ -59,22 +64,6 @@ class _Builder:
                                         for role, c in refs]})
 
 
-def A(aid: str, value, unit: str = "none", vtype: str | None = None) -> dict:
-    """One attribute; the value type from the Python value unless given."""
-    if vtype is None:
-        if isinstance(value, bool):
-            vtype = "boolean"
-        elif isinstance(value, int):
-            vtype = "integer"
-        elif isinstance(value, float):
-            vtype = "floating_point"
-        elif isinstance(value, list):
-            vtype = "floating_point_array"
-        else:
-            vtype = "string"
-    return {"id": aid, "unit": unit, vtype: value}
-
-
 def _custom(prefix: str, table: dict, skip=()) -> list[dict]:
     """The scalar keys of ``table`` (nested tables flattened with ``__``) as custom
     attributes; lists are not written."""
@@ -85,20 +74,22 @@ def _custom(prefix: str, table: dict, skip=()) -> list[dict]:
         if isinstance(v, dict):
             out.extend(_custom(f"{prefix}{k}__", v))
         elif isinstance(v, (bool, int, float, str)):
-            out.append(A(f"{CUSTOM}{prefix}{k}", v))
+            out.append(A(f"{CUSTOM}{prefix}{k}{text_suffix(v)}", v))
         elif isinstance(v, list) and v and all(isinstance(x, str) for x in v):
             out.append(A(f"{CUSTOM}{prefix}{k}", list(v), vtype="string_array"))
     return out
 
 
 def export_spec(path: Path, fmt: str = "xml") -> str:
-    """The REXS text of the spec at ``path``; a spec of another kind, or one whose stages
-    are not spur stages, is one :class:`InputError` line."""
+    """The REXS text of the spec at ``path`` (a spur, planetary, worm or drive spec); a
+    spec of another kind, or a drive with a stage of another kind, is one
+    :class:`InputError` line."""
     from geardesign.core import registry
+    from geardesign.core.spec import load_toml
 
     calc, spec = registry.load(path)
-    if calc.kind not in ("spur", "drive"):
-        raise InputError(Problem("kind", f"export writes spur and drive specs; this is a "
+    if calc.kind not in KINDS:
+        raise InputError(Problem("kind", f"export writes {', '.join(KINDS)} specs; this is a "
                                          f"{calc.kind} spec", calc.kind))
     result = calc.compute(spec)
     doc = result.document()
@@ -106,37 +97,50 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
     unit = b.new("gear_unit", doc.get("title") or path.stem)
     casing = b.new("gear_casing", "casing")
     b.rel("assembly", ("assembly", unit), ("part", casing))
+    load_at = 0            # the shaft of the input torque (index into the shafts)
     if calc.kind == "spur":
         stages = [doc]
+        kinds = [("spur", None, None, None)]
         data = spec.data
         ld = doc["inputs"].get("load") or {}
         T_in, n_in = ld.get("torque1"), ld.get("speed1")
         if T_in is None and ld.get("power") is not None and n_in:
             T_in = ld["power"] * 1000.0 / (2.0 * math.pi * n_in / 60.0)
-        life = doc["inputs"]["load"].get("life_hours")
+        life = ld.get("life_hours")
         shafts_spec: list[dict] = []
-        unit["attributes"] += _custom("spur__", {k: v for k, v in data.items()
-                                                  if k not in ("gear", "rack", "material")},
-                                      skip=("kind",))
+        unit["attributes"].append(A(f"{CUSTOM}source_kind", "spur"))
+        raw_spur = load_toml(path)
+    elif calc.kind in ("planetary", "worm"):
+        stages, data, shafts_spec = [doc], {}, []
+        raw = load_toml(path)
+        kinds = [(calc.kind, raw, doc.get("title") or path.stem, None)]
+        unit["attributes"].append(A(f"{CUSTOM}source_kind", calc.kind))
+        T_in, n_in, life, load_at = stage_load(calc.kind, doc)
     else:
+        from geardesign.drive.calculator import resolve_stages
+
         stages = doc["results"].get("stage_reports") or []
-        for k, st in enumerate(stages, 1):
-            if st.get("kind") != "spur":
+        resolved = resolve_stages(spec.data["stage"] or [], spec.base_dir)
+        kinds = []
+        for k, (st, (_, name, sdata, eta)) in enumerate(zip(stages, resolved), 1):
+            if st.get("kind") not in ("spur", "planetary", "worm"):
                 raise InputError(Problem(f"stage[{k - 1}]", f"is a {st.get('kind')} stage; "
-                                         f"export writes drives of spur stages"))
+                                         f"export writes drives of spur, planetary and worm "
+                                         f"stages"))
+            kinds.append((st["kind"], sdata, name, eta))
         data = spec.data
         drv = doc["results"]["drive"]
         T_in, n_in = drv.get("T_in"), data["motor"]["speed"]
         life = data["load"].get("life_hours")
         shafts_spec = data.get("shaft") or []
-        for table in ("motor", "load", "split"):
-            unit["attributes"] += _custom(f"{table}__", data.get(table) or {})
+        for table, value in data.items():     # [motor], [load], [split], [thermal], ...
+            if isinstance(value, dict):
+                unit["attributes"] += _custom(f"{table}__", value)
     if life:
         unit["attributes"].append(A("operating_time", float(life), "h"))
     n_shafts = len(stages) + 1
     by_index = {int(s["index"]): s for s in shafts_spec}
     shafts = []
-    pos = [0.0, 0.0]
     for i in range(1, n_shafts + 1):
         sh = b.new("shaft", (by_index.get(i) or {}).get("name") or f"shaft {i}")
         b.rel("assembly", ("assembly", unit), ("part", sh))
@@ -150,9 +154,15 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
                                                             if k in ("axial_sign", "mass")})
     centres = [(0.0, 0.0)]
     for k, st in enumerate(stages, 1):
+        kind, sdata, sname, eta = kinds[k - 1]
+        if kind != "spur":
+            centres.append(centres[-1])
+            comp = other_stage(b, kind, sdata, st, sname or f"stage {k}", shafts, k, unit)
+            comp["attributes"] += drive_keys(calc.kind, k, eta)
+            continue
         inp = st["inputs"]
         geo = st["results"]["geometry"]
-        gear = inp["gear"]
+        gear = inp.get("gear") or designed(st)
         stage = b.new("cylindrical_stage", (data.get("stage") or [{}])[k - 1].get("name")
                       if calc.kind == "drive" and (data.get("stage") or [{}])[k - 1].get("name")
                       else f"stage {k}")
@@ -164,16 +174,35 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
             A("overlap_contact_ratio", float(geo["eps_beta"])),
             A("total_contact_ratio", float(geo["eps_gamma"])),
         ]
-        ka = inp.get("load", {}).get("application_factor")
+        stage["attributes"] += drive_keys(calc.kind, k, eta)
+        ka = (inp.get("load", {}) if sdata is None else sdata.get("load") or {}).get(
+            "application_factor")
         if ka is not None:
             stage["attributes"].append(A("application_factor_iso_6336_2006", float(ka)))
-        extra = {t: inp.get(t) for t in ("rack", "options", "iso") if isinstance(inp.get(t), dict)}
-        extra["gear"] = {kk: v for kk, v in gear.items() if kk not in (
-            "module", "z1", "z2", "helix_angle", "face_width", "x1", "x2", "center_distance",
-            "pressure_angle", "shift_split")}
-        extra["load"] = {kk: v for kk, v in inp.get("load", {}).items() if kk in (
-            "regime", "meshes_pinion", "meshes_wheel", "reverse_torque_ratio")}
-        stage["attributes"] += _custom("", extra)
+        standard = ("module", "z1", "z2", "helix_angle", "face_width", "x1", "x2",
+                    "center_distance", "pressure_angle", "shift_split")
+        if sdata is not None:
+            # a drive's stage: its tables as written (the report's inputs hold what the drive
+            # set: the loads, the shaft's misalignment f_sh, the oil of the heat balance)
+            extra = {t: v for t, v in sdata.items()
+                     if isinstance(v, dict) and t not in ("gear", "material", "load")}
+            extra["gear"] = {kk: v for kk, v in (sdata.get("gear") or {}).items()
+                             if kk not in standard}
+            extra["load"] = {kk: v for kk, v in (sdata.get("load") or {}).items()
+                             if kk not in ("torque1", "speed1", "power", "application_factor")}
+        else:
+            extra = {t: inp.get(t) for t in ("rack", "options", "iso")
+                     if isinstance(inp.get(t), dict)}
+            extra["gear"] = {kk: v for kk, v in gear.items() if kk not in standard}
+            extra["load"] = {kk: v for kk, v in inp.get("load", {}).items() if kk in (
+                "regime", "meshes_pinion", "meshes_wheel", "reverse_torque_ratio")}
+        if calc.kind == "spur":     # the spec as written (geometry keys: standard attributes)
+            from geardesign.rexs.stages import SPUR_KEYS, spec_customs, spec_value
+
+            stage["attributes"] += spec_customs(A, raw_spur, {
+                key for key, *_ in SPUR_KEYS if spec_value(raw_spur, key) is not None})
+        else:
+            stage["attributes"] += _custom("", extra)
         # shafts placed in the v-w plane by the mate angle of the driving gear
         z_in, theta = gear_pos.get((k, k), (0.0, 0.0))
         z_out, _ = gear_pos.get((k + 1, k), (0.0, 0.0))
@@ -219,7 +248,7 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
             A("u_coordinate_on_shaft", float((by_index.get(1) or {}).get("coupling") or 0.0),
               "mm"),
             A("transmits_torque", True), A("defines_torque", True)])
-        b.rel("assembly", ("assembly", shafts[0]), ("part", load))
+        b.rel("assembly", ("assembly", shafts[load_at]), ("part", load))
         shafts[0]["attributes"].append(A("defines_speed", True))
         blocks = ((doc["inputs"].get("load") or {}).get("spectrum") or []) \
             if calc.kind == "spur" else []
@@ -238,11 +267,31 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
                                  "attributes": [A("operating_time_fraction",
                                                   100.0 * float(blk["time_share"]), "%")]})
             cases.append({"id": k, "components": comps})
+    _external_loads(b, shafts, by_index)
     model = {"version": VERSION, "applicationId": "geardesign",
              "applicationVersion": _version(), "date": "1970-01-01T00:00:00+00:00",
              "relations": b.relations, "components": b.components,
              "load_spectrum": {"id": 1, "load_cases": cases}}
-    return _json(model) if fmt == "json" else _xml(model)
+    return to_json(model) if fmt == "json" else to_xml(model)
+
+
+def _external_loads(b: _Builder, shafts: list, by_index: dict) -> None:
+    """The forces of ``[[shaft.load]]`` as ``external_load`` components at
+    ``u_coordinate_on_shaft`` [mm]: ``force_u_direction`` the axial force, the radial force
+    F at the angle θ (from the drive's x axis, as the mate angle) as ``force_v_direction``
+    = F cos θ and ``force_w_direction`` = F sin θ [N] (REXS's v–w plane is the drive's
+    x–y plane, as for ``support_vector``); the name and the mass as custom attributes."""
+    for i, sd in by_index.items():
+        for n, ld in enumerate(sd.get("load") or [], 1):
+            F, th = float(ld.get("force", 0.0)), math.radians(float(ld.get("angle", 0.0)))
+            attrs = [A("u_coordinate_on_shaft", float(ld.get("position", 0.0)), "mm"),
+                     A("transmits_torque", False),
+                     A("force_u_direction", float(ld.get("axial", 0.0)), "N"),
+                     A("force_v_direction", F * math.cos(th), "N"),
+                     A("force_w_direction", F * math.sin(th), "N")]
+            attrs += _custom("", {kk: v for kk, v in ld.items() if kk in ("mass", "name")})
+            c = b.new("external_load", ld.get("name") or f"shaft {i} load {n}", attrs)
+            b.rel("assembly", ("assembly", shafts[i - 1]), ("part", c))
 
 
 def _version() -> str:
@@ -281,6 +330,12 @@ def _shaft_details(b: _Builder, shafts: list, by_index: dict, casing: dict) -> N
         sh["attributes"] += _custom("", {k: v for k, v in sd.items()
                                          if k in ("fixed", "method", "stiffness_a",
                                                   "stiffness_b", "coupling")})
+        for table, value in sd.items():     # the shaft's own tables: [shaft.lubrication], ...
+            if isinstance(value, dict) and table not in ("support_a", "support_b"):
+                sh["attributes"] += _custom(f"{table}__", value)
+        if sd.get("key"):   # REXS 1.5 has no shaft-hub connection: the spec's tables
+            keys = [{k: v for k, v in key.items() if v is not None} for key in sd["key"]]
+            sh["attributes"].append(A(f"{CUSTOM}key__json", json.dumps(keys), vtype="string"))
         for side, key in (("a", "bearing_a"), ("b", "bearing_b")):
             sup = sd.get(f"support_{side}") or {}
             u = float(sd.get(key, 0.0) or 0.0)
@@ -298,69 +353,10 @@ def _shaft_details(b: _Builder, shafts: list, by_index: dict, casing: dict) -> N
             sec = b.new("shaft_section", f"shaft {i} step {k}", [
                 A("u_coordinate_on_shaft", u, "mm"), A("length", L, "mm"),
                 A("outer_diameter_begin", d, "mm"), A("outer_diameter_end", d, "mm"),
-                A("inner_diameter_begin", bore, "mm"), A("inner_diameter_end", bore, "mm")])
+                A("inner_diameter_begin", bore, "mm"), A("inner_diameter_end", bore, "mm")]
+                + _custom("", {kk: v for kk, v in step.items()     # fillet, Rz, keyway, ...
+                               if kk not in ("length", "diameter", "bore")}))
             b.rel("assembly", ("assembly", sh), ("part", sec))
             u += L
 
 
-def _json(model: dict) -> str:
-    return json.dumps({"model": model}, indent=1, ensure_ascii=False) + "\n"
-
-
-def _value_key(a: dict) -> str:
-    return next(k for k in a if k not in ("id", "unit"))
-
-
-def _xml(model: dict) -> str:
-    from xml.sax.saxutils import escape, quoteattr
-
-    def val(a):
-        k = _value_key(a)
-        v = a[k]
-        if k.endswith("_array"):
-            return "<array>" + "".join(
-                f"<c>{escape(x) if isinstance(x, str) else _num(x)}</c>" for x in v) + "</array>"
-        if isinstance(v, bool):
-            return "true" if v else "false"
-        if isinstance(v, (int, float)):
-            return _num(v)
-        return escape(str(v))
-
-    def comp(c, indent):
-        lines = [f"{indent}<component id=\"{c['id']}\" name={quoteattr(c['name'])} "
-                 f"type=\"{c['type']}\">"]
-        for a in c["attributes"]:
-            lines.append(f"{indent}  <attribute id=\"{a['id']}\" unit={quoteattr(a['unit'])}>"
-                         f"{val(a)}</attribute>")
-        lines.append(f"{indent}</component>")
-        return lines
-
-    out = ['<?xml version="1.0" encoding="UTF-8"?>',
-           f"<model applicationId=\"{model['applicationId']}\" applicationVersion="
-           f"{quoteattr(model['applicationVersion'])} date=\"{model['date']}\" "
-           f"version=\"{model['version']}\">", "  <relations>"]
-    for r in model["relations"]:
-        out.append(f"    <relation id=\"{r['id']}\" type=\"{r['type']}\">")
-        for ref in r["refs"]:
-            out.append(f"      <ref hint=\"{ref['hint']}\" id=\"{ref['id']}\" "
-                       f"role=\"{ref['role']}\"/>")
-        out.append("    </relation>")
-    out += ["  </relations>", "  <components>"]
-    for c in model["components"]:
-        out += comp(c, "    ")
-    out += ["  </components>", "  <load_spectrum id=\"1\">"]
-    for lc in model["load_spectrum"]["load_cases"]:
-        out.append(f"    <load_case id=\"{lc['id']}\">")
-        for c in lc["components"]:
-            out += comp(c, "      ")
-        out.append("    </load_case>")
-    out += ["  </load_spectrum>", "</model>"]
-    return "\n".join(out) + "\n"
-
-
-def _num(x) -> str:
-    if isinstance(x, bool):
-        return "true" if x else "false"
-    if isinstance(x, int):
-        return str(x)
-    return repr(float(x))
