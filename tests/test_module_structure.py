@@ -34,7 +34,6 @@ LONG = {
     "drive/calculator.py": SPLITTING + ": the drive composes stages through solve()",
     "drive/lubrication.py": SPLITTING + ": the drive composes stages through solve()",
     "drive/shaft_analysis.py": SPLITTING + ": the drive composes stages through solve()",
-    "worm/calculator.py": SPLITTING + ": worm inputs, solve and report",
     "shaft/calculator.py": SPLITTING + ": the shaft's rows move to a report module",
     "shaft/solve.py": SPLITTING + ": the DIN 743 and GOST 25.504 parts move to packages",
     "cli.py": SPLITTING + ": the commands' option handling apart from the dispatch",
@@ -60,7 +59,7 @@ LONG = {
 }
 """Modules over :data:`MAX_LINES` lines, each with its reason."""
 
-SPLIT = ("novikov", "bearing", "planetary")
+SPLIT = ("novikov", "bearing", "planetary", "worm")
 """Calculators in the shape inputs → solve → report."""
 
 SHORT_CALCULATOR = 60

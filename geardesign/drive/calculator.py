@@ -177,7 +177,7 @@ def compute(spec: ValidatedSpec) -> Result:
     T_in, runs = chain()
     thermal = None
     if lub is not None:
-        thermal = LUB.solve(spec, stages, chain, T_in, runs, n_m, scuff)
+        thermal = LUB.solve(spec, stages, chain, T_in, runs, n_m, scuff, duty.memo)
         T_in, runs = thermal.T_in, thermal.runs
 
     u = math.prod(r.ratio for r in runs)

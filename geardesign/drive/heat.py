@@ -11,6 +11,8 @@ efficiency (or the one the spec gives); its loss (1 − η)·P_in heats the oil 
 
 from __future__ import annotations
 
+import dataclasses
+import math
 from dataclasses import dataclass, field
 
 from geardesign.drive import losses as L
@@ -189,18 +191,30 @@ class Balance:
     P_Q_at_max: float        # heat flow at t_max
 
 
-def balance(m: Model, hs: TH.Housing, t_air: float, t_max: float) -> Balance:
+def balance(m: Model, hs: TH.Housing, t_air: float, t_max: float,
+            limit: bool = True) -> Balance:
     """Sump temperature: P_V(ϑ) = P_Q(ϑ) solved between the ambient temperature and
-    T_SEARCH_MAX by bisection (:func:`thermal.solve_bounded`); thermal power limit: the
-    load scale s at which P_V(ϑ_max, s) = P_Q(ϑ_max) (:func:`thermal.solve_increasing`)."""
+    T_SEARCH_MAX by bisection (:func:`thermal.solve_bounded`); with ``limit`` the thermal
+    power limit as well (:func:`with_limit`), else its fields are NaN (a pass of the
+    drive needs the sump temperature only)."""
     def f(t):
         return TH.dissipation(hs, t, t_air).P_Q - total_loss(m, t)
     r = TH.solve_bounded(f, t_air, T_SEARCH_MAX)
     t = r.x
+    nan = math.nan
+    b = Balance(t, r.iterations, r.bracketed, total_loss(m, t), TH.dissipation(hs, t, t_air),
+                nan, False, nan, nan)
+    return with_limit(b, m, hs, t_air, t_max) if limit else b
+
+
+def with_limit(b: Balance, m: Model, hs: TH.Housing, t_air: float, t_max: float) -> Balance:
+    """The balance ``b`` with the thermal power limit: the load scale s at which
+    P_V(ϑ_max, s) = P_Q(ϑ_max) (:func:`thermal.solve_increasing`), and the losses and the
+    heat flow at ϑ_max."""
     PQmax = TH.dissipation(hs, t_max, t_air).P_Q
     s = TH.solve_increasing(lambda k: total_loss(m, t_max, k) - PQmax, 0.0, 1.0)
-    return Balance(t, r.iterations, r.bracketed, total_loss(m, t), TH.dissipation(hs, t, t_air),
-                   s.x, s.bracketed, total_loss(m, t_max), PQmax)
+    return dataclasses.replace(b, scale_limit=s.x, limit_bracketed=s.bracketed,
+                               P_V_at_max=total_loss(m, t_max), P_Q_at_max=PQmax)
 
 
 def shaft_diameter(T: float) -> float:

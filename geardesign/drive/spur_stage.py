@@ -11,6 +11,7 @@ import copy
 from geardesign.core.errors import InputError, Problem
 from geardesign.core.registry import load_data
 from geardesign.core.result import Result
+from geardesign.core.spec import ValidatedSpec
 from geardesign.drive.stages import (
     ETA_CYLINDRICAL,
     Duty,
@@ -61,13 +62,57 @@ def spur_data(data: dict, T_in: float, n_in: float, duty: Duty, where: str) -> d
     return d
 
 
+#: The loads the drive sets on a spur stage (:func:`_spur_loads`).
+SPUR_LOADS = ("torque1", "speed1", "peak_torque1")
+
+
+def _reloaded(inputs, d: dict):
+    """The typed inputs of the spur spec ``d`` from those of the same spec with other
+    loads (:mod:`geardesign.drive.reuse`): the loads checked by their schema fields, the
+    duty read by the spur calculator's reader; ``None`` when a load is refused."""
+    import dataclasses
+
+    from geardesign.drive import reuse
+    from geardesign.spur.spec import SCHEMA
+    from geardesign.spur.spec_inputs import _duty
+
+    load = d["load"]
+    spec = reuse.reloaded(SCHEMA, inputs.spec, d, "load",
+                          {k: load[k] for k in SPUR_LOADS if load.get(k) is not None})
+    if spec is None or inputs.strength is None:
+        return None
+    # the reader fills defaults into its copies: the echo keeps those of the first read
+    probe = ValidatedSpec(spec.data, list(spec.assumed))
+    try:
+        duty = _duty(probe, dict(spec.data["load"]), True)
+    except InputError:
+        return None
+    return dataclasses.replace(inputs, strength=inputs.strength._replace(duty=duty),
+                               speed1=spec.data["load"]["speed1"], spec=spec)
+
+
 def spur_inputs(data: dict, T_in: float, n_in: float, duty: Duty, where: str):
     """The typed inputs (:class:`geardesign.spur.inputs.Inputs`) of a spur stage with the
-    drive's load: the stage spec validated once; problems name the stage."""
+    drive's load: the stage spec validated once per run, a later pass with other loads
+    reusing it (:mod:`geardesign.drive.reuse`); problems name the stage."""
+    from geardesign.drive import reuse
+
+    d = _spur_loads(data, T_in, n_in, duty, where)
+    key = reuse.fingerprint("spur", where, d, "load", SPUR_LOADS)
+    if key in duty.memo:
+        inputs = _reloaded(duty.memo[key], d)
+        if inputs is not None:
+            return inputs
+    inputs = _read_spur(d, where)
+    duty.memo[key] = inputs
+    return inputs
+
+
+def _read_spur(d: dict, where: str):
+    """The stage spec ``d`` validated and read into typed inputs."""
     from geardesign.core.registry import _say_default
     from geardesign.spur.inputs import from_spec
 
-    d = _spur_loads(data, T_in, n_in, duty, where)
     has_material = d.get("material") is not None
     try:
         _, spec = load_data(d, where)
@@ -136,8 +181,12 @@ def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
             f"{where}.gear", f"the stage's gears cannot mesh as given, so the drive cannot "
             f"rate it ({why})"))
     worst = min(margins, key=margins.get)
-    forces = (rec.ratings[SOLVE.GOST] if SOLVE.GOST in rec.ratings else rec.forces).v
-    F_t, F_r, F_a = forces["F_t"], forces["F_r"], forces["F_a"]
+    if SOLVE.GOST in rec.ratings:           # the GOST record's forces section
+        f = rec.ratings[SOLVE.GOST].forces
+        F_t, F_r, F_a = f.F_t, f.F_r, f.F_a
+    else:
+        forces = rec.forces.v
+        F_t, F_r, F_a = forces["F_t"], forces["F_r"], forces["F_a"]
     run.members = (Member(F_t, F_r, F_a, g.g1.d_w / 2), Member(F_t, F_r, F_a, g.g2.d_w / 2))
     run.margin, run.margin_of = margins[worst], worst
     return run

@@ -36,6 +36,8 @@ class Duty:
     K_A: float
     peak_ratio: float | None
     method: str | None = None      # strength method of the stages that give none
+    memo: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
+    """The run's store of validated stage and bearing specs (:mod:`.reuse`)."""
 
 
 @dataclass(frozen=True)
