@@ -26,7 +26,8 @@ from geardesign.drive.shafts import GearLoad
 #: none, without bearing losses: handbook 0.97–0.98 (Dunaev & Lelikov, table 1.1; verify).
 ETA_CYLINDRICAL = 0.98
 
-WORM_ITERATIONS = 4
+WORM_LOADS = ("torque2", "speed1")
+"""The loads the drive sets on a worm stage."""
 
 
 @dataclass(frozen=True)
@@ -71,6 +72,7 @@ class StageRun:
     record: Any = None
     make_report: Callable[[], Result] | None = field(default=None, repr=False)
     given: Result | None = field(default=None, repr=False)
+    spec: Any = field(default=None, repr=False)    # the stage's validated spec
 
     @property
     def result(self) -> Result:
@@ -85,6 +87,8 @@ class StageRun:
     @property
     def inputs(self) -> dict:
         """The stage's validated spec data (what its report echoes)."""
+        if self.spec is not None:
+            return self.spec.data
         if self.record is not None:
             return self.record.inputs.spec.data
         return self.result.inputs
@@ -214,8 +218,72 @@ def _put(table: dict, key: str, value) -> None:
         table[key] = value
 
 
+def read_stage(kind: str, d: dict, where: str, duty: Duty, table: str,
+               keys: tuple[str, ...], read: Callable):
+    """``(validated spec, typed inputs)`` of the stage spec ``d`` (``read``: the
+    calculator's reader, spec → inputs): validated once per run, a later pass whose spec
+    differs only in the loads ``table.keys`` the drive set reusing it (:mod:`.reuse`);
+    problems name the stage."""
+    from geardesign.core.registry import _say_default, get
+    from geardesign.drive import reuse
+
+    key = reuse.fingerprint(kind, where, d, table, keys)
+    spec = None
+    if key in duty.memo:
+        spec = reuse.reloaded(get(kind).schema, duty.memo[key], d, table,
+                              {k: d[table][k] for k in keys if d[table].get(k) is not None})
+    fresh = spec is None
+    if fresh:
+        try:
+            _, spec = load_data(d, where)
+        except InputError as exc:
+            raise _named(exc, where) from None
+    try:
+        inputs = read(spec)
+    except InputError as exc:
+        raise _named(InputError([_say_default(p, spec) for p in exc.problems]), where) \
+            from None
+    if fresh:
+        duty.memo[key] = spec
+    return spec, inputs
+
+
+def finish(kind: str, spec, make: Callable[[], Result], where: str,
+           original: dict | None) -> Result:
+    """The report of a solved stage as its calculator's ``compute`` gives it (``make``:
+    record → report; the result guard, the advice of its failed checks by re-rating), with
+    the loads the drive set (:func:`_set_by_drive`)."""
+    import importlib
+    import importlib.util
+
+    from geardesign.core.registry import _say_default, get
+    from geardesign.core.result import guard
+
+    try:
+        try:
+            res = guard(make())
+        except InputError as exc:
+            raise InputError([_say_default(p, spec) for p in exc.problems]) from exc
+        if res.failed and importlib.util.find_spec(f"geardesign.{kind}.levers") is not None:
+            from geardesign.core.advice import advise
+
+            levers = importlib.import_module(f"geardesign.{kind}.levers").LEVERS
+            res = advise(get(kind), spec, res, levers)
+    except InputError as exc:
+        raise _named(exc, where) from None
+    _set_by_drive(res, spec.data, original)
+    return res
+
+
 def run_novikov(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
                 where: str) -> StageRun:
+    """A Novikov pair solved once per pass (:func:`geardesign.novikov.solve.solve`) from
+    its typed inputs; ratio, safety margins and mesh forces from the record, the report
+    written on demand."""
+    from geardesign.novikov import calculator as NC
+    from geardesign.novikov import inputs as NI
+    from geardesign.novikov import solve as NS
+
     d = copy.deepcopy(data)
     u = _ratio(d, where, "Novikov")
     e, src = (eta, "spec") if eta is not None else (ETA_CYLINDRICAL, "assumed (handbook)")
@@ -223,44 +291,51 @@ def run_novikov(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | N
     load["torque2"], load["speed1"] = T_in * u * e, n_in
     _put(load, "life", duty.L_h)
     _put(load, "application_factor", duty.K_A)
-    res = _run(d, where, data)
-    v = values(res)
-    margins = {"S_H": v["S_H"] / v["S_H_min"], "S_F1": v["S_F1"] / v["S_F_min"],
-               "S_F2": v["S_F2"] / v["S_F_min"]}
+    spec, inp = read_stage("novikov", d, where, duty, "load", ("torque2", "speed1"), NI.read)
+    sol = NS.solve(inp)
+    a, g, fo = sol.allow, sol.g, sol.forces
+    margins = {"S_H": a.S_H / a.S_Hmin, "S_F1": a.S_F[0] / a.S_Fmin,
+               "S_F2": a.S_F[1] / a.S_Fmin}
     worst = min(margins, key=margins.get)
-    F_t, F_r, F_a = v["F_t"], v["F_r"], v["F_a"]
-    return StageRun("novikov", v["u"], e, src, T_in, n_in, T_in * v["u"] * e, n_in / v["u"],
-                    (Member(F_t, F_r, F_a, v["d1"] / 2), Member(F_t, F_r, F_a, v["d2"] / 2)),
-                    margins[worst], worst, True, given=res)
+    return StageRun("novikov", g.u, e, src, T_in, n_in, T_in * g.u * e, n_in / g.u,
+                    (Member(fo.F_t, fo.F_r, fo.F_a, g.d1 / 2),
+                     Member(fo.F_t, fo.F_r, fo.F_a, g.d2 / 2)),
+                    margins[worst], worst, True, sol,
+                    lambda: finish("novikov", spec, lambda: NC.result(spec, inp, sol), where,
+                                   data), spec=spec)
 
 
 def run_worm(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
              where: str) -> StageRun:
-    """The worm calculator takes the wheel torque: iterate T2 until the worm torque it
-    reports equals the stage's input torque (the efficiency depends on the sliding speed,
-    so a few steps settle it)."""
+    """A worm pair solved once per pass (:func:`geardesign.worm.solve.solve`).  The worm
+    calculator takes the wheel torque: its efficiency does not depend on the torque
+    (:func:`geardesign.worm.solve.efficiency`), so the wheel torque of the stage's input
+    torque is T2 = T_in·u·η before the pair is solved."""
+    from geardesign.worm import calculator as WC
+    from geardesign.worm import inputs as WI
+    from geardesign.worm import solve as WS
+
     d = copy.deepcopy(data)
     u = _ratio(d, where, "worm")
     load = _table(d, "load", where)
     load["speed1"] = n_in
     _put(load, "life", duty.L_h)
-    T2 = T_in * u * (eta if eta is not None else 0.8)
-    res = None
-    for _ in range(WORM_ITERATIONS):
-        load["torque2"] = T2
-        res = _run(d, where, data)
-        v = values(res)
-        if abs(v["T1"] - T_in) <= 1e-9 * T_in:
-            break
-        T2 *= T_in / v["T1"]
-    e = eta if eta is not None else v["eta"]
+    load["torque2"] = T_in * u * (eta if eta is not None else 0.8)    # read for η only
+    spec, inp = read_stage("worm", d, where, duty, "load", WORM_LOADS, WI.read)
+    load["torque2"] = T_in * u * WS.efficiency(inp)
+    spec, inp = read_stage("worm", d, where, duty, "load", WORM_LOADS, WI.read)
+    rec = WS.solve(inp)
+    a = rec.analysis
+    e = eta if eta is not None else a.eta
     src = "spec" if eta is not None else "worm calculator"
-    margins = {"S_H": v["S_H"], "S_F": v["S_F"]}
+    margins = {"S_H": a.sigma_HP / a.sigma_H, "S_F": a.sigma_FP / a.sigma_F}
     worst = min(margins, key=margins.get)
-    worm = Member(v["F_t1"], v["F_r"], v["F_t2"], v["d_w1"] / 2)
-    wheel = Member(v["F_t2"], v["F_r"], v["F_t1"], v["d2"] / 2)
+    worm = Member(a.ld.F_t1, a.ld.F_r, a.ld.F_t2, a.g.d_w1 / 2)
+    wheel = Member(a.ld.F_t2, a.ld.F_r, a.ld.F_t1, a.g.d2 / 2)
     return StageRun("worm", u, e, src, T_in, n_in, T_in * u * e, n_in / u, (worm, wheel),
-                    margins[worst], worst, False, given=res)
+                    margins[worst], worst, False, rec,
+                    lambda: finish("worm", spec, lambda: WC.result(spec, rec), where, data),
+                    spec=spec)
 
 
 def run_planetary(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,

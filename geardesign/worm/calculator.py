@@ -15,9 +15,13 @@ from geardesign.worm.solve import solve
 
 
 def compute(spec: ValidatedSpec) -> Result:
+    return result(spec, solve(I.read(spec)))
+
+
+def result(spec: ValidatedSpec, rec) -> Result:
+    """The report of a solved pair (``rec`` from :func:`~geardesign.worm.solve.solve`)."""
     from geardesign.worm import CALCULATOR
 
-    rec = solve(I.read(spec))
     res = CALCULATOR.new_result(spec)
     report(res, rec, spec)
     return res

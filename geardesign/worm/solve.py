@@ -30,6 +30,15 @@ def _solve(p: WormPairInput) -> WormPairGeometry:
 
 
 
+def efficiency(inp: Inputs) -> float:
+    """The pair's overall efficiency η (bearings and churning included) at the worm speed
+    of ``inp``: it does not depend on the torque (:func:`geardesign.worm.pair.efficiency`),
+    so a drive finds the wheel torque of a given worm torque before it solves the pair."""
+    from geardesign.worm.pair import efficiency as eff
+
+    return eff(_solve(inp.pair), inp.op.n1, inp.wheel, inp.options)[3]
+
+
 def solve(inp: Inputs) -> Record:
     """The record of a worm pair: geometry, then the whole analysis."""
     return Record(inp, analyse(_solve(inp.pair), inp.op, inp.wheel, inp.options))
