@@ -27,7 +27,9 @@ DRIVE_KEYS = ("name", "file", "efficiency")
 
 ADAPTERS = {"spur": run_spur, "worm": ST.run_worm, "novikov": ST.run_novikov,
             "planetary": ST.run_planetary}
-"""The stage adapters by kind (:mod:`.spur_stage`, :mod:`.stages`)."""
+"""The stage adapters by kind (:mod:`.spur_stage`, :mod:`.stages`): ``adapter(stage spec,
+T_in, n_in, duty, efficiency or None, where) -> StageRun``, the stage solved once from
+its typed inputs.  A new stage kind adds its adapter here."""
 
 
 def _torque_from_power(P: float, n: float) -> float:

@@ -18,27 +18,44 @@ import copy
 from geardesign.core.spec import ValidatedSpec
 
 
-def fingerprint(kind: str, where: str, data: dict, table: str, keys: tuple[str, ...]) -> tuple:
-    """The key of a spec in the store: the spec with the loads ``table.keys`` left out."""
+def _split(path: str) -> tuple[str, str]:
+    table, _, key = path.partition(".")
+    return table, key
+
+
+def fingerprint(kind: str, where: str, data: dict, paths: tuple[str, ...]) -> tuple:
+    """The key of a spec in the store: the spec with the loads ``paths`` (``"table.key"``)
+    left out."""
     d = dict(data)
-    t = d.get(table)
-    if isinstance(t, dict):
-        d[table] = {k: v for k, v in t.items() if k not in keys}
+    for path in paths:
+        table, key = _split(path)
+        t = d.get(table)
+        if isinstance(t, dict) and key in t:
+            d[table] = {k: v for k, v in t.items() if k != key}
     return kind, where, repr(d)
 
 
-def reloaded(schema, spec: ValidatedSpec, raw: dict, table: str,
-             values: dict) -> ValidatedSpec | None:
-    """A copy of the validated ``spec`` with ``values`` in its table ``table``, each
+def given(data: dict, paths: tuple[str, ...]) -> dict:
+    """The values of ``data`` at ``paths`` (``"table.key"``) that are given (not None)."""
+    out = {}
+    for path in paths:
+        table, key = _split(path)
+        t = data.get(table)
+        if isinstance(t, dict) and t.get(key) is not None:
+            out[path] = t[key]
+    return out
+
+
+def reloaded(schema, spec: ValidatedSpec, raw: dict, values: dict) -> ValidatedSpec | None:
+    """A copy of the validated ``spec`` with ``values`` (by ``"table.key"``), each
     checked by the schema's field (``raw``: the spec as given, for the advice); ``None``
-    when a value is refused or the table has no such field (validate it again)."""
-    t = schema.root.member(table)
-    if t is None or not isinstance(spec.data.get(table), dict):
-        return None
+    when a value is refused or the schema has no such field (validate it again)."""
     data = copy.deepcopy(spec.data)
-    for key, value in values.items():
-        f = t.member(key)
-        if f is None or not hasattr(f, "check"):
+    for path, value in values.items():
+        table, key = _split(path)
+        t = schema.root.member(table)
+        f = t.member(key) if t is not None and hasattr(t, "member") else None
+        if f is None or not hasattr(f, "check") or not isinstance(data.get(table), dict):
             return None
         value, message = f.check(value)
         if message:

@@ -82,7 +82,7 @@ def shaft_cases(shafts: list, runs: list[StageRun], n_m: float, L_h: float) -> l
 
 
 #: The loads the drive sets on a bearing (:func:`shaft_cases`).
-BEARING_LOADS = ("F_r", "F_a", "speed")
+BEARING_LOADS = ("load.F_r", "load.F_a", "load.speed")
 
 
 def rate_bearing(case: dict, memo: dict):
@@ -103,12 +103,11 @@ def rate_bearing(case: dict, memo: dict):
 
     where = f"{case['key']}.support_{case['side']}"
     data = case["data"]
-    key = reuse.fingerprint("bearing", where, data, "load", BEARING_LOADS)
+    key = reuse.fingerprint("bearing", where, data, BEARING_LOADS)
     inp = None
     if key in memo:
         first = memo[key]
-        spec = reuse.reloaded(SCHEMA, first.spec, data, "load",
-                              {k: data["load"][k] for k in BEARING_LOADS})
+        spec = reuse.reloaded(SCHEMA, first.spec, data, reuse.given(data, BEARING_LOADS))
         if spec is not None and isinstance(first.inputs, BI.CheckInputs):
             try:
                 blocks = BI.resolve_blocks(spec)

@@ -19,9 +19,9 @@ from geardesign.drive.stages import (
     StageRun,
     _named,
     _put,
-    _set_by_drive,
     _table,
     _validate,
+    finish,
 )
 
 
@@ -63,7 +63,7 @@ def spur_data(data: dict, T_in: float, n_in: float, duty: Duty, where: str) -> d
 
 
 #: The loads the drive sets on a spur stage (:func:`_spur_loads`).
-SPUR_LOADS = ("torque1", "speed1", "peak_torque1")
+SPUR_LOADS = ("load.torque1", "load.speed1", "load.peak_torque1")
 
 
 def _reloaded(inputs, d: dict):
@@ -76,9 +76,7 @@ def _reloaded(inputs, d: dict):
     from geardesign.spur.spec import SCHEMA
     from geardesign.spur.spec_inputs import _duty
 
-    load = d["load"]
-    spec = reuse.reloaded(SCHEMA, inputs.spec, d, "load",
-                          {k: load[k] for k in SPUR_LOADS if load.get(k) is not None})
+    spec = reuse.reloaded(SCHEMA, inputs.spec, d, reuse.given(d, SPUR_LOADS))
     if spec is None or inputs.strength is None:
         return None
     # the reader fills defaults into its copies: the echo keeps those of the first read
@@ -98,7 +96,7 @@ def spur_inputs(data: dict, T_in: float, n_in: float, duty: Duty, where: str):
     from geardesign.drive import reuse
 
     d = _spur_loads(data, T_in, n_in, duty, where)
-    key = reuse.fingerprint("spur", where, d, "load", SPUR_LOADS)
+    key = reuse.fingerprint("spur", where, d, SPUR_LOADS)
     if key in duty.memo:
         inputs = _reloaded(duty.memo[key], d)
         if inputs is not None:
@@ -128,29 +126,10 @@ def _read_spur(d: dict, where: str):
 
 
 def _spur_report(record, where: str, original: dict) -> Result:
-    """The report of a solved spur stage as its calculator gives it (the result guard,
-    the advice of its failed checks by re-rating), with the loads the drive set."""
-    from geardesign.core.registry import _say_default
-    from geardesign.core.result import guard
-    from geardesign.spur import CALCULATOR
+    """The report of a solved spur stage as its calculator gives it (:func:`.finish`)."""
     from geardesign.spur.report import report
 
-    spec = record.inputs.spec
-    try:
-        try:
-            res = guard(report(record))
-        except InputError as exc:
-            raise InputError([_say_default(p, spec) for p in exc.problems]) from exc
-        from geardesign.core.advice import advise, rerating
-
-        if res.failed and not rerating():   # a re-rating of the drive reads verdicts only
-            from geardesign.spur.levers import LEVERS
-
-            res = advise(CALCULATOR, spec, res, LEVERS)
-    except InputError as exc:
-        raise _named(exc, where) from None
-    _set_by_drive(res, spec.data, original)
-    return res
+    return finish("spur", record.inputs.spec, lambda: report(record), where, original)
 
 
 def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,

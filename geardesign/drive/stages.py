@@ -2,13 +2,15 @@
 
 A stage adapter puts the stage's input torque and speed (and the drive's life, regime,
 application factor and peak torque, where the stage spec does not give its own) into the
-stage spec and reads back the ratio, the efficiency, the output torque and speed, the mesh
-forces on the input and output members (for the shafts) and the worst safety margin.  A
-spur stage is read into typed inputs (:func:`geardesign.spur.inputs.from_spec`) and solved
-once per pass (:func:`geardesign.spur.solve.solve`); its values come from the typed record,
-and its report (with the advice of its failed checks) is written only when the drive's
-report asks for it, from the last pass.  The worm, Novikov and planetary stages run their
-calculators.  No formula of a calculator is repeated here.
+stage spec, reads it into the calculator's typed inputs (validated once per run:
+:func:`read_stage`, :mod:`.reuse`), solves it once per pass (the calculator's ``solve``:
+:mod:`geardesign.spur.solve`, :mod:`geardesign.worm.solve`, :mod:`geardesign.novikov.solve`,
+:mod:`geardesign.planetary.solve`) and reads from the typed record the ratio, the
+efficiency, the output torque and speed, the mesh forces on the input and output members
+(for the shafts) and the worst safety margin.  The stage's report (with the advice of its
+failed checks) is written only when the drive's report asks for it, from the last pass
+(:func:`finish`).  No formula of a calculator is repeated here.  The adapters by kind are
+the table ``ADAPTERS`` of :mod:`.calculator`: a new stage kind is one adapter there.
 """
 
 from __future__ import annotations
@@ -26,8 +28,10 @@ from geardesign.drive.shafts import GearLoad
 #: none, without bearing losses: handbook 0.97–0.98 (Dunaev & Lelikov, table 1.1; verify).
 ETA_CYLINDRICAL = 0.98
 
-WORM_LOADS = ("torque2", "speed1")
-"""The loads the drive sets on a worm stage."""
+WORM_LOADS = NOVIKOV_LOADS = ("load.torque2", "load.speed1")
+"""The loads the drive sets on a worm or a Novikov stage."""
+PLANETARY_LOADS = ("operation.speed", "operation.torque", "strength.peak_torque")
+"""The loads the drive sets on a planetary stage."""
 
 
 @dataclass(frozen=True)
@@ -165,18 +169,6 @@ def _set_by_drive(res: Result, data: dict, original: dict | None) -> None:
               "stage gives none", "", None, None, "drive"))
 
 
-def _run(data: dict, where: str, original: dict | None = None) -> Result:
-    """Validate and compute a stage spec; problems name the stage.  The stage's report says
-    which of its loads the drive set (``original`` is the stage spec as written)."""
-    try:
-        calc, spec = load_data(data, where)
-        res = calc.compute(spec)
-    except InputError as exc:
-        raise _named(exc, where) from None
-    _set_by_drive(res, data, original)
-    return res
-
-
 def _validate(data: dict, where: str) -> None:
     try:
         load_data(copy.deepcopy(data), where)
@@ -218,20 +210,19 @@ def _put(table: dict, key: str, value) -> None:
         table[key] = value
 
 
-def read_stage(kind: str, d: dict, where: str, duty: Duty, table: str,
-               keys: tuple[str, ...], read: Callable):
+def read_stage(kind: str, d: dict, where: str, duty: Duty, paths: tuple[str, ...],
+               read: Callable):
     """``(validated spec, typed inputs)`` of the stage spec ``d`` (``read``: the
     calculator's reader, spec → inputs): validated once per run, a later pass whose spec
-    differs only in the loads ``table.keys`` the drive set reusing it (:mod:`.reuse`);
-    problems name the stage."""
+    differs only in the loads the drive set (``paths``, ``"table.key"``) reusing it
+    (:mod:`.reuse`); problems name the stage."""
     from geardesign.core.registry import _say_default, get
     from geardesign.drive import reuse
 
-    key = reuse.fingerprint(kind, where, d, table, keys)
+    key = reuse.fingerprint(kind, where, d, paths)
     spec = None
     if key in duty.memo:
-        spec = reuse.reloaded(get(kind).schema, duty.memo[key], d, table,
-                              {k: d[table][k] for k in keys if d[table].get(k) is not None})
+        spec = reuse.reloaded(get(kind).schema, duty.memo[key], d, reuse.given(d, paths))
     fresh = spec is None
     if fresh:
         try:
@@ -251,11 +242,13 @@ def read_stage(kind: str, d: dict, where: str, duty: Duty, table: str,
 def finish(kind: str, spec, make: Callable[[], Result], where: str,
            original: dict | None) -> Result:
     """The report of a solved stage as its calculator's ``compute`` gives it (``make``:
-    record → report; the result guard, the advice of its failed checks by re-rating), with
-    the loads the drive set (:func:`_set_by_drive`)."""
+    record → report; the result guard, the advice of its failed checks by re-rating, not
+    searched when the drive itself is being re-rated: that reads verdicts only), with the
+    loads the drive set (:func:`_set_by_drive`)."""
     import importlib
     import importlib.util
 
+    from geardesign.core.advice import rerating
     from geardesign.core.registry import _say_default, get
     from geardesign.core.result import guard
 
@@ -264,7 +257,8 @@ def finish(kind: str, spec, make: Callable[[], Result], where: str,
             res = guard(make())
         except InputError as exc:
             raise InputError([_say_default(p, spec) for p in exc.problems]) from exc
-        if res.failed and importlib.util.find_spec(f"geardesign.{kind}.levers") is not None:
+        if res.failed and not rerating() \
+                and importlib.util.find_spec(f"geardesign.{kind}.levers") is not None:
             from geardesign.core.advice import advise
 
             levers = importlib.import_module(f"geardesign.{kind}.levers").LEVERS
@@ -291,7 +285,7 @@ def run_novikov(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | N
     load["torque2"], load["speed1"] = T_in * u * e, n_in
     _put(load, "life", duty.L_h)
     _put(load, "application_factor", duty.K_A)
-    spec, inp = read_stage("novikov", d, where, duty, "load", ("torque2", "speed1"), NI.read)
+    spec, inp = read_stage("novikov", d, where, duty, NOVIKOV_LOADS, NI.read)
     sol = NS.solve(inp)
     a, g, fo = sol.allow, sol.g, sol.forces
     margins = {"S_H": a.S_H / a.S_Hmin, "S_F1": a.S_F[0] / a.S_Fmin,
@@ -321,9 +315,9 @@ def run_worm(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
     load["speed1"] = n_in
     _put(load, "life", duty.L_h)
     load["torque2"] = T_in * u * (eta if eta is not None else 0.8)    # read for η only
-    spec, inp = read_stage("worm", d, where, duty, "load", WORM_LOADS, WI.read)
+    spec, inp = read_stage("worm", d, where, duty, WORM_LOADS, WI.read)
     load["torque2"] = T_in * u * WS.efficiency(inp)
-    spec, inp = read_stage("worm", d, where, duty, "load", WORM_LOADS, WI.read)
+    spec, inp = read_stage("worm", d, where, duty, WORM_LOADS, WI.read)
     rec = WS.solve(inp)
     a = rec.analysis
     e = eta if eta is not None else a.eta
@@ -342,7 +336,14 @@ def run_planetary(data: dict, T_in: float, n_in: float, duty: Duty, eta: float |
                   where: str) -> StageRun:
     """A planetary train as a stage: the drive sets the input member's speed and torque.
     Its shafts are coaxial and the planets balance the radial mesh forces (with equal
-    load sharing), so the stage puts no radial or axial load on the shafts."""
+    load sharing), so the stage puts no radial or axial load on the shafts.  Solved once
+    per pass (:func:`geardesign.planetary.solve.solve`) from its typed inputs; ratio,
+    torque, efficiency and the meshes' margins from the record, the report on demand."""
+    from geardesign.core.result import clean_value
+    from geardesign.planetary import calculator as PC
+    from geardesign.planetary import inputs as PI
+    from geardesign.planetary import solve as PS
+
     d = copy.deepcopy(data)
     op = _table(d, "operation", where)
     op["speed"], op["torque"] = n_in, T_in
@@ -360,21 +361,25 @@ def run_planetary(data: dict, T_in: float, n_in: float, duty: Duty, eta: float |
             _put(st, "regime", duty.regime)
         if duty.peak_ratio is not None:
             _put(st, "peak_torque", T_in * duty.peak_ratio)
-    res = _run(d, where, data)
-    r = sections(res)
-    ops = res.inputs["operation"]
-    n_out = r["kinematics"][f"n_{ops['output']}"]
-    T_out = abs(r["power"][f"T_{ops['output']}"])
-    e = eta if eta is not None else r["efficiency"]["eta"]
+    spec, inp = read_stage("planetary", d, where, duty, PLANETARY_LOADS, PI.read)
+    sol = PS.solve(inp)
+    out_ = spec.data["operation"]["output"]
+    n_out = sol.speeds.n[out_]
+    T_out = abs(sol.power.flow.T[out_])
+    e = eta if eta is not None else sol.efficiency.eta_f
     src = "spec" if eta is not None else "planetary calculator"
     if eta is not None:
         T_out = T_in * abs(n_in / n_out) * eta
+    rated = {ms.mesh.name: ms.rating for ms in (sol.strength.meshes if sol.strength
+                                                  is not None else ()) if ms.rating}
     margins = {}
     for mesh in ("sun_planet", "planet_ring"):
-        v = r.get(f"strength_{mesh}")
-        if v:
-            margins.update(_margins(v, f"{mesh}."))
+        if mesh in rated:
+            margins.update(_margins({k: clean_value(v) for k, v in rated[mesh].v.items()},
+                                    f"{mesh}."))
     worst = min(margins, key=margins.get) if margins else ""
     zero = Member(0.0, 0.0, 0.0, 0.0)
     return StageRun("planetary", abs(n_in / n_out), e, src, T_in, n_in, T_out, abs(n_out),
-                    (zero, zero), margins.get(worst), worst, n_out * n_in < 0, given=res)
+                    (zero, zero), margins.get(worst), worst, n_out * n_in < 0, sol,
+                    lambda: finish("planetary", spec, lambda: PC.result(spec, inp, sol), where,
+                                   data), spec=spec)
