@@ -23,7 +23,7 @@ from geardesign.drive import losses as L
 from geardesign.drive import thermal as TH
 
 from geardesign.materials import lubricants as OIL
-from geardesign.planetary.efficiency import EPS_ALPHA_RANGE, loss_factor_applies
+from geardesign.gears.losses import EPS_ALPHA_RANGE, loss_factor_applies
 
 MAX_PASSES = 5
 EFFICIENCY_TOL = 1e-6
