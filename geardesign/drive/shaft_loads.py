@@ -116,23 +116,27 @@ def rate_bearing(case: dict, memo: dict):
             except InputError:
                 inp = None       # read again below: the problem as the calculator says it
     try:
-        if inp is None:
+        fresh = inp is None
+        if fresh:
             _, spec = load_data(data, where)
-            try:
-                inp = BI.read(spec)
-            except InputError as exc:
-                raise InputError([_say_default(p, spec) for p in exc.problems]) from None
-            memo[key] = _Read(spec, inp)
         try:
-            return solve(inp)
-        except BearingError as exc:
-            raise BI.assessment_error(exc, data) from None
+            if fresh:
+                inp = BI.read(spec)
+                memo[key] = _Read(spec, inp)
+            try:
+                return solve(inp)
+            except BearingError as exc:
+                raise BI.assessment_error(exc, spec.data) from None
+        except InputError as exc:      # as the calculator's compute says them
+            raise InputError([_say_default(p, spec) for p in exc.problems]) from None
     except InputError as exc:
         raise InputError([_bearing_problem(where, p) for p in exc.problems]) from None
 
 
 @dataclass(frozen=True)
 class _Read:
+    """A bearing spec validated in a run and its typed inputs."""
+
     spec: object
     inputs: object
 

@@ -239,6 +239,18 @@ def read_stage(kind: str, d: dict, where: str, duty: Duty, paths: tuple[str, ...
     return spec, inputs
 
 
+def solved(solve: Callable, inputs, spec, where: str):
+    """``solve(inputs)``, its input problems (a formula outside its domain) naming the
+    stage, as the calculator's ``compute`` would say them."""
+    from geardesign.core.registry import _say_default
+
+    try:
+        return solve(inputs)
+    except InputError as exc:
+        raise _named(InputError([_say_default(p, spec) for p in exc.problems]), where) \
+            from None
+
+
 def finish(kind: str, spec, make: Callable[[], Result], where: str,
            original: dict | None) -> Result:
     """The report of a solved stage as its calculator's ``compute`` gives it (``make``:
@@ -286,7 +298,7 @@ def run_novikov(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | N
     _put(load, "life", duty.L_h)
     _put(load, "application_factor", duty.K_A)
     spec, inp = read_stage("novikov", d, where, duty, NOVIKOV_LOADS, NI.read)
-    sol = NS.solve(inp)
+    sol = solved(NS.solve, inp, spec, where)
     a, g, fo = sol.allow, sol.g, sol.forces
     margins = {"S_H": a.S_H / a.S_Hmin, "S_F1": a.S_F[0] / a.S_Fmin,
                "S_F2": a.S_F[1] / a.S_Fmin}
@@ -316,9 +328,9 @@ def run_worm(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
     _put(load, "life", duty.L_h)
     load["torque2"] = T_in * u * (eta if eta is not None else 0.8)    # read for η only
     spec, inp = read_stage("worm", d, where, duty, WORM_LOADS, WI.read)
-    load["torque2"] = T_in * u * WS.efficiency(inp)
+    load["torque2"] = T_in * u * solved(WS.efficiency, inp, spec, where)
     spec, inp = read_stage("worm", d, where, duty, WORM_LOADS, WI.read)
-    rec = WS.solve(inp)
+    rec = solved(WS.solve, inp, spec, where)
     a = rec.analysis
     e = eta if eta is not None else a.eta
     src = "spec" if eta is not None else "worm calculator"
@@ -362,7 +374,7 @@ def run_planetary(data: dict, T_in: float, n_in: float, duty: Duty, eta: float |
         if duty.peak_ratio is not None:
             _put(st, "peak_torque", T_in * duty.peak_ratio)
     spec, inp = read_stage("planetary", d, where, duty, PLANETARY_LOADS, PI.read)
-    sol = PS.solve(inp)
+    sol = solved(PS.solve, inp, spec, where)
     out_ = spec.data["operation"]["output"]
     n_out = sol.speeds.n[out_]
     T_out = abs(sol.power.flow.T[out_])
