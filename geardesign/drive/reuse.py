@@ -18,47 +18,67 @@ import copy
 from geardesign.core.spec import ValidatedSpec
 
 
-def _split(path: str) -> tuple[str, str]:
-    table, _, key = path.partition(".")
-    return table, key
+def _split(path: str) -> tuple[tuple[str, ...], str]:
+    """``"iso.scuffing.oil_temperature"`` -> ``(("iso", "scuffing"), "oil_temperature")``."""
+    tables, _, key = path.rpartition(".")
+    return tuple(tables.split(".")), key
+
+
+def _table(data: dict, tables: tuple[str, ...]):
+    """The (sub-)table of ``data`` at ``tables``, or None."""
+    t = data
+    for name in tables:
+        t = t.get(name) if isinstance(t, dict) else None
+    return t if isinstance(t, dict) else None
 
 
 def fingerprint(kind: str, where: str, data: dict, paths: tuple[str, ...]) -> tuple:
-    """The key of a spec in the store: the spec with the loads ``paths`` (``"table.key"``)
-    left out."""
-    d = dict(data)
+    """The key of a spec in the store: the spec with the values at ``paths``
+    (``"table.key"``, ``"table.sub.key"``) left out."""
+    d = copy.deepcopy(data)
     for path in paths:
-        table, key = _split(path)
-        t = d.get(table)
-        if isinstance(t, dict) and key in t:
-            d[table] = {k: v for k, v in t.items() if k != key}
+        tables, key = _split(path)
+        t = _table(d, tables)
+        if t is not None:
+            t.pop(key, None)
     return kind, where, repr(d)
 
 
 def given(data: dict, paths: tuple[str, ...]) -> dict:
-    """The values of ``data`` at ``paths`` (``"table.key"``) that are given (not None)."""
+    """The values of ``data`` at ``paths`` that are given (not None), by path."""
     out = {}
     for path in paths:
-        table, key = _split(path)
-        t = data.get(table)
-        if isinstance(t, dict) and t.get(key) is not None:
+        tables, key = _split(path)
+        t = _table(data, tables)
+        if t is not None and t.get(key) is not None:
             out[path] = t[key]
     return out
 
 
-def reloaded(schema, spec: ValidatedSpec, raw: dict, values: dict) -> ValidatedSpec | None:
-    """A copy of the validated ``spec`` with ``values`` (by ``"table.key"``), each
-    checked by the schema's field (``raw``: the spec as given, for the advice); ``None``
-    when a value is refused or the schema has no such field (validate it again)."""
+def reloaded(schema, spec: ValidatedSpec, raw: dict, paths: tuple[str, ...]
+             ) -> ValidatedSpec | None:
+    """A copy of the validated ``spec`` with the values ``raw`` (the spec as given, kept for
+    the advice) gives at ``paths``, each checked by the schema's field and no longer an
+    assumed default; ``None`` (validate ``raw`` again) when a value is refused, the schema
+    has no such field, or ``raw`` leaves out a value that ``spec`` has."""
+    values = given(raw, paths)
     data = copy.deepcopy(spec.data)
-    for path, value in values.items():
-        table, key = _split(path)
-        t = schema.root.member(table)
-        f = t.member(key) if t is not None and hasattr(t, "member") else None
-        if f is None or not hasattr(f, "check") or not isinstance(data.get(table), dict):
+    for path in paths:
+        tables, key = _split(path)
+        t = _table(data, tables)
+        if path not in values:
+            if t is not None and t.get(key) is not None:
+                return None
+            continue
+        member = schema.root
+        for name in tables:
+            member = member.member(name) if hasattr(member, "member") else None
+        f = member.member(key) if hasattr(member, "member") else None
+        if f is None or not hasattr(f, "check") or t is None:
             return None
-        value, message = f.check(value)
+        value, message = f.check(values[path])
         if message:
             return None
-        data[table][key] = value
-    return ValidatedSpec(data, list(spec.assumed), spec.source, spec.base_dir, raw)
+        t[key] = value
+    assumed = [a for a in spec.assumed if a not in values]
+    return ValidatedSpec(data, assumed, spec.source, spec.base_dir, raw)

@@ -107,7 +107,7 @@ def rate_bearing(case: dict, memo: dict):
     inp = None
     if key in memo:
         first = memo[key]
-        spec = reuse.reloaded(SCHEMA, first.spec, data, reuse.given(data, BEARING_LOADS))
+        spec = reuse.reloaded(SCHEMA, first.spec, data, BEARING_LOADS)
         if spec is not None and isinstance(first.inputs, BI.CheckInputs):
             try:
                 blocks = BI.resolve_blocks(spec)

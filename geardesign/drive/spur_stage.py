@@ -63,7 +63,10 @@ def spur_data(data: dict, T_in: float, n_in: float, duty: Duty, where: str) -> d
 
 
 #: The loads the drive sets on a spur stage (:func:`_spur_loads`).
-SPUR_LOADS = ("load.torque1", "load.speed1", "load.peak_torque1")
+SPUR_LOADS = ("load.torque1", "load.speed1", "load.peak_torque1", "iso.f_sh",
+              "iso.scuffing.oil_temperature")
+"""With the misalignment the shafts give (``iso.f_sh``) and the oil at the sump
+temperature of the heat balance (``iso.scuffing.oil_temperature``)."""
 
 
 def _reloaded(inputs, d: dict):
@@ -76,7 +79,7 @@ def _reloaded(inputs, d: dict):
     from geardesign.spur.spec import SCHEMA
     from geardesign.spur.spec_inputs import _duty
 
-    spec = reuse.reloaded(SCHEMA, inputs.spec, d, reuse.given(d, SPUR_LOADS))
+    spec = reuse.reloaded(SCHEMA, inputs.spec, d, SPUR_LOADS)
     if spec is None or inputs.strength is None:
         return None
     # the reader fills defaults into its copies: the echo keeps those of the first read
@@ -85,8 +88,16 @@ def _reloaded(inputs, d: dict):
         duty = _duty(probe, dict(spec.data["load"]), True)
     except InputError:
         return None
+    changes = {}
+    if inputs.iso is not None:      # the ISO 6336 setting read again: f_sh, the oil
+        from geardesign.spur.strength.iso6336.spec import iso_setting
+
+        try:
+            changes = dict(iso=iso_setting(spec), iso_table=spec.data["iso"])
+        except InputError:
+            return None
     return dataclasses.replace(inputs, strength=inputs.strength._replace(duty=duty),
-                               speed1=spec.data["load"]["speed1"], spec=spec)
+                               speed1=spec.data["load"]["speed1"], spec=spec, **changes)
 
 
 def spur_inputs(data: dict, T_in: float, n_in: float, duty: Duty, where: str):

@@ -222,7 +222,7 @@ def read_stage(kind: str, d: dict, where: str, duty: Duty, paths: tuple[str, ...
     key = reuse.fingerprint(kind, where, d, paths)
     spec = None
     if key in duty.memo:
-        spec = reuse.reloaded(get(kind).schema, duty.memo[key], d, reuse.given(d, paths))
+        spec = reuse.reloaded(get(kind).schema, duty.memo[key], d, paths)
     fresh = spec is None
     if fresh:
         try:
