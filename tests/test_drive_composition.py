@@ -155,3 +155,37 @@ file = "{name}"
     assert n["solve"] == n["passes"]               # the spur stage: once per pass
     assert n["report"] == 1 and n["documents"] == 0
     assert [p[2].kind for p in res.parts if p[0] == "stage_reports"] == [kind, "spur"]
+
+
+def test_specs_are_validated_once_per_run(monkeypatch):
+    """The bearings of the heat balance's passes are rated through ``bearing.solve`` from
+    typed inputs, their specs validated once per run (and once more with the drive's oil
+    for their reports); a spur stage's spec once (its loads, the shafts' f_sh and the oil
+    temperature of its scuffing rating change between passes), not once per pass."""
+    import geardesign.core.registry as REG
+
+    kinds: dict = {}
+    validate = REG.validate_partial
+
+    def validate_(schema, data, *args, **kwargs):
+        kinds[schema.kind] = kinds.get(schema.kind, 0) + 1
+        return validate(schema, data, *args, **kwargs)
+
+    monkeypatch.setattr(REG, "validate_partial", validate_)
+    res = run(SPECS / "drive_reducer_shafts_keys_thermal.toml")
+    bearings = sum(1 for p in res.parts if p[0] == "bearing_reports")
+    assert bearings == 6
+    assert kinds["bearing"] == 2 * bearings
+    assert kinds["spur"] == 2 + 1       # each stage once; the GOST stage's ISO K_Hβ with f_sh
+
+
+@pytest.mark.parametrize("name", ["drive_reducer_shafts_keys_thermal.toml",
+                                  "drive_worm_spur.toml", "drive_planetary_spur.toml"])
+def test_reusing_a_validated_spec_changes_nothing(name, monkeypatch):
+    """A stage or bearing spec reused across passes (:mod:`geardesign.drive.reuse`) gives
+    the document that validating it again in every pass gives."""
+    import geardesign.drive.reuse as REUSE
+
+    reused = run(SPECS / name).document()
+    monkeypatch.setattr(REUSE, "reloaded", lambda *args, **kwargs: None)
+    assert run(SPECS / name).document() == reused

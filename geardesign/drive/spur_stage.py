@@ -20,7 +20,6 @@ from geardesign.drive.stages import (
     _named,
     _put,
     _table,
-    _validate,
     finish,
 )
 
@@ -51,15 +50,6 @@ def _spur_loads(data: dict, T_in: float, n_in: float, duty: Duty, where: str) ->
 def _no_material(where: str) -> InputError:
     return InputError(Problem(f"{where}: material", "missing table [material.pinion] and "
                               "[material.wheel]: a drive rates every stage for strength"))
-
-
-def spur_data(data: dict, T_in: float, n_in: float, duty: Duty, where: str) -> dict:
-    """A copy of the spur stage spec with the drive's load in it, validated."""
-    d = _spur_loads(data, T_in, n_in, duty, where)
-    _validate(d, where)
-    if d.get("material") is None:
-        raise _no_material(where)
-    return d
 
 
 #: The loads the drive sets on a spur stage (:func:`_spur_loads`).

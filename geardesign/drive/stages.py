@@ -169,13 +169,6 @@ def _set_by_drive(res: Result, data: dict, original: dict | None) -> None:
               "stage gives none", "", None, None, "drive"))
 
 
-def _validate(data: dict, where: str) -> None:
-    try:
-        load_data(copy.deepcopy(data), where)
-    except InputError as exc:
-        raise _named(exc, where) from None
-
-
 def _table(d: dict, key: str, where: str) -> dict:
     """The stage's table ``key`` (created when absent), refused when it is not a table:
     the drive fills in loads before the stage's own calculator validates it."""
