@@ -8,12 +8,14 @@ drive sets takes that validated spec with the new loads, each checked by its own
 field (:meth:`geardesign.core.spec.Field.check`), and the calculator's own reader of those
 loads.  A load its field refuses makes the pass validate the whole spec again, so that the
 problem is reported as the calculator reports it.  The store lives for one drive run
-(:attr:`geardesign.drive.stages.Duty.memo`), so a run never sees another's values.
+(:attr:`geardesign.drive.stages.Duty.memo`), so a run never sees another's values.  A
+reused spec copies the tables that hold the new values and shares the others with the
+stored spec: the readers and reports of the calculators do not change a validated spec's
+tables once it has been read.
 """
 
 from __future__ import annotations
 
-import copy
 
 from geardesign.core.spec import ValidatedSpec
 
@@ -32,13 +34,26 @@ def _table(data: dict, tables: tuple[str, ...]):
     return t if isinstance(t, dict) else None
 
 
+def _copied(data: dict, tables: tuple[str, ...]):
+    """The (sub-)table of ``data`` at ``tables`` after copying each table on the way
+    (``data`` itself is copied by the caller), or None; other tables stay shared."""
+    t = data
+    for name in tables:
+        sub = t.get(name)
+        if not isinstance(sub, dict):
+            return None
+        t[name] = sub = dict(sub)
+        t = sub
+    return t
+
+
 def fingerprint(kind: str, where: str, data: dict, paths: tuple[str, ...]) -> tuple:
     """The key of a spec in the store: the spec with the values at ``paths``
     (``"table.key"``, ``"table.sub.key"``) left out."""
-    d = copy.deepcopy(data)
+    d = dict(data)
     for path in paths:
         tables, key = _split(path)
-        t = _table(d, tables)
+        t = _copied(d, tables)
         if t is not None:
             t.pop(key, None)
     return kind, where, repr(d)
@@ -62,10 +77,10 @@ def reloaded(schema, spec: ValidatedSpec, raw: dict, paths: tuple[str, ...]
     assumed default; ``None`` (validate ``raw`` again) when a value is refused, the schema
     has no such field, or ``raw`` leaves out a value that ``spec`` has."""
     values = given(raw, paths)
-    data = copy.deepcopy(spec.data)
+    data = dict(spec.data)          # the tables on the paths copied, the others shared
     for path in paths:
         tables, key = _split(path)
-        t = _table(data, tables)
+        t = _copied(data, tables)
         if path not in values:
             if t is not None and t.get(key) is not None:
                 return None
