@@ -20,9 +20,11 @@ and the JSON document of its result.
 ``resource.getrusage(RUSAGE_CHILDREN)``), medians over the runs; with the bytecode kept
 (as after ``pip install``), or ``--no-bytecode``: compiled in every process.
 
-Figures (2 shared cores under load, 11 rounds, 9 cold runs): drive golden 121.4 → 71.6 ms
-(1.62×), two-stage GOST + ISO drive 579 → 126 ms (4.84×); cold drive golden / spur_plain
-2.21 (799 / 361 ms; 3.06 at 5a58329).
+Figures (2 shared cores under load, 11 rounds, 9 cold runs, against 5a58329): drive golden
+133 → 69 ms (1.72–1.88× over four runs), two-stage GOST + ISO drive 574 → 142 ms
+(3.65–3.99×); cold drive golden / spur_plain with the bytecode kept 2.47–2.59 (473–542 /
+192–209 ms; 5a58329: 3.26–3.44), compiled in every process 1.60 (1089 / 683 ms; 5a58329:
+2.17).
 """
 
 from __future__ import annotations
@@ -123,6 +125,11 @@ CASES = [("drive golden: shafts, keys, heat balance", "drive_reducer_shafts_keys
          ("spur golden (scale)", "spur_plain.toml", None)]
 
 
+NO_BYTECODE = Path(tempfile.gettempdir()) / "geardesign-no-bytecode"
+"""An empty bytecode folder: with PYTHONDONTWRITEBYTECODE nothing is written to it, so a
+process finds no bytecode and compiles every module it imports."""
+
+
 def cold_cpu(name: str, root: Path = ROOT, bytecode: bool = True) -> float:
     """CPU time [s] of one ``python -m geardesign run specs/NAME -f json`` process of the
     package at ``root``; ``bytecode``: with the compiled modules kept (as after ``pip
@@ -132,8 +139,10 @@ def cold_cpu(name: str, root: Path = ROOT, bytecode: bool = True) -> float:
     env = dict(os.environ)
     if bytecode:
         env.pop("PYTHONDONTWRITEBYTECODE", None)
-    else:
+    else:      # no bytecode read or written: an empty cache folder elsewhere
+        NO_BYTECODE.mkdir(exist_ok=True)
         env["PYTHONDONTWRITEBYTECODE"] = "1"
+        env["PYTHONPYCACHEPREFIX"] = str(NO_BYTECODE)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     subprocess.run([sys.executable, "-m", "geardesign", "run", str(SPECS / name), "-f",
                     "json"], cwd=root, env=env, check=False, stdout=subprocess.DEVNULL)
@@ -145,8 +154,9 @@ def cold(runs: int, roots: dict, bytecode: bool = True) -> None:
     """Cold CPU of the drive golden against the spur golden (alternating, medians), for
     each version (``roots``: label -> checkout)."""
     for label, root in roots.items():
-        if bytecode:
-            cold_cpu("spur_plain.toml", root)      # compile once, then keep the bytecode
+        if bytecode:                               # compile once, then keep the bytecode
+            cold_cpu("spur_plain.toml", root)
+            cold_cpu(CASES[0][1], root)
         drive, spur = [], []
         for i in range(runs):
             pair = [("d", CASES[0][1]), ("s", "spur_plain.toml")]
