@@ -15,13 +15,16 @@ spur golden ``specs/spur_plain.toml`` for scale.  A run is the calculator's ``co
 and the JSON document of its result.
 
 ``--cold N`` adds the cold ratio of the issue's acceptance: N alternating runs of
-``python -m geardesign run SPEC -f json`` of this checkout, the drive golden and
+``python -m geardesign run SPEC -f json`` of each version, the drive golden and
 ``specs/spur_plain.toml``, each a new process; its CPU time (user + system, from
-``resource.getrusage(RUSAGE_CHILDREN)``), medians over the runs.
+``resource.getrusage(RUSAGE_CHILDREN)``), medians over the runs; with the bytecode kept
+(as after ``pip install``), or ``--no-bytecode``: compiled in every process.
 
-Figures (2 shared cores under load, 11 rounds, 9 cold runs): drive golden 121.4 → 71.6 ms
-(1.62×), two-stage GOST + ISO drive 579 → 126 ms (4.84×); cold drive golden / spur_plain
-2.21 (799 / 361 ms; 3.06 at 5a58329).
+Figures (2 shared cores under load, 11 rounds, 9 cold runs, against 5a58329): drive golden
+133 → 69 ms (1.72–1.88× over four runs), two-stage GOST + ISO drive 574 → 142 ms
+(3.65–3.99×); cold drive golden / spur_plain with the bytecode kept 2.47–2.59 (473–542 /
+192–209 ms; 5a58329: 3.26–3.44), compiled in every process 1.60 (1089 / 683 ms; 5a58329:
+2.17).
 """
 
 from __future__ import annotations
@@ -122,27 +125,47 @@ CASES = [("drive golden: shafts, keys, heat balance", "drive_reducer_shafts_keys
          ("spur golden (scale)", "spur_plain.toml", None)]
 
 
-def cold_cpu(name: str) -> float:
-    """CPU time [s] of one ``python -m geardesign run specs/NAME -f json`` process."""
+NO_BYTECODE = Path(tempfile.gettempdir()) / "geardesign-no-bytecode"
+"""An empty bytecode folder: with PYTHONDONTWRITEBYTECODE nothing is written to it, so a
+process finds no bytecode and compiles every module it imports."""
+
+
+def cold_cpu(name: str, root: Path = ROOT, bytecode: bool = True) -> float:
+    """CPU time [s] of one ``python -m geardesign run specs/NAME -f json`` process of the
+    package at ``root``; ``bytecode``: with the compiled modules kept (as after ``pip
+    install``), else compiled in every process (PYTHONDONTWRITEBYTECODE=1)."""
     import resource
 
+    env = dict(os.environ)
+    if bytecode:
+        env.pop("PYTHONDONTWRITEBYTECODE", None)
+    else:      # no bytecode read or written: an empty cache folder elsewhere
+        NO_BYTECODE.mkdir(exist_ok=True)
+        env["PYTHONDONTWRITEBYTECODE"] = "1"
+        env["PYTHONPYCACHEPREFIX"] = str(NO_BYTECODE)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     subprocess.run([sys.executable, "-m", "geardesign", "run", str(SPECS / name), "-f",
-                    "json"], cwd=ROOT, check=False, stdout=subprocess.DEVNULL)
+                    "json"], cwd=root, env=env, check=False, stdout=subprocess.DEVNULL)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
 
 
-def cold(runs: int) -> None:
-    """Cold CPU of the drive golden against the spur golden (alternating, medians)."""
-    drive, spur = [], []
-    for i in range(runs):
-        pair = [("d", CASES[0][1]), ("s", "spur_plain.toml")]
-        for tag, name in (pair if i % 2 == 0 else pair[::-1]):
-            (drive if tag == "d" else spur).append(cold_cpu(name))
-    d, s = statistics.median(drive), statistics.median(spur)
-    print(f"cold CPU: drive golden {1e3 * d:.0f} ms, spur_plain {1e3 * s:.0f} ms, "
-          f"ratio {d / s:.2f}")
+def cold(runs: int, roots: dict, bytecode: bool = True) -> None:
+    """Cold CPU of the drive golden against the spur golden (alternating, medians), for
+    each version (``roots``: label -> checkout)."""
+    for label, root in roots.items():
+        if bytecode:                               # compile once, then keep the bytecode
+            cold_cpu("spur_plain.toml", root)
+            cold_cpu(CASES[0][1], root)
+        drive, spur = [], []
+        for i in range(runs):
+            pair = [("d", CASES[0][1]), ("s", "spur_plain.toml")]
+            for tag, name in (pair if i % 2 == 0 else pair[::-1]):
+                (drive if tag == "d" else spur).append(cold_cpu(name, root, bytecode))
+        d, s = statistics.median(drive), statistics.median(spur)
+        how = "bytecode kept" if bytecode else "compiled every run"
+        print(f"cold CPU ({label}, {how}): drive golden {1e3 * d:.0f} ms, spur_plain "
+              f"{1e3 * s:.0f} ms, ratio {d / s:.2f}")
 
 
 def main() -> None:
@@ -150,15 +173,19 @@ def main() -> None:
     ap.add_argument("--base", default="5a58329")
     ap.add_argument("--rounds", type=int, default=15)
     ap.add_argument("--cold", type=int, default=0, metavar="N",
-                    help="also N alternating cold runs of the drive golden and spur_plain")
+                    help="also N alternating cold runs of the drive golden and spur_plain, "
+                         "for both versions")
+    ap.add_argument("--no-bytecode", action="store_true",
+                    help="cold runs compile the package in every process")
     args = ap.parse_args()
-    if args.cold:
-        cold(args.cold)
     with tempfile.TemporaryDirectory() as tmp:
         old_root = Path(tmp) / "base"
         subprocess.run(["git", "worktree", "add", "--detach", str(old_root), args.base],
                        cwd=ROOT, check=True, capture_output=True)
         try:
+            if args.cold:
+                cold(args.cold, {args.base: old_root, "this checkout": ROOT},
+                     not args.no_bytecode)
             old, new = load_version(old_root), load_version(ROOT)
             print(f"{'case':45s} {'old ms':>8s} {'new ms':>8s} {'old/new':>8s}")
             for title, name, tf in CASES:

@@ -1,7 +1,7 @@
-"""The drive composes its spur stages through the typed interface: each spur stage is
-solved once per pass (:func:`geardesign.spur.solve.solve`), its values read from the
-record, and its report (with the advice of its failed checks) written once, from the last
-pass; no whole spur calculation and no JSON document inside the passes."""
+"""The drive composes its stages through the typed interface: each stage (spur, worm,
+Novikov, planetary) is solved once per pass by its calculator's ``solve()``, its values
+read from the record, and its report (with the advice of its failed checks) written once,
+from the last pass; no whole calculation and no JSON document inside the passes."""
 
 import pytest
 
@@ -84,3 +84,108 @@ def test_the_advice_is_not_searched_inside_the_passes(counted, monkeypatch):
     assert calls["nested"] == 0
     assert calls["top"] <= counted["spur_stages"] + 1     # the stages', the drive's
     assert res.kind == "drive"
+
+
+STAGE_KINDS = {"worm": ("worm_single_start_reducer.toml", "geardesign.worm.solve"),
+               "novikov": ("novikov_high_speed.toml", "geardesign.novikov.solve"),
+               "planetary": ("planetary_2kh_reducer.toml", "geardesign.planetary.solve"),
+               "spur": (None, "geardesign.spur.solve")}
+"""Each stage kind of a drive: a stage spec of it and the module of its typed ``solve``."""
+
+SPUR_STAGE = """
+[[stage]]
+name = "spur stage"
+kind = "spur"
+[stage.gear]
+module = 5.0
+z1 = 25
+z2 = 80
+face_width = 90.0
+accuracy_grade = 7
+bearing_scheme = 5
+[stage.material.pinion]
+grade = "40KhN"
+treatment = "improved"
+hardness_HB = 300.0
+[stage.material.wheel]
+grade = "40Kh"
+treatment = "improved"
+hardness_HB = 270.0
+"""
+
+
+@pytest.mark.parametrize("kind", ["worm", "novikov", "planetary"])
+def test_every_stage_kind_is_solved_once_per_pass(kind, tmp_path, monkeypatch, counted):
+    """A stage of each kind and a spur stage, rated for the machine's torque (two passes:
+    the ratios, then the torque carried back): each stage's calculator ``solve()`` runs
+    once per pass, from typed inputs; the stage's report is written once, and no JSON
+    document inside the drive."""
+    import importlib
+    import shutil
+
+    solves = {k: 0 for k in STAGE_KINDS}
+    for k, (_, module) in STAGE_KINDS.items():
+        mod = importlib.import_module(module)
+        original = mod.solve if k != "spur" else SPUR_SOLVE.solve
+
+        def solve_(inputs, k=k, original=original):
+            solves[k] += 1
+            return original(inputs)
+
+        if k != "spur":
+            monkeypatch.setattr(mod, "solve", solve_)
+    name = STAGE_KINDS[kind][0]
+    shutil.copy(SPECS / name, tmp_path / name)
+    spec = tmp_path / "drive.toml"
+    spec.write_text(f"""kind = "drive"
+[motor]
+power = 15.0
+speed = 1450.0
+[load]
+torque = 300.0
+life_hours = 10000.0
+[[stage]]
+name = "{kind} stage"
+file = "{name}"
+""" + SPUR_STAGE, encoding="utf-8")
+    res = run(spec)
+    n = counted
+    assert n["passes"] == 2 and n["spur_stages"] == 1
+    assert solves[kind] == n["passes"]             # this kind: once per pass
+    assert n["solve"] == n["passes"]               # the spur stage: once per pass
+    assert n["report"] == 1 and n["documents"] == 0
+    assert [p[2].kind for p in res.parts if p[0] == "stage_reports"] == [kind, "spur"]
+
+
+def test_specs_are_validated_once_per_run(monkeypatch):
+    """The bearings of the heat balance's passes are rated through ``bearing.solve`` from
+    typed inputs, their specs validated once per run (and once more with the drive's oil
+    for their reports); a spur stage's spec once (its loads, the shafts' f_sh and the oil
+    temperature of its scuffing rating change between passes), not once per pass."""
+    import geardesign.core.registry as REG
+
+    kinds: dict = {}
+    validate = REG.validate_partial
+
+    def validate_(schema, data, *args, **kwargs):
+        kinds[schema.kind] = kinds.get(schema.kind, 0) + 1
+        return validate(schema, data, *args, **kwargs)
+
+    monkeypatch.setattr(REG, "validate_partial", validate_)
+    res = run(SPECS / "drive_reducer_shafts_keys_thermal.toml")
+    bearings = sum(1 for p in res.parts if p[0] == "bearing_reports")
+    assert bearings == 6
+    assert kinds["bearing"] == 2 * bearings
+    assert kinds["spur"] == 2 + 1       # each stage once; the GOST stage's ISO K_Hβ with f_sh
+
+
+@pytest.mark.parametrize("name", ["drive_reducer_shafts_keys_thermal.toml",
+                                  "drive_worm_spur.toml", "drive_planetary_spur.toml"])
+def test_reusing_a_validated_spec_changes_nothing(name, monkeypatch):
+    """A stage or bearing spec reused across passes (:mod:`geardesign.drive.reuse`) gives
+    the document that validating it again in every pass gives."""
+    import geardesign.drive.reuse as REUSE
+
+    reused = run(SPECS / name).document()
+    monkeypatch.setattr(REUSE, "reloaded", lambda *args, **kwargs: None)
+    assert run(SPECS / name).document() == reused

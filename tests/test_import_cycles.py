@@ -117,15 +117,9 @@ def test_the_walker_sees_imports_inside_functions(tmp_path):
     assert cycles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [["a", "b", "c"]]
 
 
-#: Cycles that remain in calculators being restructured: the package imports its
-#: calculator for ``CALCULATOR`` and the calculator imports the package back inside
-#: ``compute`` (the lazy ``CALCULATOR`` of :func:`geardesign.core.registry.lazy_calculator`
-#: removes it, as in ``spur``, ``drive`` and the other calculators), and the advice module
-#: of worm.  The list may only shrink: a new cycle fails the test.
-KNOWN = {
-    frozenset({"geardesign.worm", "geardesign.worm.calculator"}),
-    frozenset({"geardesign.worm.advice", "geardesign.worm.checks"}),
-}
+#: Cycles tolerated: none is left (the package <-> calculator cycles went with the lazy
+#: ``CALCULATOR`` of :func:`geardesign.core.registry.lazy_calculator`).  A new cycle fails.
+KNOWN: set[frozenset[str]] = set()
 
 
 def test_no_import_cycle():

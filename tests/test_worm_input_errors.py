@@ -1,6 +1,6 @@
 """Worm specs with bad input: one line per problem naming file, key, value and what is
 allowed; exit 2; no traceback.  One case per input rule of the worm calculator (schema
-rules and the rules across keys in ``geardesign/worm/calculator.py``)."""
+rules and the rules across keys in ``geardesign/worm/inputs.py``)."""
 
 import pytest
 

@@ -28,7 +28,9 @@ DRIVE_KEYS = ("name", "file", "efficiency")
 
 ADAPTERS = {"spur": run_spur, "worm": ST.run_worm, "novikov": ST.run_novikov,
             "planetary": ST.run_planetary, "bevel": run_bevel}
-"""The stage adapters by kind (:mod:`.spur_stage`, :mod:`.bevel_stage`, :mod:`.stages`)."""
+"""The stage adapters by kind (:mod:`.spur_stage`, :mod:`.bevel_stage`, :mod:`.stages`):
+``adapter(stage spec, T_in, n_in, duty, efficiency or None, where) -> StageRun``, the stage
+solved once from its typed inputs.  A new stage kind adds its adapter here."""
 
 
 def _torque_from_power(P: float, n: float) -> float:
@@ -178,7 +180,7 @@ def compute(spec: ValidatedSpec) -> Result:
     T_in, runs = chain()
     thermal = None
     if lub is not None:
-        thermal = LUB.solve(spec, stages, chain, T_in, runs, n_m, scuff)
+        thermal = LUB.solve(spec, stages, chain, T_in, runs, n_m, scuff, duty.memo)
         T_in, runs = thermal.T_in, thermal.runs
 
     u = math.prod(r.ratio for r in runs)

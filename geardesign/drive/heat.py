@@ -11,6 +11,8 @@ efficiency (or the one the spec gives); its loss (1 − η)·P_in heats the oil 
 
 from __future__ import annotations
 
+import dataclasses
+import math
 from dataclasses import dataclass, field
 
 from geardesign.drive import losses as L
@@ -116,6 +118,26 @@ class Model:
     V0: float = 1.0                         # l
     bearings: list[BearingLoad] = field(default_factory=list)
     seals: list[Seal] = field(default_factory=list)
+    fixed_terms: dict = field(default_factory=dict, repr=False, compare=False)
+    """Per stage, what its losses take that does not depend on the oil temperature or the
+    load scale (:func:`_fixed_terms`), computed on first use; and the losses at each
+    operating point (oil temperature, load scale) computed (:func:`stage_losses`).  The
+    model is not changed once its losses are asked for."""
+
+
+def _fixed_terms(m: Model, i: int) -> tuple:
+    """Stage ``i``'s terms that do not change with the oil temperature or the load scale:
+    (v_ΣC, ρ_redC, H_V) of its mesh (None without one) and the loss of its seals [W]."""
+    if i not in m.fixed_terms:
+        mesh = None
+        if i in m.meshes:
+            g = m.meshes[i]
+            mesh = (L.sum_velocity_pitch(g.n1, g.d_w1, g.alpha_tw),
+                    L.reduced_radius_pitch(g.d_w1, g.d_w2, g.alpha_tw, g.beta_b),
+                    L.tooth_loss_factor(g.u, g.z1, g.beta_b, g.eps_alpha, g.eps_1))
+        seals = sum(L.seal_power_loss(s.d, s.n) for s in m.seals if s.stage == i)
+        m.fixed_terms[i] = (mesh, seals)
+    return m.fixed_terms[i]
 
 
 @dataclass(frozen=True)
@@ -141,6 +163,9 @@ class StageLoss:
 def stage_losses(m: Model, t: float, scale: float = 1.0) -> list[StageLoss]:
     """The losses [W] of every stage at the oil temperature t [°C], with every transmitted
     load (torques and bearing loads) times ``scale``."""
+    point = ("at", t, scale)
+    if point in m.fixed_terms:
+        return m.fixed_terms[point]
     oil = m.oil
     nu, rho, eta = oil.nu(t), oil.rho(t), oil.eta(t)
     out = []
@@ -148,13 +173,12 @@ def stage_losses(m: Model, t: float, scale: float = 1.0) -> list[StageLoss]:
         P = m.P_in[i] * scale
         mesh = other = 0.0
         mu = H = None
+        terms, seals = _fixed_terms(m, i)
         if i in m.meshes:
             g = m.meshes[i]
-            v = L.sum_velocity_pitch(g.n1, g.d_w1, g.alpha_tw)
-            rr = L.reduced_radius_pitch(g.d_w1, g.d_w2, g.alpha_tw, g.beta_b)
+            v, rr, H = terms
             Ra = oil.Ra if oil.Ra is not None else (g.Ra if g.Ra is not None else 0.8)
             mu = L.mean_friction_coefficient(g.F_bt * scale, g.b, v, rr, eta, Ra, oil.X_L)
-            H = L.tooth_loss_factor(g.u, g.z1, g.beta_b, g.eps_alpha, g.eps_1)
             mesh = L.mesh_power_loss(P, mu, H)
         elif i in m.fixed:
             other = (1.0 - m.fixed[i]) * P
@@ -167,8 +191,8 @@ def stage_losses(m: Model, t: float, scale: float = 1.0) -> list[StageLoss]:
                 M0, M1 = L.bearing_friction_moment(b.kind, b.d_m, b.n, nu, b.F_r * scale,
                                                    b.F_a * scale, b.P0 * scale, b.C0, b.Y)
                 brg += L.moment_power(M0 + M1, b.n)
-        seals = sum(L.seal_power_loss(s.d, s.n) for s in m.seals if s.stage == i)
         out.append(StageLoss(P, mesh, churn, brg, seals, other, mu, H))
+    m.fixed_terms[point] = out
     return out
 
 
@@ -189,18 +213,30 @@ class Balance:
     P_Q_at_max: float        # heat flow at t_max
 
 
-def balance(m: Model, hs: TH.Housing, t_air: float, t_max: float) -> Balance:
+def balance(m: Model, hs: TH.Housing, t_air: float, t_max: float,
+            limit: bool = True) -> Balance:
     """Sump temperature: P_V(ϑ) = P_Q(ϑ) solved between the ambient temperature and
-    T_SEARCH_MAX by bisection (:func:`thermal.solve_bounded`); thermal power limit: the
-    load scale s at which P_V(ϑ_max, s) = P_Q(ϑ_max) (:func:`thermal.solve_increasing`)."""
+    T_SEARCH_MAX by bisection (:func:`thermal.solve_bounded`); with ``limit`` the thermal
+    power limit as well (:func:`with_limit`), else its fields are NaN (a pass of the
+    drive needs the sump temperature only)."""
     def f(t):
         return TH.dissipation(hs, t, t_air).P_Q - total_loss(m, t)
     r = TH.solve_bounded(f, t_air, T_SEARCH_MAX)
     t = r.x
+    nan = math.nan
+    b = Balance(t, r.iterations, r.bracketed, total_loss(m, t), TH.dissipation(hs, t, t_air),
+                nan, False, nan, nan)
+    return with_limit(b, m, hs, t_air, t_max) if limit else b
+
+
+def with_limit(b: Balance, m: Model, hs: TH.Housing, t_air: float, t_max: float) -> Balance:
+    """The balance ``b`` with the thermal power limit: the load scale s at which
+    P_V(ϑ_max, s) = P_Q(ϑ_max) (:func:`thermal.solve_increasing`), and the losses and the
+    heat flow at ϑ_max."""
     PQmax = TH.dissipation(hs, t_max, t_air).P_Q
     s = TH.solve_increasing(lambda k: total_loss(m, t_max, k) - PQmax, 0.0, 1.0)
-    return Balance(t, r.iterations, r.bracketed, total_loss(m, t), TH.dissipation(hs, t, t_air),
-                   s.x, s.bracketed, total_loss(m, t_max), PQmax)
+    return dataclasses.replace(b, scale_limit=s.x, limit_bracketed=s.bracketed,
+                               P_V_at_max=total_loss(m, t_max), P_Q_at_max=PQmax)
 
 
 def shaft_diameter(T: float) -> float:

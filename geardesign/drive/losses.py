@@ -62,7 +62,7 @@ def tooth_loss_factor(u: float, z1: int, beta_b: float, eps_alpha: float,
     >>> round(tooth_loss_factor(24 / 16, 16, 0.0, 1.4625, 0.7341), 4)
     0.1986
     """
-    from geardesign.planetary.efficiency import loss_factor
+    from geardesign.gears.losses import loss_factor
 
     return loss_factor(eps_alpha, eps_1, z1, u, math.radians(beta_b))
 

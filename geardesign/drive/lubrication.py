@@ -21,9 +21,9 @@ from geardesign.core.spec import ValidatedSpec
 from geardesign.drive import heat as HEAT
 from geardesign.drive import losses as L
 from geardesign.drive import thermal as TH
-from geardesign.drive.stages import values
+
 from geardesign.materials import lubricants as OIL
-from geardesign.planetary.efficiency import EPS_ALPHA_RANGE, loss_factor_applies
+from geardesign.gears.losses import EPS_ALPHA_RANGE, loss_factor_applies
 
 MAX_PASSES = 5
 EFFICIENCY_TOL = 1e-6
@@ -186,18 +186,29 @@ def _build(spec, stages, runs, oil: HEAT.Oil) -> tuple:
     return m, hs, box
 
 
-def _bearings(cases, bearing_results, n_stages: int) -> list[HEAT.BearingLoad]:
+def bore(rated) -> float | None:
+    """The bore d [mm] of a rated bearing (:class:`geardesign.bearing.solve.Rated`) as its
+    report gives it: from a catalogue row with its dimensions, else none."""
+    f = rated.facts
+    return f.d if f.catalogue is not None and f.B is not None else None
+
+
+def _bearings(cases, records, n_stages: int) -> list[HEAT.BearingLoad]:
+    """The bearings' data of the loss model from their records
+    (:class:`geardesign.bearing.solve.Rated`): type, mean diameter, loads, static load and
+    rating, axial factor Y."""
     out = []
-    for c, br in zip(cases, bearing_results):
-        v = values(br)
-        kind = v.get("type")
-        if kind not in L.bearing_types() or v.get("d") is None or v.get("D") is None:
+    for c, r in zip(cases, records):
+        a, d = r.a, bore(r)
+        kind = a.bearing.kind
+        if kind not in L.bearing_types() or d is None or r.facts.D is None:
             continue
         stage = min(c["shaft"], n_stages) - 1
-        C0 = v.get("C_0r") or 0.0
+        P0 = a.static.P0 if a.static is not None else c["F_r"]
+        Y = a.blocks[0].factors.Y if len(a.blocks) == 1 else None
         out.append(HEAT.BearingLoad(stage, f"{c['name']} {c['side'].upper()}", kind,
-                                    0.5 * (v["d"] + v["D"]), c["n"], c["F_r"], c["F_a"],
-                                    v.get("P0", c["F_r"]), C0, v.get("Y")))
+                                    0.5 * (d + r.facts.D), c["n"], c["F_r"], c["F_a"],
+                                    P0, a.bearing.C_0r or 0.0, Y))
     return out
 
 
@@ -282,9 +293,13 @@ def _set_scuffing_oil(stages: list, scuff: dict, t_oil: float) -> bool:
     return changed
 
 
-def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m, scuff: dict | None = None
-          ) -> Thermal:
-    from geardesign.drive.shaft_loads import run_bearing, shaft_cases
+def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m, scuff: dict | None = None,
+          memo: dict | None = None) -> Thermal:
+    """The passes of efficiencies and stages until the efficiencies settle (module
+    docstring); ``memo``: the run's store of validated specs (:mod:`.reuse`)."""
+    from geardesign.drive.shaft_loads import rate_bearing, shaft_cases
+
+    memo = {} if memo is None else memo
 
     d = spec.data
     lub, th = d["lubrication"], d["thermal"]
@@ -305,11 +320,11 @@ def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m, scuff: dict | Non
             cases = shaft_cases(d["shaft"], runs, n_m, L_h)
             for c in cases:        # geometry and static load: without the oil temperature
                 c = dict(c, data={k: v for k, v in c["data"].items() if k != "lubrication"})
-                brs.append(run_bearing(c))
+                brs.append(rate_bearing(c, memo))
             m.bearings = _bearings(cases, brs, len(runs))
         bores = {}
         for c, br in zip(cases, brs):
-            bores.setdefault(c["shaft"], values(br).get("d"))
+            bores.setdefault(c["shaft"], bore(br))
         speeds = [n_m] + [r.n_out for r in runs]
         torques = [T_in] + [r.T_out for r in runs]
         last = len(runs) + 1
@@ -324,7 +339,7 @@ def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m, scuff: dict | Non
         box.update(d_seal_in=d_in, d_seal_out=d_out)
         m.seals = [HEAT.Seal(0, d_in, speeds[0], "input"),
                    HEAT.Seal(len(runs) - 1, d_out, speeds[-1], "output")]
-        bal = HEAT.balance(m, hs, t_air, t_max)
+        bal = HEAT.balance(m, hs, t_air, t_max, limit=False)
         sl = HEAT.stage_losses(m, bal.t_oil)
         for i, s in enumerate(sl):
             if s.total >= s.P_in:
@@ -354,7 +369,8 @@ def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m, scuff: dict | Non
         T_in, runs = chain(etas_before or None, runs)
         for i in etas_before or {}:
             runs[i].efficiency_source = ETA_SOURCE
-    losses = HEAT.stage_losses(m, bal.t_oil)
+    bal = HEAT.with_limit(bal, m, hs, t_air, t_max)
+    losses = sl                      # the losses of the last model at its sump temperature
     info.update(nu40=oil.nu40, VI=oil.VI, X_L=oil.X_L)
     t_bearing = min(bal.t_oil, 150.0)
 

@@ -400,11 +400,12 @@ def _rating(run, name: str) -> dict | None:
 
 def _iso_K_Hbeta(data: dict, sr, duty, where: str, f_sh: float) -> float:
     """K_Hβ of ISO 6336-1 method C of a stage rated to GOST, with ``f_sh`` (informative):
-    the ISO rating record of the stage spec, no report."""
-    from geardesign.drive.spur_stage import spur_data
+    the ISO rating record of the stage spec (with the drive's loads; validated as a GOST
+    stage in the passes already), no report."""
+    from geardesign.drive.spur_stage import _spur_loads
     from geardesign.spur.strength.iso6336.report import iso_rating
 
-    d = spur_data(data, sr.T_in, sr.n_in, duty, where)
+    d = _spur_loads(data, sr.T_in, sr.n_in, duty, where)
     iso = d.get("iso")
     if not isinstance(iso, dict):
         iso = d["iso"] = {}

@@ -7,9 +7,11 @@ balance (:mod:`.lubrication`)."""
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from geardesign.core.errors import InputError, Problem
-from geardesign.core.registry import run_data
+
+from geardesign.core.registry import load_data, run_data
 from geardesign.core.result import Result
 from geardesign.drive.shafts import GearLoad, external_loads, reactions
 from geardesign.drive.stages import StageRun
@@ -77,6 +79,66 @@ def shaft_cases(shafts: list, runs: list[StageRun], n_m: float, L_h: float) -> l
             cases.append(dict(shaft=idx, side=side, key=key, name=name, F_r=F_r, F_a=F_a,
                               n=speeds[idx - 1], data=data))
     return cases
+
+
+#: The loads the drive sets on a bearing (:func:`shaft_cases`).
+BEARING_LOADS = ("load.F_r", "load.F_a", "load.speed")
+
+
+def rate_bearing(case: dict, memo: dict):
+    """The bearing of one entry of :func:`shaft_cases` rated through its typed interface
+    (:func:`geardesign.bearing.inputs.read`, :func:`geardesign.bearing.solve.solve`): its
+    record (:class:`~geardesign.bearing.solve.Rated`), no report.  The spec is validated
+    once per run (``memo``, :mod:`.reuse`); a later pass with other loads checks them by
+    their schema fields and the bearing's reader of loads.  Problems name the shaft's
+    support."""
+    import dataclasses
+
+    from geardesign.bearing import inputs as BI
+    from geardesign.bearing.life import BearingError
+    from geardesign.bearing.solve import solve
+    from geardesign.bearing.spec import SCHEMA
+    from geardesign.core.registry import _say_default
+    from geardesign.drive import reuse
+
+    where = f"{case['key']}.support_{case['side']}"
+    data = case["data"]
+    key = reuse.fingerprint("bearing", where, data, BEARING_LOADS)
+    inp = None
+    if key in memo:
+        first = memo[key]
+        spec = reuse.reloaded(SCHEMA, first.spec, data, BEARING_LOADS)
+        if spec is not None and isinstance(first.inputs, BI.CheckInputs):
+            try:
+                blocks = BI.resolve_blocks(spec)
+                BI.check_inputs_fit(first.inputs.bearing, blocks)
+                inp = dataclasses.replace(first.inputs, blocks=tuple(blocks))
+            except InputError:
+                inp = None       # read again below: the problem as the calculator says it
+    try:
+        fresh = inp is None
+        if fresh:
+            _, spec = load_data(data, where)
+        try:
+            if fresh:
+                inp = BI.read(spec)
+                memo[key] = _Read(spec, inp)
+            try:
+                return solve(inp)
+            except BearingError as exc:
+                raise BI.assessment_error(exc, spec.data) from None
+        except InputError as exc:      # as the calculator's compute says them
+            raise InputError([_say_default(p, spec) for p in exc.problems]) from None
+    except InputError as exc:
+        raise InputError([_bearing_problem(where, p) for p in exc.problems]) from None
+
+
+@dataclass(frozen=True)
+class _Read:
+    """A bearing spec validated in a run and its typed inputs."""
+
+    spec: object
+    inputs: object
 
 
 def run_bearing(case: dict) -> Result:

@@ -11,6 +11,7 @@ import copy
 from geardesign.core.errors import InputError, Problem
 from geardesign.core.registry import load_data
 from geardesign.core.result import Result
+from geardesign.core.spec import ValidatedSpec
 from geardesign.drive.stages import (
     ETA_CYLINDRICAL,
     Duty,
@@ -18,9 +19,8 @@ from geardesign.drive.stages import (
     StageRun,
     _named,
     _put,
-    _set_by_drive,
     _table,
-    _validate,
+    finish,
 )
 
 
@@ -52,22 +52,66 @@ def _no_material(where: str) -> InputError:
                               "[material.wheel]: a drive rates every stage for strength"))
 
 
-def spur_data(data: dict, T_in: float, n_in: float, duty: Duty, where: str) -> dict:
-    """A copy of the spur stage spec with the drive's load in it, validated."""
-    d = _spur_loads(data, T_in, n_in, duty, where)
-    _validate(d, where)
-    if d.get("material") is None:
-        raise _no_material(where)
-    return d
+#: The loads the drive sets on a spur stage (:func:`_spur_loads`).
+SPUR_LOADS = ("load.torque1", "load.speed1", "load.peak_torque1", "iso.f_sh",
+              "iso.scuffing.oil_temperature")
+"""With the misalignment the shafts give (``iso.f_sh``) and the oil at the sump
+temperature of the heat balance (``iso.scuffing.oil_temperature``)."""
+
+
+def _reloaded(inputs, d: dict):
+    """The typed inputs of the spur spec ``d`` from those of the same spec with other
+    loads (:mod:`geardesign.drive.reuse`): the loads checked by their schema fields, the
+    duty read by the spur calculator's reader; ``None`` when a load is refused."""
+    import dataclasses
+
+    from geardesign.drive import reuse
+    from geardesign.spur.spec import SCHEMA
+    from geardesign.spur.spec_inputs import _duty
+
+    spec = reuse.reloaded(SCHEMA, inputs.spec, d, SPUR_LOADS)
+    if spec is None or inputs.strength is None:
+        return None
+    # the reader fills defaults into its copies: the echo keeps those of the first read
+    probe = ValidatedSpec(spec.data, list(spec.assumed))
+    try:
+        duty = _duty(probe, dict(spec.data["load"]), True)
+    except InputError:
+        return None
+    changes = {}
+    if inputs.iso is not None:      # the ISO 6336 setting read again: f_sh, the oil
+        from geardesign.spur.strength.iso6336.spec import iso_setting
+
+        try:
+            changes = dict(iso=iso_setting(spec), iso_table=spec.data["iso"])
+        except InputError:
+            return None
+    return dataclasses.replace(inputs, strength=inputs.strength._replace(duty=duty),
+                               speed1=spec.data["load"]["speed1"], spec=spec, **changes)
 
 
 def spur_inputs(data: dict, T_in: float, n_in: float, duty: Duty, where: str):
     """The typed inputs (:class:`geardesign.spur.inputs.Inputs`) of a spur stage with the
-    drive's load: the stage spec validated once; problems name the stage."""
+    drive's load: the stage spec validated once per run, a later pass with other loads
+    reusing it (:mod:`geardesign.drive.reuse`); problems name the stage."""
+    from geardesign.drive import reuse
+
+    d = _spur_loads(data, T_in, n_in, duty, where)
+    key = reuse.fingerprint("spur", where, d, SPUR_LOADS)
+    if key in duty.memo:
+        inputs = _reloaded(duty.memo[key], d)
+        if inputs is not None:
+            return inputs
+    inputs = _read_spur(d, where)
+    duty.memo[key] = inputs
+    return inputs
+
+
+def _read_spur(d: dict, where: str):
+    """The stage spec ``d`` validated and read into typed inputs."""
     from geardesign.core.registry import _say_default
     from geardesign.spur.inputs import from_spec
 
-    d = _spur_loads(data, T_in, n_in, duty, where)
     has_material = d.get("material") is not None
     try:
         _, spec = load_data(d, where)
@@ -83,29 +127,10 @@ def spur_inputs(data: dict, T_in: float, n_in: float, duty: Duty, where: str):
 
 
 def _spur_report(record, where: str, original: dict) -> Result:
-    """The report of a solved spur stage as its calculator gives it (the result guard,
-    the advice of its failed checks by re-rating), with the loads the drive set."""
-    from geardesign.core.registry import _say_default
-    from geardesign.core.result import guard
-    from geardesign.spur import CALCULATOR
+    """The report of a solved spur stage as its calculator gives it (:func:`.finish`)."""
     from geardesign.spur.report import report
 
-    spec = record.inputs.spec
-    try:
-        try:
-            res = guard(report(record))
-        except InputError as exc:
-            raise InputError([_say_default(p, spec) for p in exc.problems]) from exc
-        from geardesign.core.advice import advise, rerating
-
-        if res.failed and not rerating():   # a re-rating of the drive reads verdicts only
-            from geardesign.spur.levers import LEVERS
-
-            res = advise(CALCULATOR, spec, res, LEVERS)
-    except InputError as exc:
-        raise _named(exc, where) from None
-    _set_by_drive(res, spec.data, original)
-    return res
+    return finish("spur", record.inputs.spec, lambda: report(record), where, original)
 
 
 def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
@@ -136,8 +161,12 @@ def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
             f"{where}.gear", f"the stage's gears cannot mesh as given, so the drive cannot "
             f"rate it ({why})"))
     worst = min(margins, key=margins.get)
-    forces = (rec.ratings[SOLVE.GOST] if SOLVE.GOST in rec.ratings else rec.forces).v
-    F_t, F_r, F_a = forces["F_t"], forces["F_r"], forces["F_a"]
+    if SOLVE.GOST in rec.ratings:           # the GOST record's forces section
+        f = rec.ratings[SOLVE.GOST].forces
+        F_t, F_r, F_a = f.F_t, f.F_r, f.F_a
+    else:
+        forces = rec.forces.v
+        F_t, F_r, F_a = forces["F_t"], forces["F_r"], forces["F_a"]
     run.members = (Member(F_t, F_r, F_a, g.g1.d_w / 2), Member(F_t, F_r, F_a, g.g2.d_w / 2))
     run.margin, run.margin_of = margins[worst], worst
     return run

@@ -2,13 +2,15 @@
 
 A stage adapter puts the stage's input torque and speed (and the drive's life, regime,
 application factor and peak torque, where the stage spec does not give its own) into the
-stage spec and reads back the ratio, the efficiency, the output torque and speed, the mesh
-forces on the input and output members (for the shafts) and the worst safety margin.  A
-spur stage is read into typed inputs (:func:`geardesign.spur.inputs.from_spec`) and solved
-once per pass (:func:`geardesign.spur.solve.solve`); its values come from the typed record,
-and its report (with the advice of its failed checks) is written only when the drive's
-report asks for it, from the last pass.  The worm, Novikov and planetary stages run their
-calculators.  No formula of a calculator is repeated here.
+stage spec, reads it into the calculator's typed inputs (validated once per run:
+:func:`read_stage`, :mod:`.reuse`), solves it once per pass (the calculator's ``solve``:
+:mod:`geardesign.spur.solve`, :mod:`geardesign.worm.solve`, :mod:`geardesign.novikov.solve`,
+:mod:`geardesign.planetary.solve`) and reads from the typed record the ratio, the
+efficiency, the output torque and speed, the mesh forces on the input and output members
+(for the shafts) and the worst safety margin.  The stage's report (with the advice of its
+failed checks) is written only when the drive's report asks for it, from the last pass
+(:func:`finish`).  No formula of a calculator is repeated here.  The adapters by kind are
+the table ``ADAPTERS`` of :mod:`.calculator`: a new stage kind is one adapter there.
 """
 
 from __future__ import annotations
@@ -26,7 +28,10 @@ from geardesign.drive.shafts import GearLoad
 #: none, without bearing losses: handbook 0.97–0.98 (Dunaev & Lelikov, table 1.1; verify).
 ETA_CYLINDRICAL = 0.98
 
-WORM_ITERATIONS = 4
+WORM_LOADS = NOVIKOV_LOADS = ("load.torque2", "load.speed1")
+"""The loads the drive sets on a worm or a Novikov stage."""
+PLANETARY_LOADS = ("operation.speed", "operation.torque", "strength.peak_torque")
+"""The loads the drive sets on a planetary stage."""
 
 
 @dataclass(frozen=True)
@@ -36,6 +41,8 @@ class Duty:
     K_A: float
     peak_ratio: float | None
     method: str | None = None      # strength method of the stages that give none
+    memo: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
+    """The run's store of validated stage and bearing specs (:mod:`.reuse`)."""
 
 
 @dataclass(frozen=True)
@@ -69,6 +76,7 @@ class StageRun:
     record: Any = None
     make_report: Callable[[], Result] | None = field(default=None, repr=False)
     given: Result | None = field(default=None, repr=False)
+    spec: Any = field(default=None, repr=False)    # the stage's validated spec
 
     @property
     def result(self) -> Result:
@@ -83,6 +91,8 @@ class StageRun:
     @property
     def inputs(self) -> dict:
         """The stage's validated spec data (what its report echoes)."""
+        if self.spec is not None:
+            return self.spec.data
         if self.record is not None:
             return self.record.inputs.spec.data
         return self.result.inputs
@@ -160,25 +170,6 @@ def _set_by_drive(res: Result, data: dict, original: dict | None) -> None:
               "stage gives none", "", None, None, "drive"))
 
 
-def _run(data: dict, where: str, original: dict | None = None) -> Result:
-    """Validate and compute a stage spec; problems name the stage.  The stage's report says
-    which of its loads the drive set (``original`` is the stage spec as written)."""
-    try:
-        calc, spec = load_data(data, where)
-        res = calc.compute(spec)
-    except InputError as exc:
-        raise _named(exc, where) from None
-    _set_by_drive(res, data, original)
-    return res
-
-
-def _validate(data: dict, where: str) -> None:
-    try:
-        load_data(copy.deepcopy(data), where)
-    except InputError as exc:
-        raise _named(exc, where) from None
-
-
 def _table(d: dict, key: str, where: str) -> dict:
     """The stage's table ``key`` (created when absent), refused when it is not a table:
     the drive fills in loads before the stage's own calculator validates it."""
@@ -213,8 +204,86 @@ def _put(table: dict, key: str, value) -> None:
         table[key] = value
 
 
+def read_stage(kind: str, d: dict, where: str, duty: Duty, paths: tuple[str, ...],
+               read: Callable):
+    """``(validated spec, typed inputs)`` of the stage spec ``d`` (``read``: the
+    calculator's reader, spec → inputs): validated once per run, a later pass whose spec
+    differs only in the loads the drive set (``paths``, ``"table.key"``) reusing it
+    (:mod:`.reuse`); problems name the stage."""
+    from geardesign.core.registry import _say_default, get
+    from geardesign.drive import reuse
+
+    key = reuse.fingerprint(kind, where, d, paths)
+    spec = None
+    if key in duty.memo:
+        spec = reuse.reloaded(get(kind).schema, duty.memo[key], d, paths)
+    fresh = spec is None
+    if fresh:
+        try:
+            _, spec = load_data(d, where)
+        except InputError as exc:
+            raise _named(exc, where) from None
+    try:
+        inputs = read(spec)
+    except InputError as exc:
+        raise _named(InputError([_say_default(p, spec) for p in exc.problems]), where) \
+            from None
+    if fresh:
+        duty.memo[key] = spec
+    return spec, inputs
+
+
+def solved(solve: Callable, inputs, spec, where: str):
+    """``solve(inputs)``, its input problems (a formula outside its domain) naming the
+    stage, as the calculator's ``compute`` would say them."""
+    from geardesign.core.registry import _say_default
+
+    try:
+        return solve(inputs)
+    except InputError as exc:
+        raise _named(InputError([_say_default(p, spec) for p in exc.problems]), where) \
+            from None
+
+
+def finish(kind: str, spec, make: Callable[[], Result], where: str,
+           original: dict | None) -> Result:
+    """The report of a solved stage as its calculator's ``compute`` gives it (``make``:
+    record → report; the result guard, the advice of its failed checks by re-rating, not
+    searched when the drive itself is being re-rated: that reads verdicts only), with the
+    loads the drive set (:func:`_set_by_drive`)."""
+    import importlib
+    import importlib.util
+
+    from geardesign.core.advice import rerating
+    from geardesign.core.registry import _say_default, get
+    from geardesign.core.result import guard
+
+    try:
+        try:
+            res = guard(make())
+        except InputError as exc:
+            raise InputError([_say_default(p, spec) for p in exc.problems]) from exc
+        if res.failed and not rerating() \
+                and importlib.util.find_spec(f"geardesign.{kind}.levers") is not None:
+            from geardesign.core.advice import advise
+
+            levers = importlib.import_module(f"geardesign.{kind}.levers").LEVERS
+            res = advise(get(kind), spec, res, levers)
+    except InputError as exc:
+        raise _named(exc, where) from None
+    _set_by_drive(res, spec.data, original)
+    return res
+
+
 def run_novikov(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
                 where: str) -> StageRun:
+    """A Novikov pair solved once per pass (:func:`geardesign.novikov.solve.solve`) from
+    its typed inputs; ratio, safety margins and mesh forces from the record, the report
+    written on demand."""
+    from geardesign.novikov import calculator as NC
+    from geardesign.novikov import inputs as NI
+    from geardesign.novikov import solve as NS
+
     d = copy.deepcopy(data)
     u = _ratio(d, where, "Novikov")
     e, src = (eta, "spec") if eta is not None else (ETA_CYLINDRICAL, "assumed (handbook)")
@@ -222,51 +291,65 @@ def run_novikov(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | N
     load["torque2"], load["speed1"] = T_in * u * e, n_in
     _put(load, "life", duty.L_h)
     _put(load, "application_factor", duty.K_A)
-    res = _run(d, where, data)
-    v = values(res)
-    margins = {"S_H": v["S_H"] / v["S_H_min"], "S_F1": v["S_F1"] / v["S_F_min"],
-               "S_F2": v["S_F2"] / v["S_F_min"]}
+    spec, inp = read_stage("novikov", d, where, duty, NOVIKOV_LOADS, NI.read)
+    sol = solved(NS.solve, inp, spec, where)
+    a, g, fo = sol.allow, sol.g, sol.forces
+    margins = {"S_H": a.S_H / a.S_Hmin, "S_F1": a.S_F[0] / a.S_Fmin,
+               "S_F2": a.S_F[1] / a.S_Fmin}
     worst = min(margins, key=margins.get)
-    F_t, F_r, F_a = v["F_t"], v["F_r"], v["F_a"]
-    return StageRun("novikov", v["u"], e, src, T_in, n_in, T_in * v["u"] * e, n_in / v["u"],
-                    (Member(F_t, F_r, F_a, v["d1"] / 2), Member(F_t, F_r, F_a, v["d2"] / 2)),
-                    margins[worst], worst, True, given=res)
+    return StageRun("novikov", g.u, e, src, T_in, n_in, T_in * g.u * e, n_in / g.u,
+                    (Member(fo.F_t, fo.F_r, fo.F_a, g.d1 / 2),
+                     Member(fo.F_t, fo.F_r, fo.F_a, g.d2 / 2)),
+                    margins[worst], worst, True, sol,
+                    lambda: finish("novikov", spec, lambda: NC.result(spec, inp, sol), where,
+                                   data), spec=spec)
 
 
 def run_worm(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
              where: str) -> StageRun:
-    """The worm calculator takes the wheel torque: iterate T2 until the worm torque it
-    reports equals the stage's input torque (the efficiency depends on the sliding speed,
-    so a few steps settle it)."""
+    """A worm pair solved once per pass (:func:`geardesign.worm.solve.solve`).  The worm
+    calculator takes the wheel torque: its efficiency does not depend on the torque
+    (:func:`geardesign.worm.solve.efficiency`), so the wheel torque of the stage's input
+    torque is T2 = T_in·u·η before the pair is solved."""
+    from geardesign.worm import calculator as WC
+    from geardesign.worm import inputs as WI
+    from geardesign.worm import solve as WS
+
     d = copy.deepcopy(data)
     u = _ratio(d, where, "worm")
     load = _table(d, "load", where)
     load["speed1"] = n_in
     _put(load, "life", duty.L_h)
-    T2 = T_in * u * (eta if eta is not None else 0.8)
-    res = None
-    for _ in range(WORM_ITERATIONS):
-        load["torque2"] = T2
-        res = _run(d, where, data)
-        v = values(res)
-        if abs(v["T1"] - T_in) <= 1e-9 * T_in:
-            break
-        T2 *= T_in / v["T1"]
-    e = eta if eta is not None else v["eta"]
+    load["torque2"] = T_in * u * (eta if eta is not None else 0.8)    # read for η only
+    spec, inp = read_stage("worm", d, where, duty, WORM_LOADS, WI.read)
+    load["torque2"] = T_in * u * solved(WS.efficiency, inp, spec, where)
+    spec, inp = read_stage("worm", d, where, duty, WORM_LOADS, WI.read)
+    rec = solved(WS.solve, inp, spec, where)
+    a = rec.analysis
+    e = eta if eta is not None else a.eta
     src = "spec" if eta is not None else "worm calculator"
-    margins = {"S_H": v["S_H"], "S_F": v["S_F"]}
+    margins = {"S_H": a.sigma_HP / a.sigma_H, "S_F": a.sigma_FP / a.sigma_F}
     worst = min(margins, key=margins.get)
-    worm = Member(v["F_t1"], v["F_r"], v["F_t2"], v["d_w1"] / 2)
-    wheel = Member(v["F_t2"], v["F_r"], v["F_t1"], v["d2"] / 2)
+    worm = Member(a.ld.F_t1, a.ld.F_r, a.ld.F_t2, a.g.d_w1 / 2)
+    wheel = Member(a.ld.F_t2, a.ld.F_r, a.ld.F_t1, a.g.d2 / 2)
     return StageRun("worm", u, e, src, T_in, n_in, T_in * u * e, n_in / u, (worm, wheel),
-                    margins[worst], worst, False, given=res)
+                    margins[worst], worst, False, rec,
+                    lambda: finish("worm", spec, lambda: WC.result(spec, rec), where, data),
+                    spec=spec)
 
 
 def run_planetary(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
                   where: str) -> StageRun:
     """A planetary train as a stage: the drive sets the input member's speed and torque.
     Its shafts are coaxial and the planets balance the radial mesh forces (with equal
-    load sharing), so the stage puts no radial or axial load on the shafts."""
+    load sharing), so the stage puts no radial or axial load on the shafts.  Solved once
+    per pass (:func:`geardesign.planetary.solve.solve`) from its typed inputs; ratio,
+    torque, efficiency and the meshes' margins from the record, the report on demand."""
+    from geardesign.core.result import clean_value
+    from geardesign.planetary import calculator as PC
+    from geardesign.planetary import inputs as PI
+    from geardesign.planetary import solve as PS
+
     d = copy.deepcopy(data)
     op = _table(d, "operation", where)
     op["speed"], op["torque"] = n_in, T_in
@@ -284,21 +367,25 @@ def run_planetary(data: dict, T_in: float, n_in: float, duty: Duty, eta: float |
             _put(st, "regime", duty.regime)
         if duty.peak_ratio is not None:
             _put(st, "peak_torque", T_in * duty.peak_ratio)
-    res = _run(d, where, data)
-    r = sections(res)
-    ops = res.inputs["operation"]
-    n_out = r["kinematics"][f"n_{ops['output']}"]
-    T_out = abs(r["power"][f"T_{ops['output']}"])
-    e = eta if eta is not None else r["efficiency"]["eta"]
+    spec, inp = read_stage("planetary", d, where, duty, PLANETARY_LOADS, PI.read)
+    sol = solved(PS.solve, inp, spec, where)
+    out_ = spec.data["operation"]["output"]
+    n_out = sol.speeds.n[out_]
+    T_out = abs(sol.power.flow.T[out_])
+    e = eta if eta is not None else sol.efficiency.eta_f
     src = "spec" if eta is not None else "planetary calculator"
     if eta is not None:
         T_out = T_in * abs(n_in / n_out) * eta
+    rated = {ms.mesh.name: ms.rating for ms in (sol.strength.meshes if sol.strength
+                                                  is not None else ()) if ms.rating}
     margins = {}
     for mesh in ("sun_planet", "planet_ring"):
-        v = r.get(f"strength_{mesh}")
-        if v:
-            margins.update(_margins(v, f"{mesh}."))
+        if mesh in rated:
+            margins.update(_margins({k: clean_value(v) for k, v in rated[mesh].v.items()},
+                                    f"{mesh}."))
     worst = min(margins, key=margins.get) if margins else ""
     zero = Member(0.0, 0.0, 0.0, 0.0)
     return StageRun("planetary", abs(n_in / n_out), e, src, T_in, n_in, T_out, abs(n_out),
-                    (zero, zero), margins.get(worst), worst, n_out * n_in < 0, given=res)
+                    (zero, zero), margins.get(worst), worst, n_out * n_in < 0, sol,
+                    lambda: finish("planetary", spec, lambda: PC.result(spec, inp, sol), where,
+                                   data), spec=spec)

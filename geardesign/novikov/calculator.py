@@ -17,10 +17,14 @@ precheck = I.precheck
 
 
 def compute(spec: ValidatedSpec) -> Result:
+    inp = I.read(spec)
+    return result(spec, inp, solve(inp))
+
+
+def result(spec: ValidatedSpec, inp: I.Inputs, sol) -> Result:
+    """The report of a solved pair (``sol`` from :func:`~geardesign.novikov.solve.solve`)."""
     from geardesign.novikov import CALCULATOR
 
-    inp = I.read(spec)
-    sol = solve(inp)
     res = CALCULATOR.new_result(spec)
     report(res, inp, sol, spec.data["load"])
     return res

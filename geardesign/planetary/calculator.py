@@ -19,10 +19,15 @@ precheck = I.precheck
 
 
 def compute(spec: ValidatedSpec) -> Result:
+    inp = I.read(spec)
+    return result(spec, inp, solve(inp))
+
+
+def result(spec: ValidatedSpec, inp: I.Inputs, sol) -> Result:
+    """The report of a solved train (``sol`` from :func:`~geardesign.planetary.solve.solve`):
+    rows, checks, the reconciled advice of the failed geometry checks."""
     from geardesign.planetary import CALCULATOR
 
-    inp = I.read(spec)
-    sol = solve(inp)
     res = CALCULATOR.new_result(spec)
     R.geometry_rows(res, inp, sol)
     meshes = list(inp.meshes)

@@ -20,6 +20,7 @@ import dataclasses
 import math
 
 from geardesign.core.result import Check, fix_text
+from geardesign.worm.checks import Advice, pair_checks
 from geardesign.worm import design as D
 from geardesign.worm.geometry import WormGeometryError, pair_geometry
 from geardesign.worm.pair import Analysis, Operation, Options, WheelProps, analyse
@@ -30,16 +31,6 @@ RERATED = ("CONTACT_STRESS", "CONTACT_STRESS_PEAK", "BENDING_STRESS", "BENDING_S
 
 PAIRS_PER_DISTANCE = 6
 """Standard (m, q) pairs tried at each centre distance, best ranked first."""
-
-
-@dataclasses.dataclass(frozen=True)
-class Advice:
-    """``fix``: the spec changes, ``((key, value), ...)``, and ``text`` how the message says
-    it; when no standard pair passes, ``fix`` is ``None`` and ``text`` a remark that follows
-    the check's own advice."""
-
-    fix: tuple | None
-    text: str
 
 
 def failing(checks: list[Check]) -> set[str]:
@@ -64,8 +55,6 @@ def _candidate(a: Analysis, prop: D.Proposal):
 def _candidates(a: Analysis, op: Operation, w: WheelProps, o: Options, self_locking: str):
     """``(a_w, proposal, pair input, {check code: passed})`` of the standard pairs in the
     order of the search (at most :data:`PAIRS_PER_DISTANCE` at each centre distance)."""
-    from geardesign.worm.checks import pair_checks
-
     p = a.g.inp
     for a_w in D.standard_center_distances(a.g.a_w):
         for prop in D.ranked_pairs(a_w, p.z2, p.q, False)[:PAIRS_PER_DISTANCE]:

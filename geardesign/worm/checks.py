@@ -12,7 +12,7 @@ for γ_w below about 3.5°).
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from dataclasses import dataclass
 
 from geardesign.core.result import Check, check
 from geardesign.worm import sources as S
@@ -23,9 +23,6 @@ from geardesign.worm.design import (
     round_up_center_distance,
 )
 from geardesign.worm.pair import Analysis, Options, WheelProps
-
-if TYPE_CHECKING:
-    from geardesign.worm.advice import Advice
 from geardesign.worm import tables
 
 Z2_MIN = 26
@@ -34,6 +31,16 @@ Z2_POWER = (28, 80)
 """Usual wheel tooth numbers of power drives ([Dunaev]; design practice)."""
 SELF_LOCKING_RELIABLE = 3.5
 """Self-locking is dependable without vibration only for γ_w below about 3.5° ([Dunaev])."""
+
+
+@dataclass(frozen=True)
+class Advice:
+    """``fix``: the spec changes, ``((key, value), ...)``, and ``text`` how the message says
+    it; when no standard pair passes, ``fix`` is ``None`` and ``text`` a remark that follows
+    the check's own advice."""
+
+    fix: tuple | None
+    text: str
 
 
 def _deg(rad: float) -> float:

@@ -133,12 +133,19 @@ class Analysis:
     extras: dict = field(default_factory=dict)
 
 
-def analyse(g: WormPairGeometry, op: Operation, w: WheelProps, o: Options) -> Analysis:
-    """Evaluate a worm pair of known geometry under the operating data ``op``."""
-    s = speeds(g, op.n1)
+def efficiency(g: WormPairGeometry, n1: float, w: WheelProps, o: Options) -> tuple:
+    """Speeds, friction, mesh efficiency η_m = tan γ_w/tan(γ_w + ρ') and the overall
+    efficiency η = η_b·η_m at the worm speed n1 [min⁻¹] (:mod:`.kinematics`): independent
+    of the torque."""
+    s = speeds(g, n1)
     fr = friction(s.v_s, w.group, o.friction_level, o.friction_coefficient, o.friction_factor)
     eta_m = mesh_efficiency(g.gamma_w, fr.rho)
-    eta = o.bearing_efficiency * eta_m
+    return s, fr, eta_m, o.bearing_efficiency * eta_m
+
+
+def analyse(g: WormPairGeometry, op: Operation, w: WheelProps, o: Options) -> Analysis:
+    """Evaluate a worm pair of known geometry under the operating data ``op``."""
+    s, fr, eta_m, eta = efficiency(g, op.n1, w, o)
     ld = loads(g, s, op.T2, eta, o.profile_angle)
     p = g.inp
     theta = tables.theta(p.q, p.z1)
