@@ -24,7 +24,7 @@ from geardesign.core import xp
 from geardesign.materials.gear_steel import GearMaterial
 from geardesign.spur.geometry import PairGeometry
 from geardesign.spur.loads import cycles, equivalent_cycles, mesh_forces
-from geardesign.spur.strength.common import Duty, Life, Rating, Record, opt, q  # noqa: F401
+from geardesign.spur.strength.common import Duty, Given, Life, Record, opt, q  # noqa: F401
 from geardesign.spur.strength.gost21354 import formulas as G
 from geardesign.spur.strength.gost21354 import tables as T
 
@@ -282,26 +282,6 @@ class GostRating(Record):
 # ----------------------------------------------------------------------------- rating
 
 
-class _Given:
-    """The spec's ``[factors]`` overrides, and the keys of those used."""
-
-    def __init__(self, overrides: dict):
-        self.o = overrides
-        self.used: set[str] = set()
-
-    def __call__(self, key: str, computed):
-        """The given value of ``key``, else ``computed`` (a value or a function for one)."""
-        v = self.o.get(key)
-        if v is not None:
-            self.used.add(key)
-            return v
-        return computed() if callable(computed) else computed
-
-    def pair(self, key: str, computed) -> tuple:
-        """A per-gear factor: keys ``key1``, ``key2``; ``computed(i)``."""
-        return tuple(self(f"{key}{i + 1}", lambda i=i: computed(i)) for i in range(2))
-
-
 def _when(cond, value):
     """``value`` where ``cond`` holds: for a number ``value`` or ``None`` (no row); for an
     array of candidates the array (its other elements carry no meaning)."""
@@ -322,16 +302,6 @@ def forces(g: PairGeometry, duty: Duty) -> Forces:
     return Forces(T1=duty.T1, T2=duty.T1 * g.u, F_t=f.F_t, F_r=f.F_r, F_a=f.F_a, F_n=f.F_n,
                   beta_w=xp.degrees(f.beta_w), M_a1=f.M_a1, M_a2=f.M_a2,
                   F_tH=2000.0 * duty.T1 / g.g1.d, v_H=math.pi * g.g1.d * duty.n1 / 60000.0)
-
-
-def put_forces(r: Rating, g: PairGeometry, duty: Duty):
-    """The ``forces`` rows of a pair written to ``r`` (:func:`forces`)."""
-    from geardesign.spur.strength.common import rows
-
-    rec = forces(g, duty)
-    for row in rows(rec):
-        r.put(row.section, row.key, row.value, row.unit, row.symbol, row.name, row.source)
-    return rec
 
 
 def life_cycles(duty: Duty, mats, u):
@@ -401,7 +371,7 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
     ``g`` a pair geometry of numbers, or of numpy arrays of candidates (the sweep kernel's
     view of :func:`geardesign.spur.geometry.pair_core`); materials, duty and setting are
     shared by all candidates."""
-    given = _Given(s.overrides)
+    given = Given(s.overrides)
     p = g.inp
     helical = p.beta > 0.0
     internal = getattr(g, "internal", False)
