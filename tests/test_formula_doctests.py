@@ -7,7 +7,7 @@ import inspect
 
 import pytest
 
-MODULES = ["part1", "part2", "part3", "part5", "part21"]
+MODULES = ["part1", "part2", "part3", "part5", "part21", "tooth_form"]
 
 
 @pytest.mark.parametrize("name", MODULES)

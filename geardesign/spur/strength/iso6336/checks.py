@@ -6,6 +6,8 @@ spectrum when one is rated), the static safety factors at the peak torque, scuff
 from __future__ import annotations
 
 from geardesign.core.result import Check, check
+from geardesign.spur.strength.checks import (
+    advised_percent, face_width_beyond, face_width_fix, face_width_up)
 from geardesign.spur.strength.iso6336 import tables as T
 from geardesign.spur.strength.iso6336.record import S2, S3, S5, S1328, IsoRating
 from geardesign.spur.strength.iso6336.scuffing import scuffing_checks
@@ -13,11 +15,6 @@ from geardesign.spur.strength.verdict import verdict
 from geardesign.spur.tolerances import iso1328
 
 WHO = ("pinion", "wheel")
-
-
-def _pct(x: float) -> str:
-    return f"{100 * x:.0f} %" if x <= 3.0 else "more than 300 % (far from passing: check the " \
-                                                 "inputs and their units)"
 
 
 def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
@@ -41,8 +38,6 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
             parts.append(f"increase the centre distance to at least {k * a_w:.1f} mm "
                          f"(+{100 * (k - 1):.0f} %, module and face width in proportion)")
         if "b" in found and found["b"][kind] is not None:
-            from geardesign.spur.checks import face_width_up
-
             b_w, b = found["b"][0], face_width_up(found["b"][kind])
             parts.append(f"the face width to at least {b:g} mm (+{100 * (b / b_w - 1):.0f} %: "
                          f"set gear.face_width = {b:g})")
@@ -50,14 +45,10 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
             return None
         text = " or ".join(parts) + " (found by re-rating)"
         if "b" in found and found["b"][kind] is None:
-            from geardesign.spur.checks import face_width_beyond
-
             text += "; " + face_width_beyond(found["b"][0], found["face_limit"])
         return text
 
     def face_fix(kind: int) -> tuple:
-        from geardesign.spur.checks import face_width_fix
-
         b = found.get("b")
         return face_width_fix(b[0], b[kind]) if b else ()
 
@@ -73,8 +64,8 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
             f"ISO_PITTING_{up}", judged.contact_ok[k - 1], "error",
             f"ISO 6336 pitting, {who}: S_H{k} = {S:.2f} < S_Hmin = {S_Hmin:.2f}"
             + (" (load spectrum)" if spectrum else "") + ": "
-            + (by_rerating(1) or f"increase the centre distance by {_pct(r ** (2 / 3) - 1)} "
-               f"(module and face width in proportion), or the face width by {_pct(r * r - 1)} "
+            + (by_rerating(1) or f"increase the centre distance by {advised_percent(r ** (2 / 3) - 1)} "
+               f"(module and face width in proportion), or the face width by {advised_percent(r * r - 1)} "
                f"(at the present load factors)")
             + f", or use a {who} material with σ_Hlim at least {v[f'sigma_Hlim{k}'] * r:.0f} MPa",
             f"ISO 6336 pitting, {who}: S_H{k} = {S:.2f} >= {S_Hmin:.2f}", S, S_Hmin, S2,
@@ -88,8 +79,8 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
             f"ISO_BENDING_{up}", judged.bending_ok[k - 1], "error",
             f"ISO 6336 tooth bending, {who}: S_F{k} = {S:.2f} < S_Fmin = {S_Fmin:.2f}"
             + (" (load spectrum)" if spectrum else "") + f": increase the module by "
-            f"{_pct(r - 1)} (same centre distance, fewer teeth), or "
-            + (by_rerating(2) or f"the face width by {_pct(r - 1)} (at the present load "
+            f"{advised_percent(r - 1)} (same centre distance, fewer teeth), or "
+            + (by_rerating(2) or f"the face width by {advised_percent(r - 1)} (at the present load "
                                  f"factors)")
             + f", or use a {who} material with σ_Flim at least {v[f'sigma_Flim{k}'] * r:.0f} MPa",
             f"ISO 6336 tooth bending, {who}: S_F{k} = {S:.2f} >= {S_Fmin:.2f}", S, S_Fmin, S3,

@@ -52,10 +52,11 @@ def iso_rating(spec) -> "IR.IsoRating":
 def _advice(v: dict, geom, mats, duty, setting, iso) -> dict | None:
     """Face width and scale of the pair that pass pitting and bending, found by re-rating
     (the load factors change with the size), the face width within the proportions of
-    :func:`geardesign.spur.checks.face_advice_limit`; ``None`` when the rating passes."""
+    :func:`geardesign.spur.strength.checks.face_advice_limit`; ``None`` when the rating passes."""
     from dataclasses import replace
 
-    from geardesign.spur.checks import face_advice_limit, least_passing, reconciled_widths
+    from geardesign.spur.strength.checks import (face_advice_limit, least_passing,
+                                                  reconciled_widths)
     from geardesign.spur.geometry import pair_geometry
 
     fails = [kind for kind in ("H", "F") if not IR.passes(v, kind)]
