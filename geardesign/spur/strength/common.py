@@ -197,6 +197,14 @@ def rows(record) -> list[Value]:
     return out
 
 
+def add_rows(res, record, titles: dict) -> None:
+    """The rows of ``record`` (:func:`rows`) added to the result ``res`` under their
+    sections (``titles``: section key → title)."""
+    for row in rows(record):
+        res.section(row.section, titles[row.section]).add(
+            row.key, row.value, row.unit, row.symbol, row.name, row.source)
+
+
 # ----------------------------------------------------------------------------- given factors
 
 

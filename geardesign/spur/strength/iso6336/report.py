@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from geardesign.spur.strength.common import add_rows
 from geardesign.spur.strength.iso6336 import rating as IR
 from geardesign.spur.strength.iso6336.spec import ISO_NAME, gear_checks, iso_setting
 
@@ -16,9 +17,7 @@ def add_iso_strength(res, geom, spec, inputs, rating=None, iso=None) -> dict:
         iso = iso_setting(spec)
         rating = IR.rate(geom, mats, duty, setting, iso)
     res.methods.append(ISO_NAME)
-    for row in rating.rows:
-        res.section(row.section, IR.SECTIONS[row.section]).add(
-            row.key, row.value, row.unit, row.symbol, row.name, row.source)
+    add_rows(res, rating, IR.SECTIONS)
     internal = bool(getattr(geom, "internal", False))
     from geardesign.core.advice import rerating
 
