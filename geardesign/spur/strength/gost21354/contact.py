@@ -2,12 +2,9 @@
 contact stress σ_H, the life, roughness, velocity and size factors of the permissible
 contact stress σ_HP, and the design centre distance.
 
-The standard's text could not be consulted.  Every formula was checked against the public
-implementations named in its docstring — ZPCIL (GitHub ``s-berlin/ZPCIL_test``, a port of
-the Fortran GOST 21354-87 program, file names given per function) and MATLAB DANNYE — and
-[GOST21354] with the corrections of [ZPCIL]; where those sources disagree, the docstring
-says which was chosen.  Pure functions written with :mod:`geardesign.core.xp` (numbers or
-arrays of candidates); stresses MPa, forces N, lengths mm, angles rad.
+Pure functions written with :mod:`geardesign.core.xp` (numbers or arrays of candidates);
+units and sources (the ZPCIL and DANNYE programs checked against [GOST21354]) as
+:mod:`.formulas` says.
 """
 
 from __future__ import annotations
@@ -27,7 +24,10 @@ def z_e(E1: float, nu1: float, E2: float, nu2: float) -> float:
     .. math:: Z_E = \\sqrt{\\frac{1}{π\\,[(1-ν_1^2)/E_1 + (1-ν_2^2)/E_2]}}
 
     189.8 √MPa for two steels with E = 2.06·10⁵ MPa, ν = 0.3 (GOST 21354-87 tabulates 190).
-    References: GOST 21354-87 (table 6 item 1 per ZPCIL ``CONTAU.h``); ISO 6336-2 eq. (4).
+    References: [GOST21354] table 6 item 1 (per [ZPCIL] ``CONTAU.h``); [ISO6336-2] eq. (4).
+
+    >>> round(z_e(2.06e5, 0.3, 2.06e5, 0.3), 1)
+    189.8
     """
     return xp.sqrt(1.0 / (math.pi * ((1 - nu1 ** 2) / E1 + (1 - nu2 ** 2) / E2)))
 
@@ -37,7 +37,7 @@ def z_h(beta_b: float, alpha_t: float, alpha_tw: float) -> float:
 
     .. math:: Z_H = \\frac{1}{\\cos α_t}\\sqrt{\\frac{2\\cos β_b}{\\tan α_{tw}}}
 
-    (2.495 for α = 20°, x_Σ = 0, β = 0.)  References: GOST 21354-87; ZPCIL ``GEOM.h``;
+    (2.495 for α = 20°, x_Σ = 0, β = 0.)  References: [GOST21354]; [ZPCIL] ``GEOM.h``;
     [ZPCIL] CONTAU.h (the textbook pairing with d_w1 understates σ_H of
     shifted pairs by cos α_tw/cos α_t).
     """
@@ -52,7 +52,7 @@ def z_eps(eps_alpha: float, eps_beta: float) -> float:
         \\sqrt{(4-ε_α)(1-ε_β)/3 + ε_β/ε_α} \\;(0 < ε_β < 1);\\quad
         \\sqrt{1/ε_α} \\;(ε_β \\ge 1)
 
-    References: GOST 21354-87; ZPCIL ``GEOM.h``; [GOST21354].
+    References: [GOST21354]; [ZPCIL] ``GEOM.h``; [GOST21354].
     """
     spur = xp.sqrt(xp.maximum((4.0 - eps_alpha) / 3.0, 0.0))
     low = xp.sqrt(xp.maximum((4.0 - eps_alpha) * (1.0 - eps_beta) / 3.0 + eps_beta / eps_alpha,
@@ -70,7 +70,7 @@ def sigma_h(Z_E: float, Z_H: float, Z_eps: float, F_t: float, K_H: float, u: flo
     F_tH = 2000·T1/d1 [N] at the reference circle, K_H = K_A K_Hv K_Hβ K_Hα, b_w [mm];
     "+" for an external pair, "−" for an internal pair (``internal=True``, u = z2/z1 of
     the internal gear over the pinion): the reduced curvature of concave and convex flanks.
-    References: GOST 21354-87; ZPCIL ``CONTAU.h`` (``FTH = 2000*TQ/D1``, ``DSH = D1``);
+    References: [GOST21354]; [ZPCIL] ``CONTAU.h`` (``FTH = 2000*TQ/D1``, ``DSH = D1``);
     ISO 6336-2 §5 (u < 0 for internal gears); [GOST21354].
     """
     s = -1.0 if internal else 1.0
@@ -78,9 +78,13 @@ def sigma_h(Z_E: float, Z_H: float, Z_eps: float, F_t: float, K_H: float, u: flo
 
 
 def n_hg(HB: float) -> float:
-    """Base number of contact stress cycles N_HG = 30·HB^2.4 ≤ 1.2·10⁸.
+    """Base number of contact stress cycles N_HG = 30·HB^2.4 ≤ 1.2·10⁸ (HB Brinell).
 
-    References: GOST 21354-87 (ZPCIL ``CONTAU.h`` «ГОСТ стр.24»; MATLAB DANNYE).
+    References: [GOST21354] p. 24 ([ZPCIL] ``CONTAU.h`` «ГОСТ стр.24»; MATLAB [DANNYE]).
+    At 200 HB about 10⁷ cycles, at the cap from about 560 HB:
+
+    >>> round(n_hg(200.0) / 1e7, 3), n_hg(600.0)
+    (0.999, 120000000.0)
     """
     return xp.minimum(30.0 * HB ** 2.4, 1.2e8)
 
@@ -92,7 +96,7 @@ def z_n(N_HG: float, N_HE: float, Z_N_max: float) -> float:
               (N_{HG}/N_{HE})^{1/20} \\ge 0.75 \\;(N_{HE} > N_{HG})
 
     Z_N,max = 2.6 for a homogeneous structure, 1.8 for a hardened surface.
-    References: GOST 21354-87; ZPCIL ``ZLIFE.h``, ``CONTAU.h`` (floor 0.75);
+    References: [GOST21354]; [ZPCIL] ``ZLIFE.h``, ``CONTAU.h`` (floor 0.75);
     [ZPCIL] SGMHLB.h, CONTAU.h; [DANNYE].
     """
     low = N_HE <= N_HG
@@ -103,7 +107,7 @@ def z_n(N_HG: float, N_HE: float, Z_N_max: float) -> float:
 def z_v(v: float, soft: bool) -> float:
     """Velocity factor Z_v: 1 for v ≤ 5 m/s, else 0.85·v^0.1 (≤ 350 HB) or 0.925·v^0.05.
 
-    References: GOST 21354-87; ZPCIL ``ZV.h``; [ZPCIL] (Z_v row).
+    References: [GOST21354]; [ZPCIL] ``ZV.h``; [ZPCIL] (Z_v row).
     """
     if xp.scalar(soft):    # one material: only its branch
         fast = 0.85 * v ** 0.1 if soft else 0.925 * v ** 0.05
@@ -114,7 +118,11 @@ def z_v(v: float, soft: bool) -> float:
 
 def z_r(Ra: float) -> float:
     """Roughness factor Z_R of the flanks from the arithmetic mean roughness Ra [µm]:
-    1.0 (Ra ≤ 1.25), 0.95 (≤ 2.5), 0.9 (coarser).  GOST 21354-87; ``tables.Z_R_TABLE``."""
+    1.0 (Ra ≤ 1.25), 0.95 (≤ 2.5), 0.9 (coarser).  [GOST21354] (the Z_R table,
+    ``tables.Z_R_TABLE``).
+
+    >>> z_r(0.8), z_r(2.0), z_r(3.2)
+    (1.0, 0.95, 0.9)"""
     for limit, value in T.Z_R_TABLE:
         if Ra <= limit:
             return value
@@ -124,7 +132,7 @@ def z_r(Ra: float) -> float:
 def z_x(d: float) -> float:
     """Size factor Z_X = sqrt(1.07 − 10⁻⁴·d), between 0.75 and 1 (d [mm]).
 
-    References: GOST 21354-87; ZPCIL ``CONTAU.h``.
+    References: [GOST21354]; [ZPCIL] ``CONTAU.h``.
     """
     return xp.minimum(1.0, xp.maximum(0.75, xp.sqrt(xp.maximum(1.07 - 1e-4 * d, 0.0))))
 
@@ -163,7 +171,7 @@ def center_distance_estimate(T1: float, u: float, K_Hbeta: float, psi_ba: float,
     .. math:: a_w = K_a (u + 1) \\sqrt[3]{\\frac{T_1 K_{Hβ}}{ψ_{ba} u σ_{HP}^2}}
 
     K_a = 495 (spur) / 430 (helical) MPa^(1/3) with T1 in N·m (``tables.K_A_DESIGN``).
-    References: GOST 21354-87 (design formula; verify K_a).
+    References: [GOST21354] (design formula; verify K_a).
     """
     Ka = T.K_A_DESIGN["helical" if helical else "spur"]
     return Ka * (u + 1.0) * (T1 * K_Hbeta / (psi_ba * u * sigma_HP ** 2)) ** (1.0 / 3.0)

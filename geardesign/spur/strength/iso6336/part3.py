@@ -34,7 +34,7 @@ def y_beta(eps_beta: float, beta: float) -> float:
 
 def y_beta_2006(eps_beta: float, beta: float) -> float:
     """Y_β of the 2006 edition, 1 − ε_β β/120° (ε_β ≤ 1, β ≤ 30°): what programs written to
-    ISO 6336-3:2006 print; kept for comparisons with them."""
+    ISO 6336-3:2006 print; kept for comparisons with them.  [ISO6336-3] (2006 edition)."""
     return 1.0 - min(eps_beta, 1.0) * min(math.degrees(beta), 30.0) / 120.0
 
 
@@ -54,7 +54,7 @@ def y_b(s_R: float | None, h_t: float, m_n: float, internal: bool = False) -> fl
 
 def y_b_domain(s_R: float, h_t: float, m_n: float, internal: bool = False) -> float:
     """The lower end of the Y_B domain for this rim [mm]: 0.5h_t (external) or 1.75m_n
-    (internal); a thinner rim is outside the standard's method."""
+    (internal); a thinner rim is outside the standard's method ([ISO6336-3], Y_B)."""
     return 1.75 * m_n if internal else 0.5 * h_t
 
 
@@ -91,7 +91,8 @@ def y_nt(material: str, N_L: float, optimum: bool = False) -> float:
 
 
 def reference_cycles_bending(material: str) -> tuple[float, float]:
-    """(N_L static, N_L reference) of the bending S-N curve of a material type."""
+    """(N_L static, N_L reference) of the bending S-N curve of a material type (load
+    cycles).  [ISO6336-3] (Y_NT, table of life factors)."""
     pts = T.YNT_CURVES[T.YNT_GROUP[material]]
     return pts[0][0], pts[-1][0]
 
