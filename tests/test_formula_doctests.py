@@ -1,7 +1,7 @@
 """The worked values in the docstrings of the ISO 6336 and GOST 21354-87 formula modules
 (each marked with its source: KISSsoft reports, ISO/TR 6336-30, the standard's tables, a
-value worked from the formula) run as tests; every public formula names its reference key
-(``[KEY]`` of docs/references.md)."""
+value worked from the formula) run as tests; every public formula names its reference (a key
+of docs/references.md in brackets)."""
 
 import doctest
 import importlib
