@@ -21,12 +21,6 @@ SPLITTING = "being split (issue 28)"
 LONG = {
     # modules other work of issue 28 is splitting now
     "spur/calculator.py": SPLITTING + ": spur inputs, solve and report",
-    "spur/strength/iso6336/rating.py": "the ISO 6336 rating (one rate() for a pair and for "
-        "a sweep's arrays) and its checks; " + SPLITTING + ": the scuffing, spectrum and "
-        "checks apart from rate()",
-    "spur/strength/iso6336/spec.py": SPLITTING + ": the ISO 6336 inputs with the spur split",
-    "spur/strength/iso6336/part3.py": SPLITTING + ": ISO 6336-3 beside the GOST package",
-    "spur/checks.py": SPLITTING + ": one checks module for any rating record",
     "spur/sweep.py": SPLITTING + ": the sweep re-checks variants through spur.solve",
     "drive/calculator.py": SPLITTING + ": the drive composes stages through solve()",
     "drive/lubrication.py": SPLITTING + ": the drive composes stages through solve()",
@@ -39,12 +33,6 @@ LONG = {
                         "bearings, load case) apart from the spec writer",
     "rendering/figures.py": SPLITTING + ": one module of pictures per calculator kind",
     "rendering/html.py": SPLITTING + ": the first screen apart from the sections",
-    "spur/spec_inputs.py": SPLITTING + ": the ISO 6336 readers apart from the pair and duty",
-    "spur/strength/gost21354/formulas.py": "the GOST 21354-87 formulas, one function per "
-        "equation with its clause and doctest; " + SPLITTING + " by part (contact, bending, "
-        "load factors)",
-    "spur/strength/gost21354/rating.py": "the GOST 21354-87 record: one frozen section per "
-        "part with its field metadata; " + SPLITTING + ": the sections apart from rate()",
     # a reason of its own
     "bearing/life.py": "the ISO 281:2007 / GOST 18855 life formulas, one function per "
                        "equation with its doctest and clause; " + SPLITTING + " by part "

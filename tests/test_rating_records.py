@@ -168,7 +168,6 @@ def test_iso_rows_follow_the_values_and_carry_metadata(name, beta):
     assert isinstance(r, IsoRating)
     out, v = rows(r), values(r)
     assert v == r.v and [x.key for x in r.rows] == [x.key for x in out]
-    assert list(v) == list(r.order)                       # in the order computed
     assert [x.key for x in out] == [k for k in v if k not in VALUE_ONLY]
     assert len({x.key for x in out}) == len(out)
     for x in out:
@@ -180,9 +179,36 @@ def test_iso_rows_follow_the_values_and_carry_metadata(name, beta):
     assert {"K_Hbeta", "Y_F2", "Z_NT1"} <= given_rows
     assert all(x.source == "spec" for x in out if x.key in {"K_Hbeta", "Y_F2", "Z_NT1"})
     assert v["K_Hbeta"] == 1.3 and v["Y_F2"] == 2.4 and v["Z_NT1"] == 1.05
-    # every section a frozen record of its own; Z_ε computed among the load factors
-    assert r.contact.SECTION == "iso6336_contact" and "Z_eps" in dataclasses.asdict(r.contact)
+    # every section a frozen record of its own; Z_ε computed among the load factors (the
+    # limit of K_Hα), reported under pitting
+    assert r.contact.SECTION == "iso6336_contact" and "Z_eps" in dataclasses.asdict(r.factors)
     assert list(v).index("Z_eps") < list(v).index("K_Halpha")
+    assert next(x for x in out if x.key == "Z_eps").section == "iso6336_contact"
+
+
+def test_iso_record_is_declared():
+    """The ISO 6336 record's sections are classes declared in the package (the same class
+    whatever the inputs), every value a field with its metadata: no class built while
+    rating."""
+    from geardesign.spur.strength.iso6336 import record as R
+    from geardesign.spur.strength.iso6336 import scuffing as Sc
+    from geardesign.spur.strength.iso6336 import spectrum as Sp
+
+    declared = {R.Materials, R.Factors, R.Contact, R.Bending, R.Static, Sc.Scuffing,
+                Sp.Spectrum}
+    for name in ISO_SPECS:
+        for beta in (0.0, 0.25):
+            r = _iso_rating(name, beta=beta)
+            parts = [getattr(r, f.name) for f in dataclasses.fields(r)
+                     if hasattr(getattr(r, f.name), "SECTION")]
+            assert {type(part) for part in parts} <= declared
+            for part in parts:
+                reported = {f.name for f in dataclasses.fields(part) if "report" in f.metadata}
+                assert reported, type(part)
+                for f in dataclasses.fields(part):
+                    if "report" in f.metadata:
+                        meta = f.metadata["report"]
+                        assert meta["symbol"] is not None and meta["name"] and meta["source"]
 
 
 def test_iso_record_is_frozen_and_sections_by_inputs():

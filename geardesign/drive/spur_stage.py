@@ -67,7 +67,7 @@ def _reloaded(inputs, d: dict):
 
     from geardesign.drive import reuse
     from geardesign.spur.spec import SCHEMA
-    from geardesign.spur.spec_inputs import _duty
+    from geardesign.spur.spec_duty import duty_from_spec
 
     spec = reuse.reloaded(SCHEMA, inputs.spec, d, SPUR_LOADS)
     if spec is None or inputs.strength is None:
@@ -75,7 +75,7 @@ def _reloaded(inputs, d: dict):
     # the reader fills defaults into its copies: the echo keeps those of the first read
     probe = ValidatedSpec(spec.data, list(spec.assumed))
     try:
-        duty = _duty(probe, dict(spec.data["load"]), True)
+        duty = duty_from_spec(probe, dict(spec.data["load"]), True)
     except InputError:
         return None
     changes = {}

@@ -1,5 +1,7 @@
 """The report of a Novikov pair: the solved record (:mod:`geardesign.novikov.solve`) turned
-into report rows and checks.  Computes nothing: every number comes from the record."""
+into report rows and checks.  Computes nothing: every number comes from the record; the
+forces, the deviations and the allowables are reported from their fields' metadata by the
+strength ratings' one :func:`geardesign.spur.strength.common.rows`."""
 
 from __future__ import annotations
 
@@ -21,6 +23,11 @@ from geardesign.novikov.geometry import PairGeometry, phase_step
 from geardesign.novikov.inputs import Inputs
 from geardesign.novikov.rack import STANDARD, module_range, module_series
 from geardesign.novikov.solve import MIN_WIDTH_POINTS, Solution
+from geardesign.spur.strength.common import add_rows
+
+TITLES = {"forces": "Forces", "deviations": "Stiffness and deviations (error model)",
+          "allowables": "Allowable stresses and safety (GOST 21354-87 scheme)"}
+"""Sections of the records' rows (:func:`geardesign.spur.strength.common.rows`)."""
 
 
 def _where(at: PointStress | None, b_w: float) -> str:
@@ -93,11 +100,11 @@ def report(res: Result, inp: Inputs, sol: Solution, load: dict) -> None:
     rack, b_w, m = pair.rack, pair.b_w, pair.m
     _geometry_rows(res, g, inp.how)
     _engagement_rows(res, inp, sol)
-    _force_rows(res, sol)
-    _deviation_rows(res, inp, sol)
+    add_rows(res, sol.forces, TITLES)
+    add_rows(res, sol.stiffness, TITLES)
     _phase_rows(res, eng, b_w)
     _strength_rows(res, sol, b_w)
-    _allowable_rows(res, inp, sol)
+    add_rows(res, sol.allow, TITLES)
     al = sol.allow
     FP, share_F, share_H = al.sigma_FP, sol.share_F, sol.share_H
     cov, widths = sol.cov, sol.widths
@@ -244,57 +251,6 @@ def _engagement_rows(res: Result, inp: Inputs, sol: Solution) -> None:
           "Table 1: b_i formula", S.TABLE1)
 
 
-def _force_rows(res: Result, sol: Solution) -> None:
-    fo = sol.forces
-    f = res.section("forces", "Forces")
-    f.add("F_t", fo.F_t, "N", "F_tΣ", "total tangential force 2000·T2/d2", S.KOROTKIN)
-    f.add("F_t_design", fo.F_sum, "N", "K_A·F_tΣ", "design tangential force", S.KOROTKIN)
-    f.add("F_a", fo.F_a, "N", "F_a", "axial force F_t·tan β", S.FORCES)
-    f.add("F_r", fo.F_r, "N", "F_r", "radial force F_t·tan α_k/cos β", S.FORCES)
-    f.add("F_n", fo.F_n, "N", "F_n", "normal force F_t/(cos α_k·cos β)", S.FORCES)
-
-
-def _deviation_rows(res: Result, inp: Inputs, sol: Solution) -> None:
-    sf = sol.stiffness
-    tol, model = sf.tol, inp.error_model
-    d = res.section("deviations", "Stiffness and deviations (error model)")
-    d.add("a_ref", sf.a_ref, "mm", "a_ref", "contact-patch semi-axis at the mean load per point "
-          "F_t/(2ε_β)", S.ELLIPSE)
-    d.add("L_eff", sf.L_eff, "mm", "L_eff", "effective length 2a_ref + 2h of a point's stiffness",
-          S.COMPLIANCE)
-    d.add("c_p", sf.c_p, "N/µm", "c_p", "stiffness of one contact point at mid-face" +
-          (" (given)" if inp.point_stiffness else " c'·L_eff"), S.COMPLIANCE)
-    d.add("W_ref", sf.F_ref / sf.c_p, "µm", "W_ref", "deflection at mid-face under the mean load "
-          "per point", S.COMPLIANCE)
-    d.add("error_model", model, None, "", "error model", S.ERROR_MODEL)
-    d.add("theta_lead", sf.theta_lead, "µm", "θ·b_w", "lead mismatch from the misalignment",
-          S.ERROR_MODEL)
-    d.add("relief", sf.relief, "µm", "Δ", "end relief (parabolic crowning)", S.ERROR_MODEL)
-    if model == "grades":
-        d.add("f_pb1", tol.f_pb1, "µm", "f_pb1", "pitch deviation limit ±, pinion (k_p)",
-              S.TOLERANCES)
-        d.add("f_pb2", tol.f_pb2, "µm", "f_pb2", "pitch deviation limit ±, wheel (k_p)",
-              S.TOLERANCES)
-        d.add("F_beta", tol.F_beta1, "µm", "F_β", "tooth direction tolerance, each gear (k_k)",
-              S.TOLERANCES)
-        d.add("f_x", tol.f_x, "µm", "f_x", "axis parallelism tolerance (= F_β, unverified)",
-              S.TOLERANCES)
-        d.add("f_y", tol.f_y, "µm", "f_y", "axis skew tolerance (= 0.5·F_β, unverified)",
-              S.TOLERANCES)
-        d.add("sigma_pitch", tol.sigma_pitch, "µm", "σ_p", "standard deviation of the pitch gap",
-              S.ERROR_MODEL)
-        d.add("sigma_lead", tol.sigma_lead, "µm", "σ_l", "standard deviation of the lead mismatch",
-              S.ERROR_MODEL)
-        d.add("e_p", tol.pitch_design, "µm", "e_p = γσ_p", "design pitch gap (the study tooth "
-              "leads by it)", S.ERROR_MODEL)
-        d.add("e_l", tol.lead_design, "µm", "e_l = γσ_l", "design lead mismatch (both signs)",
-              S.ERROR_MODEL)
-    elif model == "explicit":
-        d.add("pitch_errors", [inp.pitch_errors[z] for z in sol.teeth], "µm", "δu",
-              "given gaps of the tooth pairs", S.ERROR_MODEL)
-        d.add("lead_error", inp.lead_error, "µm", "f_kβ", "given lead mismatch", S.ERROR_MODEL)
-
-
 def _strength_rows(res: Result, sol: Solution, b_w: float) -> None:
     eng = sol.eng
     s = res.section("strength", "Phase stresses (critical values)")
@@ -320,39 +276,3 @@ def _strength_rows(res: Result, sol: Solution, b_w: float) -> None:
           "the deviations and θ", S.ERROR_MODEL)
     s.add("share_H_deviations", sol.share_H, "-", "1 − σ_H,0/σ_H", "part of σ_Hmax caused by "
           "the deviations and θ", S.ERROR_MODEL)
-
-
-def _allowable_rows(res: Result, inp: Inputs, sol: Solution) -> None:
-    """The GOST 21354-87 allowables and safety factors."""
-    a = sol.allow
-    mats = (inp.pinion, inp.wheel)
-    al = res.section("allowables", "Allowable stresses and safety (GOST 21354-87 scheme)")
-    if a.N[0] is not None:
-        al.add("N_K1", a.N[0], "-", "N_K1", "load cycles, pinion 60·n1·L_h", S.G21354)
-        al.add("N_K2", a.N[1], "-", "N_K2", "load cycles, wheel", S.G21354)
-    for i in range(2):
-        who, k = ("pinion", "wheel")[i], i + 1
-        al.add(f"sigma_Hlim{k}", a.lim_H[i], "MPa", f"σ_Hlim{k}",
-               f"contact endurance limit, {who}"
-               + (" (given)" if mats[i].sigma_Hlim else " 2·HB + 70"), S.G21354)
-        al.add(f"N_HG{k}", a.N_HG[i], "-", f"N_HG{k}", f"base cycles for contact, {who}",
-               S.G21354)
-        al.add(f"Z_N{k}", a.Z_N[i], "-", f"Z_N{k}", f"life factor for contact, {who}", S.G21354)
-        al.add(f"sigma_HP{k}", a.sigma_HP_each[i], "MPa", f"σ_HP{k}",
-               f"allowable contact stress, {who}", S.G21354)
-    al.add("S_H_min", a.S_Hmin, "-", "S_Hmin", "least safety factor for contact", S.G21354)
-    al.add("sigma_HP", a.sigma_HP, "MPa", "σ_HP", "allowable contact stress of the pair (lower)",
-           S.G21354)
-    for i in range(2):
-        who, k = ("pinion", "wheel")[i], i + 1
-        al.add(f"sigma_Flim{k}", a.lim_F[i], "MPa", f"σ_Flim{k}",
-               f"bending endurance limit, {who}"
-               + (" (given)" if mats[i].sigma_Flim else " 1.75·HB"), S.G21354)
-        al.add(f"Y_N{k}", a.Y_N[i], "-", f"Y_N{k}", f"life factor for bending, {who}", S.G21354)
-        al.add(f"sigma_FP{k}", a.sigma_FP[i], "MPa", f"σ_FP{k}",
-               f"allowable bending stress, {who}", S.G21354)
-    al.add("Y_A", a.Y_A, "-", "Y_A", "reversing load factor", S.G21354)
-    al.add("S_F_min", a.S_Fmin, "-", "S_Fmin", "least safety factor for bending", S.G21354)
-    al.add("S_H", a.S_H, "-", "S_H", "safety factor for contact σ_Hlim·Z_N/σ_Hmax", S.G21354)
-    al.add("S_F1", a.S_F[0], "-", "S_F1", "safety factor for bending, pinion", S.G21354)
-    al.add("S_F2", a.S_F[1], "-", "S_F2", "safety factor for bending, wheel", S.G21354)

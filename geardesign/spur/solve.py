@@ -192,10 +192,9 @@ def solve(inputs) -> Record:
 
                 ratings[GOST] = method(GOST).rate(g, st.mats, st.duty, st.setting)
             else:   # the mesh forces (shafts, bearings, a drive) whatever the method
-                from geardesign.spur.strength.rating import Rating, put_forces
+                from geardesign.spur.strength.rating import forces as mesh_forces
 
-                forces = Rating()
-                put_forces(forces, g, st.duty)
+                forces = mesh_forces(g, st.duty)
             if ISO in inputs.methods:
                 from geardesign.spur.strength.iso6336 import rating as IR
                 from geardesign.spur.strength.iso6336.spec import gear_checks

@@ -65,19 +65,21 @@ class Value:
 
 def q(unit: str | None, symbol: str, name, source, *, key: str | None = None,
       gear: bool = False, group: str | None = None, row: bool = True,
-      default=dataclasses.MISSING):
+      section: str | None = None, default=dataclasses.MISSING):
     """A reported field of a rating record.
 
-    ``unit`` (None for a text value), ``symbol`` and ``name`` are the row's; ``source`` a
+    ``unit`` (None for a text value), ``symbol`` and ``name`` are the row's (each text, a
+    template or a function of the context as ``name``); ``source`` a
     reference (a key of ``docs/references.md``, "spec", "material").  ``name`` and
     ``source`` may hold ``{placeholders}`` filled from the record's fields (a per-gear field
     at the gear's index) and from ``k`` (1, 2) and ``who`` (pinion, wheel), or be a function
     of that context.  ``gear``: a (pinion, wheel) pair, one row per gear, key and symbol
     with ``{k}``; consecutive per-gear fields of one ``group`` are reported gear by gear.
     A field that is ``None`` gives no row; ``row=False``: a value the checks read (in
-    :func:`values`) that the report does not show."""
+    :func:`values`) that the report does not show; ``section``: the report section of the
+    row when not the record's (a value computed among others, reported where it is read)."""
     meta = {"unit": unit, "symbol": symbol, "name": name, "source": source,
-            "key": key, "gear": gear, "group": group, "row": row}
+            "key": key, "gear": gear, "group": group, "row": row, "section": section}
     return field(default=default, metadata={"report": meta})
 
 
@@ -152,17 +154,10 @@ def _items(rec):
                 yield f, meta, i, _key(f, meta, None if i is None else i + 1), value
 
 
-def _ordered(record, items: dict) -> dict:
-    """``items`` by key in the order the record gives (``record.order``: the keys in the
-    order they were computed, across sections), else as they come (field order)."""
-    order = getattr(record, "order", None)
-    return {key: items[key] for key in order if key in items} if order else items
-
-
 def values(record) -> dict:
     """The rating's values by report key (the keys of the rows), numbers or arrays."""
-    return _ordered(record, {key: value for _, rec in _section_records(record)
-                             for _, _, _, key, value in _items(rec)})
+    return {key: value for _, rec in _section_records(record)
+            for _, _, _, key, value in _items(rec)}
 
 
 def _text(template, ctx: dict) -> str:
@@ -173,13 +168,13 @@ def _text(template, ctx: dict) -> str:
 
 def rows(record) -> list[Value]:
     """The report rows of a rating record, from its fields' metadata: key, value, unit,
-    symbol, name and source per row, in field order (or the record's ``order``), per-gear
-    groups gear by gear.  A factor
-    the designer gave (``record.given``) reads "(given)" with the source "spec"; a material
+    symbol, name and source per row, in field order, per-gear groups gear by gear (unit,
+    symbol, name and source: text, ``{placeholder}`` templates or functions of the
+    context, as :func:`q`).  A factor the designer gave (``record.given``) reads "(given)" with the source "spec"; a material
     value from the spec (``record.from_spec``) has the source "spec"."""
     given = getattr(record, "given", frozenset())
     from_spec = getattr(record, "from_spec", frozenset())
-    out = {}
+    out = []
     for section, rec in _section_records(record):
         base = {f.name: getattr(rec, f.name) for f in dataclasses.fields(rec)}
         for f, meta, i, key, value in _items(rec):
@@ -196,24 +191,41 @@ def rows(record) -> list[Value]:
                 source = "spec"
             if isinstance(value, bool):
                 value = "yes" if value else "no"
-            symbol = meta["symbol"].format(k=i + 1) if i is not None else meta["symbol"]
-            out[key] = Value(section, key, value, meta["unit"], symbol, name, source)
-    return list(_ordered(record, out).values())
+            unit = meta["unit"] if meta["unit"] is None else _text(meta["unit"], ctx)
+            out.append(Value(meta["section"] or section, key, value, unit, _text(meta["symbol"], ctx), name,
+                             source))
+    return out
 
 
-# ----------------------------------------------------------------------------- row writer
+def add_rows(res, record, titles: dict) -> None:
+    """The rows of ``record`` (:func:`rows`) added to the result ``res`` under their
+    sections (``titles``: section key → title)."""
+    for row in rows(record):
+        res.section(row.section, titles[row.section]).add(
+            row.key, row.value, row.unit, row.symbol, row.name, row.source)
 
 
-@dataclass
-class Rating:
-    """Rows written while rating, with the values by key (the ISO 6336 rating, until it
-    returns a record like :class:`geardesign.spur.strength.gost21354.rating.GostRating`)."""
+# ----------------------------------------------------------------------------- given factors
 
-    rows: list[Value] = field(default_factory=list)
-    v: dict = field(default_factory=dict)
 
-    def put(self, section: str, key: str, value, unit, symbol: str, name: str,
-            source: str) -> float:
-        self.rows.append(Value(section, key, value, unit, symbol, name, source))
-        self.v[key] = value
-        return value
+class Given:
+    """The designer's overrides of computed factors (``[factors]``, ``[iso_factors]``), and
+    the keys of those used: a rating's ``given``, whose rows read "(given)" with the source
+    "spec" (:func:`rows`).  ``cast`` converts a given value (ISO 6336: ``float``)."""
+
+    def __init__(self, overrides: dict, cast=None):
+        self.o = overrides
+        self.cast = cast
+        self.used: set[str] = set()
+
+    def __call__(self, key: str, computed):
+        """The given value of ``key``, else ``computed`` (a value or a function for one)."""
+        v = self.o.get(key)
+        if v is not None:
+            self.used.add(key)
+            return self.cast(v) if self.cast else v
+        return computed() if callable(computed) else computed
+
+    def pair(self, key: str, computed) -> tuple:
+        """A per-gear factor: keys ``key1``, ``key2``; ``computed(i)``."""
+        return tuple(self(f"{key}{i + 1}", lambda i=i: computed(i)) for i in range(2))

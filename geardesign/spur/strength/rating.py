@@ -2,6 +2,6 @@
 them (spur, planetary): the rating is :mod:`geardesign.spur.strength.gost21354.rating`, the
 duty :mod:`geardesign.spur.strength.common`."""
 
-from geardesign.spur.strength.common import Duty, Life, Rating, Value  # noqa: F401
+from geardesign.spur.strength.common import Duty, Life, Value  # noqa: F401
 from geardesign.spur.strength.gost21354.rating import (  # noqa: F401
-    GostRating, Setting, forces, life_cycles, put_forces, rate)
+    GostRating, Setting, forces, life_cycles, rate)

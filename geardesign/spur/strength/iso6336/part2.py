@@ -146,7 +146,8 @@ def z_nt(material: str, N_L: float, limited_pitting: bool = False,
 
 
 def reference_cycles_contact(material: str, limited_pitting: bool = False) -> tuple[float, float]:
-    """(N_L static, N_L reference) of the contact S-N curve of a material type."""
+    """(N_L static, N_L reference) of the contact S-N curve of a material type (load
+    cycles; ``limited``: limited pitting permitted).  [ISO6336-2] (Z_NT, table of life factors)."""
     group = T.ZNT_GROUP[material]
     if limited_pitting and group == "steel":
         group = "limited_pitting"

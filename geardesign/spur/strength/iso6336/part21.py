@@ -197,7 +197,7 @@ def multiple_mesh_factor(n_p: int) -> float:
 
 
 def fzg_torque(stage: int) -> float:
-    """Pinion torque T_1T [N·m] of an FZG A/8.3/90 load stage (ISO 14635-1; data
+    """Pinion torque T_1T [N·m] of an FZG A/8.3/90 load stage ([ISO14635-1]; data
     :data:`.tables.FZG_TORQUE`)."""
     return T.FZG_TORQUE[stage]
 
@@ -220,5 +220,6 @@ def integral_scuffing_temperature(stage: int, nu40: float, X_L: float, X_WrelT: 
 
 def oil_density(rho15: float, theta: float) -> float:
     """Density [kg/m³] of a mineral oil at θ [°C] from its density at 15 °C, with the
-    volumetric expansion 0.0007 1/K of mineral oils (:data:`.tables.OIL_EXPANSION`)."""
+    volumetric expansion 0.0007 1/K of mineral oils (:data:`.tables.OIL_EXPANSION`;
+    [ISO6336-21])."""
     return rho15 * (1.0 - T.OIL_EXPANSION * (theta - 15.0))

@@ -26,7 +26,8 @@ class Limits:
 
 
 def hardness_on_scale(scale: str, HB: float | None, HV: float | None) -> float:
-    """The hardness in the scale of a material line (HBW or HV) from what is known."""
+    """The hardness in the scale of a material line (HBW or HV) from what is known
+    ([ISO6336-5]: the figure of each material line names its scale)."""
     if scale == "HV":
         return HV if HV is not None else HB / HB_PER_HV
     return HB if HB is not None else HV * HB_PER_HV
@@ -36,7 +37,7 @@ def limits(material: str, quality: str, hardness: float) -> Limits:
     """σ_Hlim and σ_Flim [MPa] of a material type and quality grade at a hardness in the
     line's own scale (HBW for St, cast iron and cast steel, HV otherwise); a hardness
     outside the line's range is taken at the nearer end and flagged.
-    ISO 6336-5:2016 Table 2 (lines of Figures 4–16).
+    [ISO6336-5] Table 2 (lines of Figures 4–16).
 
     >>> limits("Eh", "MQ", 700.0).sigma_Hlim
     1500.0
@@ -60,7 +61,7 @@ def type_from_treatment(treatment: str, label: str) -> str:
     the treatment (``iso6336_5`` in ``materials/gear_steel.toml``: 42CrMo4 improved V_alloy,
     31CrMo12 nitrided NT, 40KhL cast V_cast_alloy, ...); for a GOST row, which names none, the
     nitriding steel 38Kh2MYuA is NT, the carbon steel 45 through-hardened is V, otherwise
-    :data:`FROM_TREATMENT`.
+    :data:`FROM_TREATMENT`.  [ISO6336-5] (the material types).
 
     >>> type_from_treatment("improved", "40KhL, quenched and tempered (improved), 220 HB")
     'V_cast_alloy'

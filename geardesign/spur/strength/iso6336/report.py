@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from geardesign.spur.strength.common import add_rows
 from geardesign.spur.strength.iso6336 import rating as IR
 from geardesign.spur.strength.iso6336.spec import ISO_NAME, gear_checks, iso_setting
 
@@ -16,9 +17,7 @@ def add_iso_strength(res, geom, spec, inputs, rating=None, iso=None) -> dict:
         iso = iso_setting(spec)
         rating = IR.rate(geom, mats, duty, setting, iso)
     res.methods.append(ISO_NAME)
-    for row in rating.rows:
-        res.section(row.section, IR.SECTIONS[row.section]).add(
-            row.key, row.value, row.unit, row.symbol, row.name, row.source)
+    add_rows(res, rating, IR.SECTIONS)
     internal = bool(getattr(geom, "internal", False))
     from geardesign.core.advice import rerating
 
@@ -52,11 +51,12 @@ def iso_rating(spec) -> "IR.IsoRating":
 def _advice(v: dict, geom, mats, duty, setting, iso) -> dict | None:
     """Face width and scale of the pair that pass pitting and bending, found by re-rating
     (the load factors change with the size), the face width within the proportions of
-    :func:`geardesign.spur.checks.face_advice_limit`; ``None`` when the rating passes."""
+    :func:`geardesign.spur.strength.checks.face_advice_limit`; ``None`` when the rating passes."""
     from dataclasses import replace
 
-    from geardesign.spur.checks import face_advice_limit, least_passing, reconciled_widths
     from geardesign.gears.geometry import pair_geometry
+    from geardesign.spur.strength.checks import (face_advice_limit, least_passing,
+                                                  reconciled_widths)
 
     fails = [kind for kind in ("H", "F") if not IR.passes(v, kind)]
     if not fails:

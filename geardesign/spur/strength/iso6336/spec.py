@@ -1,5 +1,7 @@
 """Spec tables of the ISO 6336 rating: ``[iso]`` (with ``[iso.pinion]``, ``[iso.wheel]``) and
-``[iso_factors]``, and the :class:`~.rating.IsoSetting` built from them.
+``[iso_factors]``, and the :class:`~.setting.IsoSetting` built from them
+(:func:`iso_setting`; the builders of the setting from validated tables are
+:mod:`.setting`'s).
 
 Both tables are optional: a spec that selects ``options.method = "ISO 6336:2019"`` without
 them gets every default, echoed as assumed.
@@ -10,7 +12,9 @@ from __future__ import annotations
 from geardesign.core.errors import InputError, Problem
 from geardesign.core.spec import Field, Table
 from geardesign.spur.strength.iso6336 import tables as T
-from geardesign.spur.tolerances.iso1328 import EDITIONS as TOLERANCE_EDITIONS
+from geardesign.spur.strength.iso6336.setting import (  # noqa: F401
+    scuffing_oil_domain, scuffing_setting, setting_from, tolerance_class)
+from geardesign.spur.tolerances.iso1328 import EDITIONS as TOLERANCE_EDITIONS  # noqa: F401
 from geardesign.spur.tolerances.iso1328 import grades as tolerance_grades
 
 ISO_NAME = "ISO 6336:2019"
@@ -316,21 +320,6 @@ def gear_checks(iso: dict, geom, paths: tuple[str, str] = ("iso.pinion", "iso.wh
         raise InputError(problems)
 
 
-def tolerance_class(iso: dict, accuracy: dict | None = None) -> tuple[str, int | None]:
-    """The ISO 1328-1 edition and class of the rating's tolerances: ``[iso]``
-    tolerance_standard and accuracy_grade; else those of ``accuracy`` (a spur spec's
-    ``[accuracy]``) when it names an ISO 1328-1 edition (the drawing's tolerances); else
-    ISO 1328-1:2013 and None (the caller's grade, gear.accuracy_grade)."""
-    acc = accuracy or {}
-    drawing = acc.get("standard") in TOLERANCE_EDITIONS
-    standard = iso.get("tolerance_standard") or (acc["standard"] if drawing
-                                                 else TOLERANCE_EDITIONS[0])
-    grade = iso.get("accuracy_grade")
-    if grade is None and drawing and acc["standard"] == standard:
-        grade = acc.get("grade")
-    return standard, grade
-
-
 def iso_setting(spec, overrides: dict | None = None):
     """The :class:`~.rating.IsoSetting` of a validated, prepared spec."""
     iso = spec.data["iso"]
@@ -340,77 +329,6 @@ def iso_setting(spec, overrides: dict | None = None):
     return setting_from(iso, (iso["pinion"], iso["wheel"]), o,
                         scuffing_setting(iso.get("scuffing"), nu40=iso["lubricant_viscosity"]),
                         accuracy=spec.data.get("accuracy"))
-
-
-def setting_from(iso: dict, gears: tuple[dict, dict], overrides: dict, scuffing,
-                 accuracy: dict | None = None, **extra):
-    """The :class:`~.rating.IsoSetting` of validated ``[iso]`` pair keys, the two gear
-    tables in rating order, the given factors, the scuffing setting and the tolerances'
-    edition and class (:func:`tolerance_class`; ``accuracy``: a spur spec's ``[accuracy]``)
-    (``extra``: further fields of the setting, e.g. a planetary mesh's ``K_gamma`` and
-    ``nu40``)."""
-    from geardesign.spur.strength.iso6336.rating import IsoGear, IsoSetting
-
-    standard, grade = tolerance_class(iso, accuracy)
-    values = dict(
-        grade=grade, tolerance_standard=standard, C_a=iso["tip_relief"],
-        modification=iso["helix_modification"], f_ma=iso["f_ma"], f_sh=iso["f_sh"],
-        K_prime=iso["shaft_K_prime"], shaft_span=iso["shaft_span"],
-        pinion_offset=iso["pinion_offset"], shaft_diameter=iso["shaft_diameter"],
-        f_pb=iso["f_pb"], f_falpha=iso["f_falpha"], F_beta=iso["F_beta"],
-        S_Hmin=iso["S_Hmin"], S_Fmin=iso["S_Fmin"], limited_pitting=iso["limited_pitting"],
-        optimum=iso["optimum_conditions"], protuberance=iso["protuberance"],
-        gears=tuple(IsoGear(t["material_type"], t["quality"], t["sigma_Hlim"], t["sigma_Flim"],
-                            t["Rz_flank"], t["Rz_root"], t["inner_diameter"],
-                            t["rim_thickness"], t["web_ratio"]) for t in gears),
-        overrides=dict(overrides), scuffing=scuffing)
-    if "lubricant_viscosity" in iso:
-        values["nu40"] = iso["lubricant_viscosity"]
-    values.update(extra)
-    return IsoSetting(**values)
-
-
-def scuffing_oil_domain(t: dict, nu40: float, where: str) -> None:
-    """Refuse a scuffing oil outside the domain of its viscosity formulas: ν100 (given, or from
-    ν40 with VI 95 by ASTM D2270) and ν at the oil temperature by ASTM D341 (Ubbelohde–Walther,
-    Z = ν + 0.7), which hold for ν >= 2 mm²/s.  ``where`` is the key of the table
-    (``iso.scuffing``, ``strength.scuffing``).  Raises :class:`InputError` naming the key."""
-    from geardesign.materials.lubricants import OilError, nu100_from_vi, viscosity_at
-
-    nu100 = t["oil_viscosity_100"]
-    key = f"{where}.oil_viscosity_100"
-    try:
-        if nu100 is None:
-            nu100 = nu100_from_vi(nu40, 95.0)
-    except OilError as exc:
-        raise InputError(Problem(key, f"missing, and the one from ν40 = {nu40:g} mm²/s with "
-                            f"viscosity index 95 cannot be used ({exc}); give it")) from None
-    try:
-        viscosity_at(t["oil_temperature"], nu40, nu100)
-    except OilError as exc:
-        raise InputError.at(f"{where}.oil_temperature", t["oil_temperature"],
-                            f"the oil (ν40 = {nu40:g}, ν100 = {nu100:g} mm²/s) is outside the "
-                            f"viscosity-temperature relation there ({exc})") from None
-
-
-def scuffing_setting(t: dict | None, meshes: int | None = None, nu40: float | None = None,
-                     where: str = "iso.scuffing"):
-    """The :class:`~.rating.ScuffingSetting` of a validated scuffing table (``[iso.scuffing]``
-    or the planetary ``[strength.scuffing]``, which has no ``meshes`` and ``driving``:
-    ``meshes`` then comes from the train); None without a table.  The oil is checked by
-    :func:`scuffing_oil_domain` with ν40 (default that of
-    :class:`~.rating.IsoSetting`)."""
-    from geardesign.spur.strength.iso6336.rating import IsoSetting, ScuffingSetting
-
-    if t is None:
-        return None
-    scuffing_oil_domain(t, IsoSetting.nu40 if nu40 is None else nu40, where)
-    return ScuffingSetting(
-        fzg_load_stage=t["fzg_load_stage"], oil_temperature=t["oil_temperature"],
-        nu100=t["oil_viscosity_100"], density15=t["oil_density"], lubricant=t["lubricant"],
-        lubrication=t["lubrication"], meshes=meshes if meshes is not None else t["meshes"],
-        driving=t.get("driving", "pinion"), structure=t["structure"],
-        B_M=t["thermal_contact_coefficient"], S_Smin=t["S_Smin"])
 
 
 #: ``[material.<gear>]`` keys of the GOST 21354-87 rating that the ISO 6336 rating does not
