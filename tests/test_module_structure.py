@@ -27,7 +27,6 @@ LONG = {
     "spur/strength/iso6336/spec.py": SPLITTING + ": the ISO 6336 inputs with the spur split",
     "spur/strength/iso6336/part3.py": SPLITTING + ": ISO 6336-3 beside the GOST package",
     "spur/checks.py": SPLITTING + ": one checks module for any rating record",
-    "spur/sweep.py": SPLITTING + ": the sweep re-checks variants through spur.solve",
     "spur/geometry.py": SPLITTING + ": shared gear geometry moves to geardesign/gears",
     "spur/internal.py": SPLITTING + ": internal pairs move to geardesign/gears",
     "spur/drawing.py": SPLITTING + ": tolerances shared with the rating (gears/tolerances)",
