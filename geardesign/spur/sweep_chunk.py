@@ -134,8 +134,7 @@ def _evaluate_in_groups(spec_data: dict, sw: Sweep, varied: dict, base: dict) ->
             c["bad"] = bad
         if len(combos) == 1:    # one group: the chunk's arrays as they are, no masked copies
             part = evaluate({k: v for k, v in c.items() if k != "bad"}, fixed)
-            return c, {k: np.broadcast_to(v, (n,)).copy() if np.shape(v) != (n,) else v
-                       for k, v in part.items()}
+            return c, part       # a value shared by the chunk stays a broadcast view
         sel = np.ones(n, dtype=bool)
         for code, k in zip(codes, combo):
             sel &= code == k
@@ -197,20 +196,6 @@ def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int, rows: bool
     r["passed"] &= ~bad
     r["helix_angle"] = np.degrees(c["beta"])
     r["m_n"], r["b_w"] = c["m_n"], c["b_w"]
-    r["volume"] = (disc_volume(r["d1"], r["b_w"]) + disc_volume(r["d2"], r["b_w"])) / 1000.0
-    r["mass"] = disc_mass(r["d1"], r["b_w"]) + disc_mass(r["d2"], r["b_w"])
-    r["S_Hmin"] = np.minimum(r["S_H1"], r["S_H2"])
-    from geardesign.planetary.efficiency import loss_factor
-    from geardesign.spur.kinematics import specific_sliding
-
-    eps_1 = (r["rho_a1"] - 0.5 * r["d_w1"] * np.sin(r["alpha_tw"])) / r["p_bt"]
-    r["H_V"] = loss_factor(r["eps_alpha"], eps_1, r["z1"], r["u"], r["beta_b"])
-    r["eta"] = 1.0 - sw.friction * r["H_V"]
-    with np.errstate(all="ignore"):
-        th1A = specific_sliding(r["rho_p1"], r["rho_a2"], r["u"])[0]
-        th2E = specific_sliding(r["rho_a1"], r["rho_p2"], r["u"])[1]
-    r["sliding"] = np.where((r["rho_p1"] > 0) & (r["rho_p2"] > 0),
-                            np.maximum(np.abs(th1A), np.abs(th2E)), np.inf)
     for d, col in ((d, MATERIAL_COLUMNS[d.key]) for d in sw.dims if d.choices):
         r[col] = varied[d.key].astype(float)
     for d in sw.dims:
@@ -229,27 +214,68 @@ def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int, rows: bool
         lo, hi = sw.center_distance_range
         feasible &= (r["a_w"] >= lo - 1e-9) & (r["a_w"] <= hi + 1e-9)
     index = np.arange(start, stop)
-    counts = {"evaluated": stop - start, "valid": int(r["valid"].sum()),
-              "passed": int(r["passed"].sum()), "feasible": int(feasible.sum())}
-    fails = {k[3:]: int((r["valid"] & ~r[k]).sum()) for k in r if k.startswith("ok_")}
-    sel = {k: r[k][feasible] for k in COLUMNS + ("S_Hmin",) + tuple(
-        MATERIAL_COLUMNS[d.key] for d in sw.dims if d.choices) + tuple(
-        d.key.split(".", 1)[1] for d in sw.dims if d.key in FIXED_KEYS)}
-    sel["index"] = index[feasible]
+    valid = r["valid"]
+    n_valid = np.count_nonzero(valid)
+    counts = {"evaluated": stop - start, "valid": n_valid,
+              "passed": np.count_nonzero(r["passed"]), "feasible": np.count_nonzero(feasible)}
+    # a kernel flag ok_<CODE> holds on valid candidates only: the failures are the rest
+    fails = {k[3:]: n_valid - np.count_nonzero(r[k] if k != "ok_FACE_WIDTH_RATIO"
+                                               else r[k] & valid)
+             for k in r if k.startswith("ok_")}
+    counts = {k: int(v) for k, v in counts.items()}
+    fails = {k: int(v) for k, v in fails.items()}
+    keep = COLUMNS + ("S_Hmin",) + tuple(MATERIAL_COLUMNS[d.key] for d in sw.dims
+                                         if d.choices) + tuple(
+        d.key.split(".", 1)[1] for d in sw.dims if d.key in FIXED_KEYS)
+    if rows:     # the dataset has every candidate's objectives
+        _objectives(r, sw.friction)
+        pick = np.flatnonzero(feasible)
+        sel = {k: r[k][pick] for k in keep}
+    else:        # the objectives of the feasible candidates only
+        pick = np.flatnonzero(feasible)
+        sel = {k: r[k][pick] for k in set(keep + OBJECTIVE_INPUTS) if k in r}
+        _objectives(sel, sw.friction)
+        sel = {k: sel[k] for k in keep}
+    sel["index"] = index[pick]
     head = _rank(sel, sw)
     front = _front(sel, sw)
     return {"counts": counts, "fails": fails, "head": head, "front": front,
             "rows": _dataset(r, feasible, index) if rows else None}
 
 
+OBJECTIVE_INPUTS = ("d1", "d2", "b_w", "S_H1", "S_H2", "rho_a1", "rho_a2", "rho_p1", "rho_p2",
+                    "d_w1", "alpha_tw", "p_bt", "eps_alpha", "z1", "u", "beta_b")
+"""The kernel's columns :func:`_objectives` reads."""
+
+
+def _objectives(r: dict, friction: float) -> None:
+    """The objectives' columns of the candidates ``r`` (arrays of :data:`OBJECTIVE_INPUTS`):
+    volume and steel mass of the two gears, the smaller contact safety factor, the tooth loss
+    factor H_V and the mesh efficiency at ``friction``, the larger specific sliding."""
+    from geardesign.planetary.efficiency import loss_factor
+    from geardesign.spur.kinematics import specific_sliding
+
+    r["volume"] = (disc_volume(r["d1"], r["b_w"]) + disc_volume(r["d2"], r["b_w"])) / 1000.0
+    r["mass"] = disc_mass(r["d1"], r["b_w"]) + disc_mass(r["d2"], r["b_w"])
+    r["S_Hmin"] = np.minimum(r["S_H1"], r["S_H2"])
+    eps_1 = (r["rho_a1"] - 0.5 * r["d_w1"] * np.sin(r["alpha_tw"])) / r["p_bt"]
+    r["H_V"] = loss_factor(r["eps_alpha"], eps_1, r["z1"], r["u"], r["beta_b"])
+    r["eta"] = 1.0 - friction * r["H_V"]
+    with np.errstate(all="ignore"):
+        th1A = specific_sliding(r["rho_p1"], r["rho_a2"], r["u"])[0]
+        th2E = specific_sliding(r["rho_a1"], r["rho_p2"], r["u"])[1]
+    r["sliding"] = np.where((r["rho_p1"] > 0) & (r["rho_p2"] > 0),
+                            np.maximum(np.abs(th1A), np.abs(th2E)), np.inf)
+
+
 def _dataset(r: dict, feasible, index) -> dict:
     cols = {"index": index}
     for k in COLUMNS + tuple(MATERIAL_COLUMNS.values()):
         if k in r:
-            cols[k] = r[k]
+            cols[k] = np.ascontiguousarray(r[k])     # a broadcast value written out
     for k in r:
         if k.startswith("ok_"):
-            cols[k] = r[k]
+            cols[k] = np.ascontiguousarray(r[k])     # a broadcast value written out
     cols["valid"], cols["passed"], cols["feasible"] = r["valid"], r["passed"], feasible
     return cols
 
