@@ -26,13 +26,13 @@ from __future__ import annotations
 
 import itertools
 
-from geardesign.spur.sweep_chunk import candidates, evaluate_chunk, samplers
+from geardesign.spur.sweep_chunk import candidates, evaluate_chunk, evaluate_task, samplers
 from geardesign.spur.sweep_dask import SchedulerError, connect, local_cluster, on_cluster
 from geardesign.spur.sweep_input import (COLUMNS, FIXED_KEYS, FULL_CHECKS, MATERIAL_COLUMNS,
                                          MATERIAL_KEYS, MAX_GRID, MAX_POINTS, MAX_SAMPLES,
                                          OBJECTIVES, VARIABLE, Dim, Sweep, load_sweep,
                                          parse_sweep, parse_vary, rating_method)
-from geardesign.spur.sweep_rank import _front, _merge, _rank, range_edges
+from geardesign.spur.sweep_rank import Summary, range_edges
 from geardesign.spur.sweep_recheck import full_check, variant_spec
 from geardesign.spur.sweep_report import sweep_result
 
@@ -40,11 +40,33 @@ __all__ = ["CHUNK", "COLUMNS", "FIXED_KEYS", "FULL_CHECKS", "MATERIAL_COLUMNS", 
            "MAX_GRID", "MAX_POINTS", "MAX_SAMPLES", "OBJECTIVES", "VARIABLE", "Dim",
            "SchedulerError", "Sweep", "candidates", "connect", "evaluate_chunk", "full_check",
            "load_sweep", "local_cluster", "parse_sweep", "parse_vary", "range_edges",
-           "rating_method", "run_data", "run_sweep", "samplers", "sweep_result", "variant_spec"]
+           "rating_method", "run_data", "run_sweep", "samplers", "sweep_result", "task_bounds",
+           "variant_spec"]
 
 CHUNK = 50_000
 """Candidates per kernel call (about 60 MB of arrays at a time: 10⁷ candidates run in
 about 150 MB)."""
+
+
+TASK_CHUNKS = 8
+"""Most chunks in one task of a worker process or a Dask worker (a task evaluates its chunks
+one after the other, merging their summaries: memory of one chunk, the cost of sending a task
+spread over up to 8 chunks)."""
+
+TASKS_PER_WORKER = 8
+"""Tasks per worker at least (a sample of 10⁶ in tasks of 100 000 candidates), so that the
+workers finish together."""
+
+
+def task_bounds(total: int, workers: int, rows: bool) -> list:
+    """The ``(start, stop)`` of each task of a parallel run: whole chunks, at most
+    :data:`TASK_CHUNKS` of them, at least :data:`TASKS_PER_WORKER` tasks per worker when
+    there are chunks enough; one chunk per task when every candidate's row is returned
+    (``--data``: a task's rows are held until written)."""
+    chunks = -(-total // CHUNK)
+    per = 1 if rows else max(1, min(TASK_CHUNKS, chunks // (TASKS_PER_WORKER * workers)))
+    size = per * CHUNK
+    return [(s, min(s + size, total)) for s in range(0, total, size)]
 
 
 def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | None = None,
@@ -52,48 +74,50 @@ def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | Non
     """Evaluate the whole sweep chunk by chunk (in parallel when asked) and return the
     merged summary: counts, failing checks, the ranked head and the Pareto front."""
     total = sw.size
-    bounds = [(s, min(s + CHUNK, total)) for s in range(0, total, CHUNK)]
     rows = rows_sink is not None
-    counts = {"evaluated": 0, "valid": 0, "passed": 0, "feasible": 0}
-    fails: dict = {}
-    head = front = None
+    summary = Summary(sw)
 
     def take(res):
-        nonlocal head, front
-        for k in counts:
-            counts[k] += res["counts"][k]
-        for k, v in res["fails"].items():
-            fails[k] = fails.get(k, 0) + v
-        head = _rank(_merge(head, res["head"]), sw)
-        front = _front(_merge(front, res["front"]), sw)
+        summary.add(res)
         if rows_sink is not None:
             rows_sink(res["rows"])
         if progress is not None:
             progress(res["counts"]["evaluated"])
 
     if scheduler is not None:
-        for res in on_cluster(scheduler, spec_data, sw, bounds, rows):
+        for res in on_cluster(scheduler, spec_data, sw, rows, CHUNK,
+                              lambda n: task_bounds(total, n, rows)):
             take(res)
-    elif workers > 1 and len(bounds) > 1:
+    elif workers > 1 and total > CHUNK:
         from concurrent.futures import ProcessPoolExecutor
 
         from geardesign.core.io import worker_signals
 
+        bounds = task_bounds(total, workers, rows)
         pool = ProcessPoolExecutor(max_workers=min(workers, len(bounds)),
                                    initializer=worker_signals)
         try:
-            for res in pool.map(evaluate_chunk, itertools.repeat(spec_data), itertools.repeat(sw),
-                                [a for a, _ in bounds], [b for _, b in bounds],
-                                itertools.repeat(rows), samplers(sw, bounds, copies=True)):
+            for res in pool.map(_task, itertools.repeat(spec_data), itertools.repeat(sw),
+                                bounds, itertools.repeat(rows), itertools.repeat(CHUNK),
+                                samplers(sw, bounds, copies=True)):
                 take(res)
         except BaseException:     # Ctrl-C or an error: stop at once, no queued chunk runs
             pool.shutdown(wait=False, cancel_futures=True)
             raise
         pool.shutdown()
     else:
+        bounds = [(s, min(s + CHUNK, total)) for s in range(0, total, CHUNK)]
         for (a, b), e in zip(bounds, samplers(sw, bounds)):
             take(evaluate_chunk(spec_data, sw, a, b, rows, e))
-    return {"counts": counts, "fails": fails, "head": head, "front": front}
+    return summary.result()
+
+
+def _task(spec_data: dict, sw: Sweep, bounds: tuple, rows: bool, chunk: int, sampler):
+    """One task of a parallel run: a chunk with its rows, or a range of chunks merged."""
+    a, b = bounds
+    if rows:
+        return evaluate_chunk(spec_data, sw, a, b, True, sampler)
+    return evaluate_task(spec_data, sw, a, b, chunk, sampler)
 
 
 def run_data(data: dict, source: str = ""):

@@ -16,7 +16,7 @@ from geardesign.spur.checks import face_width_ratio_ok
 from geardesign.spur.geometry import disc_mass, disc_volume
 from geardesign.spur.sweep_input import (COLUMNS, FIXED_KEYS, MATERIAL_COLUMNS,
                                          Sweep, _with_fixed)
-from geardesign.spur.sweep_rank import _front, _rank
+from geardesign.spur.sweep_rank import Summary, _front, _rank
 
 def _base_values(spec) -> dict:
     """The pair of the base spec (keys of :data:`VARIABLE`)."""
@@ -301,3 +301,17 @@ def samplers(sw: Sweep, bounds: list, copies: bool = False):
         eng.fast_forward(b - a)
 
 
+
+
+def evaluate_task(spec_data: dict, sw: Sweep, start: int, stop: int, chunk: int,
+                  sampler=None) -> dict:
+    """The merged summary of candidates ``start`` … ``stop − 1`` evaluated chunk by chunk
+    (``chunk`` candidates at a time, so a task's memory is one chunk's whatever its size):
+    the work of one task of a worker process or a Dask worker, large enough that the cost of
+    sending it is small beside its evaluation.  ``sampler`` as for :func:`evaluate_chunk`."""
+    bounds = [(a, min(a + chunk, stop)) for a in range(start, stop, chunk)]
+    engines = samplers(sw, bounds) if sampler is None else itertools.repeat(sampler)
+    out = Summary(sw)
+    for (a, b), e in zip(bounds, engines):
+        out.add(evaluate_chunk(spec_data, sw, a, b, False, e))
+    return out.result()

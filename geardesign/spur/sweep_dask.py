@@ -51,19 +51,26 @@ def local_cluster(workers: int = 2):
 
 
 
-def on_cluster(address: str, spec_data: dict, sw, bounds: list, rows: bool):
-    """The summaries of the chunks ``bounds`` evaluated on the Dask cluster of the scheduler
-    at ``address``, yielded in the order of ``bounds`` (the merge is the local loop's)."""
+def on_cluster(address: str, spec_data: dict, sw, rows: bool, chunk: int, tasks):
+    """The summaries of the tasks ``tasks(workers)`` (their ``(start, stop)``, for the number
+    of workers of the cluster) evaluated on the Dask cluster of the scheduler at
+    ``address``, yielded in the order of the tasks (the merge is the local loop's)."""
     from dask.distributed import as_completed
 
-    from geardesign.spur.sweep_chunk import evaluate_chunk, samplers
+    from geardesign.spur.sweep import _task
+    from geardesign.spur.sweep_chunk import samplers
 
     with connect(address) as client:
-        futures = [client.submit(evaluate_chunk, spec_data, sw, a, b, rows, e, pure=False)
-                   for (a, b), e in zip(bounds, samplers(sw, bounds, copies=True))]
+        bounds = tasks(max(1, len(client.nthreads())))
+        futures = [client.submit(_task, spec_data, sw, ab, rows, chunk, e, pure=False)
+                   for ab, e in zip(bounds, samplers(sw, bounds, copies=True))]
         order = {fut.key: i for i, fut in enumerate(futures)}
-        done = {}
-        for fut in as_completed(futures):
-            done[order[fut.key]] = fut.result()
-        for i in range(len(bounds)):
-            yield done.pop(i)
+        done: dict = {}
+        following = 0
+        for fut in as_completed(futures):     # each as soon as those before it are in
+            i = order[fut.key]
+            done[i] = fut.result()
+            futures[i] = None                 # the worker may drop its copy
+            while following in done:
+                yield done.pop(following)
+                following += 1

@@ -80,3 +80,28 @@ def range_edges(sw: Sweep, head: dict | None) -> list[str]:
     return out
 
 
+
+
+class Summary:
+    """The merged summary of evaluated chunks: counts, failures by check, the ranked head and
+    the Pareto front.  Merging is associative and the order of a tie is the candidate index,
+    so any split of the candidates into chunks and tasks gives the same summary."""
+
+    def __init__(self, sw: Sweep) -> None:
+        self.sw = sw
+        self.counts = {"evaluated": 0, "valid": 0, "passed": 0, "feasible": 0}
+        self.fails: dict = {}
+        self.head = self.front = None
+
+    def add(self, res: dict) -> None:
+        """Merge one chunk's (or task's) summary ``res``."""
+        for k in self.counts:
+            self.counts[k] += res["counts"][k]
+        for k, v in res["fails"].items():
+            self.fails[k] = self.fails.get(k, 0) + v
+        self.head = _rank(_merge(self.head, res["head"]), self.sw)
+        self.front = _front(_merge(self.front, res["front"]), self.sw)
+
+    def result(self) -> dict:
+        return {"counts": dict(self.counts), "fails": dict(self.fails), "head": self.head,
+                "front": self.front}
