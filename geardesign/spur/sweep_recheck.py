@@ -3,8 +3,9 @@ a variant (``geardesign sweep --emit-spec``)."""
 
 from __future__ import annotations
 
-from geardesign.spur.sweep_chunk import _base_values, _shift_rule, candidates
-from geardesign.spur.sweep_input import MATERIAL_KEYS, VARIABLE, Sweep, _with_fixed
+from geardesign.spur.sweep_chunk import _base_values, _chunk_inputs, _shift_rule, candidates
+from geardesign.spur.sweep_input import FIXED_KEYS, MATERIAL_KEYS, VARIABLE, Sweep, _with_fixed
+
 
 def variant_spec(spec_data: dict, sw: Sweep, index: int) -> dict:
     """The spur spec (without ``[sweep]``) of candidate ``index``: the base spec with the
@@ -37,18 +38,49 @@ def variant_spec(spec_data: dict, sw: Sweep, index: int) -> dict:
     return _with_fixed(data, chosen)
 
 
-def full_check(data: dict, sw: Sweep, index: int) -> str:
-    """The verdict of the whole calculator on candidate ``index`` (its emitted spec): "pass",
-    or "fail: " and the failing error checks (those the kernel makes pass already)."""
-    from geardesign.core.errors import InputError as _IE
-    from geardesign.core.registry import load_data
+def full_check(data: dict, sw: Sweep, index: int, bases: dict | None = None) -> str:
+    """The verdict of the whole calculator on candidate ``index``: "pass", or "fail: " and
+    the failing error checks (those the kernel makes pass already).
 
-    try:   # the verdict only: rated without the advice (no re-rating for fixes)
-        calc, spec = load_data(variant_spec(data, sw, index))
-        res = calc.rate(spec)
+    The variant is solved by :func:`geardesign.spur.solve.solve` on typed inputs: the
+    :class:`~geardesign.spur.inputs.Inputs` of the base spec (with the candidate's
+    materials, accuracy grade and bearing scheme; read once per combination and kept in
+    ``bases``) with the candidate's pair data (module, teeth, shifts, helix angle, face width:
+    the values the kernel rated), and reported by :func:`geardesign.spur.report.report`
+    without the advice (the verdict only: no re-rating for fixes)."""
+    import dataclasses
+
+    from geardesign.core.errors import InputError as _IE
+    from geardesign.spur.report import report
+    from geardesign.spur.solve import solve
+
+    bases = {} if bases is None else bases
+    varied = candidates(sw, index, index + 1)
+    chosen = {d.key: (d.choices[int(varied[d.key][0])] if d.choices
+                      else int(varied[d.key][0]))
+              for d in sw.dims if d.choices or d.key in FIXED_KEYS}
+    try:
+        key = repr(sorted(chosen.items()))
+        if key not in bases:
+            bases[key] = _base_inputs(_with_fixed(data, chosen))
+        inputs, base = bases[key]
+        pair = _chunk_inputs(sw, varied, base, inputs.pair.rack.alpha_n)
+        variant = inputs.replace(**{k: float(v[0]) for k, v in pair.items()
+                                    if k not in ("z1", "z2")},
+                                 z1=int(pair["z1"][0]), z2=int(pair["z2"][0]))
+        # the report echoes the base spec's other tables (its rows are not read here)
+        res = report(solve(dataclasses.replace(variant, spec=inputs.spec)))
     except _IE as exc:
         return "input: " + exc.problems[0].key
     failed = [c.code for c in res.failed]
     return "pass" if not failed else "fail: " + ", ".join(failed[:4])
 
 
+def _base_inputs(data: dict) -> tuple:
+    """The typed inputs of the spec data ``data`` and its pair's values (:func:`_base_values`)."""
+    from geardesign.core.registry import load_data
+    from geardesign.spur.inputs import from_spec
+
+    _, spec = load_data(data, "sweep")
+    base = _base_values(spec)
+    return from_spec(spec), base

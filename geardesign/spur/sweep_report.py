@@ -60,6 +60,7 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
             name = d.key.split(".", 1)[1]
             cols.insert(2, (name, name.replace("_", " "), "-"))
     verified: dict = {}
+    bases: dict = {}     # the typed inputs of each combination of fixed data
     for key, title, block in (("ranked", f"Ranked variants (by {', '.join(sw.objectives)})",
                                summary["head"]),
                               ("pareto", "Pareto front of " + " and ".join(sw.objectives[:2]),
@@ -79,7 +80,7 @@ def sweep_result(data: dict, sw: Sweep, summary: dict, source: str = ""):
                         name = d.key.split(".", 1)[1]
                         r[name] = int(r[name])
                 if r["index"] not in verified and i < FULL_CHECKS:
-                    verified[r["index"]] = full_check(data, sw, r["index"])
+                    verified[r["index"]] = full_check(data, sw, r["index"], bases)
                 r["full_check"] = verified.get(r["index"], "not run")
                 t.rows.append(r)
         res.tables.append(t)
