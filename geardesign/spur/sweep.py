@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import itertools
 
-from geardesign.spur.sweep_chunk import candidates, evaluate_chunk, evaluate_task, samplers
+from geardesign.spur.sweep_chunk import candidates, evaluate_chunk, run_task, samplers
 from geardesign.spur.sweep_dask import SchedulerError, connect, local_cluster, on_cluster
 from geardesign.spur.sweep_input import (COLUMNS, FIXED_KEYS, FULL_CHECKS, MATERIAL_COLUMNS,
                                          MATERIAL_KEYS, MAX_GRID, MAX_POINTS, MAX_SAMPLES,
@@ -97,7 +97,7 @@ def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | Non
         pool = ProcessPoolExecutor(max_workers=min(workers, len(bounds)),
                                    initializer=worker_signals)
         try:
-            for res in pool.map(_task, itertools.repeat(spec_data), itertools.repeat(sw),
+            for res in pool.map(run_task, itertools.repeat(spec_data), itertools.repeat(sw),
                                 bounds, itertools.repeat(rows), itertools.repeat(CHUNK),
                                 samplers(sw, bounds, copies=True)):
                 take(res)
@@ -110,14 +110,6 @@ def run_sweep(spec_data: dict, sw: Sweep, workers: int = 1, scheduler: str | Non
         for (a, b), e in zip(bounds, samplers(sw, bounds)):
             take(evaluate_chunk(spec_data, sw, a, b, rows, e))
     return summary.result()
-
-
-def _task(spec_data: dict, sw: Sweep, bounds: tuple, rows: bool, chunk: int, sampler):
-    """One task of a parallel run: a chunk with its rows, or a range of chunks merged."""
-    a, b = bounds
-    if rows:
-        return evaluate_chunk(spec_data, sw, a, b, True, sampler)
-    return evaluate_task(spec_data, sw, a, b, chunk, sampler)
 
 
 def run_data(data: dict, source: str = ""):

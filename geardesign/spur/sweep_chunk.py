@@ -315,3 +315,11 @@ def evaluate_task(spec_data: dict, sw: Sweep, start: int, stop: int, chunk: int,
     for (a, b), e in zip(bounds, engines):
         out.add(evaluate_chunk(spec_data, sw, a, b, False, e))
     return out.result()
+
+
+def run_task(spec_data: dict, sw: Sweep, bounds: tuple, rows: bool, chunk: int, sampler):
+    """One task of a parallel run: a chunk with its rows, or a range of chunks merged."""
+    a, b = bounds
+    if rows:
+        return evaluate_chunk(spec_data, sw, a, b, True, sampler)
+    return evaluate_task(spec_data, sw, a, b, chunk, sampler)

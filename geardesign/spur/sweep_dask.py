@@ -57,12 +57,11 @@ def on_cluster(address: str, spec_data: dict, sw, rows: bool, chunk: int, tasks)
     ``address``, yielded in the order of the tasks (the merge is the local loop's)."""
     from dask.distributed import as_completed
 
-    from geardesign.spur.sweep import _task
-    from geardesign.spur.sweep_chunk import samplers
+    from geardesign.spur.sweep_chunk import run_task, samplers
 
     with connect(address) as client:
         bounds = tasks(max(1, len(client.nthreads())))
-        futures = [client.submit(_task, spec_data, sw, ab, rows, chunk, e, pure=False)
+        futures = [client.submit(run_task, spec_data, sw, ab, rows, chunk, e, pure=False)
                    for ab, e in zip(bounds, samplers(sw, bounds, copies=True))]
         order = {fut.key: i for i, fut in enumerate(futures)}
         done: dict = {}
