@@ -216,14 +216,13 @@ def evaluate_chunk(spec_data: dict, sw: Sweep, start: int, stop: int, rows: bool
     index = np.arange(start, stop)
     valid = r["valid"]
     n_valid = np.count_nonzero(valid)
-    counts = {"evaluated": stop - start, "valid": n_valid,
-              "passed": np.count_nonzero(r["passed"]), "feasible": np.count_nonzero(feasible)}
+    counts = {"evaluated": stop - start, "valid": int(n_valid),
+              "passed": int(np.count_nonzero(r["passed"])),
+              "feasible": int(np.count_nonzero(feasible))}
     # a kernel flag ok_<CODE> holds on valid candidates only: the failures are the rest
-    fails = {k[3:]: n_valid - np.count_nonzero(r[k] if k != "ok_FACE_WIDTH_RATIO"
-                                               else r[k] & valid)
+    fails = {k[3:]: int(n_valid - np.count_nonzero(r[k] if k != "ok_FACE_WIDTH_RATIO"
+                                                   else r[k] & valid))
              for k in r if k.startswith("ok_")}
-    counts = {k: int(v) for k, v in counts.items()}
-    fails = {k: int(v) for k, v in fails.items()}
     keep = COLUMNS + ("S_Hmin",) + tuple(MATERIAL_COLUMNS[d.key] for d in sw.dims
                                          if d.choices) + tuple(
         d.key.split(".", 1)[1] for d in sw.dims if d.key in FIXED_KEYS)
