@@ -1,6 +1,7 @@
 """The performance goals of the command line, each figure beside its yardstick, in one run.
 
-    python benchmarks/goals.py [--runs 5] [--samples 1000000] [--quick]
+    python benchmarks/goals.py [--runs 5] [--samples 10000000] [--dask-samples N]
+                               [--only startup|sweeps|dask] [--quick]
 
 Every figure is the CPU time (user + system, ``getrusage(RUSAGE_CHILDREN)``) of whole
 cold processes, the way a user runs them; the median of ``--runs`` runs, each run
@@ -12,9 +13,11 @@ alike.  Compiled bytecode is kept in a temporary ``PYTHONPYCACHEPREFIX`` (as aft
    example specs against ``python -c pass`` (the interpreter floor) and
    ``python -c "import numpy"``; the slowest specs.
 2. sweeps: candidates per CPU-second end to end (GOST 21354 and ISO 6336 ratings, a Sobol
-   sample of ``--samples``), and the fixed cost of ``--samples`` over a grid sweep.
+   sample of ``--samples``), the peak memory (with and without a Parquet dataset), and the
+   fixed cost of ``--samples`` over a grid sweep.
 3. Dask: a 2-worker LocalCluster (:func:`geardesign.spur.sweep.local_cluster`) against one
-   local process, and whether their summaries are identical.
+   local process in paired runs of alternating order (the spread of their ratio), the CPU
+   of the workers and of the client, and whether their summaries are identical.
 """
 
 from __future__ import annotations
@@ -89,14 +92,26 @@ def startup(runs: int, quick: bool) -> None:
         print(f"     slowest: {name:44s} {t:6.3f} s")
 
 
+def peak(cmd: list[str]) -> tuple[float, float]:
+    """CPU seconds and peak resident memory [MB] of one run of ``cmd`` (``wait4``)."""
+    proc = subprocess.Popen(cmd, cwd=ROOT, env=ENV, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL)
+    _, _, use = os.wait4(proc.pid, 0)
+    return use.ru_utime + use.ru_stime, use.ru_maxrss / 1024.0
+
+
 def sweeps(runs: int, samples: int) -> None:
     print(f"2. sweeps (CPU, Sobol sample of {samples:,}, whole process)")
     floor = [PY, "-c", "pass"]
     for spec, name in (("sweep_spur_reducer.toml", "GOST 21354-87"),
                        ("sweep_spur_iso.toml", "ISO 6336:2019")):
-        t, f = paired(gd("sweep", f"specs/{spec}", "--samples", str(samples), "--seed", "1",
-                         "-q"), floor, max(1, runs // 3))
-        print(f"   {name:14s} {samples / t:12,.0f} candidates per CPU-second ({t:6.2f} s)")
+        cmd = gd("sweep", f"specs/{spec}", "--samples", str(samples), "--seed", "1", "-q")
+        t, f = paired(cmd, floor, max(1, runs // 3))
+        with tempfile.TemporaryDirectory() as tmp:
+            _, mb = peak(cmd)
+            _, mb_data = peak(cmd + ["--data", str(Path(tmp) / "rows.parquet")])
+        print(f"   {name:14s} {samples / t:12,.0f} candidates per CPU-second ({t:6.2f} s); "
+              f"peak memory {mb:5.0f} MB, {mb_data:5.0f} MB with a Parquet dataset")
     with tempfile.TemporaryDirectory() as tmp:
         small = Path(tmp) / "small.toml"
         base = (ROOT / "specs" / "sweep_spur_reducer.toml").read_text("utf-8")
@@ -107,7 +122,16 @@ def sweeps(runs: int, samples: int) -> None:
           f"(grid {g * 1e3:.0f} ms, sample {t * 1e3:.0f} ms)")
 
 
-def dask(samples: int) -> None:
+def _cpu_self() -> float:
+    r = resource.getrusage(resource.RUSAGE_SELF)
+    return r.ru_utime + r.ru_stime
+
+
+def dask(samples: int, runs: int) -> None:
+    """One local process against a 2-worker ``local_cluster``, ``runs`` paired runs in
+    alternating order (the load of a shared machine falls on both alike): the median wall
+    times and their ratio with its spread, the CPU seconds of each worker and of the client
+    with the scheduler (one process), and whether the summaries are identical."""
     try:
         import distributed
     except ImportError:
@@ -121,26 +145,44 @@ def dask(samples: int) -> None:
 
     data, sw = SW.load_sweep(load_toml(ROOT / "specs" / "sweep_spur_reducer.toml"), "bench",
                              (), samples, 1)
-    t0 = time.perf_counter()
-    one = SW.run_sweep(data, sw)
-    t_one = time.perf_counter() - t0
-    def on(cluster):
-        with cluster, distributed.Client(cluster) as client:
-            client.run(_warm)            # the workers' imports are start-up, not sweep
-            t0 = time.perf_counter()
-            res = SW.run_sweep(data, sw, scheduler=cluster.scheduler_address)
-            return time.perf_counter() - t0, res
-
-    t_two, two = on(SW.local_cluster(2))
-    t_dflt, _ = on(distributed.LocalCluster(n_workers=2, threads_per_worker=1,
-                                            dashboard_address=None))
+    _, warm = SW.load_sweep(load_toml(ROOT / "specs" / "sweep_spur_reducer.toml"), "bench",
+                            (), 4 * SW.CHUNK, 2)
+    ones, twos, ratios, cpu = [], [], [], []
+    with SW.local_cluster(2) as cluster, distributed.Client(cluster) as client:
+        client.run(_warm)                # the workers' imports are start-up, not sweep
+        SW.run_sweep(data, warm, scheduler=cluster.scheduler_address)
+        SW.run_sweep(data, warm)
+        for i in range(runs):
+            t_one = t_two = 0.0
+            for local in ((True, False) if i % 2 == 0 else (False, True)):
+                if local:
+                    t0 = time.perf_counter()
+                    one = SW.run_sweep(data, sw)
+                    t_one = time.perf_counter() - t0
+                    continue
+                w0, c0 = client.run(_cpu_self), _cpu_self()
+                t0 = time.perf_counter()
+                two = SW.run_sweep(data, sw, scheduler=cluster.scheduler_address)
+                t_two = time.perf_counter() - t0
+                w1, c1 = client.run(_cpu_self), _cpu_self()
+                cpu.append(([w1[k] - w0[k] for k in w0], c1 - c0))
+            ones.append(t_one)
+            twos.append(t_two)
+            ratios.append(t_one / t_two)
     same = one["counts"] == two["counts"] and all(
         np.array_equal(one[part][k], two[part][k]) for part in ("head", "front")
         for k in one[part])
-    print(f"3. Dask, {samples:,} candidates (wall): one local process {t_one:6.2f} s, "
-          f"2-worker local_cluster {t_two:6.2f} s = {t_one / t_two:4.2f} x faster "
-          f"(with Dask's default MALLOC_TRIM_THRESHOLD_ {t_dflt:6.2f} s); "
-          f"summaries {'identical' if same else 'DIFFER'}")
+    t_one, t_two = statistics.median(ones), statistics.median(twos)
+    workers = [statistics.median(w[i] for w, _ in cpu) for i in range(2)]
+    client_cpu = statistics.median(c for _, c in cpu)
+    print(f"3. Dask, {samples:,} candidates (wall, median of {runs} paired runs in "
+          f"alternating order): one local process {t_one:6.2f} s, 2-worker local_cluster "
+          f"{t_two:6.2f} s = {statistics.median(ratios):4.2f} x faster (runs "
+          f"{min(ratios):.2f} … {max(ratios):.2f}); summaries "
+          f"{'identical' if same else 'DIFFER'}")
+    print(f"   CPU of the cluster run: workers {workers[0]:.2f} s + {workers[1]:.2f} s, "
+          f"client and scheduler {client_cpu:.2f} s (on a machine with two idle cores the "
+          f"wall time is about the larger worker's)")
 
 
 def _warm() -> None:
@@ -151,14 +193,21 @@ def _warm() -> None:
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--runs", type=int, default=5)
-    ap.add_argument("--samples", type=int, default=1_000_000)
+    ap.add_argument("--samples", type=int, default=10_000_000)
+    ap.add_argument("--dask-samples", type=int, default=None,
+                    help="candidates of the Dask comparison (default: --samples)")
+    ap.add_argument("--only", choices=("startup", "sweeps", "dask"), default=None,
+                    help="run one goal only")
     ap.add_argument("--quick", action="store_true", help="every sixth example spec only")
     args = ap.parse_args()
     with tempfile.TemporaryDirectory() as cache:
         ENV["PYTHONPYCACHEPREFIX"] = cache
-        startup(args.runs, args.quick)
-        sweeps(args.runs, args.samples)
-    dask(args.samples)
+        if args.only in (None, "startup"):
+            startup(args.runs, args.quick)
+        if args.only in (None, "sweeps"):
+            sweeps(args.runs, args.samples)
+    if args.only in (None, "dask"):
+        dask(args.dask_samples or args.samples, max(3, args.runs))
     return 0
 
 

@@ -87,28 +87,30 @@ def inv_inverse_array(value, tol: float = 1e-12):
     v = np.asarray(value, dtype=float)
     if not np.all(v > 0.0) or not np.all(np.isfinite(v)):
         raise ValueError("the inverse involute needs values > 0")
+    # every element iterates on the whole array (no gathers of the unfinished ones, which
+    # cost more than the arithmetic); an element's result is fixed at its own last step
     lo = np.zeros_like(v)
     hi = np.full_like(v, 0.5 * math.pi)
     theta = np.minimum(np.cbrt(3.0 * v), 1.5)
     out = np.full_like(v, np.nan)
     todo = np.ones(v.shape, dtype=bool)
-    for _ in range(200):
-        t = np.tan(theta[todo])
-        f = t - theta[todo] - v[todo]
-        up = f > 0.0
-        h, lw = hi[todo], lo[todo]
-        h[up] = theta[todo][up]
-        lw[~up] = theta[todo][~up]
-        hi[todo], lo[todo] = h, lw
-        step = f / (t * t)
-        idx = np.flatnonzero(todo)
-        fin = np.abs(step) < tol
-        out[idx[fin]] = theta[idx[fin]] - step[fin]
-        new = theta[todo] - step
-        bad = ~((lw < new) & (new < h))
-        new[bad] = 0.5 * (lw[bad] + h[bad])
-        theta[todo] = new
-        todo[idx[fin]] = False
-        if not todo.any():
-            return out
+    with np.errstate(all="ignore"):     # finished elements keep iterating, unread
+        for _ in range(200):
+            t = np.tan(theta)
+            f = t - theta - v
+            up = f > 0.0
+            np.copyto(hi, theta, where=up)
+            np.copyto(lo, theta, where=~up)
+            step = f / (t * t)
+            fin = np.abs(step) < tol
+            fin &= todo
+            np.copyto(out, theta - step, where=fin)
+            todo &= ~fin
+            if not todo.any():
+                return out
+            theta -= step
+            bad = lo < theta
+            bad &= theta < hi
+            np.logical_not(bad, out=bad)
+            np.copyto(theta, 0.5 * (lo + hi), where=bad)
     raise ValueError("inverse involute did not converge")

@@ -282,9 +282,9 @@ def test_sweep_workers_are_capped_at_the_cores(tmp_path, monkeypatch):
 
 def test_an_unreachable_scheduler_is_one_line(tmp_path, monkeypatch):
     pytest.importorskip("dask.distributed")
-    from geardesign.spur import sweep as SW
+    from geardesign.spur import sweep_dask
 
-    monkeypatch.setattr(SW, "CONNECT_TIMEOUT", 1.0)      # 10 s in use
+    monkeypatch.setattr(sweep_dask, "CONNECT_TIMEOUT", 1.0)      # 10 s in use
     spec = SPECS / "sweep_spur_iso.toml"
     for address in ("tcp://127.0.0.1:9", "nonsense://x"):
         code, out, err = cli("sweep", spec, "--scheduler", address, "-f", "json")

@@ -21,7 +21,6 @@ SPLITTING = "being split (issue 28)"
 LONG = {
     # modules other work of issue 28 is splitting now
     "spur/calculator.py": SPLITTING + ": spur inputs, solve and report",
-    "spur/sweep.py": SPLITTING + ": the sweep re-checks variants through spur.solve",
     "drive/calculator.py": SPLITTING + ": the drive composes stages through solve()",
     "drive/lubrication.py": SPLITTING + ": the drive composes stages through solve()",
     "drive/shaft_analysis.py": SPLITTING + ": the drive composes stages through solve()",
