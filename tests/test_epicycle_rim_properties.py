@@ -5,6 +5,7 @@ import math
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from geardesign.epicycle_rim import floquet as F
 from geardesign.epicycle_rim import mathieu as M
 from geardesign.epicycle_rim import mesh
 
@@ -67,7 +68,7 @@ def test_floquet_trace_equals_an_adaptive_integration(a, q):
     y = solve_ivp(rhs, (0.0, math.pi), np.array([1.0, 0.0, 0.0, 1.0]), method="DOP853",
                   rtol=1e-12, atol=1e-13).y[:, -1]
     scale = max(1.0, float(np.abs(y).max()))
-    assert abs(M.floquet_trace(a, q) - (y[0] + y[3])) <= 1e-8 * scale
+    assert abs(F.floquet_trace(a, q) - (y[0] + y[3])) <= 1e-8 * scale
 
 
 @settings(max_examples=30, deadline=None)
@@ -79,16 +80,16 @@ def test_floquet_trace_is_two_on_the_characteristic_curves(order, q):
     kinds = ("a", "b") if order else ("a",)
     for kind in kinds:
         a = M.characteristic_value(kind, order, q)
-        m = M.half_period_matrix(a, q)
+        m = F.half_period_matrix(a, q)
         scale = max(1.0, float(abs(m).max()) ** 2)
-        assert abs(M.floquet_trace(a, q) - 2.0 * sign) <= 1e-10 * scale
+        assert abs(F.floquet_trace(a, q) - 2.0 * sign) <= 1e-10 * scale
 
 
 def test_magnus_integrator_is_of_sixth_order():
     """Halving the step divides the error of the half-period matrix by about 2⁶ = 64."""
     import numpy as np
 
-    ref = M.half_period_matrix(16.5, 3.0, steps=4096)
-    e = [float(np.abs(M.half_period_matrix(16.5, 3.0, steps=n) - ref).max())
+    ref = F.half_period_matrix(16.5, 3.0, steps=4096)
+    e = [float(np.abs(F.half_period_matrix(16.5, 3.0, steps=n) - ref).max())
          for n in (16, 32, 64)]
     assert 40.0 < e[0] / e[1] < 100.0 and 40.0 < e[1] / e[2] < 100.0
