@@ -42,6 +42,12 @@ NUMBERS = (0, -1.0, 5e-324, -5e-324, 2.2e-308, 1e-300, -1e-300, 1e300, -1e300,
 SCALES = (0.0, 1e-6, 0.01, 0.5, 2.0, 100.0, 1e6, -1.0)
 SWAPS = ("12", [2], {}, True, None)
 
+TEXT_FORMATS = tuple(f for f in FORMATS if f != "pdf")
+"""The formats :func:`geardesign.core.render.render` writes.  A PDF is the "html" report
+printed by Chromium (``render_pdf``, tested in ``tests/test_report_browser.py``); ``render``
+itself has no PDF and falls back to the table for that name, so "pdf" here would render
+the table a second time."""
+
 
 def spec_files(include_slow: bool = False) -> list[Path]:
     return [p for p in sorted(SPECS.glob("*.toml"))
@@ -157,9 +163,10 @@ NONFINITE_WORD = re.compile(r"(?<![\w.])[-+]?(nan|inf|infinity)(?![\w])", re.IGN
 """``nan``, ``inf``, ``-inf`` printed as a word in a message (not "information", not ∞)."""
 
 
-def judge(calc, spec, formats=FORMATS) -> str | None:
+def judge(calc, spec, formats=TEXT_FORMATS) -> str | None:
     """Compute a validated spec and render it in ``formats``: ``None`` when the outcome is
-    acceptable (a result or an input error naming keys), else a short signature."""
+    acceptable (a result or an input error naming keys), else a short signature.  "pdf"
+    stands for its content, the "html" report (:data:`TEXT_FORMATS`), rendered once."""
     try:
         res = calc.compute(spec)
     except ResultDomainError as exc:
@@ -175,7 +182,7 @@ def judge(calc, spec, formats=FORMATS) -> str | None:
     for c in res.checks:
         if NONFINITE_WORD.search(c.message):
             return f"non-finite in message of {c.code}: {c.message[:120]}"
-    for fmt in formats:
+    for fmt in dict.fromkeys("html" if f == "pdf" else f for f in formats):
         try:
             text = render([res], fmt)
         except Exception as exc:  # noqa: BLE001 - the signature of a renderer crash

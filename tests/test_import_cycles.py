@@ -11,6 +11,7 @@ and prints it.
 from __future__ import annotations
 
 import ast
+import functools
 from pathlib import Path
 
 import geardesign
@@ -37,7 +38,13 @@ def _resolve(name: str, level: int, module: str, is_pkg: bool) -> str:
 
 
 def import_graph() -> dict[str, set[str]]:
-    """Module -> the package's modules it imports anywhere in its source."""
+    """Module -> the package's modules it imports anywhere in its source (a copy of the
+    graph, parsed once for both tests)."""
+    return {m: set(t) for m, t in _parsed_graph().items()}
+
+
+@functools.cache
+def _parsed_graph() -> dict[str, set[str]]:
     mods = _modules()
     graph: dict[str, set[str]] = {m: set() for m in mods}
     for mod, path in mods.items():

@@ -153,21 +153,34 @@ def clean_value(v: Any) -> Any:
 _clean = clean_value
 
 
+def _unclean(v: Any) -> bool:
+    """Whether :func:`clean_value` changes ``v`` (a non-finite float, a tuple, or a list
+    holding one)."""
+    if isinstance(v, float):
+        return not math.isfinite(v)
+    if isinstance(v, tuple):
+        return True
+    return isinstance(v, list) and any(_unclean(x) for x in v)
+
+
 def cleaned(res: "Result") -> "Result":
     """A copy of ``res`` with every value (rows, inputs, table cells, check values and
     limits, parts) through :func:`clean_value`: what every renderer receives, so that the
-    table, Markdown, HTML, CSV and JSON reports show the same document."""
+    table, Markdown, HTML, CSV and JSON reports show the same document.  Rows and checks
+    (frozen) whose values are clean already are shared, not rebuilt."""
     from dataclasses import replace
 
+    def clean_row(r: Row) -> Row:
+        return replace(r, value=clean_value(r.value)) if _unclean(r.value) else r
+
     out = copy.copy(res)
-    out.input_rows = [replace(r, value=clean_value(r.value)) for r in res.input_rows]
-    out.sections = [Section(s.key, s.title, [replace(r, value=clean_value(r.value))
-                                             for r in s.rows]) for s in res.sections]
+    out.input_rows = [clean_row(r) for r in res.input_rows]
+    out.sections = [Section(s.key, s.title, [clean_row(r) for r in s.rows]) for s in res.sections]
     out.tables = [DataTable(t.key, t.title, t.columns,
                             [{k: clean_value(v) for k, v in row.items()} for row in t.rows])
                   for t in res.tables]
     out.checks = [replace(c, value=clean_value(c.value), limit=clean_value(c.limit))
-                  for c in res.checks]
+                  if _unclean(c.value) or _unclean(c.limit) else c for c in res.checks]
     out.parts = [(k, title, cleaned(part)) for k, title, part in res.parts]
     return out
 

@@ -1,8 +1,8 @@
 """Parametric resonance of the ring: the Mathieu equation, its Ince-Strutt stability chart,
 and Floquet checks (paper B).
 
-Pure functions on plain data (floats, lists); numpy/scipy only in :func:`floquet_trace_ode`
-and :func:`floquet_band`, the optional numerical check.
+Pure functions on plain data (floats, lists); the optional numerical Floquet check is
+:mod:`geardesign.epicycle_rim.floquet`.
 
 Paper B writes the ring's motion as q̈ + k0²(1 − μ cos Ωt) q = 0 (eq. (5)) and, with τ = Ωt/2,
 
@@ -296,56 +296,3 @@ def stepwise_band(segments: list[tuple[float, float]], ratio0: float, width: flo
     left = rs[i0] if i0 == 0 else edge(rs[i0 - 1], rs[i0])
     right = rs[i1] if i1 == samples - 1 else edge(rs[i1 + 1], rs[i1])
     return left, right
-
-
-# ----------------------------------------------------------------- Floquet: ODE check (scipy)
-
-
-def floquet_trace_ode(a: float, q: float) -> float:
-    """Trace of the monodromy matrix of Mathieu's equation over τ ∈ [0, π], by numerical
-    integration of the two fundamental solutions (scipy ``solve_ivp``, DOP853).
-
-    |tr| < 2 stable, > 2 unstable; tr = ±2 exactly on the characteristic curves.
-
-    References
-    ----------
-    Floquet theory; Yaglinskyi et al. 2017, eq. (6).
-    """
-    import numpy as np
-    from scipy.integrate import solve_ivp
-
-    def rhs(t, y):
-        k = a - 2.0 * q * math.cos(2.0 * t)
-        return [y[1], -k * y[0], y[3], -k * y[2]]
-
-    sol = solve_ivp(rhs, (0.0, math.pi), np.array([1.0, 0.0, 0.0, 1.0]), method="DOP853",
-                    rtol=1e-12, atol=1e-13)
-    y = sol.y[:, -1]
-    return float(y[0] + y[3])
-
-
-def floquet_band(order: int, mu: float, guess: Band) -> tuple[float, float] | None:
-    """Region ``order`` along b = μa/2 located independently by the ODE Floquet trace:
-    roots of |tr M(a)| − 2 bracketed around the edges of ``guess`` (scipy ``brentq``).
-    None if the region is too narrow to bracket (width < 1e-7 in a), or if an edge cannot
-    be bracketed (the trace does not change sign within a quarter width of it, as at high
-    orders where the region is extremely thin): the band is then not confirmed.
-    """
-    from scipy.optimize import brentq
-
-    width = guess.a_hi - guess.a_lo
-    if width < 1e-7:
-        return None
-    d = 0.25 * width
-
-    def g(a: float) -> float:
-        return abs(floquet_trace_ode(a, 0.5 * mu * a)) - 2.0
-
-    edges = []
-    for edge in (guess.a_lo, guess.a_hi):
-        a0, a1 = edge - d, edge + d
-        g0, g1 = g(a0), g(a1)
-        if g0 == 0.0 or g1 == 0.0 or (g0 < 0.0) == (g1 < 0.0):
-            return None
-        edges.append(brentq(g, a0, a1, xtol=1e-12))
-    return edges[0], edges[1]

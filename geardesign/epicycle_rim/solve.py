@@ -16,6 +16,7 @@ from geardesign.epicycle_rim import resonance as R
 from geardesign.epicycle_rim import rim
 from geardesign.epicycle_rim import stress as ST
 from geardesign.epicycle_rim.fatigue_inputs import Fatigue, part_endurance
+from geardesign.epicycle_rim.floquet import floquet_band
 from geardesign.epicycle_rim.inputs import Inputs, Planets, Ring, Vehicle, sun_planet_pair
 from geardesign.fatigue import gost25504 as g25
 from geardesign.fatigue import probability as FP
@@ -299,7 +300,7 @@ def _resonance(inp: Inputs) -> ResonanceResult:
     chart = M.stability_chart(max(orders), b_max, rz.chart_points)
     floquet = dev = None
     if rz.floquet_check:
-        floquet = tuple(M.floquet_band(n, exc.mu, b) for n, b in zip(orders, bands))
+        floquet = tuple(floquet_band(n, exc.mu, b) for n, b in zip(orders, bands))
         dev = max((max(abs(fb[0] - b.a_lo), abs(fb[1] - b.a_hi))
                    for fb, b in zip(floquet, bands) if fb is not None), default=0.0)
     actual = None

@@ -202,7 +202,7 @@ RESONANCE = Table("resonance", "parametric resonance of the ring (Mathieu)", (
     Field("harmonics", "integer", "number of stiffness harmonics reported", default=6,
           minimum=1, maximum=50),
     Field("floquet_check", "boolean", "check the Mathieu bands by numerical integration "
-          "(scipy; slower)", default=False),
+          "(Floquet trace, a few milliseconds)", default=False),
     Field("chart_b_max", "number", "largest b of the Ince-Strutt chart data; default "
           "covers the working line", "-", "b_max", default=None, minimum=0.01, maximum=100),
     Field("chart_points", "integer", "points of the Ince-Strutt chart data", default=21,

@@ -174,7 +174,8 @@ def report(res: Result, inp: Inputs, sol: Solution, methods: tuple) -> Result:
     springs)."""
     res.methods = [methods[0]] + (list(methods[1:]) if sol.springs else [])
     if inp.startup is not None and inp.startup.method != "closed_form":
-        res.methods.append("numerical integration (scipy)")
+        res.methods.append(S.METHOD_EXACT if inp.startup.motor.model == "constant"
+                           else S.METHOD_ODE)
     if sol.motor is not None:
         _motor_rows(res, sol.motor, inp.motor.nominal_torque is not None)
     for sr in sol.springs:

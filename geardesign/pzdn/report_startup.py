@@ -109,28 +109,29 @@ def _closed_form_rows(res: Result, r: StartupResult) -> None:
 
 def _ode_rows(res: Result, r: StartupResult) -> None:
     m, D, sim = r.model, S.THESIS_D, r.sim
+    src = S.ode(sim)
     o = res.section("ode", "Numerical integration")
-    o.add("T12max", sim.T12_max, "N·m", "T12max", "peak link torque 1-2", S.ODE)
-    o.add("T13max", sim.T13_max, "N·m", "T13max", "peak link torque 1-3", S.ODE)
-    o.add("t12max", sim.t12_max, "s", "t(T12max)", "time of the peak 1-2", S.ODE)
-    o.add("t13max", sim.t13_max, "s", "t(T13max)", "time of the peak 1-3", S.ODE)
+    o.add("T12max", sim.T12_max, "N·m", "T12max", "peak link torque 1-2", src)
+    o.add("T13max", sim.T13_max, "N·m", "T13max", "peak link torque 1-3", src)
+    o.add("t12max", sim.t12_max, "s", "t(T12max)", "time of the peak 1-2", src)
+    o.add("t13max", sim.t13_max, "s", "t(T13max)", "time of the peak 1-3", src)
     o.add("k12", sim.T12_max / m.T2, "-", "k12", "dynamic load coefficient T12max/T2",
           D + " eq. (28)")
     o.add("k13", sim.T13_max / m.T3, "-", "k13", "dynamic load coefficient T13max/T3",
           D + " eq. (28)")
     o.add("t_break", [x if x is not None else math.nan for x in sim.t_break], "s",
-          "t2, t3", "first break-away of masses 2, 3", S.ODE)
+          "t2, t3", "first break-away of masses 2, 3", src)
     o.add("sticks", list(sim.sticks), "-", "n_stick", "times masses 2, 3 came to rest "
-          "again", S.ODE)
+          "again", src)
     o.add("damping", list(sim.c), "N·m*s/rad", "c12, c13", "link damping coefficients",
           "2ζ√(C·J1Jj/(J1+Jj))")
     o.add("final_speeds", list(sim.final_speeds), "rad/s", "ω1, ω2, ω3",
-          "speeds at t_end", S.ODE)
+          "speeds at t_end", src)
 
 
 def _history_rows(res: Result, r: StartupResult) -> None:
     h = res.section("history", "Time histories")
-    src = S.ODE if r.sim is not None else S.THESIS_D
+    src = S.ode(r.sim) if r.sim is not None else S.THESIS_D
     for key, val, unit, name in (("t", r.history[0], "s", "time"),
                                  ("T12", r.history[1], "N·m", "link torque 1-2"),
                                  ("T13", r.history[2], "N·m", "link torque 1-3"),
@@ -182,13 +183,13 @@ def _checks(res: Result, si: Startup, r: StartupResult) -> None:
                 "METHODS_AGREE", dev <= AGREEMENT, "warning",
                 f"closed form and integration differ by {100 * dev:.2f} % (> 0.5 %) in the "
                 f"peaks within t_end: report it as a bug", f"closed form and integration agree "
-                f"within {100 * dev:.3f} % (peaks within t_end)", dev, AGREEMENT, S.ODE))
+                f"within {100 * dev:.3f} % (peaks within t_end)", dev, AGREEMENT, S.ode(sim)))
         else:
             res.checks.append(check(
                 "METHODS_AGREE", False, "info",
                 "closed form and integration solve different problems here (torque rise, "
                 "motor characteristic, damping or sticking masses): their peaks are not "
-                "expected to agree", "", None, None, S.ODE))
+                "expected to agree", "", None, None, S.ode(sim)))
     if motor.model == "constant" and motor.rise_time == 0.0 and (
             sim is None or si.damping_ratio == 0.0):
         res.checks.append(check(
@@ -201,7 +202,7 @@ def _checks(res: Result, si: Startup, r: StartupResult) -> None:
 
 def _comparison_rows(res: Result, si: Startup, r: StartupResult) -> None:
     m = r.model
-    src_cmp = S.ODE if si.ode else S.THESIS_D + " eq. (27)"
+    src_cmp = S.ode(r.sim) if r.sim is not None else S.THESIS_D + " eq. (27)"
     base = r.peaks
     if si.drive_C is not None:
         p0 = r.without

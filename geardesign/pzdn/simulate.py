@@ -2,7 +2,7 @@
 with what the closed form leaves out: a motor torque that rises over a time or follows a
 motor characteristic, viscous damping in the links, and resisting moments that are
 reactive (a mass that comes to rest sticks until its link torque exceeds the resisting
-moment again).  scipy is imported inside :func:`simulate` only (about 1 s).
+moment again).
 
 The equations are those of the thesis' model ([Lopukhov] §2.2):
 
@@ -12,10 +12,23 @@ The equations are those of the thesis' model ([Lopukhov] §2.2):
 
 with the damping coefficient of a link c_1j = 2ζ·√(C_1j·J1·Jj/(J1 + Jj)) (ζ the damping
 ratio of the link's own two-mass oscillator).  Integrated piecewise between events
-(break-away, sticking, end of the torque rise) by the DOP853 Runge-Kutta method
-(rtol 1e-12, so that the results do not depend on the step sequence beyond
-~1e-10) with dense output; maxima are taken on a fine grid of the dense output and
-refined by a parabola through the three samples around the largest one.
+(break-away, sticking, end of the torque rise); maxima are taken on a fine grid of the
+solution and refined by a parabola through the three samples around the largest one.
+
+Two integrators, one event logic (:func:`simulate`):
+
+* a constant motor torque (with or without its linear rise) leaves the model linear between
+  events, ẏ = A·y + b₀ + b₁·t, whose exact solution is the matrix exponential of the
+  augmented system (:mod:`geardesign.pzdn.linear`): no step-size error, numpy only, a few
+  hundredths of a second for a whole comparison with its stiffness sweep;
+* a motor characteristic (Kloss, curve) makes it non-linear: the DOP853 Runge-Kutta method
+  of scipy (rtol 1e-12, so that the results do not depend on the step sequence beyond
+  ~1e-10) with dense output, scipy imported only then (about 1 s).
+
+The exact path finds the events as scipy does: a sign change of the event function between
+two steps in the direction asked for (steps of 1/32 of the shortest period here), the
+earliest one refined to ~4 ulp.  The model is linear and the exponential exact, so the
+choice costs no precision (the tests compare both paths on the same model).
 """
 
 from __future__ import annotations
@@ -23,6 +36,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+from geardesign.pzdn.linear import exact_segment, link_row, linear_system
 from geardesign.pzdn.startup import ThreeMass
 
 
@@ -94,6 +108,7 @@ class Simulation:
     w_min: list                       # lowest speeds of masses 2, 3 after break-away
     final_speeds: tuple
     segments: list = field(default_factory=list)   # (t0, t1, dense solution)
+    exact: bool = False               # the linear model's exact solution (else DOP853)
 
     def state(self, t):
         """State vectors (φ1, ω1, φ2, ω2, φ3, ω3) at the times ``t`` (array)."""
@@ -109,23 +124,30 @@ class Simulation:
         return out
 
 
+# ----------------------------------------------------------------- the simulation
+
+
 def simulate(m: ThreeMass, motor: Motor, t_end: float, zeta: float = 0.0, stick: bool = True,
              grid_step: float | None = None) -> Simulation:
     """Integrate the start-up from rest over 0 … t_end [s].
 
     ``m.T1`` is not used (the motor gives the torque); ``grid_step`` is the spacing of the
     samples on which the maxima are searched (default: 1/50 of the shortest period of the
-    stage-3 modes, at most t_end/2000)."""
+    stage-3 modes, at most t_end/2000).  A constant motor torque (rising linearly over
+    ``motor.rise_time`` or not) is integrated exactly (:func:`linear_system`), in steps of
+    1/32 of that period in which the events are detected; a motor characteristic by
+    scipy's DOP853 (module docstring)."""
     import numpy as np
-    from scipy.integrate import solve_ivp
 
     from geardesign.pzdn.startup import frequencies, stage_matrix
 
     c12 = damping(m.C12, m.J1, m.J2, zeta)
     c13 = damping(m.C13, m.J1, m.J3, zeta)
     beta_max = frequencies(stage_matrix(m, True, True)[0])[0]
+    period = 2.0 * math.pi / beta_max
     if grid_step is None:
-        grid_step = min(2.0 * math.pi / beta_max / 50.0, t_end / 2000.0)
+        grid_step = min(period / 50.0, t_end / 2000.0)
+    linear = motor.model == "constant"
 
     def links(y):
         T12 = m.C12 * (y[0] - y[2]) + c12 * (y[1] - y[3])
@@ -147,57 +169,77 @@ def simulate(m: ThreeMass, motor: Motor, t_end: float, zeta: float = 0.0, stick:
             dy[5] = (T13 - m.T3) / m.J3
         return dy
 
-    def ev_break(j):
-        res = (m.T2, m.T3)[j]
+    def event_rows():
+        """(row over z, direction, kind, j): break-away of a mass at rest (its link torque
+        rises through its resisting moment), stop of a moving one (its speed falls through
+        0) when masses stick."""
+        out = []
+        for j, (C, cj, T) in enumerate(((m.C12, c12, m.T2), (m.C13, c13, m.T3))):
+            if not moving[j]:
+                row = link_row(C, cj, j)
+                row[7] = -T
+                out.append((row, 1.0, "break", j))
+            elif stick:
+                row = np.zeros(8)
+                row[3 + 2 * j] = 1.0
+                out.append((row, -1.0, "stop", j))
+        return out
 
-        def g(t, y):
-            return links(y)[j] - res
-        g.terminal, g.direction = True, 1.0
-        return g
+    def ode_segment(t, t_stop, y, events):
+        from scipy.integrate import solve_ivp
 
-    def ev_stop(j):
-        def g(t, y):
-            return y[3 + 2 * j]
-        g.terminal, g.direction = True, -1.0
-        return g
+        def ev(row, direction):
+            def g(t, y):
+                return float(row[:6] @ y + row[6] * t + row[7])
+            g.terminal, g.direction = True, direction
+            return g
+
+        sol = solve_ivp(rhs, (t, t_stop), y, method="DOP853", rtol=1e-12, atol=1e-14,
+                        dense_output=True, events=[ev(r, d) for r, d, _, _ in events] or None,
+                        max_step=period / 4.0)
+        fired = None
+        if sol.status == 1:
+            fired = next(i for i, te in enumerate(sol.t_events) if len(te))
+        return float(sol.t[-1]), sol.y[:, -1].copy(), fired, sol.sol
+
+    def torque_line(t):
+        """T_m = T1·min(t/t_r, 1) on the segment that starts at t: (constant, slope)."""
+        if 0.0 < motor.rise_time and t < motor.rise_time - 1e-12:
+            return 0.0, motor.T1 / motor.rise_time
+        return motor.T1, 0.0
 
     y = np.zeros(6)
     t = 0.0
     sim = Simulation(-math.inf, -math.inf, 0.0, 0.0, [None, None], [0, 0],
-                     [math.inf, math.inf], ())
+                     [math.inf, math.inf], (), exact=linear)
     breaks = [motor.rise_time] if 0.0 < motor.rise_time < t_end else []  # kink of the ramp
     guard = 0
     while t < t_end - 1e-12 and guard < 10000:
         guard += 1
-        events, kinds = [], []
-        for j in (0, 1):
-            if not moving[j]:
-                events.append(ev_break(j))
-                kinds.append(("break", j))
-            elif stick:
-                events.append(ev_stop(j))
-                kinds.append(("stop", j))
+        events = event_rows()
         t_stop = min([b for b in breaks if b > t + 1e-12] + [t_end])
-        sol = solve_ivp(rhs, (t, t_stop), y, method="DOP853", rtol=1e-12, atol=1e-14,
-                        dense_output=True, events=events or None,
-                        max_step=2.0 * math.pi / beta_max / 4.0)
-        t_new = float(sol.t[-1])
+        if linear:
+            a = linear_system(m, (c12, c13), moving, torque_line(t))
+            t_new, z, fired, sol = exact_segment(
+                a, t, t_stop, np.concatenate((y, [t, 1.0])),
+                [(r, d) for r, d, _, _ in events], period / 32.0)
+            y_new = z[:6].copy()
+        else:
+            t_new, y_new, fired, sol = ode_segment(t, t_stop, y, events)
         if t_new > t:
-            sim.segments.append((t, t_new, sol.sol))
-        y = sol.y[:, -1].copy()
-        if sol.status == 1:
-            for (kind, j), te in zip(kinds, sol.t_events):
-                if len(te) == 0:
-                    continue
-                if kind == "break":
-                    moving[j] = True
-                    if sim.t_break[j] is None:
-                        sim.t_break[j] = float(te[0])
-                else:
-                    y[3 + 2 * j] = 0.0
-                    if links(y)[j] < (m.T2, m.T3)[j]:
-                        moving[j] = False
-                        sim.sticks[j] += 1
+            sim.segments.append((t, t_new, sol))
+        y = y_new
+        if fired is not None:
+            _, _, kind, j = events[fired]
+            if kind == "break":
+                moving[j] = True
+                if sim.t_break[j] is None:
+                    sim.t_break[j] = t_new
+            else:
+                y[3 + 2 * j] = 0.0
+                if links(y)[j] < (m.T2, m.T3)[j]:
+                    moving[j] = False
+                    sim.sticks[j] += 1
         t = t_new
 
     # maxima on a fine grid of the dense output, refined by a parabola

@@ -18,6 +18,14 @@ SHIGLEY = "Shigley §10-12"
 GOST9389 = "GOST 9389-75"
 MECHANICS = "beam theory"
 ODE = "numerical integration (scipy solve_ivp, DOP853)"
+ODE_EXACT = "exact solution of the linear model (matrix exponential)"
+METHOD_ODE = "numerical integration (scipy)"
+METHOD_EXACT = "numerical integration (exact, matrix exponential)"
+
+
+def ode(sim) -> str:
+    """The source of the results of a start-up integration (:class:`.simulate.Simulation`)."""
+    return ODE_EXACT if sim.exact else ODE
 KLOSS = "Kloss formula"
 SERIES = "series springs 1/C = Σ 1/C_i"
 SPUR = "spur calculator (GOST 21354-87)"

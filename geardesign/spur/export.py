@@ -122,14 +122,15 @@ def _write_dxf(m, g, path: Path) -> Path:
 def _svg_path(pts: np.ndarray, box=None, digits: int = 6) -> str:
     """An outline as SVG path data (y up in the drawing is −y in SVG), closed; with ``box``
     (xmin, ymin, xmax, ymax) only the runs of points inside it, each an open subpath."""
+    xy = pts.tolist()      # Python floats: formatted as numpy's, without the per-item cost
     if box is None:
-        head = f"M{pts[0, 0]:.{digits}f},{-pts[0, 1]:.{digits}f}"
-        body = " ".join(f"L{x:.{digits}f},{-y:.{digits}f}" for x, y in pts[1:])
+        head = f"M{xy[0][0]:.{digits}f},{-xy[0][1]:.{digits}f}"
+        body = " ".join(f"L{x:.{digits}f},{-y:.{digits}f}" for x, y in xy[1:])
         return f"{head} {body} Z"
     inside = ((pts[:, 0] >= box[0]) & (pts[:, 0] <= box[2]) & (pts[:, 1] >= box[1])
               & (pts[:, 1] <= box[3]))
     out, pen = [], False
-    for (x, y), ok in zip(pts, inside):
+    for (x, y), ok in zip(xy, inside.tolist()):
         if ok:
             out.append(f"{'L' if pen else 'M'}{x:.{digits}f},{-y:.{digits}f}")
         pen = bool(ok)

@@ -6,7 +6,7 @@ block is kept in the public Fortran 90 transcription GitHub ``victorlei/smop-tes
 file ``f2matlab/comp_spec_func/mcva2.f90`` (commit f79e9aad91a8068dce7b5ad011ddc213836ca750).
 Tolerance: 1e-8 (one unit of the ninth decimal plus rounding).
 
-The numerical Floquet check (scipy) must give |trace| = 2 on these boundaries: a_{2m}, b_{2m}
+The numerical Floquet check (:func:`geardesign.epicycle_rim.floquet.floquet_trace`) must give |trace| = 2 on these boundaries: a_{2m}, b_{2m}
 are π-periodic (trace +2), a_{2m+1}, b_{2m+1} π-antiperiodic (trace −2).  For m <= 2 at
 q = 25 the solutions grow by e^{10} over a period and the trace changes by more than 1e-5 per
 unit of the ninth printed decimal, so those orders are not used for this check.
@@ -14,6 +14,7 @@ unit of the ninth printed decimal, so those orders are not used for this check.
 
 import pytest
 
+from geardesign.epicycle_rim import floquet as F
 from geardesign.epicycle_rim import mathieu as M
 
 Q = 25.0
@@ -34,8 +35,7 @@ def test_characteristic_values_q25(m):
 
 @pytest.mark.parametrize("m", [3, 4, 7, 12])
 def test_floquet_trace_on_the_boundaries(m):
-    pytest.importorskip("scipy")
     sign = 1.0 if m % 2 == 0 else -1.0
-    assert M.floquet_trace_ode(A[m], Q) == pytest.approx(2.0 * sign, abs=1e-5)
+    assert F.floquet_trace(A[m], Q) == pytest.approx(2.0 * sign, abs=1e-5)
     if m:
-        assert M.floquet_trace_ode(B[m], Q) == pytest.approx(2.0 * sign, abs=1e-5)
+        assert F.floquet_trace(B[m], Q) == pytest.approx(2.0 * sign, abs=1e-5)
