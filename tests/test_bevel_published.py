@@ -76,6 +76,76 @@ def _result(path):
     return compute(spec)
 
 
+# ---------------------------------------------------------------------------------------
+# [KHK]: the straight bevel examples of KHK's gear technical reference, m = 3 mm (outer),
+# z = 20/40, b = 22 mm, α = 20°, Σ = 90°, in its two forms: "standard" (h_a = 1.00·m,
+# h_f = 1.25·m, tip and root cones from the pitch apex: depth = "tapered") and "Gleason"
+# (h_a2 = 0.54·m + 0.46·m/(u·cos δ1/cos δ2) = 1.965 mm, h_a1 = 2·m − h_a2 = 4.035 mm,
+# whole depth 2.188·m: x1 = 0.345, c* = 0.188 in GOST terms, and the tip cone of each member
+# parallel to the root cone of the other: depth = "constant_clearance", the form of
+# [GOST19624]).  The printed values as transcribed by the open unit tests of
+# [BolsoverBevel]; X = B (apex to the outer tip circle plane), X_b = b_ax, d_i = d_ai.
+# (value, tolerance): half a unit of the last printed digit.
+
+KHK_STANDARD = {
+    "d_e1": (60.0, 5e-6), "d_e2": (120.0, 5e-6), "R_e": (67.08204, 5e-6),
+    "delta1_deg": (26.56505, 5e-6), "delta2_deg": (63.43495, 5e-6),
+    "h_ae1": (3.0, 5e-6), "h_ae2": (3.0, 5e-6), "h_fe1": (3.75, 5e-6), "h_fe2": (3.75, 5e-6),
+    "theta_f1_deg": (3.19960, 5e-6), "theta_f2_deg": (3.19960, 5e-6),
+    "theta_a1_deg": (2.56064, 5e-6), "theta_a2_deg": (2.56064, 5e-6),
+    "delta_a1_deg": (29.12569, 5e-6), "delta_a2_deg": (65.99559, 5e-6),
+    "delta_f1_deg": (23.36545, 5e-6), "delta_f2_deg": (60.23535, 5e-6),
+    "d_ae1": (65.3666, 5e-5), "d_ae2": (122.6833, 5e-5),
+    "B1": (58.6584, 5e-5), "B2": (27.3167, 5e-5),
+    "b_ax1": (19.2374, 5e-5), "b_ax2": (8.9587, 5e-5),
+    "d_ai1": (43.9292, 5e-5), "d_ai2": (82.4485, 5e-5),
+    # Tredgold's back-cone gear: d_v = d_e/cos δ, z_v = z/cos δ (printed 22.3606 and
+    # 268.3281: the transcription cuts 22.36068 and 268.32816 rather than rounding them, so
+    # one unit of the last digit)
+    "d_ve1": (67.082, 5e-4), "d_ve2": (268.3281, 1e-4),
+    "z_v1": (22.3606, 1e-4), "z_v2": (89.4427, 5e-5),
+}
+
+KHK_GLEASON = {
+    "R_e": (67.08204, 5e-6),
+    "h_ae1": (4.035, 5e-6), "h_ae2": (1.965, 5e-6), "h_fe1": (2.529, 5e-6),
+    "h_fe2": (4.599, 5e-6),
+    "theta_f1_deg": (2.15903, 5e-6), "theta_f2_deg": (3.92194, 5e-6),
+    "theta_a1_deg": (3.92194, 5e-6), "theta_a2_deg": (2.15903, 5e-6),
+    "delta_a1_deg": (30.48699, 5e-6), "delta_a2_deg": (65.59398, 5e-6),
+    "d_ae1": (67.21803, 5e-6), "d_ae2": (121.75755, 5e-6),
+}
+
+
+def _khk(gleason: bool):
+    c, x, depth = (0.188, 0.345, "constant_clearance") if gleason else (0.25, 0.0, "tapered")
+    return pair_geometry(Pair(False, 3.0, "outer", 20, 40, math.pi / 2, 22.0, 0.0, "right",
+                              math.radians(20.0), 1.0, c, 0.2, x, 0.0, depth))
+
+
+def _khk_ours(g) -> dict[str, float]:
+    out = {"R_e": g.R_e}
+    for i, m in enumerate(g.members, 1):
+        for key in ("d_e", "h_ae", "h_fe", "d_ae", "B", "b_ax", "d_ai", "z_v"):
+            out[f"{key}{i}"] = getattr(m, key)
+        for key in ("delta", "theta_a", "theta_f", "delta_a", "delta_f"):
+            out[f"{key}{i}_deg"] = math.degrees(getattr(m, key))
+        out[f"d_ve{i}"] = m.d_e / math.cos(m.delta)
+    return out
+
+
+@pytest.mark.parametrize("key", sorted(KHK_STANDARD))
+def test_khk_standard_straight_bevel(key):
+    value, tol = KHK_STANDARD[key]
+    assert _khk_ours(_khk(False))[key] == pytest.approx(value, abs=tol)
+
+
+@pytest.mark.parametrize("key", sorted(KHK_GLEASON))
+def test_khk_gleason_straight_bevel(key):
+    value, tol = KHK_GLEASON[key]
+    assert _khk_ours(_khk(True))[key] == pytest.approx(value, abs=tol)
+
+
 @pytest.mark.parametrize("name", ["bevel_straight_gost.toml", "bevel_spiral_iso.toml"])
 def test_every_bevel_result_says_what_is_not_verified(name):
     """Until a part is checked against a published example, the report says so: one

@@ -45,6 +45,8 @@ class Member:
     d_am: float           # mean tip diameter
     d_fm: float           # mean root diameter
     B: float              # pitch apex to the plane of the outer tip circle
+    b_ax: float           # axial length of the face cone over the face width
+    d_ai: float           # inner tip diameter
     s_e: float            # outer transverse circular tooth thickness (straight) / mean normal
     s_c: float            # chordal tooth thickness at the section of s_e
     h_c: float            # chordal height at the section of s_e
@@ -211,8 +213,11 @@ def pair_geometry(p: Pair) -> Geometry:
     θ_f = atan(h_f/R) at that section, θ_a from the mating member's θ_f (constant
     clearance) or atan(h_a/R) (tapered); heights elsewhere follow the cones:
     h(R) = h_basis + (R − R_basis)·tan θ.  Diameters d = m_t z, d_a = d + 2 h_a cos δ,
-    d_f = d − 2 h_f cos δ; B = R_e cos δ − h_ae sin δ.  [GOST19624] table 1;
-    [GOST19326] table 1; [ISO23509] §5.
+    d_f = d − 2 h_f cos δ; B = R_e cos δ − h_ae sin δ; along the face cone over the face
+    width b the axial length b_ax = b cos δ_a/cos θ_a and the inner tip diameter
+    d_ai = d_ae − 2 b sin δ_a/cos θ_a.  [GOST19624] table 1; [GOST19326] table 1;
+    [ISO23509] §5; checked for straight teeth of both depth forms by [KHK] (standard and
+    Gleason straight bevel examples).
     """
     d1, d2 = pitch_angles(p.z1, p.z2, p.Sigma)
     m_te, m_tm, m_nm, R_e, R_m = modules(p, d1)
@@ -239,6 +244,8 @@ def pair_geometry(p: Pair) -> Geometry:
         h_fm = h_f[i] - (R_basis - R_m) * tf
         d_e, d_m = m_te * z, m_tm * z
         c = math.cos(dl)
+        d_ae = d_e + 2.0 * h_ae * c
+        face = p.b / math.cos(th_a[i])   # the face cone's length over the face width
         # thickness: outer transverse (straight) or mean normal (spiral), [GOST19624]
         # table 4, [GOST19326] table 4
         s = (0.5 * math.pi + 2.0 * x * math.tan(p.alpha_n) + xt) * m_basis
@@ -253,8 +260,10 @@ def pair_geometry(p: Pair) -> Geometry:
                               p.alpha_n, 0.0) if outer else math.nan)
         parts.append(Member(
             z, x, xt, dl, th_a[i], th_f[i], dl + th_a[i], dl - th_f[i], d_e, d_m, h_ae, h_fe,
-            h_am, h_fm, d_e + 2.0 * h_ae * c, d_e - 2.0 * h_fe * c, d_m + 2.0 * h_am * c,
-            d_m - 2.0 * h_fm * c, R_e * c - h_ae * math.sin(dl), s, s_c, h_c,
+            h_am, h_fm, d_ae, d_e - 2.0 * h_fe * c, d_m + 2.0 * h_am * c,
+            d_m - 2.0 * h_fm * c, R_e * c - h_ae * math.sin(dl),
+            face * math.cos(dl + th_a[i]), d_ae - 2.0 * face * math.sin(dl + th_a[i]),
+            s, s_c, h_c,
             z_v, z_v / (math.cos(beta_vb) ** 2 * math.cos(p.beta_m)), d_v, d_va,
             d_v * math.cos(alpha_vt), d_vf,
             undercut_shift_limit(z_v, alpha_vt, p.beta_m, rack), s_am, s_ae))
