@@ -171,8 +171,7 @@ def test_every_bevel_result_says_what_is_not_verified(name):
 # printed values as transcribed, with their inputs, in the open calculator [ISO10300Calc]
 # (its self-test of sample 1).  The cutter edge radius (ρ_a0 = 0.8 mm pinion, 1.2 mm wheel)
 # and the thickness modification (x_sm = 0.036 pinion, −0.055 wheel) differ per member in
-# the sample, while geardesign gives the wheel the pinion's ρ_a0* and −x_τ1: the pair is
-# rated twice, with the pinion's data (pinion rows) and with the wheel's (wheel rows).
+# the sample: entered per member (root_radius2, xt2 = 2·x_sm2), the pair is rated once.
 # (value, tolerance): half a unit of the last printed digit unless noted.
 
 TR_SAMPLE1 = {
@@ -204,14 +203,14 @@ TR_SAMPLE1 = {
 }
 
 
-def _tr_sample1(rho_a0_mm: float, x_sm1: float):
+def _tr_sample1():
     from geardesign.bevel import rating as R
     from geardesign.bevel.inputs import Inputs, Load, Material, Rating
 
     m_mn = 3.2133
     pair = Pair(True, 176.893 / 39, "outer", 14, 39, math.pi / 2, 25.4, math.radians(35.0),
-                "left", math.radians(20.0), 1.0, 0.25, rho_a0_mm / m_mn, 0.505, 2.0 * x_sm1,
-                "constant_clearance")
+                "left", math.radians(20.0), 1.0, 0.25, 0.8 / m_mn, 0.505, 2.0 * 0.036,
+                "constant_clearance", xt2=2.0 * -0.055, rho_a02=1.2 / m_mn)
     inp = Inputs(pair, Load(300e3, 1200.0, "cw", "pinion", 1.1, 1.020, "one_straddle", 1.161),
                  Material((1500.0, 1500.0), (480.0, 480.0), "both_hard", 210000.0, 0.3),
                  Rating("iso10300", 1.0, 1.3))
@@ -221,8 +220,7 @@ def _tr_sample1(rho_a0_mm: float, x_sm1: float):
 
 
 def _tr_ours() -> dict[str, float]:
-    g, f, r = _tr_sample1(0.8, 0.036)
-    _, _, r2 = _tr_sample1(1.2, 0.055)
+    g, f, r = _tr_sample1()
     P, W = g.members
     return {
         "d_v1": P.d_v, "d_v2": W.d_v, "alpha_vet": math.degrees(g.alpha_vt), "z_v1": P.z_v,
@@ -233,9 +231,9 @@ def _tr_ours() -> dict[str, float]:
         "F_mt": f.F_mt, "F_n": r.F_n, "K_Hbeta": r.K_Hbeta, "Z_MB": r.Z_MB, "Z_LS": r.Z_LS,
         "Z_E": r.Z_E, "sigma_H0": r.sigma_H0, "sigma_H": r.sigma_H, "Y_LS": r.Y_LS,
         "Y_eps": r.Y_eps, "Y_BS": r.Y_BS, "Y_Fa1": r.pinion.Y_Fa, "Y_Sa1": r.pinion.Y_Sa,
-        "Y_Fa2": r2.wheel.Y_Fa, "Y_Sa2": r2.wheel.Y_Sa, "sigma_F01": r.pinion.sigma_F0,
-        "sigma_F02": r2.wheel.sigma_F0, "sigma_F1": r.pinion.sigma_F,
-        "sigma_F2": r2.wheel.sigma_F,
+        "Y_Fa2": r.wheel.Y_Fa, "Y_Sa2": r.wheel.Y_Sa, "sigma_F01": r.pinion.sigma_F0,
+        "sigma_F02": r.wheel.sigma_F0, "sigma_F1": r.pinion.sigma_F,
+        "sigma_F2": r.wheel.sigma_F,
     }
 
 

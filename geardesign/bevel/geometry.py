@@ -10,7 +10,8 @@ h_am = (h_a* + x)·m_nm, h_fm = (h_a* + c* − x)·m_nm.  Either module may be g
 follows from the cone distances.  Two depth forms: ``constant_clearance`` (the tip cone of
 one member parallel to the root cone of the other, θ_a1 = θ_f2: GOST 19624 and GOST 19326
 form II, Gleason) and ``tapered`` (tip and root cones from the pitch apex, θ_a = atan(h_a/R):
-GOST 19326 form I, ISO 23509 "standard depth").  The wheel has the shifts −x1, −x_τ1.
+GOST 19326 form I, ISO 23509 "standard depth").  The wheel has the shift −x1 and the
+tangential shift −x_τ1 unless x_τ2 is given (``Pair.xts``).
 """
 
 from __future__ import annotations
@@ -223,7 +224,7 @@ def pair_geometry(p: Pair) -> Geometry:
     m_te, m_tm, m_nm, R_e, R_m = modules(p, d1)
     outer = not p.spiral
     m_basis, R_basis = (m_te, R_e) if outer else (m_nm, R_m)
-    xs, xts, zs, deltas = (p.x1, -p.x1), (p.xt1, -p.xt1), (p.z1, p.z2), (d1, d2)
+    xs, xts, zs, deltas = (p.x1, -p.x1), p.xts, (p.z1, p.z2), (d1, d2)
     h_a = [(p.ha + x) * m_basis for x in xs]
     h_f = [(p.ha + p.c - x) * m_basis for x in xs]
     th_f = [math.atan(h / R_basis) for h in h_f]
@@ -232,7 +233,7 @@ def pair_geometry(p: Pair) -> Geometry:
     else:
         th_a = [math.atan(h / R_basis) for h in h_a]
     alpha_vt, beta_vb = transverse_angles(p.alpha_n, p.beta_m)
-    rack = BasicRack(p.alpha_n, p.ha, p.c, p.rho_a0)
+    racks = [BasicRack(p.alpha_n, p.ha, p.c, rho) for rho in p.rho_a0s]
     u = p.z2 / p.z1
     parts = []
     for i in (0, 1):
@@ -266,7 +267,7 @@ def pair_geometry(p: Pair) -> Geometry:
             s, s_c, h_c,
             z_v, z_v / (math.cos(beta_vb) ** 2 * math.cos(p.beta_m)), d_v, d_va,
             d_v * math.cos(alpha_vt), d_vf,
-            undercut_shift_limit(z_v, alpha_vt, p.beta_m, rack), s_am, s_ae))
+            undercut_shift_limit(z_v, alpha_vt, p.beta_m, racks[i]), s_am, s_ae))
     P, W = parts
     a_v = 0.5 * (P.d_v + W.d_v)
     b_eff = EFFECTIVE_FACE * p.b
