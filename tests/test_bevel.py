@@ -285,3 +285,32 @@ def test_design_and_size_keys_exclude_each_other(tmp_path):
     lines = run_bad(tmp_path, text)
     assert len(lines) == 4 and all("missing; give it, or a [design] table" in x
                                    for x in lines)
+
+
+def test_wheel_thickness_and_cutter_keys_change_only_the_wheel(tmp_path):
+    """``xt2`` and ``root_radius2`` (a thickness modification with backlash, a wheel cutter
+    of its own, as in [ISOTR10300-30] sample 1) change the wheel's tooth form and leave the
+    pinion's, the contact stress and the geometry of the pinion alone; left out, the wheel
+    has −xt1 and the pinion's ρ_a0*."""
+    base = SPIRAL.read_text(encoding="utf-8")
+    p = tmp_path / "s.toml"
+    p.write_text(base.replace("x1 = 0.3", "x1 = 0.3\nxt1 = 0.05\nxt2 = -0.05"),
+                 encoding="utf-8")
+    same = solve(_inputs(p))
+    ref = solve(_inputs(SPIRAL).__class__(
+        dataclasses.replace(_inputs(SPIRAL).pair, xt1=0.05), *(
+            getattr(_inputs(SPIRAL), k) for k in ("load", "material", "rating"))))
+    assert same.iso.wheel.Y_Fa == pytest.approx(ref.iso.wheel.Y_Fa, rel=1e-12)
+    p.write_text(base.replace("x1 = 0.3", "x1 = 0.3\nxt1 = 0.05\nxt2 = -0.11\n"
+                              "root_radius2 = 0.37"), encoding="utf-8")
+    own = solve(_inputs(p))
+    assert own.geometry.wheel.xt == pytest.approx(-0.11)
+    assert own.iso.pinion.Y_Fa == pytest.approx(ref.iso.pinion.Y_Fa, rel=1e-12)
+    assert own.iso.sigma_H == pytest.approx(ref.iso.sigma_H, rel=1e-12)
+    assert own.iso.wheel.Y_Fa != pytest.approx(ref.iso.wheel.Y_Fa, rel=1e-6)
+
+
+def test_wheel_keys_bad_value_one_line(tmp_path):
+    text = SPIRAL.read_text(encoding="utf-8").replace("x1 = 0.3", "x1 = 0.3\nxt2 = 0.9")
+    assert run_bad(tmp_path, text) == [
+        "s.toml: pair.xt2 = 0.9: must be a number >= -0.5 and <= 0.5"]

@@ -76,6 +76,76 @@ def _result(path):
     return compute(spec)
 
 
+# ---------------------------------------------------------------------------------------
+# [KHK]: the straight bevel examples of KHK's gear technical reference, m = 3 mm (outer),
+# z = 20/40, b = 22 mm, α = 20°, Σ = 90°, in its two forms: "standard" (h_a = 1.00·m,
+# h_f = 1.25·m, tip and root cones from the pitch apex: depth = "tapered") and "Gleason"
+# (h_a2 = 0.54·m + 0.46·m/(u·cos δ1/cos δ2) = 1.965 mm, h_a1 = 2·m − h_a2 = 4.035 mm,
+# whole depth 2.188·m: x1 = 0.345, c* = 0.188 in GOST terms, and the tip cone of each member
+# parallel to the root cone of the other: depth = "constant_clearance", the form of
+# [GOST19624]).  The printed values as transcribed by the open unit tests of
+# [BolsoverBevel]; X = B (apex to the outer tip circle plane), X_b = b_ax, d_i = d_ai.
+# (value, tolerance): half a unit of the last printed digit.
+
+KHK_STANDARD = {
+    "d_e1": (60.0, 5e-6), "d_e2": (120.0, 5e-6), "R_e": (67.08204, 5e-6),
+    "delta1_deg": (26.56505, 5e-6), "delta2_deg": (63.43495, 5e-6),
+    "h_ae1": (3.0, 5e-6), "h_ae2": (3.0, 5e-6), "h_fe1": (3.75, 5e-6), "h_fe2": (3.75, 5e-6),
+    "theta_f1_deg": (3.19960, 5e-6), "theta_f2_deg": (3.19960, 5e-6),
+    "theta_a1_deg": (2.56064, 5e-6), "theta_a2_deg": (2.56064, 5e-6),
+    "delta_a1_deg": (29.12569, 5e-6), "delta_a2_deg": (65.99559, 5e-6),
+    "delta_f1_deg": (23.36545, 5e-6), "delta_f2_deg": (60.23535, 5e-6),
+    "d_ae1": (65.3666, 5e-5), "d_ae2": (122.6833, 5e-5),
+    "B1": (58.6584, 5e-5), "B2": (27.3167, 5e-5),
+    "b_ax1": (19.2374, 5e-5), "b_ax2": (8.9587, 5e-5),
+    "d_ai1": (43.9292, 5e-5), "d_ai2": (82.4485, 5e-5),
+    # Tredgold's back-cone gear: d_v = d_e/cos δ, z_v = z/cos δ (printed 22.3606 and
+    # 268.3281: the transcription cuts 22.36068 and 268.32816 rather than rounding them, so
+    # one unit of the last digit)
+    "d_ve1": (67.082, 5e-4), "d_ve2": (268.3281, 1e-4),
+    "z_v1": (22.3606, 1e-4), "z_v2": (89.4427, 5e-5),
+}
+
+KHK_GLEASON = {
+    "R_e": (67.08204, 5e-6),
+    "h_ae1": (4.035, 5e-6), "h_ae2": (1.965, 5e-6), "h_fe1": (2.529, 5e-6),
+    "h_fe2": (4.599, 5e-6),
+    "theta_f1_deg": (2.15903, 5e-6), "theta_f2_deg": (3.92194, 5e-6),
+    "theta_a1_deg": (3.92194, 5e-6), "theta_a2_deg": (2.15903, 5e-6),
+    "delta_a1_deg": (30.48699, 5e-6), "delta_a2_deg": (65.59398, 5e-6),
+    "d_ae1": (67.21803, 5e-6), "d_ae2": (121.75755, 5e-6),
+}
+
+
+def _khk(gleason: bool):
+    c, x, depth = (0.188, 0.345, "constant_clearance") if gleason else (0.25, 0.0, "tapered")
+    return pair_geometry(Pair(False, 3.0, "outer", 20, 40, math.pi / 2, 22.0, 0.0, "right",
+                              math.radians(20.0), 1.0, c, 0.2, x, 0.0, depth))
+
+
+def _khk_ours(g) -> dict[str, float]:
+    out = {"R_e": g.R_e}
+    for i, m in enumerate(g.members, 1):
+        for key in ("d_e", "h_ae", "h_fe", "d_ae", "B", "b_ax", "d_ai", "z_v"):
+            out[f"{key}{i}"] = getattr(m, key)
+        for key in ("delta", "theta_a", "theta_f", "delta_a", "delta_f"):
+            out[f"{key}{i}_deg"] = math.degrees(getattr(m, key))
+        out[f"d_ve{i}"] = m.d_e / math.cos(m.delta)
+    return out
+
+
+@pytest.mark.parametrize("key", sorted(KHK_STANDARD))
+def test_khk_standard_straight_bevel(key):
+    value, tol = KHK_STANDARD[key]
+    assert _khk_ours(_khk(False))[key] == pytest.approx(value, abs=tol)
+
+
+@pytest.mark.parametrize("key", sorted(KHK_GLEASON))
+def test_khk_gleason_straight_bevel(key):
+    value, tol = KHK_GLEASON[key]
+    assert _khk_ours(_khk(True))[key] == pytest.approx(value, abs=tol)
+
+
 @pytest.mark.parametrize("name", ["bevel_straight_gost.toml", "bevel_spiral_iso.toml"])
 def test_every_bevel_result_says_what_is_not_verified(name):
     """Until a part is checked against a published example, the report says so: one
@@ -101,8 +171,7 @@ def test_every_bevel_result_says_what_is_not_verified(name):
 # printed values as transcribed, with their inputs, in the open calculator [ISO10300Calc]
 # (its self-test of sample 1).  The cutter edge radius (ρ_a0 = 0.8 mm pinion, 1.2 mm wheel)
 # and the thickness modification (x_sm = 0.036 pinion, −0.055 wheel) differ per member in
-# the sample, while geardesign gives the wheel the pinion's ρ_a0* and −x_τ1: the pair is
-# rated twice, with the pinion's data (pinion rows) and with the wheel's (wheel rows).
+# the sample: entered per member (root_radius2, xt2 = 2·x_sm2), the pair is rated once.
 # (value, tolerance): half a unit of the last printed digit unless noted.
 
 TR_SAMPLE1 = {
@@ -134,14 +203,14 @@ TR_SAMPLE1 = {
 }
 
 
-def _tr_sample1(rho_a0_mm: float, x_sm1: float):
+def _tr_sample1():
     from geardesign.bevel import rating as R
     from geardesign.bevel.inputs import Inputs, Load, Material, Rating
 
     m_mn = 3.2133
     pair = Pair(True, 176.893 / 39, "outer", 14, 39, math.pi / 2, 25.4, math.radians(35.0),
-                "left", math.radians(20.0), 1.0, 0.25, rho_a0_mm / m_mn, 0.505, 2.0 * x_sm1,
-                "constant_clearance")
+                "left", math.radians(20.0), 1.0, 0.25, 0.8 / m_mn, 0.505, 2.0 * 0.036,
+                "constant_clearance", xt2=2.0 * -0.055, rho_a02=1.2 / m_mn)
     inp = Inputs(pair, Load(300e3, 1200.0, "cw", "pinion", 1.1, 1.020, "one_straddle", 1.161),
                  Material((1500.0, 1500.0), (480.0, 480.0), "both_hard", 210000.0, 0.3),
                  Rating("iso10300", 1.0, 1.3))
@@ -151,8 +220,7 @@ def _tr_sample1(rho_a0_mm: float, x_sm1: float):
 
 
 def _tr_ours() -> dict[str, float]:
-    g, f, r = _tr_sample1(0.8, 0.036)
-    _, _, r2 = _tr_sample1(1.2, 0.055)
+    g, f, r = _tr_sample1()
     P, W = g.members
     return {
         "d_v1": P.d_v, "d_v2": W.d_v, "alpha_vet": math.degrees(g.alpha_vt), "z_v1": P.z_v,
@@ -163,9 +231,9 @@ def _tr_ours() -> dict[str, float]:
         "F_mt": f.F_mt, "F_n": r.F_n, "K_Hbeta": r.K_Hbeta, "Z_MB": r.Z_MB, "Z_LS": r.Z_LS,
         "Z_E": r.Z_E, "sigma_H0": r.sigma_H0, "sigma_H": r.sigma_H, "Y_LS": r.Y_LS,
         "Y_eps": r.Y_eps, "Y_BS": r.Y_BS, "Y_Fa1": r.pinion.Y_Fa, "Y_Sa1": r.pinion.Y_Sa,
-        "Y_Fa2": r2.wheel.Y_Fa, "Y_Sa2": r2.wheel.Y_Sa, "sigma_F01": r.pinion.sigma_F0,
-        "sigma_F02": r2.wheel.sigma_F0, "sigma_F1": r.pinion.sigma_F,
-        "sigma_F2": r2.wheel.sigma_F,
+        "Y_Fa2": r.wheel.Y_Fa, "Y_Sa2": r.wheel.Y_Sa, "sigma_F01": r.pinion.sigma_F0,
+        "sigma_F02": r.wheel.sigma_F0, "sigma_F1": r.pinion.sigma_F,
+        "sigma_F2": r.wheel.sigma_F,
     }
 
 

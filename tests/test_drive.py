@@ -1,6 +1,7 @@
 """The drive calculator: stage chaining, files, failures, bearings, split."""
 
 import json
+import math
 import os
 
 import pytest
@@ -136,6 +137,13 @@ def test_split_rules():
     assert split_ratio(27.0, ["spur"] * 3, "equal") == pytest.approx([3.0, 3.0, 3.0])
     r = split_ratio(100.0, ["worm", "spur"])
     assert r[1] == 2.5 and r[0] * r[1] == pytest.approx(100.0)
+    # bevel-cylindrical: u_T = 1.1·sqrt(u) ([Dunaev]); three stages keep the product
+    assert split_ratio(16.0, ["bevel", "spur"]) == pytest.approx([16.0 / 4.4, 4.4])
+    r = split_ratio(40.0, ["bevel", "spur", "spur"])
+    assert math.prod(r) == pytest.approx(40.0) and r[1] == pytest.approx(r[2])
+    assert r[0] < 40.0 ** (1 / 3) < r[1]
+    with pytest.raises(ValueError, match="bevel"):
+        split_ratio(40.0, ["bevel", "bevel"])
 
 
 def five_stage_text() -> str:

@@ -10,7 +10,8 @@ h_am = (h_a* + x)·m_nm, h_fm = (h_a* + c* − x)·m_nm.  Either module may be g
 follows from the cone distances.  Two depth forms: ``constant_clearance`` (the tip cone of
 one member parallel to the root cone of the other, θ_a1 = θ_f2: GOST 19624 and GOST 19326
 form II, Gleason) and ``tapered`` (tip and root cones from the pitch apex, θ_a = atan(h_a/R):
-GOST 19326 form I, ISO 23509 "standard depth").  The wheel has the shifts −x1, −x_τ1.
+GOST 19326 form I, ISO 23509 "standard depth").  The wheel has the shift −x1 and the
+tangential shift −x_τ1 unless x_τ2 is given (``Pair.xts``).
 """
 
 from __future__ import annotations
@@ -45,6 +46,8 @@ class Member:
     d_am: float           # mean tip diameter
     d_fm: float           # mean root diameter
     B: float              # pitch apex to the plane of the outer tip circle
+    b_ax: float           # axial length of the face cone over the face width
+    d_ai: float           # inner tip diameter
     s_e: float            # outer transverse circular tooth thickness (straight) / mean normal
     s_c: float            # chordal tooth thickness at the section of s_e
     h_c: float            # chordal height at the section of s_e
@@ -211,14 +214,17 @@ def pair_geometry(p: Pair) -> Geometry:
     θ_f = atan(h_f/R) at that section, θ_a from the mating member's θ_f (constant
     clearance) or atan(h_a/R) (tapered); heights elsewhere follow the cones:
     h(R) = h_basis + (R − R_basis)·tan θ.  Diameters d = m_t z, d_a = d + 2 h_a cos δ,
-    d_f = d − 2 h_f cos δ; B = R_e cos δ − h_ae sin δ.  [GOST19624] table 1;
-    [GOST19326] table 1; [ISO23509] §5.
+    d_f = d − 2 h_f cos δ; B = R_e cos δ − h_ae sin δ; along the face cone over the face
+    width b the axial length b_ax = b cos δ_a/cos θ_a and the inner tip diameter
+    d_ai = d_ae − 2 b sin δ_a/cos θ_a.  [GOST19624] table 1; [GOST19326] table 1;
+    [ISO23509] §5; checked for straight teeth of both depth forms by [KHK] (standard and
+    Gleason straight bevel examples).
     """
     d1, d2 = pitch_angles(p.z1, p.z2, p.Sigma)
     m_te, m_tm, m_nm, R_e, R_m = modules(p, d1)
     outer = not p.spiral
     m_basis, R_basis = (m_te, R_e) if outer else (m_nm, R_m)
-    xs, xts, zs, deltas = (p.x1, -p.x1), (p.xt1, -p.xt1), (p.z1, p.z2), (d1, d2)
+    xs, xts, zs, deltas = (p.x1, -p.x1), p.xts, (p.z1, p.z2), (d1, d2)
     h_a = [(p.ha + x) * m_basis for x in xs]
     h_f = [(p.ha + p.c - x) * m_basis for x in xs]
     th_f = [math.atan(h / R_basis) for h in h_f]
@@ -227,7 +233,7 @@ def pair_geometry(p: Pair) -> Geometry:
     else:
         th_a = [math.atan(h / R_basis) for h in h_a]
     alpha_vt, beta_vb = transverse_angles(p.alpha_n, p.beta_m)
-    rack = BasicRack(p.alpha_n, p.ha, p.c, p.rho_a0)
+    racks = [BasicRack(p.alpha_n, p.ha, p.c, rho) for rho in p.rho_a0s]
     u = p.z2 / p.z1
     parts = []
     for i in (0, 1):
@@ -239,6 +245,8 @@ def pair_geometry(p: Pair) -> Geometry:
         h_fm = h_f[i] - (R_basis - R_m) * tf
         d_e, d_m = m_te * z, m_tm * z
         c = math.cos(dl)
+        d_ae = d_e + 2.0 * h_ae * c
+        face = p.b / math.cos(th_a[i])   # the face cone's length over the face width
         # thickness: outer transverse (straight) or mean normal (spiral), [GOST19624]
         # table 4, [GOST19326] table 4
         s = (0.5 * math.pi + 2.0 * x * math.tan(p.alpha_n) + xt) * m_basis
@@ -253,11 +261,13 @@ def pair_geometry(p: Pair) -> Geometry:
                               p.alpha_n, 0.0) if outer else math.nan)
         parts.append(Member(
             z, x, xt, dl, th_a[i], th_f[i], dl + th_a[i], dl - th_f[i], d_e, d_m, h_ae, h_fe,
-            h_am, h_fm, d_e + 2.0 * h_ae * c, d_e - 2.0 * h_fe * c, d_m + 2.0 * h_am * c,
-            d_m - 2.0 * h_fm * c, R_e * c - h_ae * math.sin(dl), s, s_c, h_c,
+            h_am, h_fm, d_ae, d_e - 2.0 * h_fe * c, d_m + 2.0 * h_am * c,
+            d_m - 2.0 * h_fm * c, R_e * c - h_ae * math.sin(dl),
+            face * math.cos(dl + th_a[i]), d_ae - 2.0 * face * math.sin(dl + th_a[i]),
+            s, s_c, h_c,
             z_v, z_v / (math.cos(beta_vb) ** 2 * math.cos(p.beta_m)), d_v, d_va,
             d_v * math.cos(alpha_vt), d_vf,
-            undercut_shift_limit(z_v, alpha_vt, p.beta_m, rack), s_am, s_ae))
+            undercut_shift_limit(z_v, alpha_vt, p.beta_m, racks[i]), s_am, s_ae))
     P, W = parts
     a_v = 0.5 * (P.d_v + W.d_v)
     b_eff = EFFECTIVE_FACE * p.b

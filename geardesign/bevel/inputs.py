@@ -37,6 +37,21 @@ class Pair:
     x1: float
     xt1: float
     depth: str            # "constant_clearance" | "tapered"
+    xt2: float | None = None      # the wheel's x_τ (None: −x_τ1)
+    rho_a02: float | None = None  # the wheel's cutter tip radius coefficient (None: ρ_a0*)
+
+    @property
+    def xts(self) -> tuple[float, float]:
+        """Tangential shift coefficients of pinion and wheel: a thickness modification
+        with backlash need not be equal and opposite ([ISOTR10300-30] sample 1:
+        x_sm = 0.036 / −0.055, x_τ = 2·x_sm)."""
+        return self.xt1, -self.xt1 if self.xt2 is None else self.xt2
+
+    @property
+    def rho_a0s(self) -> tuple[float, float]:
+        """Cutter tip radius coefficients of pinion and wheel ([ISOTR10300-30] sample 1:
+        0.8 mm and 1.2 mm)."""
+        return self.rho_a0, self.rho_a0 if self.rho_a02 is None else self.rho_a02
 
 
 @dataclass(frozen=True)
@@ -169,7 +184,8 @@ def read(data: dict) -> Inputs:
                 math.radians(pr["shaft_angle"]), size[3],
                 math.radians(pr["spiral_angle"]), pr["hand"],
                 math.radians(pr["pressure_angle"]), pr["addendum"], pr["clearance"],
-                pr["root_radius"], pr["x1"], pr["xt1"], pr["depth"])
+                pr["root_radius"], pr["x1"], pr["xt1"], pr["depth"], pr.get("xt2"),
+                pr.get("root_radius2"))
     problems.stage(_pair_rules, pair, pr, problems)
     problems.raise_all()
     load = Load(ld["torque"] * 1e3, ld["speed"], ld["rotation"], ld["driver"],

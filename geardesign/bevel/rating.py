@@ -287,7 +287,7 @@ def iso_rating(inp: Inputs, g: Geometry, f: Forces) -> IsoRating:
     members = []
     for i, m in enumerate(g.members):
         tf = part3.tooth_form(m.z_v, m.x, g.m_nm, g.alpha_n, g.beta_m, g.beta_vb, m.d_v,
-                              m.d_va, cb2, (p.ha + p.c) * g.m_nm, p.rho_a0 * g.m_nm,
+                              m.d_va, cb2, (p.ha + p.c) * g.m_nm, p.rho_a0s[i] * g.m_nm,
                               x_sm=0.5 * m.xt)
         s_F0 = f.F_mt / (g.b * g.m_nm) * tf.Y_F * tf.Y_S * Y_eps * Y_BS * Z_LS ** 2
         s_F = s_F0 * K * K_Fb * ld.K_alpha

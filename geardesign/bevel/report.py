@@ -24,7 +24,10 @@ VERIFIED = {
     True: "the spiral pair's cones, mean-section modules, diameters and heights "
           "([ISO23509] spiral example), its virtual gears, contact ratios and the ISO 10300 "
           "method B1 stresses ([ISOTR10300-30] sample 1; docs/bevel.md)",
-    False: "the virtual gears and the ISO 10300 method B1 formulas shared with spiral teeth "
+    False: "the outer-cone geometry in both depth forms (cones, cone distance, heights, "
+           "addendum/dedendum and face/root angles, tip diameters, apex distance B, b_ax, "
+           "d_ai, the back-cone gear: [KHK] standard and Gleason straight bevel examples), "
+           "the virtual gears and the ISO 10300 method B1 formulas shared with spiral teeth "
            "([ISOTR10300-30] sample 1, a spiral pair; docs/bevel.md)",
 }
 """What of each tooth form has been checked against a published worked example (by
@@ -34,8 +37,8 @@ UNVERIFIED = {
     True: ("addendum/dedendum angles (standard depth, not the cutter's duplex taper), "
            "tooth thickness and chordal dimensions, the axial and radial forces, ISO 10300 "
            "K_Hβ-be other than 1.10, and strength by GOST 21354 (θ_H, θ_F of circular teeth)"),
-    False: ("geometry (cones, heights, diameters, tooth thickness, chordal dimensions), "
-            "the axial and radial forces, ISO 10300 for straight teeth (Z_LS = 1, Y_BS = 1, "
+    False: ("tooth thickness and chordal dimensions, the axial and radial forces, ISO 10300 "
+            "for straight teeth (Z_LS = 1, Y_BS = 1, "
             "K_Hβ-be other than 1.10) and strength by GOST 21354 (θ_H = θ_F = 0.85)"),
 }
 """The parts not yet checked against a published worked example, by tooth form."""
@@ -83,6 +86,8 @@ def geometry_rows(res: Result, sol: Solution) -> None:
         ("d_am", "d_am", "mm", "d_am", "mean tip diameter", src),
         ("d_fm", "d_fm", "mm", "d_fm", "mean root diameter", src),
         ("B", "B", "mm", "B", "apex to the outer tip circle plane", src),
+        ("b_ax", "b_ax", "mm", "b_ax", "axial length of the face cone", src),
+        ("d_ai", "d_ai", "mm", "d_ai", "inner tip diameter", src),
         ("s", "s_e", "mm", "s", f"{where} circular tooth thickness", src),
         ("s_c", "s_c", "mm", "s̄", f"{where} chordal tooth thickness", src),
         ("h_c", "h_c", "mm", "h̄_a", "chordal height", src)))

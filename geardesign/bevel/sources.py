@@ -14,6 +14,6 @@ TOOTH_FORM = "[ISO10300-3] §6.4 (load at the tip of the virtual gear, [ISO6336-
 GOST = "[GOST21354] via the virtual spur pair, [Dunaev] §2.6 (θ_H, θ_F)"
 UNDERCUT = "[GOST16532] on the virtual gear ([GOST19624] table 1 note)"
 PRACTICE = "design practice ([Dunaev] §2.6)"
-PUBLISHED = ("[BevGear2023] ([ISO23509] spiral bevel example), [ISOTR10300-30] sample 1; "
-             "docs/bevel.md, published cases")
+PUBLISHED = ("[BevGear2023] ([ISO23509] spiral bevel example), [ISOTR10300-30] sample 1, "
+             "[KHK] straight bevel examples; docs/bevel.md, published cases")
 DESIGN = "design mode by re-rating ([GOST9563] first-series modules), docs/bevel.md"

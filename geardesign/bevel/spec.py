@@ -41,6 +41,11 @@ PAIR = Table("pair", "bevel gear pair geometry", (
           default=0.0, minimum=-1.0, maximum=1.0),
     Field("xt1", "number", "tangential (thickness) shift coefficient of the pinion "
           "(wheel −xt1)", symbol="x_τ1", default=0.0, minimum=-0.5, maximum=0.5),
+    Field("xt2", "number", "tangential (thickness) shift coefficient of the wheel, when not "
+          "−xt1 (a thickness modification that includes backlash)", symbol="x_τ2",
+          default=None, minimum=-0.5, maximum=0.5),
+    Field("root_radius2", "number", "tip radius coefficient of the wheel's cutter ρ_a02*, "
+          "when not root_radius", symbol="ρ_a02*", default=None, minimum=0.0, maximum=0.5),
     Field("depth", "string", "tooth depth along the face: constant clearance (the tip cone "
           "parallel to the mating root cone) or tapered (all cones from one apex)",
           default="constant_clearance", choices=("constant_clearance", "tapered")),

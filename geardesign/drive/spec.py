@@ -151,7 +151,7 @@ SPLIT = Table("split", "ratio split helper: proposed stage ratios for an overall
     Field("ratio", "number", "overall ratio wanted (else motor speed / load.speed)", symbol="u",
           default=None, minimum=1.0, maximum=1e5),
     Field("kinds", "array", "kinds of the stages, from the input", items="string",
-          choices=("spur", "novikov", "worm"), default=None, min_items=1, max_items=6,
+          choices=("spur", "novikov", "worm", "bevel"), default=None, min_items=1, max_items=6,
           example=["spur", "spur"]),
     Field("rule", "string", "splitting rule", default="developed", choices=("equal", "developed"),
           hint='"developed": two cylindrical stages, u1 = 1.25·sqrt(u); "equal": u^(1/n)'),
