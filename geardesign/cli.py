@@ -15,6 +15,8 @@ from __future__ import annotations
 
 import os
 import sys
+from pathlib import Path
+from typing import Callable, Optional
 
 # The beam and eigenvalue problems are small (a few hundred unknowns): OpenBLAS's threads
 # only cost there, and on a busy machine their spinning makes one solve take 0.1 s instead
@@ -32,8 +34,6 @@ def __getattr__(name: str):
 
 
 def _dispatch() -> None:
-    from geardesign.cli_options import parse
-
     command = parse(sys.argv, os.environ)
     if command is None:
         from geardesign.cli_app import run
@@ -42,6 +42,50 @@ def _dispatch() -> None:
     else:
         command()
         sys.exit(0)
+
+
+def parse(argv: list[str], environ) -> Optional[Callable[[], None]]:
+    """The call of :mod:`geardesign.commands` that ``argv`` asks for, or ``None`` when
+    typer is to read it (:mod:`geardesign.cli_options`)."""
+    if len(argv) < 2 or any(k.endswith("_COMPLETE") for k in environ):
+        return None
+    name, rest = argv[1], argv[2:]
+    if name == "--version" and not rest:
+        return _version
+    from geardesign import commands as C
+    from geardesign.cli_options import (RUN_OPTIONS, VALIDATE_OPTIONS, _plain, kind_options,
+                                        read_options)
+
+    if name == "list":
+        return None if rest else C.list_cmd
+    if name == "template":
+        return (lambda: C.template_cmd(rest[0])) if len(rest) == 1 and _plain(rest[0]) else None
+    if name == "run":
+        allowed, call = RUN_OPTIONS, C.run_cmd
+    elif name == "validate":
+        allowed, call = VALIDATE_OPTIONS, C.validate_cmd
+    else:
+        from geardesign.core.kinds import KINDS
+
+        if name not in KINDS:
+            return None
+        allowed = kind_options(name)
+        call = lambda specs, **kw: C.kind_cmd(name, specs, **kw)    # noqa: E731
+    read = read_options(rest, allowed)
+    if read is None or not read[0]:
+        return None
+    args, values = read
+    return lambda: call([Path(a) for a in args], **values)
+
+
+def _version() -> None:
+    import sys
+
+    from geardesign import __version__
+    from geardesign.commands import Exit
+
+    sys.stdout.write(f"geardesign {__version__}\n")
+    raise Exit(0)
 
 
 def _err(line: str) -> None:

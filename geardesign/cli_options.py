@@ -3,9 +3,10 @@ common command lines without typer.
 
 :mod:`geardesign.cli_app` declares every command to typer from these tables (typer is the
 command line's contract: its help, its options and its error messages).  A command line
-that only names one of :data:`FAST` with its arguments and options, each written the
-plain way (``-f json``, ``--format json``, ``--format=json``, ``-fjson``, ``-qk``), is read
-here into the same call of :mod:`geardesign.commands` that typer would make, so that a
+that only names ``run``, ``validate``, ``list``, ``template`` or a kind with its arguments
+and options, each written the plain way (``-f json``, ``--format json``, ``--format=json``,
+``-fjson``, ``-qk``), is read by :func:`read_options` (:func:`geardesign.cli.parse`) into
+the same call of :mod:`geardesign.commands` that typer would make, so that a
 run does not import typer and click (more than half of a small spec's start-up).  Every
 other command line (``--help``, an unknown option, a missing argument, a value that
 looks like an option, shell completion) goes to typer; tests/test_cli_options.py
@@ -15,10 +16,9 @@ checks that both read every command line alike.
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Callable, Optional
+from typing import Optional
 
-FORMATS = ("table", "json", "jsonl", "markdown", "csv", "html", "pdf")
-"""The report formats (``--format``)."""
+from geardesign.core.text import FORMATS
 
 FORMAT_HELP = ("Output format. Default: table on a terminal, json when stdout is a pipe or "
                "file; with --output, taken from the file extension (.json, .jsonl, .md, .csv, "
@@ -78,42 +78,6 @@ def kind_options(kind: str) -> tuple[str, ...]:
     return ("format", "output", "quiet", "keep_going", *extra)
 
 
-FAST = ("run", "validate", "list", "template")
-"""The commands read here (besides the kinds' own); the others always go to typer."""
-
-
-def parse(argv: list[str], environ) -> Optional[Callable[[], None]]:
-    """The call of :mod:`geardesign.commands` that ``argv`` asks for, or ``None`` when
-    typer is to read it (see the module's docstring)."""
-    if len(argv) < 2 or any(k.endswith("_COMPLETE") for k in environ):
-        return None
-    name, rest = argv[1], argv[2:]
-    if name == "--version" and not rest:
-        return _version
-    from geardesign import commands as C
-
-    if name == "list":
-        return None if rest else C.list_cmd
-    if name == "template":
-        return (lambda: C.template_cmd(rest[0])) if len(rest) == 1 and _plain(rest[0]) else None
-    if name == "run":
-        allowed, call = RUN_OPTIONS, C.run_cmd
-    elif name == "validate":
-        allowed, call = VALIDATE_OPTIONS, C.validate_cmd
-    else:
-        from geardesign.core.kinds import KINDS
-
-        if name not in KINDS:
-            return None
-        allowed = kind_options(name)
-        call = lambda specs, **kw: C.kind_cmd(name, specs, **kw)    # noqa: E731
-    read = read_options(rest, allowed)
-    if read is None or not read[0]:
-        return None
-    args, values = read
-    return lambda: call([Path(a) for a in args], **values)
-
-
 def _plain(token: str) -> bool:
     """A value or an argument as typer would take it: not empty, not option-like."""
     return token != "" and (token == "-" or not token.startswith("-"))
@@ -167,13 +131,3 @@ def read_options(tokens: list[str], allowed: tuple[str, ...]):
             return None
         values[opt.name] = Path(value) if opt.takes == "path" else value
     return args, values
-
-
-def _version() -> None:
-    import sys
-
-    from geardesign import __version__
-    from geardesign.commands import Exit
-
-    sys.stdout.write(f"geardesign {__version__}\n")
-    raise Exit(0)

@@ -37,10 +37,6 @@ LONG = {
     "worm/calculator.py": SPLITTING + ": worm inputs, solve and report",
     "shaft/calculator.py": SPLITTING + ": the shaft's rows move to a report module",
     "shaft/solve.py": SPLITTING + ": the DIN 743 and GOST 25.504 parts move to packages",
-    "cli.py": SPLITTING + ": the commands' option handling apart from the dispatch",
-    "core/spec.py": SPLITTING + ": schema types apart from validation",
-    "core/render.py": SPLITTING + ": the HTML report in its own package",
-    "core/io.py": SPLITTING + ": the writers apart from the readers",
     "rexs/importer.py": SPLITTING + ": one reader per REXS component type (shafts, stages, "
                         "bearings, load case) apart from the spec writer",
     "shaft/inputs.py": SPLITTING + ": the step, load and support rules apart from the "
