@@ -36,11 +36,11 @@ def _out(line: str) -> None:
 
 def _targets(*paths: Optional[Path]) -> None:
     """Every file to be written is looked at before the work starts
-    (:func:`geardesign.core.io.target_problem`): one line and exit 2 when one cannot be."""
-    from geardesign.core.io import target_problem
-
+    (:func:`geardesign.core.atomic.target_problem`): one line and exit 2 when one cannot be."""
     for path in paths:
         if path is not None:
+            from geardesign.core.atomic import target_problem
+
             why = target_problem(path)
             if why is not None:
                 _err(f"{path}: cannot write: {why}")
@@ -88,9 +88,12 @@ def _load(path: Path, expect_kind: Optional[str]):
     return calc, spec
 
 
-def _compute_all(paths: List[Path], expect_kind: Optional[str], mode: Optional[str] = None):
+def _compute_all(paths: List[Path], expect_kind: Optional[str], mode: Optional[str] = None,
+                 advise: bool = True):
     """Compute every spec; ``mode`` (from ``--select``/``--design``) overrides the spec's
-    top-level ``mode`` key for calculators that have one."""
+    top-level ``mode`` key for calculators that have one; ``advise=False``: the rating
+    without the search for the failed checks' fixes (``validate``: the same input
+    problems, :class:`geardesign.core.registry.Calculator`)."""
     results, problems = [], []
     for path in paths:
         try:
@@ -103,7 +106,7 @@ def _compute_all(paths: List[Path], expect_kind: Optional[str], mode: Optional[s
                 spec.data["mode"] = mode
                 if "mode" in spec.assumed:
                     spec.assumed.remove("mode")
-            results.append(calc.compute(spec))
+            results.append((calc.compute if advise else calc.rate)(spec))
         except InputError as exc:
             problems.extend(p.line("<stdin>" if str(path) == "-" else str(path))
                             for p in exc.problems)
@@ -174,7 +177,7 @@ def _report(results: list, fmt_name: str, output: Optional[Path], quiet: bool,
 def _write(path: Path, text) -> None:
     """``text`` (or bytes) to ``path`` through the one atomic writer; a failure is one
     line, exit 2."""
-    from geardesign.core.io import atomic_path, write_atomic
+    from geardesign.core.atomic import atomic_path, write_atomic
 
     try:
         if isinstance(text, bytes):
@@ -327,7 +330,7 @@ def template_cmd(kind: str) -> None:
 
 def validate_cmd(specs: List[Path], quiet: bool = False) -> None:
     """Check spec file(s) without reporting results: exit 0 if usable, 2 if not."""
-    results, problems = _compute_all(specs, None)
+    results, problems = _compute_all(specs, None, advise=False)
     if not quiet:
         for r in results:
             _out(f"{r.source}: ok ({r.kind})")
