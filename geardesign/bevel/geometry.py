@@ -16,9 +16,9 @@ GOST 19326 form I, ISO 23509 "standard depth").  The wheel has the shifts −x1,
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.bevel.inputs import Pair, pitch_angles
+from geardesign.core.records import dataclass
 from geardesign.spur.geometry import BasicRack, tip_thickness, undercut_shift_limit
 
 

@@ -12,11 +12,11 @@ from __future__ import annotations
 import difflib
 import importlib
 import importlib.util
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
 from geardesign.core.errors import InputError, Problem, Problems, Unusable
+from geardesign.core.records import dataclass
 from geardesign.core.result import Result, Row, guard
 from geardesign.core.kinds import (CATALOG, KINDS, NOT_CALCULATORS, ORDER,  # noqa: F401 (API)
                                    catalog, get, known_kinds)

@@ -10,11 +10,12 @@ from __future__ import annotations
 
 import difflib
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 from pathlib import Path
 from typing import Any
 
 from geardesign.core.errors import format_value
+from geardesign.core.records import dataclass
 
 
 class _Required:

@@ -11,8 +11,9 @@ efficiency (or the one the spec gives); its loss (1 − η)·P_in heats the oil 
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
 
+from geardesign.core.records import dataclass
 from geardesign.drive import losses as L
 from geardesign.drive import thermal as TH
 from geardesign.materials import lubricants as OIL

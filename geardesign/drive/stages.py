@@ -14,10 +14,11 @@ calculators.  No formula of a calculator is repeated here.
 from __future__ import annotations
 
 import copy
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import Any, Callable
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 from geardesign.core.registry import load_data
 from geardesign.core.result import Result
 from geardesign.drive.shafts import GearLoad

@@ -11,11 +11,12 @@ from __future__ import annotations
 
 import difflib
 import re
-from dataclasses import dataclass, field
+from dataclasses import field
 from functools import lru_cache
 from pathlib import Path
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 
 DATA = Path(__file__).with_name("gear_steel.toml")
 

@@ -7,8 +7,8 @@ loop and the GOST 21354-87 allowables.  Pure: no spec, no report rows (those are
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.materials.gear_steel import treatment_limits
 from geardesign.materials.novikov import steel
 from geardesign.novikov import deviations as dev

@@ -21,8 +21,9 @@ refined by a parabola through the three samples around the largest one.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 
+from geardesign.core.records import dataclass
 from geardesign.pzdn.startup import ThreeMass
 
 

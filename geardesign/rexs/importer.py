@@ -11,8 +11,9 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import field
 
+from geardesign.core.records import dataclass
 from geardesign.rexs.model import Attribute, Component, Model, ModelError, convert, number
 
 READ_TYPES = frozenset({

@@ -12,10 +12,10 @@ from __future__ import annotations
 
 import math
 from bisect import bisect_left
-from dataclasses import dataclass
 from itertools import accumulate
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 from geardesign.shaft import beam
 from geardesign.shaft import strength as ST
 from geardesign.shaft.din743 import part2 as P2

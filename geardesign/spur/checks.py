@@ -10,8 +10,8 @@ in the message); radial clearance >= 0.1·m_n; 0.2 <= ψ_bd <= 1.6 (:func:`face_
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.core.result import Check, check, fix_text
 from geardesign.spur import sources as S
 from geardesign.spur.geometry import PairGeometry, span_measurable

@@ -17,9 +17,9 @@ typed records) → report (:func:`add_drawing`: rows, the data table and the che
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 from geardesign.core.result import DataTable, Result, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.spur.geometry import PairGeometry

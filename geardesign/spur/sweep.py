@@ -26,11 +26,12 @@ from __future__ import annotations
 
 import itertools
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 
 import numpy as np
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 from geardesign.spur.checks import PSI_BA_WINDOW, PSI_BD_MAX, PSI_BD_MIN, face_width_ratio_ok
 from geardesign.spur.geometry import disc_mass, disc_volume
 

@@ -8,9 +8,9 @@ raise :class:`~geardesign.core.errors.InputError` naming the key and what is all
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.core.errors import InputError, Problem, Problems
+from geardesign.core.records import dataclass
 from geardesign.core.result import Check, Result, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.materials import worm_wheel

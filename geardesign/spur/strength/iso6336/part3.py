@@ -15,10 +15,10 @@ types, the accuracy grade and the rim data are the same for every candidate.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 
 from geardesign.core import xp
+from geardesign.core.records import dataclass
 from geardesign.core.roots import bracket_root
 from geardesign.involute import inv
 from geardesign.spur.geometry import GeometryError

@@ -18,9 +18,10 @@ pair only).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from geardesign.core import xp
+from geardesign.core.records import dataclass
 from geardesign.core.result import Check, check
 from geardesign.spur.strength.iso6336 import part1 as P1
 from geardesign.spur.strength.iso6336 import part2 as P2

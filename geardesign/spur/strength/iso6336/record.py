@@ -17,8 +17,8 @@ from __future__ import annotations
 
 import dataclasses
 import functools
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.spur.strength.common import Record, q
 
 SECTIONS = {"iso6336_materials": "ISO 6336: materials", "iso6336_factors": "ISO 6336: load factors",
