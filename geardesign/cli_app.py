@@ -26,7 +26,7 @@ from geardesign import completion as _complete
 from geardesign.cli_options import FORMATS, OPTIONS, RUN_OPTIONS, kind_options
 from geardesign.commands import (Exit, _choose_format, _err, _out, _pdf_ready, _report,
                                  _report_problems, _targets, _write)
-from geardesign.core import registry
+from geardesign.core.kinds import known_kinds
 from geardesign.core.errors import InputError
 from geardesign.testing import ATOL, RTOL
 
@@ -126,7 +126,7 @@ def _register_kinds() -> None:
     global _registered
     if not _registered:
         # by name only: a calculator's modules are imported when a spec of its kind runs
-        for kind in registry.known_kinds():
+        for kind in known_kinds():
             app.command(kind)(_kind_command(kind))
         _registered = True
 

@@ -100,8 +100,13 @@ def _make(deco):
     class E(A):
         q: int = 3
 
+    @deco(frozen=True, kw_only=True)
+    class F:
+        u: float
+        w: float = 2.0
+
     return {"A": (A, [(1.0,), (1.0, 3, (1,), [2], 5.0, 0.5)]), "B": (B, [(1,), (2, [3])]),
-            "C": (C, [(1.0,)]), "D": (D, [()]), "E": (E, [(1.0,), (2.0, 1)])}
+            "C": (C, [(1.0,)]), "D": (D, [()]), "E": (E, [(1.0,), (2.0, 1)]), "F": (F, [()])}
 
 
 OURS, THEIRS = _make(records.dataclass), _make(dataclasses.dataclass)
@@ -121,6 +126,11 @@ def test_records_behave_as_dataclasses(name):
     assert str(inspect.signature(ours)) == str(inspect.signature(theirs))
     assert ours.__doc__ == theirs.__doc__
     for args in cases:
+        if name == "F":       # keyword-only
+            args, kwargs = (), {"u": 1.0}
+            x, y = ours(**kwargs), theirs(**kwargs)
+            assert repr(x) == repr(y) and x == ours(**kwargs) and hash(x) == hash(ours(**kwargs))
+            continue
         x, y = ours(*args), theirs(*args)
         assert repr(x) == repr(y) and vars(x) == vars(y)
         assert dataclasses.asdict(x) == dataclasses.asdict(y)

@@ -107,3 +107,14 @@ def test_top_level_help_lists_every_command(capsys, monkeypatch):
     out = capsys.readouterr().out
     for name in ("run", "list", "template", "sweep", "validate", *registry.known_kinds()):
         assert f" {name} " in out or f" {name}\n" in out
+
+
+def test_kinds_are_the_packages_pkgutil_finds():
+    import pkgutil
+
+    import geardesign
+    from geardesign.core import kinds
+
+    found = {m.name for m in pkgutil.iter_modules(geardesign.__path__)
+             if m.ispkg and m.name not in kinds.NOT_CALCULATORS and not m.name.startswith("_")}
+    assert set(kinds.KINDS) == found

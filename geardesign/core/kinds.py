@@ -6,6 +6,7 @@ no more; :mod:`geardesign.core.registry` runs specs through them."""
 from __future__ import annotations
 
 import importlib
+import os
 from pathlib import Path
 
 NOT_CALCULATORS = {"core", "fatigue", "gears", "materials", "rendering", "rexs"}
@@ -17,12 +18,14 @@ ORDER = ("spur", "bearing", "worm", "planetary", "novikov", "epicycle_rim", "pzd
 
 
 def _discover() -> dict[str, str]:
-    import pkgutil
-
+    """The subpackages of ``geardesign`` (folders with an ``__init__.py``, as
+    :func:`pkgutil.iter_modules` finds them) that are calculators."""
     import geardesign
 
-    names = [m.name for m in pkgutil.iter_modules(geardesign.__path__)
-             if m.ispkg and m.name not in NOT_CALCULATORS and not m.name.startswith("_")]
+    names = sorted({e.name for root in geardesign.__path__ for e in os.scandir(root)
+                    if e.is_dir() and "." not in e.name and not e.name.startswith("_")
+                    and e.name not in NOT_CALCULATORS
+                    and os.path.isfile(os.path.join(e.path, "__init__.py"))})
     names.sort(key=lambda n: (ORDER.index(n) if n in ORDER else len(ORDER), n))
     return {n: f"geardesign.{n}" for n in names}
 

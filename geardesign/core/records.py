@@ -14,7 +14,7 @@ sets it), and ``__dataclass_params__`` says what the record is.  The standard li
 still collects the fields, so :func:`dataclasses.fields`, ``asdict``, ``replace`` and a
 dataclass subclass work as on any dataclass; a class with a dataclass base, an
 ``InitVar``, ``ClassVar`` or ``KW_ONLY`` annotation, a field named ``self`` or ``_...``, or
-options beyond ``frozen`` goes to :func:`dataclasses.dataclass` unchanged.
+options beyond ``frozen`` and ``kw_only`` goes to :func:`dataclasses.dataclass` unchanged.
 tests/test_records.py compares both on every record of the package.
 """
 
@@ -25,19 +25,19 @@ from operator import attrgetter
 from reprlib import recursive_repr
 
 
-def dataclass(cls=None, /, *, frozen: bool = False, **options):
+def dataclass(cls=None, /, *, frozen: bool = False, kw_only: bool = False, **options):
     """:func:`dataclasses.dataclass` with one method compiled per class instead of six
     (see the module)."""
 
     def wrap(cls):
         if options or not _plain(cls):
-            return dataclasses.dataclass(cls, frozen=frozen, **options)
+            return dataclasses.dataclass(cls, frozen=frozen, kw_only=kw_only, **options)
         own = cls.__dict__
         class_hash = own.get("__hash__", dataclasses.MISSING)
         explicit_hash = not (class_hash is dataclasses.MISSING
                              or (class_hash is None and "__eq__" in own))
         documented = bool(own.get("__doc__"))
-        cls = dataclasses.dataclass(cls, init=False, repr=False, eq=False)
+        cls = dataclasses.dataclass(cls, init=False, repr=False, eq=False, kw_only=kw_only)
         fields = dataclasses.fields(cls)
         _set(cls, "__init__", _init(cls, fields, frozen))
         if not documented:     # as dataclasses writes it: the name and the signature

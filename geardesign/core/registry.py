@@ -9,7 +9,6 @@ calculator.
 
 from __future__ import annotations
 
-import difflib
 import importlib
 import importlib.util
 from pathlib import Path
@@ -140,6 +139,8 @@ def write_catalog() -> None:
 def _kind_problem(value: object) -> Problem:
     known = ", ".join(f'"{k}"' for k in KINDS)
     if isinstance(value, str):
+        import difflib  # only to name a close match
+
         close = difflib.get_close_matches(value, list(KINDS), 1, 0.6)
         hint = f' (did you mean "{close[0]}"?)' if close else ""
         return Problem("kind", f"unknown calculator{hint}; known: {known}", value)

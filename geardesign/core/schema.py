@@ -8,7 +8,6 @@ JSON Schema and commented template.
 
 from __future__ import annotations
 
-import difflib
 import math
 from dataclasses import field
 from pathlib import Path
@@ -209,6 +208,8 @@ class Field:
                 return None, bad
             value = float(value)
         if self.choices is not None and value not in self.choices:
+            import difflib  # only to name a close match
+
             close = difflib.get_close_matches(str(value), [str(c) for c in self.choices], 1, 0.6)
             return None, bad + (f' (did you mean "{close[0]}"?)' if close else "")
         if self.type in ("number", "integer"):

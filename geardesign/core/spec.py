@@ -16,7 +16,6 @@ There is no second, hand-kept copy of the rules anywhere.
 
 from __future__ import annotations
 
-import difflib
 from pathlib import Path
 from typing import Any, Iterator
 
@@ -34,6 +33,8 @@ def _validate_table(table: Table, data: Any, path: str, problems: list, assumed:
         if key not in known and table.open:
             out[key] = value
         elif key not in known:
+            import difflib  # only to name a close match
+
             close = difflib.get_close_matches(key, known, 1, 0.6) or [
                 k for k in known if k.lower() == key.lower()
             ]
