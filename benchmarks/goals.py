@@ -87,7 +87,7 @@ def startup(runs: int, quick: bool) -> None:
     med = statistics.median(t for t, _, _ in per)
     fmed = statistics.median(f for _, f, _ in per)
     print(f"   cold median over {len(per)} example specs {med * 1e3:7.1f} ms = "
-          f"{med / fmed:5.1f} x floor, {med / n:4.2f} x import numpy")
+          f"{med / fmed:5.1f} x floor (goal <= 8), {med / n:4.2f} x import numpy")
     for t, _, name in sorted(per, reverse=True)[:5]:
         print(f"     slowest: {name:44s} {t:6.3f} s")
 

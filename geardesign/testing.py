@@ -23,9 +23,10 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
+
+from geardesign.core.records import dataclass
 
 IGNORED = ("geardesign", "spec")
 """Keys of a document (and of the documents nested in it) that are not results: the program

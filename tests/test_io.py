@@ -14,6 +14,7 @@ from pathlib import Path
 
 import pytest
 
+from geardesign.core import atomic
 from geardesign.core import io as gio
 from geardesign.core.errors import InputError
 from tests.helpers_cli import cli, write_spec
@@ -230,7 +231,7 @@ def test_ctrl_c_at_any_moment_of_a_sweep_is_one_line_and_leaves_no_file(tmp_path
 def test_a_commit_after_the_signal_removed_the_file_is_an_interruption(tmp_path):
     f = gio.AtomicFile(tmp_path / "r.json")
     f.tmp.write_text("x")
-    gio._remove_live()
+    atomic._remove_live()
     with pytest.raises(KeyboardInterrupt):
         f.commit()
     assert list(tmp_path.iterdir()) == []

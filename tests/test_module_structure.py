@@ -24,10 +24,6 @@ LONG = {
     "drive/calculator.py": SPLITTING + ": the drive composes stages through solve()",
     "drive/lubrication.py": SPLITTING + ": the drive composes stages through solve()",
     "drive/shaft_analysis.py": SPLITTING + ": the drive composes stages through solve()",
-    "cli.py": SPLITTING + ": the commands' option handling apart from the dispatch",
-    "core/spec.py": SPLITTING + ": schema types apart from validation",
-    "core/render.py": SPLITTING + ": the HTML report in its own package",
-    "core/io.py": SPLITTING + ": the writers apart from the readers",
     "rexs/chain.py": SPLITTING + ": one reader per REXS component type (shafts, stages, "
                         "bearings, load case) apart from the spec writer",
     "rendering/figures.py": SPLITTING + ": one module of pictures per calculator kind",

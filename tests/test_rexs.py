@@ -429,7 +429,7 @@ def test_cli_start_up_does_not_import_the_exchange_code():
     import subprocess
     import sys
 
-    code = ("import sys, geardesign.cli; "
+    code = ("import sys, geardesign.cli_app; "
             "print(sorted(m for m in sys.modules if m.startswith('geardesign.rexs.')))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          cwd=Path(__file__).parent.parent, check=True).stdout

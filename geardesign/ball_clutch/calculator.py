@@ -8,13 +8,13 @@ checks.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.ball_clutch import clutch as C
 from geardesign.ball_clutch import sources as S
 from geardesign.ball_clutch import spring as SP
 from geardesign.ball_clutch.contact import ball_contact, effective_modulus
 from geardesign.core.errors import InputError, Problem, Problems
+from geardesign.core.records import dataclass
 from geardesign.core.result import Result, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.materials import spring_steel

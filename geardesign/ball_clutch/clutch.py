@@ -13,7 +13,8 @@ angles rad, speeds rad/s, masses kg.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+
+from geardesign.core.records import dataclass
 
 
 def ball_forces(T: float, z1: int, d4: float, z3: int, d5: float) -> tuple[float, float]:

@@ -8,7 +8,8 @@ curvature factor; GOST 13765-86 uses the same rate and stress relations; Budynas
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+
+from geardesign.core.records import dataclass
 
 END_TYPES = ("closed_ground", "closed", "plain_ground", "plain")
 """End types of Shigley Table 10-1: squared (closed) and ground, squared, plain and ground,

@@ -4,10 +4,11 @@ static safety.  Pure: plain dataclasses in, a dataclass out (no spec, no report)
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from geardesign.bearing import life as L
 from geardesign.bearing import tables as T
+from geardesign.core.records import dataclass
 
 
 @dataclass(frozen=True)

@@ -14,9 +14,10 @@ from __future__ import annotations
 
 import csv
 import difflib
-from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
+
+from geardesign.core.records import dataclass
 
 _FILE = Path(__file__).with_name("catalogue.csv")
 DEFAULT_MAKER = "SKF"

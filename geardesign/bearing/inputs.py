@@ -6,7 +6,7 @@ independent stages of a spec are reported in one round (:class:`Problems`)."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 from geardesign.bearing import catalogue as CAT
 from geardesign.bearing import life as L
@@ -27,6 +27,7 @@ from geardesign.bearing.resolve import (
     resolve_bearing,
 )
 from geardesign.core.errors import InputError, Problem, Problems
+from geardesign.core.records import dataclass
 from geardesign.core.spec import ValidatedSpec
 
 SHARE_TOL = 1e-6

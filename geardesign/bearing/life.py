@@ -7,9 +7,9 @@ mm²/s, angles in degrees at the interface.  Table data live in :mod:`.tables`.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.bearing import tables as T
+from geardesign.core.records import dataclass
 
 
 class BearingError(ValueError):

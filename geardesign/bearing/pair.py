@@ -26,7 +26,7 @@ on bearing 1, k = 0.6):
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from geardesign.core.records import dataclass
 
 K_TAPERED = 0.5
 R_ANGULAR = ((20.0, 0.50), (25.0, 0.57), (30.0, 0.66), (40.0, 0.88))

@@ -4,7 +4,7 @@ the facts the report says of where its data come from; bearing B of a pair likew
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 from geardesign.bearing import catalogue as CAT
 from geardesign.bearing import life as L
@@ -13,6 +13,7 @@ from geardesign.bearing.assess import Bearing
 from geardesign.bearing.conditions import _type_words
 from geardesign.bearing.conditions import fmt as _f
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 from geardesign.core.spec import ValidatedSpec
 
 

@@ -7,7 +7,7 @@ spec, no report rows (those are :mod:`geardesign.bearing.report`'s).  Formulas i
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 from geardesign.bearing import catalogue as CAT
 from geardesign.bearing import life as L
@@ -24,6 +24,7 @@ from geardesign.bearing.inputs import (
     with_c_u,
 )
 from geardesign.core.errors import InputError
+from geardesign.core.records import dataclass
 
 
 @dataclass(frozen=True)

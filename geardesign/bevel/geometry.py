@@ -17,9 +17,9 @@ tangential shift −x_τ1 unless x_τ2 is given (``Pair.xts``).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.bevel.inputs import Pair, pitch_angles
+from geardesign.core.records import dataclass
 from geardesign.gears.geometry import BasicRack, tip_thickness, undercut_shift_limit
 
 

@@ -5,9 +5,9 @@ keys that the schema cannot state is checked here, all of them in one round
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.core.errors import Problem, Problems
+from geardesign.core.records import dataclass
 
 DELTA_MAX = math.radians(89.5)
 """Largest pitch cone angle: a crown (δ = 90°) or internal bevel gear is not covered."""

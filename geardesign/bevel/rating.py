@@ -14,10 +14,10 @@ Stresses [MPa], forces [N], lengths [mm], torque [N·mm].
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.bevel.geometry import Geometry
 from geardesign.bevel.inputs import Inputs
+from geardesign.core.records import dataclass
 from geardesign.spur.strength import gost21354 as G
 from geardesign.spur.strength.iso6336 import part2, part3
 

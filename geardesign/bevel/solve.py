@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from geardesign.bevel import geometry, rating
 from geardesign.bevel.inputs import Inputs
+from geardesign.core.records import dataclass
 
 
 @dataclass(frozen=True)

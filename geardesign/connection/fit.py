@@ -27,7 +27,8 @@ torques N·mm.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+
+from geardesign.core.records import dataclass
 
 SMOOTHING = 0.8
 """Share of the roughness depths Rz that is smoothed away on joining ([DIN7190-1])."""

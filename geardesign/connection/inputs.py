@@ -6,13 +6,13 @@ reported in one run, a rule that needs a wrong value is left out."""
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
 from geardesign.connection import iso286
 from geardesign.connection import sources as S
 from geardesign.connection import spline as SP
 from geardesign.connection import tables
 from geardesign.core.errors import InputError, Problem, Problems
+from geardesign.core.records import dataclass
 
 
 def fmt(x: float, digits: int = 3) -> str:

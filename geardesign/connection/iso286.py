@@ -8,9 +8,9 @@ The interference of a fit is ``U = shaft − hole``: largest ``U_max = es − EI
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
 from geardesign.connection import tables
+from geardesign.core.records import dataclass
 
 SHAFT_LETTERS = ("f", "g", "h", "js", "k", "m", "n", "p", "r", "s", "t", "u")
 GRADES = range(5, 12)

@@ -5,7 +5,6 @@ rows (those are :mod:`geardesign.connection.calculator`'s).  Formulas in :mod:`.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.connection import fit as F
 from geardesign.connection import key as K
@@ -13,6 +12,7 @@ from geardesign.connection import sources as S
 from geardesign.connection import spline as SP
 from geardesign.connection import tables
 from geardesign.connection.inputs import FitInput, KeyInput, Load, SplineInput
+from geardesign.core.records import dataclass
 
 
 @dataclass(frozen=True)

@@ -13,7 +13,7 @@ Flank pressure p = 2·T·K_A/(d_m·z·h_w·l·ψ) with the load-distribution fac
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from geardesign.core.records import dataclass
 
 X_RANGE = (-0.05, 0.45)
 """Profile shift coefficients of the [DIN5480] series."""

@@ -5,9 +5,10 @@ counted from 1) so that a report can cite it."""
 from __future__ import annotations
 
 import csv
-from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
+
+from geardesign.core.records import dataclass
 
 HERE = Path(__file__).resolve().parent
 

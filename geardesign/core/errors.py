@@ -8,9 +8,9 @@ problems itself.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Any
 
+from geardesign.core.records import dataclass
 from geardesign.core.text import escape_controls
 
 _MISSING = object()

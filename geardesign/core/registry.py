@@ -9,39 +9,18 @@ calculator.
 
 from __future__ import annotations
 
-import difflib
 import importlib
 import importlib.util
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
 from geardesign.core.errors import InputError, Problem, Problems, Unusable
+from geardesign.core.records import dataclass
 from geardesign.core.result import Result, Row, guard
+from geardesign.core.kinds import (CATALOG, KINDS, NOT_CALCULATORS, ORDER,  # noqa: F401 (API)
+                                   catalog, get, known_kinds)
 from geardesign.core.spec import (SpecSchema, ValidatedSpec, iter_fields, load_toml,
                                   validate_partial)
-
-NOT_CALCULATORS = {"core", "fatigue", "gears", "materials", "rendering", "rexs"}
-"""Subpackages of ``geardesign`` that are shared code, not calculators (``rexs``: the
-exchange commands import and export)."""
-
-ORDER = ("spur", "bearing", "worm", "planetary", "novikov", "epicycle_rim", "pzdn", "drive")
-"""Listing order of the calculators; others follow alphabetically."""
-
-
-def _discover() -> dict[str, str]:
-    import pkgutil
-
-    import geardesign
-
-    names = [m.name for m in pkgutil.iter_modules(geardesign.__path__)
-             if m.ispkg and m.name not in NOT_CALCULATORS and not m.name.startswith("_")]
-    names.sort(key=lambda n: (ORDER.index(n) if n in ORDER else len(ORDER), n))
-    return {n: f"geardesign.{n}" for n in names}
-
-
-KINDS: dict[str, str] = _discover()
-
 
 @dataclass(frozen=True)
 class Calculator:
@@ -145,40 +124,8 @@ def lazy_calculator(kind: str, summary: str, methods: tuple[str, ...]):
     return __getattr__
 
 
-def known_kinds() -> list[str]:
-    return list(KINDS)
-
-
-def get(kind: str) -> Calculator:
-    return importlib.import_module(KINDS[kind]).CALCULATOR
-
-
 def all_calculators() -> list[Calculator]:
     return [get(k) for k in KINDS]
-
-
-CATALOG = Path(__file__).with_name("calculators.json")
-"""kind, summary and methods of every calculator, written once from the calculators
-(:func:`write_catalog`, ``python -m geardesign.core.registry``) so that ``geardesign list``
-imports none of them (numpy, scipy); tests/test_startup.py checks that it matches."""
-
-
-def catalog() -> list[tuple[str, str, tuple[str, ...]]]:
-    """``(kind, summary, methods)`` of every calculator in :data:`KINDS` order: from
-    :data:`CATALOG`, and by importing the calculator for a kind the file does not list."""
-    import json
-
-    try:
-        stored = {k: (s, tuple(m)) for k, s, m in json.loads(CATALOG.read_text("utf-8"))}
-    except (OSError, ValueError):
-        stored = {}
-    rows = []
-    for kind in KINDS:
-        if kind not in stored:
-            calc = get(kind)
-            stored[kind] = (calc.summary, tuple(calc.methods))
-        rows.append((kind, *stored[kind]))
-    return rows
 
 
 def write_catalog() -> None:
@@ -192,6 +139,8 @@ def write_catalog() -> None:
 def _kind_problem(value: object) -> Problem:
     known = ", ".join(f'"{k}"' for k in KINDS)
     if isinstance(value, str):
+        import difflib  # only to name a close match
+
         close = difflib.get_close_matches(value, list(KINDS), 1, 0.6)
         hint = f' (did you mean "{close[0]}"?)' if close else ""
         return Problem("kind", f"unknown calculator{hint}; known: {known}", value)

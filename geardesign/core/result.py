@@ -10,11 +10,12 @@ from __future__ import annotations
 import copy
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import Any
 
 from geardesign import __version__
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 
 SEVERITIES = ("error", "warning", "info")
 

@@ -16,6 +16,9 @@ from typing import Any
 _CONTROLS = re.compile(
     "[\x00-\x1f\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069\u2028\u2029]")
 
+FORMATS = ("table", "json", "jsonl", "markdown", "csv", "html", "pdf")
+"""The report formats (``--format``; :func:`geardesign.core.render.render`)."""
+
 
 def _escape(m: re.Match) -> str:
     c = m.group(0)

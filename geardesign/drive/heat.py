@@ -13,8 +13,9 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 
+from geardesign.core.records import dataclass
 from geardesign.drive import losses as L
 from geardesign.drive import thermal as TH
 from geardesign.materials import lubricants as OIL

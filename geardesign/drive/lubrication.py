@@ -13,9 +13,9 @@ from __future__ import annotations
 import copy
 
 import math
-from dataclasses import dataclass
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 from geardesign.core.result import DataTable, Result, check
 from geardesign.core.spec import ValidatedSpec
 from geardesign.drive import heat as HEAT

@@ -30,9 +30,10 @@ from __future__ import annotations
 
 import copy
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 from geardesign.core.registry import load_data
 from geardesign.core.result import DataTable, Result, check
 from geardesign.drive.shafts import GearLoad, external_loads, gear_force

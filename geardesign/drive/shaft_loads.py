@@ -7,10 +7,10 @@ balance (:mod:`.lubrication`)."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.core.errors import InputError, Problem
 
+from geardesign.core.records import dataclass
 from geardesign.core.registry import load_data, run_data
 from geardesign.core.result import Result
 from geardesign.drive.shafts import GearLoad, external_loads, reactions

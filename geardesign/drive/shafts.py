@@ -23,7 +23,8 @@ with M_A = Σ (p − A) × F and L = z_B − z_A (statics of a beam on two suppo
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+
+from geardesign.core.records import dataclass
 
 
 @dataclass(frozen=True)

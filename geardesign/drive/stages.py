@@ -16,10 +16,11 @@ the table ``ADAPTERS`` of :mod:`.calculator`: a new stage kind is one adapter th
 from __future__ import annotations
 
 import copy
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import Any, Callable
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 from geardesign.core.registry import load_data
 from geardesign.core.result import Result
 from geardesign.drive.shafts import GearLoad

@@ -23,8 +23,7 @@ so the root is unique.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
+from geardesign.core.records import dataclass
 from geardesign.drive.losses import G, data
 
 SIGMA = 5.670e-8            # W/(m²·K⁴), Stefan–Boltzmann constant [Incropera2007]

@@ -11,8 +11,7 @@ pieces (garbled in the printed source) are marked.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
+from geardesign.core.records import dataclass
 from geardesign.fatigue import gost25504 as g25
 
 ALPHA_EXPONENT = 0.22

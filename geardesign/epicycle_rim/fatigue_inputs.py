@@ -7,9 +7,9 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
 
 from geardesign.core.errors import InputError, Problem, Problems
+from geardesign.core.records import dataclass
 from geardesign.core.spec import Field, ValidatedSpec
 from geardesign.epicycle_rim import endurance as E
 from geardesign.epicycle_rim import stress as ST

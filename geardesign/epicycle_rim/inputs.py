@@ -11,9 +11,9 @@ that depend on other keys are written into the spec's echo (``spec.assumed``).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.core.errors import InputError, Problem, Problems, Unusable
+from geardesign.core.records import dataclass
 from geardesign.core.spec import ValidatedSpec
 from geardesign.epicycle_rim import mesh
 from geardesign.epicycle_rim.fatigue_inputs import Fatigue, assume, fatigue

@@ -18,7 +18,8 @@ is unstable for a between the crossings of that line with b_n and a_n.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+
+from geardesign.core.records import dataclass
 
 # ----------------------------------------------------------------- series (8) of paper B
 

@@ -16,7 +16,8 @@ from __future__ import annotations
 
 import cmath
 import math
-from dataclasses import dataclass
+
+from geardesign.core.records import dataclass
 
 
 def angles_from_shifts(n_planets: int, shifts: list[float], z_ring: int) -> list[float]:

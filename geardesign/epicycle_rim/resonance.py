@@ -7,8 +7,8 @@ Pure functions on plain data; frequencies in Hz, speeds in km/h, lengths in mm.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.epicycle_rim import mathieu
 from geardesign.epicycle_rim.mesh import Pulsation
 

@@ -7,8 +7,8 @@ rows and checks.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.epicycle_rim import endurance as E
 from geardesign.epicycle_rim import mathieu as M
 from geardesign.epicycle_rim import mesh

@@ -18,7 +18,8 @@ columns of the paper's Table 1 to ±0.03 MPa.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+
+from geardesign.core.records import dataclass
 
 FILLETS = ("left", "right")
 

@@ -16,9 +16,10 @@ GOST 13755-81 basic rack; ISO 21771:2007 (same quantities, ISO notation);
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from geardesign.core import xp
+from geardesign.core.records import dataclass
 from geardesign.gears.span import choose_span_teeth
 from geardesign.involute import inv, inv_inverse, inv_inverse_array
 

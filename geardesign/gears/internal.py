@@ -29,8 +29,9 @@ gears with negative z); Kudryavtsev, "Planetary gears. Handbook" (tip interferen
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
+from geardesign.core.records import dataclass
 from geardesign.gears.geometry import (
     BasicRack,
     GearGeometry,

@@ -14,7 +14,7 @@ the distributing shaft).  SI units inside (kg·m², rad/s, N·m, W).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from geardesign.core.records import dataclass
 
 
 @dataclass(frozen=True)

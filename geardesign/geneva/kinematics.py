@@ -19,7 +19,8 @@ without the books.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+
+from geardesign.core.records import dataclass
 
 
 def crank_ratio(z: int) -> float:

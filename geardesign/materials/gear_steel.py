@@ -9,13 +9,13 @@ that depend on the treatment class (σ_Hlim, S_H, Z_N max, σ_HPmax, σ_Flim, S_
 
 from __future__ import annotations
 
-import difflib
 import re
-from dataclasses import dataclass, field
+from dataclasses import field
 from functools import lru_cache
 from pathlib import Path
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 
 DATA = Path(__file__).with_name("gear_steel.toml")
 
@@ -213,6 +213,8 @@ def resolve(m: dict, key: str) -> GearMaterial:
             grade = alias
         steel = lib["steel"].get(grade)
         if steel is None:
+            import difflib  # only to name a close match
+
             close = difflib.get_close_matches(grade, list(lib["steel"]), 3, 0.5)
             hint = f" (did you mean {', '.join(repr(c) for c in close)}?)" if close else ""
             raise InputError.at(f"{key}.grade", m["grade"],

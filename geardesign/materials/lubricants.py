@@ -13,9 +13,10 @@ from __future__ import annotations
 import csv
 import difflib
 import math
-from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
+
+from geardesign.core.records import dataclass
 
 _FILE = Path(__file__).with_name("lubricants.csv")
 T0 = 273.15                 # K at 0 °C

@@ -4,9 +4,10 @@ most 350 HB after run-in; only the surface hardness is an input."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
+
+from geardesign.core.records import dataclass
 
 DATA = Path(__file__).with_name("novikov.toml")
 

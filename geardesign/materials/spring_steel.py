@@ -8,9 +8,10 @@ named in the data file.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
+
+from geardesign.core.records import dataclass
 
 DATA = Path(__file__).with_name("spring_steel.toml")
 

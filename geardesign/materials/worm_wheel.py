@@ -18,9 +18,10 @@ printed by the data sheet named in their ``source``.  A spec may override each v
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
+
+from geardesign.core.records import dataclass
 
 GROUPS = ("I", "II", "III")
 

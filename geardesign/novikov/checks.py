@@ -10,8 +10,8 @@ inside their range ψ = 0.05…0.25 (warning when ψ was clamped).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.core.result import Check, check
 from geardesign.novikov import sources as S
 from geardesign.novikov.tables import PSI_RANGE

@@ -22,8 +22,8 @@ GOST 1643-81 profile value was available.  Units: µm for deviations.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.spur.strength.gost21354 import base_pitch_deviation, tooth_direction_tolerance
 
 

@@ -14,8 +14,9 @@ cause.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
 
+from geardesign.core.records import dataclass
 from geardesign.novikov import deviations as dev
 from geardesign.novikov.factors import psi_in_range
 from geardesign.novikov.geometry import PhasePoint

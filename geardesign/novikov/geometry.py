@@ -14,8 +14,8 @@ corrected); GOST 15023-76 (rack, unverified values, [GOST15023]).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.novikov.rack import NovikovRack
 
 B_TOL = 1e-9

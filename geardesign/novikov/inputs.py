@@ -5,9 +5,9 @@ a spec is reported in the same round (:class:`~geardesign.core.errors.Problems`)
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.core.errors import InputError, Problem, Problems
+from geardesign.core.records import dataclass
 from geardesign.core.spec import ValidatedSpec
 from geardesign.novikov.geometry import (
     GeometryError,

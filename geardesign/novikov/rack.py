@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
+
+from geardesign.core.records import dataclass
 
 DATA = Path(__file__).with_name("racks.toml")
 STANDARD = "GOST 15023-76"

@@ -24,8 +24,7 @@ over the active points (g_i < δ), found by adding points in order of increasing
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
+from geardesign.core.records import dataclass
 from geardesign.novikov.factors import k_w
 from geardesign.novikov.stress import psi_of_force
 

@@ -9,8 +9,8 @@ the strength ratings' one :func:`geardesign.spur.strength.common.rows`.  Formula
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.materials.gear_steel import treatment_limits
 from geardesign.materials.novikov import steel
 from geardesign.novikov import deviations as dev

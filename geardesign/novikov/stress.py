@@ -9,8 +9,8 @@ Korotkin's system (2) whose forces add up to F_tΣ = 2000·T2/d2.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.novikov.factors import Y_A, clamp_psi, k_f, k_h, k_psi
 from geardesign.novikov.tables import SIGMA_H_CONST
 

@@ -16,9 +16,9 @@ phasing).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from functools import reduce
 
+from geardesign.core.records import dataclass
 from geardesign.planetary.kinematics import Train
 
 

@@ -26,8 +26,8 @@ from __future__ import annotations
 
 import itertools
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.planetary.kinematics import Speeds, Train
 
 

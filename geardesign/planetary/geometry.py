@@ -17,8 +17,8 @@ indices); [Matusevich2017]; [GOST19274].
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.planetary.kinematics import Train
 from geardesign.gears import geometry as G
 from geardesign.gears import internal as I

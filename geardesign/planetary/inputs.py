@@ -7,11 +7,11 @@ strength rating.  Every rule across keys that the schema cannot state raises a o
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Mapping
 
 from geardesign.core.errors import InputError, Problem, Problems
+from geardesign.core.records import dataclass
 from geardesign.core.spec import ValidatedSpec
 from geardesign.gears import losses as E
 from geardesign.planetary import geometry as PG

@@ -25,7 +25,8 @@ Gavrilov et al. 2017 (BELAZ motor-wheel, frequencies), [Matusevich2017]; [Gavril
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+
+from geardesign.core.records import dataclass
 
 SCHEMES = ("2K-H", "2K-H-stepped", "3K")
 CENTRAL = ("sun", "ring", "ring2")

@@ -8,9 +8,9 @@ and the diagnostic frequencies.  Pure: no spec, no report rows (those are
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import Mapping
 
+from geardesign.core.records import dataclass
 from geardesign.gears import losses as GL
 from geardesign.planetary import assembly as A
 from geardesign.planetary import efficiency as E

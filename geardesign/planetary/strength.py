@@ -17,8 +17,9 @@ planet's alternating bending); [GOST21354].
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
+from geardesign.core.records import dataclass
 from geardesign.planetary.geometry import Mesh
 from geardesign.planetary.kinematics import Speeds, Train
 from geardesign.gears import geometry as G

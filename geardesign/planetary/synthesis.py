@@ -22,8 +22,9 @@ Procedure (Kudryavtsev's selection of tooth numbers, with shifts for non-standar
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
+from geardesign.core.records import dataclass
 from geardesign.planetary import assembly as A
 from geardesign.planetary import geometry as PG
 from geardesign.planetary.checks import gear_checks, mesh_checks

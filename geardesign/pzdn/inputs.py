@@ -11,9 +11,9 @@ on other keys are written into the spec's echo, which leaves out the spring keys
 from __future__ import annotations
 
 import copy
-from dataclasses import dataclass
 
 from geardesign.core.errors import InputError, Problem, Problems
+from geardesign.core.records import dataclass
 from geardesign.core.spec import ValidatedSpec
 from geardesign.pzdn import sources as S
 from geardesign.pzdn.spring_inputs import Spring, fmt, spring

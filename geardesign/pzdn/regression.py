@@ -16,7 +16,7 @@ T12max(24.7) = 77.906 N·m: the equation gives 79.906 N·m.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from geardesign.core.records import dataclass
 
 
 def poly(coef, C: float) -> float:

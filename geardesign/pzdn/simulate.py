@@ -34,8 +34,9 @@ choice costs no precision (the tests compare both paths on the same model).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 
+from geardesign.core.records import dataclass
 from geardesign.pzdn.linear import exact_segment, link_row, linear_system
 from geardesign.pzdn.startup import ThreeMass
 

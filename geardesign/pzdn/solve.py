@@ -12,8 +12,8 @@ reported against the pzdn keys.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.pzdn import spring as SP
 from geardesign.pzdn import tables
 from geardesign.pzdn.inputs import Coupling, Inputs, Motor, Regression

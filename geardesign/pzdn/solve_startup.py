@@ -6,8 +6,8 @@ with the PZDN, the drive alone for the comparison, and the stiffness sweep
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.pzdn.startup import ThreeMass
 from geardesign.pzdn.startup_inputs import Startup, models
 

@@ -16,7 +16,9 @@ Shigley) and EN 13906-3, and the leg models of Shigley and EN 13906-3.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
+
+from geardesign.core.records import dataclass
 
 CURVATURE_MODELS = ("thesis", "wahl", "en13906")
 LEG_MODELS = ("thesis", "shigley", "en13906_radial", "en13906_tangential")

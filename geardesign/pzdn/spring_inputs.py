@@ -6,9 +6,9 @@ Defaults that depend on other keys are written into the spec's echo."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.core.errors import InputError, Problem, Problems
+from geardesign.core.records import dataclass
 from geardesign.core.spec import ValidatedSpec
 from geardesign.pzdn import spring as SP
 from geardesign.pzdn import tables

@@ -26,7 +26,9 @@ first (the thesis' text variant C12 = 6.25, C13 = 33.3 N·m/rad) and both at onc
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
+
+from geardesign.core.records import dataclass
 
 
 @dataclass(frozen=True)

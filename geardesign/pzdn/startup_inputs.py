@@ -5,10 +5,10 @@ every rule across its keys raises a one-line :class:`InputError`."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from pathlib import Path
 
 from geardesign.core.errors import InputError, Problem, Problems
+from geardesign.core.records import dataclass
 from geardesign.core.spec import ValidatedSpec
 from geardesign.pzdn.simulate import Motor
 from geardesign.pzdn.spring_inputs import fmt

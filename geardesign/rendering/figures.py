@@ -20,8 +20,7 @@ geometry), never recomputed; a kind without a picture gets none.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
+from geardesign.core.records import dataclass
 from geardesign.rendering.svg import PALETTE, Chart, Series, chart_svg
 from geardesign.rendering.typeset import SUPERSCRIPT, e, number_text, unit_text
 

@@ -23,8 +23,8 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.core.result import Check, Result, Row
 
 

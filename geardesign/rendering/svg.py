@@ -11,8 +11,9 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import field
 
+from geardesign.core.records import dataclass
 from geardesign.rendering.typeset import e
 
 PALETTE = ("#1f4e9e", "#b22222", "#2e8b57", "#8a5a00", "#6a3d9a", "#444444")

@@ -11,8 +11,9 @@ top of the spec, "Not imported": every component type of the model is either rea
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 
+from geardesign.core.records import dataclass
 from geardesign.rexs.common import custom, src
 from geardesign.rexs.model import Attribute, Component, Model, ModelError, convert, number
 

@@ -24,11 +24,12 @@ import io
 import json
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import field
 from pathlib import Path
 from typing import Any
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 
 MiB = 1024 * 1024
 MAX_MODEL_BYTES = 64 * MiB

@@ -27,7 +27,8 @@ deflection 0), which leaves the other pivots exactly those of the system without
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+
+from geardesign.core.records import dataclass
 
 BAND = 3                     # half bandwidth of the global matrices
 POWER_ITERATIONS = 500       # beyond: the dense eigenvalue problem

@@ -9,8 +9,8 @@ Lengths mm, forces N, torques and couples N·m, stresses MPa, speeds min⁻¹, a
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.gears.geometry import STEEL_DENSITY
 from geardesign.shaft.din743 import rating as DR
 

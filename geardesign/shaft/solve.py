@@ -19,6 +19,7 @@ from bisect import bisect_left
 from itertools import accumulate
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 from geardesign.shaft import beam
 from geardesign.shaft import records as R
 from geardesign.shaft.din743.section import rate_section as din743_section

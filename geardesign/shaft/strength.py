@@ -17,10 +17,10 @@ and K_d are data (``tables.toml``).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
+from geardesign.core.records import dataclass
 from geardesign.fatigue import gost25504 as g25
 
 

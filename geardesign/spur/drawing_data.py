@@ -19,9 +19,9 @@ Every input problem of [accuracy] and [drawing] is an :class:`InputError` raised
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 from geardesign.core.spec import ValidatedSpec
 from geardesign.gears.geometry import PairGeometry
 from geardesign.spur.measurement import (

@@ -9,10 +9,11 @@ radians (inside the pair input), N·m, min⁻¹, hours.
 from __future__ import annotations
 
 import dataclasses
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import Any, NamedTuple
 
 from geardesign.core.errors import Problems
+from geardesign.core.records import dataclass
 from geardesign.core.spec import ValidatedSpec
 from geardesign.gears.geometry import PairInput
 from geardesign.spur.spec_inputs import (

@@ -7,8 +7,8 @@ tip interference, the shaper cutter), the gears and keys named by :class:`Intern
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.core.result import Check, check
 from geardesign.spur import sources as S
 

@@ -27,11 +27,12 @@ it reports with the scalar calculator (``geardesign sweep --emit-spec``).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from types import SimpleNamespace
 
 import numpy as np
 
+from geardesign.core.records import dataclass
 from geardesign.gears.geometry import BasicRack, pair_core
 from geardesign.spur.strength.common import values
 from geardesign.spur.strength.gost21354.rating import rate as gost_rate

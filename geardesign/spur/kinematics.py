@@ -9,8 +9,8 @@ wheel root), P = pitch point.  The pinion drives.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.gears.geometry import GeometryError, PairGeometry, PairInput, pair_core
 
 

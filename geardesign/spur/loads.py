@@ -6,9 +6,9 @@ Pure functions; torque N·m, force N, speed min⁻¹, lengths mm, time h.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.core import xp
+from geardesign.core.records import dataclass
 from geardesign.gears.geometry import PairGeometry
 
 

@@ -14,8 +14,8 @@ References: [GOST16532] (span, chordal and constant chord, dimension over balls)
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.involute import inv, inv_inverse
 from geardesign.gears.span import base_tangent_length, span_measurable
 

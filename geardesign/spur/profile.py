@@ -24,10 +24,10 @@ References: [ISO21771] 5 (tooth flank, generating rack); [GOST16532] (form circl
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
+from geardesign.core.records import dataclass
 from geardesign.involute import inv
 from geardesign.gears.geometry import PairGeometry
 

@@ -12,9 +12,10 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 from typing import Any, Mapping
 
+from geardesign.core.records import dataclass
 from geardesign.gears.geometry import PairGeometry, pair_geometry
 from geardesign.spur.kinematics import Sliding, Velocities, sliding_at_ends, velocities
 

@@ -6,11 +6,12 @@ sweep may vary and the objectives it ranks by are listed here (docs/sweep.md).""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 
 import numpy as np
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 from geardesign.spur.checks import PSI_BA_WINDOW, PSI_BD_MAX, PSI_BD_MIN
 
 MAX_GRID = 200_000_000

@@ -5,7 +5,8 @@ endurance.  Lengths mm, stresses MPa, torques N·m.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+
+from geardesign.core.records import dataclass
 
 
 def ratios(z_flex: int, z_rigid: int) -> tuple[float, float]:

@@ -17,7 +17,8 @@ module units (m = 1) unless stated.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+
+from geardesign.core.records import dataclass
 
 
 @dataclass(frozen=True)

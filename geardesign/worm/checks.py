@@ -12,8 +12,8 @@ for γ_w below about 3.5°).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.core.result import Check, check
 from geardesign.worm import sources as S
 from geardesign.worm.design import (

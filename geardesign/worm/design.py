@@ -8,8 +8,7 @@ Pure functions; the contact-stress design formula itself is
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
+from geardesign.core.records import dataclass
 from geardesign.worm import tables
 from geardesign.worm.geometry import X_MAX, shift_for_center_distance
 

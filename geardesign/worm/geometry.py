@@ -18,8 +18,8 @@ found.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.gears.geometry import (
     BasicRack, GeometryError, transverse_angles, undercut_shift_limit)
 from geardesign.worm import tables

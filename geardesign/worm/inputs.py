@@ -6,9 +6,9 @@ allowed; independent stages are reported in one round (:class:`Problems`)."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.core.errors import InputError, Problem, Problems
+from geardesign.core.records import dataclass
 from geardesign.core.spec import ValidatedSpec
 from geardesign.materials import worm_wheel
 from geardesign.worm import design as D

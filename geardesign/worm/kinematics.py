@@ -7,8 +7,8 @@ forces in N.  [Dunaev]; [Ivanov].
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.worm import tables
 from geardesign.worm.geometry import WormPairGeometry
 

@@ -9,9 +9,10 @@ formula of its own except unit bookkeeping (cycle counts N = 60·n2·L_h).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from geardesign.core.errors import InputError
+from geardesign.core.records import dataclass
 from geardesign.worm import tables
 from geardesign.worm.geometry import WormPairGeometry
 from geardesign.worm.kinematics import (

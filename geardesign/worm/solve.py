@@ -4,9 +4,8 @@ and oil temperature (:func:`geardesign.worm.pair.analyse`).  Pure: no spec, no r
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 from geardesign.worm.geometry import WormGeometryError, WormPairGeometry, WormPairInput, \
     pair_geometry
 from geardesign.worm.inputs import Inputs

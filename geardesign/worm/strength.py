@@ -11,7 +11,8 @@ the K_HL limits, the θ table and the group II/III constants; those are inputs h
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+
+from geardesign.core.records import dataclass
 
 CONTACT_CONSTANT = 170.0
 """σ_H = (170 q/z2)·sqrt(T2·K·((z2/q + 1)/a_w)³), T2 in N·mm ([Chernavsky]; Dunaev's 5350 with T2 in

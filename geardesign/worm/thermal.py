@@ -4,7 +4,7 @@ Chernavsky)."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from geardesign.core.records import dataclass
 
 
 def housing_area(a_w: float) -> float:

@@ -4,8 +4,8 @@ factor K_1(d_eff) of the blank that was heat-treated."""
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.shaft.din743 import tables
 
 STEEL_TYPES = ("structural", "quenched_tempered", "case_hardening", "case_hardening_CrNiMo",

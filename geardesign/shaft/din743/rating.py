@@ -6,8 +6,7 @@ functions on plain data; [DIN743-1], [DIN743-2], [DIN743-3] through :mod:`.part1
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
+from geardesign.core.records import dataclass
 from geardesign.shaft.din743 import part1 as P1
 from geardesign.shaft.din743 import part2 as P2
 from geardesign.shaft.din743 import part3 as P3

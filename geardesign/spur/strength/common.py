@@ -12,8 +12,9 @@ kernel); rows are built only from numbers.
 from __future__ import annotations
 
 import dataclasses
-from dataclasses import dataclass, field
+from dataclasses import field
 
+from geardesign.core.records import dataclass
 from geardesign.spur.loads import Block
 
 WHO = ("pinion", "wheel")

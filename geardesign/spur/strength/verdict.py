@@ -14,9 +14,8 @@ Each comparison allows a relative 1e-12 (a value computed at the limit passes).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from geardesign.core import xp
+from geardesign.core.records import dataclass
 
 GOST = "GOST 21354-87"
 ISO = "ISO 6336:2019"

@@ -31,7 +31,8 @@ thermal change the housing and the internal gear swap roles (a_w = r_w2 − r_w1
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+
+from geardesign.core.records import dataclass
 
 T_REF = 20.0
 """Reference temperature of the drawing dimensions [°C]."""

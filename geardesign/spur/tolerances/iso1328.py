@@ -48,11 +48,11 @@ from __future__ import annotations
 
 import math
 from bisect import bisect_left
-from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
 from geardesign.core import xp
+from geardesign.core.records import dataclass
 from geardesign.spur.tolerances.gost1643 import ToleranceError
 
 STANDARD = "ISO 1328-1:2013"

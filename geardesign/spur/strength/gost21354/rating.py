@@ -18,9 +18,10 @@ curvature of the informative contact rows is ρ1ρ2/(ρ2 − ρ1).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from geardesign.core import xp
+from geardesign.core.records import dataclass
 from geardesign.materials.gear_steel import GearMaterial
 from geardesign.gears.geometry import PairGeometry
 from geardesign.spur.loads import cycles, equivalent_cycles, mesh_forces

@@ -7,8 +7,7 @@ field with its report metadata (unit, symbol, name, source:
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
+from geardesign.core.records import dataclass
 from geardesign.spur.strength.common import Record, opt, q
 
 SRC = "GOST 21354-87"

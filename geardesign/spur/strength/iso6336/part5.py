@@ -7,8 +7,7 @@ A spec names the type, quality and hardness, or gives σ_Hlim and σ_Flim itself
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
+from geardesign.core.records import dataclass
 from geardesign.spur.strength.iso6336 import tables as T
 
 HB_PER_HV = 0.95

@@ -16,8 +16,7 @@ of the section without metadata (the names' context).  A field the designer gave
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
+from geardesign.core.records import dataclass
 from geardesign.spur.strength.common import Record, opt, q
 
 S1, S2, S3 = "[ISO6336-1]", "[ISO6336-2]", "[ISO6336-3]"

@@ -6,8 +6,8 @@ ISO/TR 13989-2:2000): the record :class:`Scuffing` (its fields with their report
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.core.result import Check, check
 from geardesign.spur.strength.common import Record, q
 from geardesign.spur.strength.iso6336 import part21 as P21

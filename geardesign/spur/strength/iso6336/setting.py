@@ -7,9 +7,10 @@ the spur spec's :func:`.spec.iso_setting`, the planetary meshes')."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from geardesign.core.errors import InputError, Problem
+from geardesign.core.records import dataclass
 from geardesign.spur.strength.iso6336 import tables as T
 from geardesign.spur.tolerances import iso1328
 from geardesign.spur.tolerances.iso1328 import EDITIONS as TOLERANCE_EDITIONS

@@ -6,8 +6,8 @@ curves of parts 2 and 3 and the safety factors of the spectrum, in the record
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
+from geardesign.core.records import dataclass
 from geardesign.spur.strength.common import Record, q
 from geardesign.spur.strength.iso6336 import part2 as P2
 from geardesign.spur.strength.iso6336 import part3 as P3

@@ -11,9 +11,9 @@ written with :mod:`geardesign.core.xp` (numbers or arrays of candidates).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from geardesign.core import xp
+from geardesign.core.records import dataclass
 from geardesign.core.roots import bracket_root
 from geardesign.involute import inv
 from geardesign.gears.geometry import GeometryError
