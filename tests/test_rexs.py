@@ -223,7 +223,7 @@ def test_export_writes_computed_geometry():
 
 def test_export_of_another_kind_is_one_line():
     code, out, err = cli("export", SPECS / "connection_key.toml")
-    assert code == 2 and "export writes spur, planetary, worm, drive specs" in err
+    assert code == 2 and "export writes spur, planetary, worm, bevel, drive specs" in err
     assert len(err.strip().splitlines()) == 1
 
 
@@ -427,12 +427,13 @@ def test_cli_start_up_does_not_import_the_exchange_code():
 
 _STAGE_MODELS_JSON = {name: json.loads(export_spec(SPECS / name, "json"))
                       for name in ("planetary_2kh_reducer.toml", "worm_single_start_reducer.toml",
-                                   "drive_worm_spur.toml")}
+                                   "drive_worm_spur.toml", "bevel_spiral_iso.toml",
+                                   "drive_bevel_helical.toml")}
 
 
 @pytest.mark.parametrize("name", sorted(_STAGE_MODELS_JSON))
 def test_a_damaged_stage_model_is_one_line_or_a_spec(name):
-    """An exported planetary or worm model with one attribute or one relation dropped, or one
+    """An exported planetary, worm or bevel model with one attribute or one relation dropped, or one
     value replaced by text: the import writes a spec or refuses in one line (InputError),
     never an exception of another kind; the spec runs or is refused the same way."""
     from hypothesis import given, settings, strategies as st
@@ -468,3 +469,41 @@ def test_a_damaged_stage_model_is_one_line_or_a_spec(name):
             pass
 
     check()
+
+
+# ----------------------------------------------------------------------- bevel stages
+
+def _without_custom(text: str) -> bytes:
+    """A model as another program would write it: the custom attributes dropped."""
+    doc = json.loads(text)
+    for c in doc["model"]["components"]:
+        c["attributes"] = [a for a in c["attributes"] if not a["id"].startswith("custom_")]
+    return json.dumps(doc).encode()
+
+
+@pytest.mark.parametrize("name", sorted(p.name for p in SPECS.glob("bevel_*.toml")))
+def test_a_bevel_stage_of_another_program_imports_from_standard_attributes(name):
+    """The bevel model without geardesign's custom attributes is read from the standard
+    bevel_stage/bevel_gear attributes alone: it runs, every cone dimension it states is
+    reproduced at the precision written, and its component types are read or listed."""
+    model = parse(_without_custom(export_spec(SPECS / name, "json")))
+    imp = import_model(model, name)
+    assert 'kind = "bevel"' in imp.text
+    doc = _run(imp.text).document()
+    stated = imp.stages[0]["stated"]
+    assert {"d_e1", "d_e2", "d_m1", "delta1", "delta_a2", "R_e", "R_m"} <= set(stated)
+    for key, (value, source) in stated.items():
+        assert doc["results"]["geometry"][key] == pytest.approx(value, rel=1e-9), (key, source)
+    types = {c.type for c in model.components.values()}
+    assert types == set(imp.read_types) | set(imp.not_imported)
+
+
+def test_a_bevel_model_whose_gears_are_on_no_shaft_is_one_line():
+    doc = json.loads(export_spec(SPECS / "bevel_spiral_iso.toml", "json"))
+    m = doc["model"]
+    gears = {c["id"] for c in m["components"] if c["type"] == "bevel_gear"}
+    m["relations"] = [r for r in m["relations"] if not (
+        r["type"] == "assembly" and any(ref["id"] in gears for ref in r["refs"]))]
+    with pytest.raises(InputError) as err:
+        import_model(parse(_without_custom(json.dumps(doc))), "m")
+    assert "on no shaft" in str(err.value) and "\n" not in str(err.value)

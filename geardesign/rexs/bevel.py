@@ -27,6 +27,7 @@ BEVEL_KEYS = (
     ("pair.shaft_angle", "stage", "shaft_angle", "deg"),
     ("pair.x1", "pinion", "profile_shift_coefficient", "none"),
     ("pair.xt1", "pinion", "thickness_modification_coefficient", "none"),
+    ("pair.addendum", "pinion", "basic_addendum_coefficient", "none"),
 )
 """Keys of a bevel spec written as (and read from) standard REXS 1.5 attributes.  The
 module ``pair.module`` is one of two attributes by ``pair.module_at``
@@ -52,6 +53,23 @@ the calculator's when a model states them, :func:`stated`); the cone distances R
 (``outer_cone_distance``, ``mean_cone_distance``) are common to both members."""
 
 
+ALLOWABLE = (("sigma_Hlim", "allowable_stress_number_for_contact_stress_iso_10300_2014"),
+             ("sigma_Flim", "allowable_stress_number_bending_iso_10300_2014"))
+"""Material keys (1 pinion, 2 wheel) → attribute of the gear's ``bevel_stage_gear_data``
+[N/mm²] (ISO 10300-2 σ_H,lim and ISO 10300-3 σ_F,lim, the long-life limits)."""
+ASSUMED_LIMITS = {"sigma_Hlim": 1500.0, "sigma_Flim": 500.0}
+"""Long-life limits [MPa] assumed when a model states none: case-hardened wrought steel,
+quality MQ (ISO 6336-5:2016 figures 9 and 10; the steel geardesign assumes for the
+cylindrical gears of a model, :data:`geardesign.rexs.chain.DEFAULT_MATERIAL`)."""
+
+
+def _gear_data(r: _Reader, st: Component, gear: Component) -> Component | None:
+    for rel in r.m.related("stage_gear_data", stage=st.id):
+        if rel.role("gear") == gear.id:
+            return r.comp(rel.role("stage_gear_data") or "", rel)
+    return None
+
+
 def key_table(module_at: str) -> dict:
     """Spec key → (member, attribute, unit) of a bevel stage whose module is given at
     ``module_at`` (``"outer"`` or ``"mean"``)."""
@@ -72,6 +90,7 @@ def export(b, A, data: dict, doc: dict, stage_name: str, shafts: tuple, unit: di
         A("shaft_angle", float(pair["shaft_angle"]), "deg"),
         A("outer_transverse_module", float(geo["m_te"]), "mm")])
     b.rel("assembly", ("assembly", unit), ("part", bs))
+    mat = doc["inputs"].get("material") or {}
     hands = ("right", "left") if pair.get("hand", "right") == "right" else ("left", "right")
     gears = []
     for i, member in ((1, "pinion"), (2, "wheel")):
@@ -83,12 +102,20 @@ def export(b, A, data: dict, doc: dict, stage_name: str, shafts: tuple, unit: di
                  A("mean_normal_module", float(geo["m_nm"]), "mm"),
                  A("profile_shift_coefficient", sign * float(pair.get("x1", 0.0))),
                  A("thickness_modification_coefficient", sign * float(pair.get("xt1", 0.0))),
+                 A("basic_addendum_coefficient", float(pair["addendum"])),
+                 A("basic_dedendum_coefficient",
+                   float(pair["addendum"]) + float(pair["clearance"])),
                  A("outer_cone_distance", float(geo["R_e"]), "mm"),
                  A("mean_cone_distance", float(geo["R_m"]), "mm")]
         attrs += [A(aid, float(geo[f"{key}{i}"]), u) for aid, key, u in COMPUTED]
         g = b.new("bevel_gear", f"{stage_name} {member}", attrs)
         b.rel("assembly", ("assembly", shafts[i - 1]), ("part", g))
         gears.append(g)
+        limits = [A(aid, float(mat[f"{key}{i}"]), "N / mm^2")
+                  for key, aid in ALLOWABLE if mat.get(f"{key}{i}") is not None]
+        if limits:
+            gd = b.new("bevel_stage_gear_data", f"{stage_name} {member} data", limits)
+            b.rel("stage_gear_data", ("stage", bs), ("gear", g), ("stage_gear_data", gd))
     b.rel("stage", ("stage", bs), ("gear_1", gears[0]), ("gear_2", gears[1]))
     return bs
 
@@ -145,12 +172,33 @@ def stated(r: _Reader, st: Component) -> dict:
     return {"stage": 1, "component": st.id, "stated": out}
 
 
+def _depth(r: _Reader, mem: dict) -> tuple[str, str] | None:
+    """The depth form the stated cone angles show: constant clearance when the pinion's
+    face angle is its pitch angle plus the wheel's dedendum angle, δ_a1 = δ1 + (δ2 − δ_f2)
+    (the tip cone parallel to the mating root cone, ISO 23509 tooth depth forms), else tapered (all
+    cones from one apex); None when the angles are not stated."""
+    p, w = mem["pinion"], mem["wheel"]
+    d1, s_1 = r.value(p, "pitch_angle", "deg")
+    da1, _ = r.value(p, "face_angle", "deg")
+    d2, _ = r.value(w, "pitch_angle", "deg")
+    df2, _ = r.value(w, "root_angle", "deg")
+    if None in (d1, da1, d2, df2):
+        return None
+    parallel = abs(da1 - (d1 + d2 - df2)) <= 1e-6 * max(1.0, abs(da1))
+    return (("constant_clearance" if parallel else "tapered"),
+            f"face_angle of {p.type} {p.id} {'=' if parallel else '≠'} pitch_angle + the "
+            f"dedendum angle of {w.type} {w.id}")
+
+
 def read_foreign(r: _Reader, out: Writer, st: Component, T_in: float, torque_load, case_no,
                  load_shaft, speed, life) -> dict:
     """A bevel stage of another program as a ``bevel`` spec: [pair] from the standard
-    attributes of :data:`BEVEL_KEYS` (the module: the mean normal module of the pinion if
-    stated, else the outer transverse module of the stage), [load] the pinion's torque and
-    speed of the load case (the torque must act on the pinion's shaft)."""
+    attributes of :data:`BEVEL_KEYS` (the module: whichever of :data:`MODULE_AT` is stated;
+    both stated, the mean normal module of spiral teeth and the outer transverse module of
+    straight teeth, as ISO 23509 and GOST 19624 give them), [load] the pinion's torque and
+    speed of the load case (the torque must act on the pinion's shaft).  What REXS has no
+    attribute for (clearance and addendum coefficients, depth form, the rating's factors)
+    takes the calculator's defaults."""
     mem = members(r, st)
     if r.shaft_of(mem["pinion"]) is not load_shaft:
         raise ModelError(f"bevel_stage {st.id}: the bevel calculator takes the pinion torque; "
@@ -160,7 +208,10 @@ def read_foreign(r: _Reader, out: Writer, st: Component, T_in: float, torque_loa
     out.kv("teeth", "spiral" if beta else "straight",
            f"{s_beta} > 0" if beta else (f"{s_beta} = 0" if s_beta else
                                          "assumed: no mean_spiral_angle stated"))
-    at = "mean" if "mean_normal_module" in mem["pinion"].attributes else "outer"
+    stated_at = [at for at, (member, aid) in MODULE_AT.items()
+                 if aid in mem[member].attributes]
+    at = ("mean" if beta else "outer") if len(stated_at) == 2 else \
+        (stated_at[0] if stated_at else "outer")
     table = key_table(at)
     member, aid, unit = table["pair.module"]
     m, s_m = r.value(mem[member], aid, unit)
@@ -183,10 +234,27 @@ def read_foreign(r: _Reader, out: Writer, st: Component, T_in: float, torque_loa
     hand = r.text(mem["pinion"], "spiral_angle_pitch_direction")
     if beta and hand in ("left", "right"):
         out.kv("hand", hand, src(mem["pinion"], "spiral_angle_pitch_direction"))
+    h_a, s_a = r.value(mem["pinion"], "basic_addendum_coefficient", "")
+    h_f, s_f = r.value(mem["pinion"], "basic_dedendum_coefficient", "")
+    if h_a is not None and h_f is not None:
+        out.kv("clearance", round(h_f - h_a, 9), f"{s_f} − basic_addendum_coefficient")
+    depth = _depth(r, mem)
+    if depth is not None:
+        out.kv("depth", *depth)
     out.blank()
     out.table("load")
     out.kv("torque", T_in, src(torque_load, "torque_around_u_axis", case_no))
     out.kv("speed", speed[0], speed[2])
     out.blank()
-    r.read.update({"bevel_stage", "bevel_gear"})
+    out.table("material")
+    for i, member in ((1, "pinion"), (2, "wheel")):
+        gd = _gear_data(r, st, mem[member])
+        for key, aid in ALLOWABLE:
+            v, s_ = r.value(gd, aid, "MPa") if gd is not None else (None, None)
+            if v is None:
+                v, s_ = ASSUMED_LIMITS[key], (f"assumed: the model states no {aid} of "
+                                               f"{mem[member].type} {mem[member].id}")
+            out.kv(f"{key}{i}", v, s_)
+    out.blank()
+    r.read.update({"bevel_stage", "bevel_gear", "bevel_stage_gear_data"})
     return stated(r, st)

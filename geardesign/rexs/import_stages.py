@@ -156,6 +156,8 @@ def _restore(r: _Reader, st: Component, kind: str) -> dict:
     r.read.update({st.type} | {c.type for c in parts.values() if isinstance(c, Component)})
     if kind == "planetary":
         r.read.add("planet_carrier")
+    if kind == "bevel":     # the limits it states are the spec's [material] keys
+        r.read.add("bevel_stage_gear_data")
     return ST.nest(flat)
 
 
@@ -203,7 +205,12 @@ def _drive(r: _Reader, label: str, ordered: list[Component]) -> Imported:
             rel.type == "side" for rel in m.relations):
         # the drive's [[shaft]] tables: shaft 1 carries the first stage's gear_1, shaft k + 1
         # the gear_2 of stage k (as geardesign writes them)
-        order = [r.shaft_of(chain[0][1])] + [r.shaft_of(b) for _, _, b in chain]
+        gears = [chain[0][1]] + [b for _, _, b in chain]
+        order = [r.shaft_of(g) for g in gears]
+        for g, sh in zip(gears, order):
+            if sh is None:
+                raise ModelError(f"{g.type} {g.id} \"{g.name}\" is on no shaft (no assembly "
+                                 f"relation shaft → gear)")
         _shafts(r, out, order, chain)
     _rest(r, "drive")
     return _assemble(r, head, out, geometry)
