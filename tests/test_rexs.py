@@ -134,15 +134,22 @@ def test_planetary_model_is_the_2kh_train_it_states():
     assert spec["operation"]["torque"] == pytest.approx(1591.5494309189535, rel=1e-9)
 
 
-def test_a_chain_with_planetary_stages_of_another_program_is_one_line(tmp_path):
+def test_a_chain_with_planetary_stages_of_another_program_is_a_drive(tmp_path):
+    """Without the stage order geardesign writes, the chain is ordered along the power flow
+    (the planetary stage first: the input torque is on its sun's shaft)."""
     text = export_spec(SPECS / "drive_planetary_spur.toml", "xml")
     foreign = re.sub(r'\s*<attribute id="custom_geardesign__drive__order"[^<]*</attribute>', "",
                      text)
-    path = tmp_path / "chain.rexs"
+    path, out = tmp_path / "chain.rexs", tmp_path / "chain.toml"
     path.write_text(foreign, encoding="utf-8")
-    code, out, err = cli("import", path)
-    assert code == 2 and len(err.strip().splitlines()) == 1
-    assert "imported from geardesign's own models only" in err
+    code, _, err = cli("import", path, "-o", out)
+    assert code == 0, err
+    spec = tomllib.loads(out.read_text(encoding="utf-8"))
+    assert [s["kind"] for s in spec["stage"]] == ["planetary", "spur"]
+    assert spec["stage"][0]["operation"]["input"] == "sun"
+    assert spec["stage"][0]["operation"]["output"] == "carrier"
+    code, _, err = cli("run", out, "--format", "json", "-o", tmp_path / "r.json")
+    assert code in (0, 1), err
 
 
 def test_bearings_the_drive_cannot_express_are_said():
@@ -507,3 +514,42 @@ def test_a_bevel_model_whose_gears_are_on_no_shaft_is_one_line():
     with pytest.raises(InputError) as err:
         import_model(parse(_without_custom(json.dumps(doc))), "m")
     assert "on no shaft" in str(err.value) and "\n" not in str(err.value)
+
+
+# ------------------------------------------------- chains with planetary, worm, bevel stages
+
+CHAINS = ("drive_planetary_spur.toml", "drive_worm_spur.toml", "drive_bevel_helical.toml")
+"""Drives whose chain holds a planetary, worm or bevel stage."""
+
+
+@pytest.mark.parametrize("name", CHAINS)
+def test_a_chain_of_another_program_imports_as_drive_stages(name):
+    """The drive's model without geardesign's custom attributes (as another program writes
+    it: no stage order, no spec keys) is ordered along the power flow from the input shaft
+    and imported as a drive of the same stage kinds; it runs, and every geometric value
+    the model states of the planetary, worm and bevel stages is reproduced."""
+    model = parse(_without_custom(export_spec(SPECS / name, "json")))
+    imp = import_model(model, name)
+    data = tomllib.loads(imp.text)
+    original = registry.run(SPECS / name).document()
+    kinds = [s["kind"] for s in original["results"]["stage_reports"]]
+    assert data["kind"] == "drive" and [s["kind"] for s in data["stage"]] == kinds
+    doc = _run(imp.text).document()
+    reports = doc["results"]["stage_reports"]
+    sections = {"planetary": {"a_w": ("sun_planet", "a_w"), "a_w_ring": ("planet_ring", "a_w")},
+                "worm": dict((k, ("geometry", k)) for k in
+                             ("a_w", "d1", "d_a1", "d_f1", "gamma", "d2", "d_a2", "d_f2", "u"))}
+    for s in imp.stages:
+        rep = reports[s["stage"] - 1]
+        for key, (value, source) in s["stated"].items():
+            if rep["kind"] == "spur" or key == "d_a_ring":
+                # spur: compared by the chain import's own tests; the ring's tip diameter
+                # follows from the spec's tip_shortening and [cutter], which REXS 1.5 has
+                # no attribute for (docs/rexs.md)
+                continue
+            default = ("gears" if rep["kind"] == "planetary" else "geometry", key)
+            sec, k = sections.get(rep["kind"], {}).get(key, default)
+            assert abs(rep["results"][sec][k]) == pytest.approx(abs(value), rel=1e-6), (
+                rep["kind"], key, source)
+    types = {c.type for c in model.components.values()}
+    assert types == set(imp.read_types) | set(imp.not_imported)

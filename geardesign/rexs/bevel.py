@@ -14,9 +14,14 @@ alone (:func:`read_foreign`).
 
 from __future__ import annotations
 
-from geardesign.rexs.chain import ModelError, Writer, _Reader, src
-from geardesign.rexs.model import Component
+from typing import TYPE_CHECKING
+
+from geardesign.rexs.common import src
+from geardesign.rexs.model import Component, ModelError
 from geardesign.rexs.stages import spec_customs, spec_value
+
+if TYPE_CHECKING:
+    from geardesign.rexs.chain import Writer, _Reader
 
 BEVEL_KEYS = (
     # spec key, member (component role), REXS attribute, unit of the attribute

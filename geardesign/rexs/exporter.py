@@ -165,7 +165,13 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
         kind, sdata, sname, eta = kinds[k - 1]
         if kind != "spur":
             centres.append(centres[-1])
-            comp = other_stage(b, kind, sdata, st, sname or f"stage {k}", shafts, k, unit)
+            if kind == "bevel":
+                from geardesign.rexs.bevel import export as bevel_stage
+
+                comp = bevel_stage(b, A, sdata, st, sname or f"stage {k}",
+                                   (shafts[k - 1], shafts[k]), unit)
+            else:
+                comp = other_stage(b, kind, sdata, st, sname or f"stage {k}", shafts, k, unit)
             comp["attributes"] += drive_keys(calc.kind, k, eta)
             if kind in ("worm", "bevel"):
                 _place(b, comp, k, gear_pos, gear_extra)

@@ -16,27 +16,8 @@ from geardesign.rexs import stages as ST
 from geardesign.rexs.chain import (Imported, ModelError, Writer, _Reader,
                                       _assemble, _head, _load_case, _lubricant,
                                       _shafts, _stage, convert, custom, gu_of, src)
-from geardesign.rexs.foreign import members, planetary, stated, worm
+from geardesign.rexs.foreign import _rest, members, planetary, stated, worm
 from geardesign.rexs.model import Component, number
-
-REASONS = {
-    "gear_casing": "the housing is not modelled",
-    "concept_bearing": "the stage calculators rate no shaft bearings",
-    "rolling_bearing_with_catalog_geometry": "the stage calculators rate no shaft bearings",
-    "shaft_section": "the stage calculators analyse no shafts",
-    "coupling": "the stage calculators model no couplings",
-    "switchable_coupling": "the stage calculators model no couplings",
-    "side_plate": "the carrier's structure is not modelled",
-    "material": "names no grade of the library, or no heat treatment (the calculator's "
-                "default material)",
-    "stage_gear_data": "per-stage gear data (tolerances, roughness) are not used",
-    "worm_stage_gear_data": "per-stage gear data (tolerances, roughness) are not used",
-    "cylindrical_gear_flank": "the flank data are computed from the spec's keys",
-    "flank_geometry": "the flank data are computed from the spec's keys",
-    "worm_gear_flank": "the flank data are computed from the spec's keys",
-}
-"""Why a component type of a planetary, worm or bevel model is not imported (else: not
-computed by the stage's calculator)."""
 
 KIND_OF = {"planetary_stage": "planetary", "worm_stage": "worm", "bevel_stage": "bevel"}
 """REXS stage component type → spec (and drive stage) kind."""
@@ -63,12 +44,10 @@ def import_other(r: _Reader, label: str) -> Imported:
     inner = {rel.role("part") for rel in m.relations if rel.type == "assembly"
              and rel.role("assembly") in {u.id for u in units}}
     outer = [c for c in m.of_type("cylindrical_stage") if c.id not in inner]
-    if len(units) != 1 or outer:
-        kinds = ", ".join(sorted({c.type for c in units + outer}))
-        raise ModelError(f"the model has {len(units) + len(outer)} stages ({kinds}): a chain "
-                         f"with planetary, worm or bevel stages is imported from geardesign's "
-                         f"own models only (custom_geardesign__drive__order); one planetary, "
-                         f"worm or bevel stage alone is imported from any program")
+    if len(units) != 1 or outer:    # a chain of another program's stages: a drive spec
+        from geardesign.rexs.foreign_chain import import_foreign_chain
+
+        return import_foreign_chain(r, label, units + outer)
     st = units[0]
     kind = KIND_OF[st.type]
     out, head = Writer(), _heading(m, label)
@@ -113,19 +92,6 @@ def restore_spec(r: _Reader, label: str, kind: str) -> Imported:
     _lubricant(r, out)
     _rest(r, kind)
     return _assemble(r, _heading(r.m, label), out, [_stated(r, st, kind)])
-
-
-def _rest(r: _Reader, kind: str) -> None:
-    """Every component not read is listed as not imported, with the reason."""
-    r.read.update({"gear_unit", "shaft", "external_load"})
-    listed = {(t, item.split(" ", 1)[0]) for t, items in r.not_imported.items()
-              for item in items}
-    for c in r.m.components.values():
-        if c.type not in r.read and c.type != "lubricant" and (c.type, c.id) not in listed:
-            r.skip(c, REASONS.get(c.type, f"not computed by the {kind} calculator"))
-    for c in r.m.of_type("material"):
-        if c.type in r.read and c.id not in r.used_materials:
-            r.skip(c, REASONS["material"])
 
 
 def _restore(r: _Reader, st: Component, kind: str) -> dict:

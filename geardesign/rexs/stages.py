@@ -291,13 +291,9 @@ def stage_load(kind: str, doc: dict) -> tuple:
 
 def other_stage(b, kind: str, sdata: dict, doc: dict, name: str, shafts: list,
                  k: int, unit: dict) -> dict:
-    """A planetary, worm or bevel stage between shafts k-1 (input) and k (output)
-    (:mod:`geardesign.rexs.stages`, :mod:`geardesign.rexs.bevel`); a planetary's third
-    member (held, or the control member of a differential) gets a shaft of its own."""
-    if kind == "bevel":
-        from geardesign.rexs.bevel import export
-
-        return export(b, A, sdata, doc, name, (shafts[k - 1], shafts[k]), unit)
+    """A planetary or worm stage between shafts k-1 (input) and k (output)
+    (:mod:`geardesign.rexs.stages`); a planetary's third member (held, or the control
+    member of a differential) gets a shaft of its own."""
     if kind == "worm":
         return worm(b, A, sdata, doc, name, (shafts[k - 1], shafts[k]), unit)
     op = doc["inputs"].get("operation") or {}
