@@ -64,8 +64,9 @@ ALLOWABLE = (("sigma_Hlim", "allowable_stress_number_for_contact_stress_iso_1030
 [N/mm²] (ISO 10300-2 σ_H,lim and ISO 10300-3 σ_F,lim, the long-life limits)."""
 ASSUMED_LIMITS = {"sigma_Hlim": 1500.0, "sigma_Flim": 500.0}
 """Long-life limits [MPa] assumed when a model states none: case-hardened wrought steel,
-quality MQ (ISO 6336-5:2016 figures 9 and 10; the steel geardesign assumes for the
-cylindrical gears of a model, :data:`geardesign.rexs.chain.DEFAULT_MATERIAL`)."""
+quality MQ ([ISO6336-5]: σ_Hlim = 1500 MPa, σ_Flim = 500 MPa at a core hardness of 30 HRC
+or more), the steel geardesign assumes for the cylindrical gears of a model
+(:data:`geardesign.rexs.chain.DEFAULT_MATERIAL`)."""
 
 
 def _gear_data(r: _Reader, st: Component, gear: Component) -> Component | None:
