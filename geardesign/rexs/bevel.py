@@ -148,18 +148,9 @@ def stage_load(doc: dict) -> tuple:
 
 def members(r: _Reader, st: Component) -> dict[str, Component]:
     """Pinion (``gear_1``), wheel (``gear_2``) and the stage of a bevel_stage."""
-    out: dict = {"stage": st}
-    for rel in r.m.related("stage", stage=st.id):
-        out["pinion"] = r.comp(rel.role("gear_1") or "", rel)
-        out["wheel"] = r.comp(rel.role("gear_2") or "", rel)
-    if "pinion" not in out:
-        raise ModelError(f"bevel_stage {st.id} has no stage relation naming its pinion and "
-                         f"wheel")
-    for g in (out["pinion"], out["wheel"]):
-        if r.shaft_of(g) is None:
-            raise ModelError(f"{g.type} {g.id} \"{g.name}\" of stage {st.id} is on no "
-                             f"shaft (no assembly relation shaft → gear)")
-    return out
+    from geardesign.rexs.foreign import pair_members
+
+    return pair_members(r, st, "pinion", "wheel")
 
 
 def stated(r: _Reader, st: Component) -> dict:

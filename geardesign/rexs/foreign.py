@@ -205,17 +205,7 @@ def members(r: _Reader, st: Component, kind: str) -> dict[str, Component]:
                 out[f"flank{i}"] = left or right
         return out
     if kind == "worm":
-        for rel in m.related("stage", stage=st.id):
-            out["worm"] = r.comp(rel.role("gear_1") or "", rel)
-            out["wheel"] = r.comp(rel.role("gear_2") or "", rel)
-        if "worm" not in out:
-            raise ModelError(f"worm_stage {st.id} has no stage relation naming its worm and "
-                             f"wheel")
-        for g in (out["worm"], out["wheel"]):
-            if r.shaft_of(g) is None:
-                raise ModelError(f"{g.type} {g.id} \"{g.name}\" of stage {st.id} is on no "
-                                 f"shaft (no assembly relation shaft → gear)")
-        return out
+        return pair_members(r, st, "worm", "wheel")
     meshes = [rel.role("part") for rel in m.relations if rel.type == "assembly"
               and rel.role("assembly") == st.id]
     planets = set()
@@ -243,6 +233,23 @@ def members(r: _Reader, st: Component, kind: str) -> dict[str, Component]:
             raise ModelError(f"planetary_stage {st.id} \"{st.name}\": no {need} found (its "
                              f"cylindrical stages' relations gear_1/gear_2)")
     out["planets"] = len(planets)
+    return out
+
+
+def pair_members(r: _Reader, st: Component, first: str, second: str) -> dict[str, Component]:
+    """The two gears of a worm or bevel stage by role: ``first`` is ``gear_1`` of its
+    ``stage`` relation, ``second`` ``gear_2``, each on a shaft (else one line)."""
+    out: dict = {"stage": st}
+    for rel in r.m.related("stage", stage=st.id):
+        out[first] = r.comp(rel.role("gear_1") or "", rel)
+        out[second] = r.comp(rel.role("gear_2") or "", rel)
+    if first not in out:
+        raise ModelError(f"{st.type} {st.id} has no stage relation naming its {first} and "
+                         f"{second}")
+    for g in (out[first], out[second]):
+        if r.shaft_of(g) is None:
+            raise ModelError(f"{g.type} {g.id} \"{g.name}\" of stage {st.id} is on no "
+                             f"shaft (no assembly relation shaft → gear)")
     return out
 
 
