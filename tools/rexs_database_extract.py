@@ -25,6 +25,7 @@ COMPONENTS = (
     "rolling_bearing_with_catalog_geometry", "concept_bearing", "external_load", "material",
     "lubricant", "worm_gear", "worm_wheel", "worm_stage", "worm_stage_gear_data",
     "planetary_stage", "planet_carrier", "ring_gear", "planet_shaft", "central_shaft",
+    "bevel_stage", "bevel_gear", "bevel_stage_gear_data",
 )
 """Component types whose attributes are kept (those the exporter writes and the importer
 reads)."""

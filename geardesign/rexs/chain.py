@@ -678,6 +678,11 @@ def _shafts(r: _Reader, out: Writer, order: list, chain: list) -> None:
                     raise ModelError(f"bearing {br.id} states no u_coordinate_on_shaft_inner_side")
                 brs.append((u, br, s_u))
         brs.sort(key=lambda x: x[0])
+        if not brs and not r.parts(sh.id, "shaft_section"):
+            # a bare shaft (no bearing, no section): not a [[shaft]] of the drive, which
+            # analyses the shafts it is given and leaves the others out
+            r.skip(sh, "no bearings and no sections: not a [[shaft]] of the drive")
+            continue
         if len(brs) < 2:
             why_not.append(f"shaft {sh.id} has {len(brs)} bearing(s); the drive's shafts have two")
             continue
@@ -718,19 +723,20 @@ def _shafts(r: _Reader, out: Writer, order: list, chain: list) -> None:
         gears = []
         for k, (st, a, b) in enumerate(chain, 1):
             for g, mate in ((a, b), (b, a)):
-                if r.shaft_of(g) is sh:
+                if g is not None and r.shaft_of(g) is sh:
                     gears.append((k, g, mate))
         for k, g, mate in gears:
             lines.table("shaft.gear", array=True)
-            lines.kv("stage", k, f"component {chain[k - 1][0].id} (cylindrical_stage), "
-                                 f"gear {g.id}")
+            lines.kv("stage", k, f"component {chain[k - 1][0].id} "
+                                 f"({chain[k - 1][0].type}), gear {g.id}")
             u, s_u = r.value(g, "u_coordinate_on_shaft", "mm")
             if u is None:
-                raise ModelError(f"cylindrical_gear {g.id} states no u_coordinate_on_shaft")
+                raise ModelError(f"{g.type} {g.id} states no u_coordinate_on_shaft")
             lines.kv("position", u, s_u)
-            ang = _mate_angle(r, g, mate)
+            extra = custom(g)
+            ang = extra.pop("mate_angle", None) or _mate_angle(r, g, mate)
             lines.kv("mate_angle", ang[0], ang[1])
-            for kk, (v, s_) in custom(g).items():
+            for kk, (v, s_) in extra.items():
                 lines.kv(kk, v, s_)
         ok = True
         for side, (_, br, _) in zip("ab", brs):
@@ -784,7 +790,7 @@ def _shafts(r: _Reader, out: Writer, order: list, chain: list) -> None:
             blocks.append(lines.lines)
         else:
             blocks.append(["# " + ln if ln else ln for ln in lines.lines])
-    complete = not why_not and len(blocks) == len(order)
+    complete = not why_not
     if not complete:
         out.comment("The shafts are not imported as [[shaft]] tables (their bearings cannot be "
                     "rated): " + "; ".join(why_not))

@@ -26,7 +26,7 @@ def register(app: typer.Typer, err, write) -> None:
                        None, "--output", "-o", help="Write the spec to this file "
                                                     "(default: standard output).")) -> None:
         """Read a REXS gear unit and write it as a spec (TOML) for `geardesign run`: a drive,
-        or a planetary or worm stage (docs/rexs.md)."""
+        or a planetary, worm or bevel stage (docs/rexs.md)."""
         from geardesign.core.errors import InputError
         from geardesign.rexs.importer import import_model
         from geardesign.rexs.model import read_model
@@ -43,14 +43,14 @@ def register(app: typer.Typer, err, write) -> None:
             write(output, imported.text)
 
     @app.command("export")
-    def export_cmd(spec: Path = typer.Argument(..., help="Spec file: spur, planetary, worm or "
-                                                         "drive."),
+    def export_cmd(spec: Path = typer.Argument(..., help="Spec file: spur, planetary, worm, "
+                                                         "bevel or drive."),
                    format: ExportFormat = typer.Option(ExportFormat.rexs, "--format", "-f",
                                                       help="rexs (XML) or rexs-json."),
                    output: Optional[Path] = typer.Option(
                        None, "--output", "-o", help="Write the model to this file "
                                                     "(default: standard output).")) -> None:
-        """Write the gear unit of a spur, planetary, worm or drive spec as a REXS 1.5 model,
+        """Write the gear unit of a spur, planetary, worm, bevel or drive spec as a REXS 1.5 model,
         with the computed values REXS has attributes for."""
         from geardesign.core.errors import InputError
         from geardesign.rexs.exporter import export_spec

@@ -1,9 +1,10 @@
-"""A spur, planetary, worm or drive spec as a REXS 1.5 model (XML or JSON).
+"""A spur, planetary, worm, bevel or drive spec as a REXS 1.5 model (XML or JSON).
 
 The gear unit is written with the standard attribute ids and units of the REXS 1.5
 database (geardesign/rexs/rexs_database_1.5.json, [REXS-DB]): shafts (sections from
 ``[[shaft.step]]``, external forces from ``[[shaft.load]]``), cylindrical stages and gears
 with their flanks and materials, planetary and worm stages (:mod:`geardesign.rexs.stages`),
+bevel stages (:mod:`geardesign.rexs.bevel`),
 rolling bearings by catalogue designation, the load case (input torque and speed), and the computed
 values REXS has attributes for (reference, tip, root and base diameters, centre distance,
 ratio, transverse, overlap and total contact ratio).  A key of the spec that REXS has no
@@ -25,8 +26,10 @@ from geardesign.rexs.serialize import to_json, to_xml
 from geardesign.rexs.stages import designed, drive_keys, other_stage, stage_load
 
 VERSION = "1.5"
-KINDS = ("spur", "planetary", "worm", "drive")
-"""Spec kinds ``export`` writes (a drive of spur, planetary and worm stages)."""
+KINDS = ("spur", "planetary", "worm", "bevel", "drive")
+"""Spec kinds ``export`` writes (a drive of spur, planetary, worm and bevel stages)."""
+STAGE_KINDS = ("spur", "planetary", "worm", "bevel")
+"""Stage kinds of a drive ``export`` writes."""
 
 TREATMENT_ISO6336 = {
     "normalized": "normalized_wrought_low_carbon_steel",
@@ -81,7 +84,7 @@ def _custom(prefix: str, table: dict, skip=()) -> list[dict]:
 
 
 def export_spec(path: Path, fmt: str = "xml") -> str:
-    """The REXS text of the spec at ``path`` (a spur, planetary, worm or drive spec); a
+    """The REXS text of the spec at ``path`` (a spur, planetary, worm, bevel or drive spec); a
     spec of another kind, or a drive with a stage of another kind, is one
     :class:`InputError` line."""
     from geardesign.core import registry
@@ -110,12 +113,17 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
         shafts_spec: list[dict] = []
         unit["attributes"].append(A(f"{CUSTOM}source_kind", "spur"))
         raw_spur = load_toml(path)
-    elif calc.kind in ("planetary", "worm"):
+    elif calc.kind in ("planetary", "worm", "bevel"):
         stages, data, shafts_spec = [doc], {}, []
         raw = load_toml(path)
         kinds = [(calc.kind, raw, doc.get("title") or path.stem, None)]
         unit["attributes"].append(A(f"{CUSTOM}source_kind", calc.kind))
-        T_in, n_in, life, load_at = stage_load(calc.kind, doc)
+        if calc.kind == "bevel":
+            from geardesign.rexs.bevel import stage_load as bevel_load
+
+            T_in, n_in, life, load_at = bevel_load(doc)
+        else:
+            T_in, n_in, life, load_at = stage_load(calc.kind, doc)
     else:
         from geardesign.drive.calculator import resolve_stages
 
@@ -123,10 +131,10 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
         resolved = resolve_stages(spec.data["stage"] or [], spec.base_dir)
         kinds = []
         for k, (st, (_, name, sdata, eta)) in enumerate(zip(stages, resolved), 1):
-            if st.get("kind") not in ("spur", "planetary", "worm"):
+            if st.get("kind") not in STAGE_KINDS:
                 raise InputError(Problem(f"stage[{k - 1}]", f"is a {st.get('kind')} stage; "
-                                         f"export writes drives of spur, planetary and worm "
-                                         f"stages"))
+                                         f"export writes drives of "
+                                         f"{', '.join(STAGE_KINDS)} stages"))
             kinds.append((st["kind"], sdata, name, eta))
         data = spec.data
         drv = doc["results"]["drive"]
@@ -157,8 +165,16 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
         kind, sdata, sname, eta = kinds[k - 1]
         if kind != "spur":
             centres.append(centres[-1])
-            comp = other_stage(b, kind, sdata, st, sname or f"stage {k}", shafts, k, unit)
+            if kind == "bevel":
+                from geardesign.rexs.bevel import export as bevel_stage
+
+                comp = bevel_stage(b, A, sdata, st, sname or f"stage {k}",
+                                   (shafts[k - 1], shafts[k]), unit)
+            else:
+                comp = other_stage(b, kind, sdata, st, sname or f"stage {k}", shafts, k, unit)
             comp["attributes"] += drive_keys(calc.kind, k, eta)
+            if kind in ("worm", "bevel"):
+                _place(b, comp, k, gear_pos, gear_extra)
             continue
         inp = st["inputs"]
         geo = st["results"]["geometry"]
@@ -273,6 +289,24 @@ def export_spec(path: Path, fmt: str = "xml") -> str:
              "relations": b.relations, "components": b.components,
              "load_spectrum": {"id": 1, "load_cases": cases}}
     return to_json(model) if fmt == "json" else to_xml(model)
+
+
+def _place(b: _Builder, stage: dict, k: int, gear_pos: dict, gear_extra: dict) -> None:
+    """The places of the two gears of worm or bevel stage k on their shafts (``gear_1`` on
+    shaft k, ``gear_2`` on shaft k + 1, from ``[[shaft.gear]]``): ``u_coordinate_on_shaft``
+    [mm] and, as their axes cross, the mate angle of the drive (the direction of the mesh
+    force in the plane normal to the shaft) as the custom attribute
+    ``custom_geardesign__mate_angle`` [deg] rather than a ``support_vector``."""
+    rel = next(r for r in b.relations if r["type"] == "stage"
+               and r["refs"][0]["id"] == stage["id"])
+    by_id = {c["id"]: c for c in b.components}
+    for j, ref in zip((k, k + 1), rel["refs"][1:]):
+        g = by_id[ref["id"]]
+        if (j, k) in gear_pos:
+            z, theta = gear_pos[(j, k)]
+            g["attributes"] += [A("u_coordinate_on_shaft", z, "mm"),
+                                A(f"{CUSTOM}mate_angle", theta)]
+        g["attributes"] += gear_extra.get((j, k), [])
 
 
 def _external_loads(b: _Builder, shafts: list, by_index: dict) -> None:

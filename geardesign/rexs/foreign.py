@@ -25,9 +25,11 @@ def _shift(r: _Reader, g: Component):
 
 
 def planetary(r: _Reader, out: Writer, st: Component, T_in: float, torque_load, case_no,
-               load_shaft, speed, life) -> dict:
+               load_shaft, speed, life, output: str | None = None) -> dict:
     """A planetary stage of another program: [train], [teeth], [shift], [operation],
-    [strength], [material.*] from the standard attributes."""
+    [strength], [material.*] from the standard attributes; the output member ``output``
+    (in a chain: the member the next stage is on), else the one whose shaft carries the
+    other torque-transmitting external_load."""
     mem = members(r, st, "planetary")
     sun, planet, ring, mesh = mem["sun"], mem["planet"], mem["ring"], mem["sun_planet"]
     shafts = {"sun": r.shaft_of(sun), "ring": r.shaft_of(ring)}
@@ -42,8 +44,9 @@ def planetary(r: _Reader, out: Writer, st: Component, T_in: float, torque_load, 
         raise ModelError(f"the torque (shaft {load_shaft.id}) and the speed (shaft "
                          f"{speed[1].id}) must be given on one member of planetary_stage "
                          f"{st.id} (its sun, ring or carrier shaft)")
-    driven = set()
-    for ld in r.m.of_type("external_load"):
+    given = output is not None
+    driven = {output} if given else set()
+    for ld in (() if output else r.m.of_type("external_load")):
         if ld is torque_load:
             continue
         tt = ld.attributes.get("transmits_torque")
@@ -93,7 +96,8 @@ def planetary(r: _Reader, out: Writer, st: Component, T_in: float, torque_load, 
                            "torque-transmitting load")
     out.kv("input", inp, f"the member on shaft {load_shaft.id}, which carries the torque")
     out.kv("output", output, "the member whose shaft carries the other torque-transmitting "
-                             "external_load")
+                             "external_load" if not given else
+                             "the member whose shaft the next stage is on")
     out.kv("speed", speed[0], speed[2])
     out.kv("torque", T_in, src(torque_load, "torque_around_u_axis", case_no))
     out.blank()
@@ -201,17 +205,7 @@ def members(r: _Reader, st: Component, kind: str) -> dict[str, Component]:
                 out[f"flank{i}"] = left or right
         return out
     if kind == "worm":
-        for rel in m.related("stage", stage=st.id):
-            out["worm"] = r.comp(rel.role("gear_1") or "", rel)
-            out["wheel"] = r.comp(rel.role("gear_2") or "", rel)
-        if "worm" not in out:
-            raise ModelError(f"worm_stage {st.id} has no stage relation naming its worm and "
-                             f"wheel")
-        for g in (out["worm"], out["wheel"]):
-            if r.shaft_of(g) is None:
-                raise ModelError(f"{g.type} {g.id} \"{g.name}\" of stage {st.id} is on no "
-                                 f"shaft (no assembly relation shaft → gear)")
-        return out
+        return pair_members(r, st, "worm", "wheel")
     meshes = [rel.role("part") for rel in m.relations if rel.type == "assembly"
               and rel.role("assembly") == st.id]
     planets = set()
@@ -239,6 +233,23 @@ def members(r: _Reader, st: Component, kind: str) -> dict[str, Component]:
             raise ModelError(f"planetary_stage {st.id} \"{st.name}\": no {need} found (its "
                              f"cylindrical stages' relations gear_1/gear_2)")
     out["planets"] = len(planets)
+    return out
+
+
+def pair_members(r: _Reader, st: Component, first: str, second: str) -> dict[str, Component]:
+    """The two gears of a worm or bevel stage by role: ``first`` is ``gear_1`` of its
+    ``stage`` relation, ``second`` ``gear_2``, each on a shaft (else one line)."""
+    out: dict = {"stage": st}
+    for rel in r.m.related("stage", stage=st.id):
+        out[first] = r.comp(rel.role("gear_1") or "", rel)
+        out[second] = r.comp(rel.role("gear_2") or "", rel)
+    if first not in out:
+        raise ModelError(f"{st.type} {st.id} has no stage relation naming its {first} and "
+                         f"{second}")
+    for g in (out[first], out[second]):
+        if r.shaft_of(g) is None:
+            raise ModelError(f"{g.type} {g.id} \"{g.name}\" of stage {st.id} is on no "
+                             f"shaft (no assembly relation shaft → gear)")
     return out
 
 
@@ -282,3 +293,36 @@ def stated(r: _Reader, st: Component, kind: str) -> dict:
             if v is not None:
                 stated[key] = (v, s_)
     return {"stage": 1, "component": st.id, "stated": stated}
+
+
+REASONS = {
+    "gear_casing": "the housing is not modelled",
+    "concept_bearing": "the stage calculators rate no shaft bearings",
+    "rolling_bearing_with_catalog_geometry": "the stage calculators rate no shaft bearings",
+    "shaft_section": "the stage calculators analyse no shafts",
+    "coupling": "the stage calculators model no couplings",
+    "switchable_coupling": "the stage calculators model no couplings",
+    "side_plate": "the carrier's structure is not modelled",
+    "material": "names no grade of the library, or no heat treatment (the calculator's "
+                "default material)",
+    "stage_gear_data": "per-stage gear data (tolerances, roughness) are not used",
+    "worm_stage_gear_data": "per-stage gear data (tolerances, roughness) are not used",
+    "cylindrical_gear_flank": "the flank data are computed from the spec's keys",
+    "flank_geometry": "the flank data are computed from the spec's keys",
+    "worm_gear_flank": "the flank data are computed from the spec's keys",
+}
+"""Why a component type of a planetary, worm or bevel model is not imported (else: not
+computed by the stage's calculator)."""
+
+
+def _rest(r: _Reader, kind: str) -> None:
+    """Every component not read is listed as not imported, with the reason."""
+    r.read.update({"gear_unit", "shaft", "external_load"})
+    listed = {(t, item.split(" ", 1)[0]) for t, items in r.not_imported.items()
+              for item in items}
+    for c in r.m.components.values():
+        if c.type not in r.read and c.type != "lubricant" and (c.type, c.id) not in listed:
+            r.skip(c, REASONS.get(c.type, f"not computed by the {kind} calculator"))
+    for c in r.m.of_type("material"):
+        if c.type in r.read and c.id not in r.used_materials:
+            r.skip(c, REASONS["material"])

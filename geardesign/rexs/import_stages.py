@@ -11,53 +11,45 @@ for).  A model of another program is read from the standard attributes alone.
 
 from __future__ import annotations
 
+from geardesign.rexs import bevel as BV
 from geardesign.rexs import stages as ST
 from geardesign.rexs.chain import (Imported, ModelError, Writer, _Reader,
                                       _assemble, _head, _load_case, _lubricant,
-                                      _stage, convert, custom, gu_of, src)
-from geardesign.rexs.foreign import members, planetary, stated, worm
+                                      _shafts, _stage, convert, custom, gu_of, src)
+from geardesign.rexs.foreign import _rest, members, planetary, stated, worm
 from geardesign.rexs.model import Component, number
 
-REASONS = {
-    "gear_casing": "the housing is not modelled",
-    "concept_bearing": "the stage calculators rate no shaft bearings",
-    "rolling_bearing_with_catalog_geometry": "the stage calculators rate no shaft bearings",
-    "shaft_section": "the stage calculators analyse no shafts",
-    "coupling": "the stage calculators model no couplings",
-    "switchable_coupling": "the stage calculators model no couplings",
-    "side_plate": "the carrier's structure is not modelled",
-    "material": "names no grade of the library, or no heat treatment (the calculator's "
-                "default material)",
-    "stage_gear_data": "per-stage gear data (tolerances, roughness) are not used",
-    "worm_stage_gear_data": "per-stage gear data (tolerances, roughness) are not used",
-    "cylindrical_gear_flank": "the flank data are computed from the spec's keys",
-    "flank_geometry": "the flank data are computed from the spec's keys",
-    "worm_gear_flank": "the flank data are computed from the spec's keys",
-}
-"""Why a component type of a planetary or worm model is not imported (else: not computed
-by the stage's calculator)."""
+KIND_OF = {"planetary_stage": "planetary", "worm_stage": "worm", "bevel_stage": "bevel"}
+"""REXS stage component type → spec (and drive stage) kind."""
+STAGE_OF = {v: k for k, v in KIND_OF.items()} | {"spur": "cylindrical_stage"}
+
+
+def _members(r: _Reader, st: Component, kind: str) -> dict:
+    return BV.members(r, st) if kind == "bevel" else members(r, st, kind)
+
+
+def _stated(r: _Reader, st: Component, kind: str) -> dict:
+    return BV.stated(r, st) if kind == "bevel" else stated(r, st, kind)
 
 
 def import_other(r: _Reader, label: str) -> Imported:
     """A model with planetary or worm stages as a spec (one line when it cannot be)."""
     m = r.m
     gu = gu_of(m)
-    ordered = [c for c in m.of_type("cylindrical_stage", "planetary_stage", "worm_stage")
+    ordered = [c for c in m.of_type("cylindrical_stage", *KIND_OF)
                if f"{ST.CUSTOM}drive__order" in c.attributes]
     if ordered:
         return _drive(r, label, ordered)
-    units = m.of_type("planetary_stage", "worm_stage")
+    units = m.of_type(*KIND_OF)
     inner = {rel.role("part") for rel in m.relations if rel.type == "assembly"
              and rel.role("assembly") in {u.id for u in units}}
     outer = [c for c in m.of_type("cylindrical_stage") if c.id not in inner]
-    if len(units) != 1 or outer:
-        kinds = ", ".join(sorted({c.type for c in units + outer}))
-        raise ModelError(f"the model has {len(units) + len(outer)} stages ({kinds}): a chain "
-                         f"with planetary or worm stages is imported from geardesign's own "
-                         f"models only (custom_geardesign__drive__order); one planetary or "
-                         f"worm stage alone is imported from any program")
+    if len(units) != 1 or outer:    # a chain of another program's stages: a drive spec
+        from geardesign.rexs.foreign_chain import import_foreign_chain
+
+        return import_foreign_chain(r, label, units + outer)
     st = units[0]
-    kind = "planetary" if st.type == "planetary_stage" else "worm"
+    kind = KIND_OF[st.type]
     out, head = Writer(), _heading(m, label)
     T_in, case_no, torque_load, case, speed, load_shaft = _load_case(r)
     head.append(f"# Load case: {case_no if case_no else 'the model'} (the largest torque).")
@@ -66,7 +58,7 @@ def import_other(r: _Reader, label: str) -> Imported:
            "gear_unit name" if gu is not None and gu.name else None)
     out.blank()
     life = r.value(gu, "operating_time", "h") if gu is not None else (None, None)
-    read = planetary if kind == "planetary" else worm
+    read = {"planetary": planetary, "worm": worm, "bevel": BV.read_foreign}[kind]
     found = [read(r, out, st, T_in, torque_load, case_no, load_shaft, speed, life)]
     _lubricant(r, out)
     _rest(r, kind)
@@ -82,8 +74,7 @@ def _heading(m, label: str) -> list[str]:
 def restore_spec(r: _Reader, label: str, kind: str) -> Imported:
     """A spur, planetary or worm spec exported by geardesign (the gear unit's
     ``custom_geardesign__source_kind``), restored from its stage component."""
-    ctype = {"spur": "cylindrical_stage", "planetary": "planetary_stage",
-             "worm": "worm_stage"}[kind]
+    ctype = STAGE_OF[kind]
     found = r.m.of_type(ctype)
     if len(found) != 1:
         raise ModelError(f"a {kind} spec exported by geardesign has one {ctype}; this model "
@@ -100,27 +91,20 @@ def restore_spec(r: _Reader, label: str, kind: str) -> Imported:
         r.used_materials.update(c.id for c in r.m.of_type("material"))
     _lubricant(r, out)
     _rest(r, kind)
-    return _assemble(r, _heading(r.m, label), out, [stated(r, st, kind)])
-
-
-def _rest(r: _Reader, kind: str) -> None:
-    """Every component not read is listed as not imported, with the reason."""
-    r.read.update({"gear_unit", "shaft", "external_load"})
-    for c in r.m.components.values():
-        if c.type not in r.read and c.type != "lubricant":
-            r.skip(c, REASONS.get(c.type, f"not computed by the {kind} calculator"))
-    for c in r.m.of_type("material"):
-        if c.type in r.read and c.id not in r.used_materials:
-            r.skip(c, REASONS["material"])
+    return _assemble(r, _heading(r.m, label), out, [_stated(r, st, kind)])
 
 
 def _restore(r: _Reader, st: Component, kind: str) -> dict:
     """The stage spec written by geardesign: its custom attributes, and the keys listed in
     ``from_rexs`` from their standard attributes."""
     flat = ST.restored(st)
-    parts = members(r, st, kind)
-    table = {k: (member, aid, unit) for k, member, aid, unit in
-             {"planetary": ST.PLANETARY_KEYS, "worm": ST.WORM_KEYS, "spur": ST.SPUR_KEYS}[kind]}
+    parts = _members(r, st, kind)
+    if kind == "bevel":
+        table = BV.key_table(str(flat.get("pair.module_at", ("outer",))[0]))
+    else:
+        table = {k: (member, aid, unit) for k, member, aid, unit in
+                 {"planetary": ST.PLANETARY_KEYS, "worm": ST.WORM_KEYS,
+                  "spur": ST.SPUR_KEYS}[kind]}
     for path in ST.from_rexs(st) or []:
         if path not in table:
             raise ModelError(f"component {st.id} ({st.type}): {ST.FROM_REXS} names {path!r}, "
@@ -138,6 +122,8 @@ def _restore(r: _Reader, st: Component, kind: str) -> dict:
     r.read.update({st.type} | {c.type for c in parts.values() if isinstance(c, Component)})
     if kind == "planetary":
         r.read.add("planet_carrier")
+    if kind == "bevel":     # the limits it states are the spec's [material] keys
+        r.read.add("bevel_stage_gear_data")
     return ST.nest(flat)
 
 
@@ -150,7 +136,7 @@ def _drive(r: _Reader, label: str, ordered: list[Component]) -> Imported:
     ordered.sort(key=lambda c: number(c.attributes[key], f"component {c.id} ({c.type})"))
     T_in, case_no, torque_load, case, speed, load_shaft = _load_case(r)
     out, head = _head(r, label, T_in, case_no, torque_load, speed)
-    geometry = []
+    geometry, chain = [], []
     for i, st in enumerate(ordered, 1):
         extra = custom(st)
         if st.type == "cylindrical_stage":
@@ -160,8 +146,14 @@ def _drive(r: _Reader, label: str, ordered: list[Component]) -> Imported:
             a = r.comp(rel[0].role("gear_1") or "", rel[0])
             b = r.comp(rel[0].role("gear_2") or "", rel[0])
             geometry.append(_stage(r, out, i, st, a, b))
+            chain.append((st, a, b))
             continue
-        kind = "planetary" if st.type == "planetary_stage" else "worm"
+        kind = KIND_OF[st.type]
+        if kind != "planetary":
+            pair = list(_members(r, st, kind).values())
+            chain.append((st, pair[1], pair[2]))     # the stage, gear_1, gear_2
+        else:
+            chain.append((st, None, None))
         out.table("stage", array=True)
         out.kv("name", st.name or f"stage {i}", f"component {st.id} ({st.type}) name")
         if "drive__efficiency" in extra:
@@ -169,12 +161,23 @@ def _drive(r: _Reader, label: str, ordered: list[Component]) -> Imported:
         tree = _restore(r, st, kind)
         ST.write_tables(out, "stage.", tree)
         out.blank()
-        s = stated(r, st, kind)
+        s = _stated(r, st, kind)
         s["stage"] = i
         geometry.append(s)
     r.read.update({"cylindrical_stage", "cylindrical_gear", "cylindrical_gear_flank",
                    "material"})
     _lubricant(r, out)
+    if all(a is not None for _, a, _ in chain) and any(
+            rel.type == "side" for rel in m.relations):
+        # the drive's [[shaft]] tables: shaft 1 carries the first stage's gear_1, shaft k + 1
+        # the gear_2 of stage k (as geardesign writes them)
+        gears = [chain[0][1]] + [b for _, _, b in chain]
+        order = [r.shaft_of(g) for g in gears]
+        for g, sh in zip(gears, order):
+            if sh is None:
+                raise ModelError(f"{g.type} {g.id} \"{g.name}\" is on no shaft (no assembly "
+                                 f"relation shaft → gear)")
+        _shafts(r, out, order, chain)
     _rest(r, "drive")
     return _assemble(r, head, out, geometry)
 
