@@ -21,9 +21,6 @@ SPLITTING = "being split (issue 28)"
 LONG = {
     # modules other work of issue 28 is splitting now
     "spur/calculator.py": SPLITTING + ": spur inputs, solve and report",
-    "drive/calculator.py": SPLITTING + ": the drive composes stages through solve()",
-    "drive/lubrication.py": SPLITTING + ": the drive composes stages through solve()",
-    "drive/shaft_analysis.py": SPLITTING + ": the drive composes stages through solve()",
     "cli.py": SPLITTING + ": the commands' option handling apart from the dispatch",
     "core/spec.py": SPLITTING + ": schema types apart from validation",
     "core/render.py": SPLITTING + ": the HTML report in its own package",

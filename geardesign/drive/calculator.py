@@ -264,21 +264,25 @@ def compute(spec: ValidatedSpec) -> Result:
             f"({dev:+.2f} %)", dev, tol, "drive"))
 
     if thermal is not None:
-        LUB.report(res, thermal, stages)
-        LUB.scuffing_checks(res, thermal, stages, scuff)
+        from geardesign.drive import heat_report
+
+        heat_report.report(res, thermal, stages)
+        heat_report.scuffing_checks(res, thermal, stages, scuff)
     if d["shaft"]:
         _bearing_report(res, bearings, load["life_hours"])
     if layout is not None:
-        from geardesign.drive import shaft_analysis as SA
+        from geardesign.drive.shaft_report import report as shaft_report
 
-        SA.report(res, *layout)
+        shaft_report(res, *layout)
     return res
 
 
 def _analyse_shafts(shafts: list, stages: list, runs: list[StageRun], bearings: list,
                     n_m: float, duty: Duty, motor: dict):
     """The shafts with steps by the shaft calculator, their connections, and the spur
-    stages rated with the misalignment from the shafts (:mod:`.shaft_analysis`)."""
+    stages rated with the misalignment from the shafts (:mod:`.shaft_analysis`,
+    :mod:`.misalignment`)."""
+    from geardesign.drive import misalignment as MIS
     from geardesign.drive import shaft_analysis as SA
 
     rot = _shaft_rotation(runs)
@@ -311,8 +315,8 @@ def _analyse_shafts(shafts: list, stages: list, runs: list[StageRun], bearings: 
         brs = {side: by_side[(idx, side, f"shaft[{k}]")] for side in ("a", "b")}
         shaft_runs.append(SA.shaft_run(k, sh, gears, brs, speeds[idx - 1], rot[idx - 1],
                                        len(runs) + 1, peak, modules, duty.K_A))
-    mis = SA.misalignment({sr.idx: sr for sr in shaft_runs}, runs)
-    kh_rows = SA.rate_with_misalignment(mis, stages, runs, duty, run_spur)
+    mis = MIS.misalignment({sr.idx: sr for sr in shaft_runs}, runs)
+    kh_rows = MIS.rate_with_misalignment(mis, stages, runs, duty, run_spur)
     return shaft_runs, kh_rows, mis
 
 

@@ -18,9 +18,9 @@ from geardesign.drive.stages import (
     Member,
     StageRun,
     _named,
+    _set_by_drive,
     _put,
     _table,
-    finish,
 )
 
 
@@ -127,10 +127,17 @@ def _read_spur(d: dict, where: str):
 
 
 def _spur_report(record, where: str, original: dict) -> Result:
-    """The report of a solved spur stage as its calculator gives it (:func:`.finish`)."""
-    from geardesign.spur.report import report
+    """The report of a solved spur stage as its calculator gives it
+    (:func:`geardesign.spur.calculator.advised_report`), its problems named by the stage,
+    with the loads the drive set."""
+    from geardesign.spur.calculator import advised_report
 
-    return finish("spur", record.inputs.spec, lambda: report(record), where, original)
+    try:
+        res = advised_report(record)
+    except InputError as exc:
+        raise _named(exc, where) from None
+    _set_by_drive(res, record.inputs.spec.data, original)
+    return res
 
 
 def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
