@@ -7,7 +7,7 @@ import pytest
 
 import geardesign.core.advice as ADVICE
 import geardesign.drive.calculator as DC
-import geardesign.spur.report as SPUR_REPORT
+import geardesign.spur.calculator as SPUR_CALCULATOR
 import geardesign.spur.solve as SPUR_SOLVE
 from geardesign.core.registry import run
 from geardesign.core.result import Result
@@ -19,7 +19,7 @@ def counted(monkeypatch):
     """Counts of spur solves, spur reports, passes of the stage chain and whole
     documents written while a drive computes."""
     n = dict(solve=0, report=0, passes=0, spur_stages=0, documents=0)
-    solve, report, chain = SPUR_SOLVE.solve, SPUR_REPORT.report, DC._run_chain
+    solve, report, chain = SPUR_SOLVE.solve, SPUR_CALCULATOR.report, DC._run_chain
     document = Result.document
 
     def solve_(inputs):
@@ -40,7 +40,7 @@ def counted(monkeypatch):
         return document(self)
 
     monkeypatch.setattr(SPUR_SOLVE, "solve", solve_)
-    monkeypatch.setattr(SPUR_REPORT, "report", report_)
+    monkeypatch.setattr(SPUR_CALCULATOR, "report", report_)
     monkeypatch.setattr(DC, "_run_chain", chain_)
     monkeypatch.setattr(Result, "document", document_)
     return n
@@ -189,3 +189,38 @@ def test_reusing_a_validated_spec_changes_nothing(name, monkeypatch):
     reused = run(SPECS / name).document()
     monkeypatch.setattr(REUSE, "reloaded", lambda *args, **kwargs: None)
     assert run(SPECS / name).document() == reused
+
+
+def test_each_shaft_is_analysed_once_after_the_passes(counted, monkeypatch):
+    """The shafts' results do not feed back into the passes (their f_sh re-rates the ISO
+    stage once, after them): each shaft with steps is analysed once per run, after the
+    last pass of the chain; each pass of the heat balance rates every bearing once
+    through its typed interface; the chain runs once per pass after the first, once more
+    for the ratios (the machine's torque is given) and once more to rate the scuffing of
+    stage 1 at the sump temperature of the last balance."""
+    import geardesign.drive.shaft_analysis as SA
+    import geardesign.drive.shaft_loads as SL
+
+    at_pass: list = []
+    rated = {"bearings": 0}
+    solve, rate = SA.solve, SL.rate_bearing
+
+    def solve_(inputs):
+        at_pass.append(counted["passes"])
+        return solve(inputs)
+
+    def rate_(case, memo):
+        rated["bearings"] += 1
+        return rate(case, memo)
+
+    monkeypatch.setattr(SA, "solve", solve_)
+    monkeypatch.setattr(SL, "rate_bearing", rate_)
+    res = run(SPECS / "drive_reducer_shafts_keys_thermal.toml")
+    shafts = sum(1 for p in res.parts if p[0] == "shaft_reports")
+    bearings = sum(1 for p in res.parts if p[0] == "bearing_reports")
+    passes = next(r.value for r in res.section("thermal", "").rows if r.key == "passes")
+    assert shafts == 3 and len(at_pass) == shafts
+    assert set(at_pass) == {counted["passes"]}          # after the last pass
+    assert rated["bearings"] == bearings * passes
+    assert any(c.code == "SCUFFING_OIL_1" for c in res.checks)
+    assert counted["passes"] == passes + 2
