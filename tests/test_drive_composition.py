@@ -16,9 +16,10 @@ from tests.conftest import SPECS
 
 @pytest.fixture
 def counted(monkeypatch):
-    """Counts of spur solves, spur reports, passes of the stage chain and whole
-    documents written while a drive computes."""
-    n = dict(solve=0, report=0, passes=0, spur_stages=0, documents=0)
+    """Counts of spur solves, spur reports, passes of the stage chain (``probes``: the
+    probe passes among them, which take a spur stage's ratio from its geometry, unrated)
+    and whole documents written while a drive computes."""
+    n = dict(solve=0, report=0, passes=0, probes=0, spur_stages=0, documents=0)
     solve, report, chain = SPUR_SOLVE.solve, SPUR_CALCULATOR.report, DC._run_chain
     document = Result.document
 
@@ -32,6 +33,7 @@ def counted(monkeypatch):
 
     def chain_(stages, *args):
         n["passes"] += 1
+        n["probes"] += bool(args[3:4] and args[3])
         n["spur_stages"] = sum(1 for st in stages if st[2].get("kind") == "spur")
         return chain(stages, *args)
 
@@ -52,7 +54,7 @@ def test_each_spur_stage_is_solved_once_per_pass(counted):
     res = run(SPECS / "drive_thermal_two_stage.toml")
     n = counted
     assert n["passes"] >= 3 and n["spur_stages"] == 2
-    assert n["solve"] == n["spur_stages"] * n["passes"]
+    assert n["solve"] == n["spur_stages"] * (n["passes"] - n["probes"])
     assert n["report"] == n["spur_stages"]
     assert n["documents"] == 0
     assert res.verdict == "pass"
@@ -65,7 +67,8 @@ def test_shafts_re_rate_the_iso_stage_once(counted):
     run(SPECS / "drive_reducer_shafts_keys_thermal.toml")
     n = counted
     assert n["spur_stages"] == 2
-    assert n["solve"] == n["spur_stages"] * n["passes"] + 1
+    assert n["probes"] == 1
+    assert n["solve"] == n["spur_stages"] * (n["passes"] - n["probes"]) + 1
     assert n["report"] == n["spur_stages"]
 
 
@@ -118,7 +121,8 @@ hardness_HB = 270.0
 def test_every_stage_kind_is_solved_once_per_pass(kind, tmp_path, monkeypatch, counted):
     """A stage of each kind and a spur stage, rated for the machine's torque (two passes:
     the ratios, then the torque carried back): each stage's calculator ``solve()`` runs
-    once per pass, from typed inputs; the stage's report is written once, and no JSON
+    once per pass, from typed inputs, but the spur stage's in the probe pass (its ratio
+    and efficiency need no rating); the stage's report is written once, and no JSON
     document inside the drive."""
     import importlib
     import shutil
@@ -150,9 +154,9 @@ file = "{name}"
 """ + SPUR_STAGE, encoding="utf-8")
     res = run(spec)
     n = counted
-    assert n["passes"] == 2 and n["spur_stages"] == 1
+    assert n["passes"] == 2 and n["probes"] == 1 and n["spur_stages"] == 1
     assert solves[kind] == n["passes"]             # this kind: once per pass
-    assert n["solve"] == n["passes"]               # the spur stage: once per pass
+    assert n["solve"] == n["passes"] - n["probes"]  # the spur stage: once per rated pass
     assert n["report"] == 1 and n["documents"] == 0
     assert [p[2].kind for p in res.parts if p[0] == "stage_reports"] == [kind, "spur"]
 
