@@ -63,12 +63,15 @@ def test_each_spur_stage_is_solved_once_per_pass(counted):
 def test_shafts_re_rate_the_iso_stage_once(counted):
     """With the shafts analysed, the ISO 6336 stage is rated once more with the
     misalignment f_sh the shafts give (its report replaces the first, which is never
-    written); everything else as above."""
+    written); a stage whose inputs did not change since the pass before is not solved
+    again; everything else as above."""
     run(SPECS / "drive_reducer_shafts_keys_thermal.toml")
     n = counted
     assert n["spur_stages"] == 2
     assert n["probes"] == 1
-    assert n["solve"] == n["spur_stages"] * (n["passes"] - n["probes"]) + 1
+    # the last pass rates stage 1's scuffing at the last sump temperature: stage 2, its
+    # spec and loads unchanged, keeps its run of the pass before
+    assert n["solve"] == n["spur_stages"] * (n["passes"] - n["probes"] - 1) + 1 + 1
     assert n["report"] == n["spur_stages"]
 
 

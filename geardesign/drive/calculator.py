@@ -116,7 +116,9 @@ def resolve_stages(stages: list, base: Path | None, where: str = "stage",
 def _run_chain(stages, T1: float, n1: float, duty: Duty, probe: bool = False
                ) -> list[StageRun]:
     """The stages in order, each from the output torque and speed of the one before;
-    ``probe``: the probe pass (:data:`PROBES`)."""
+    ``probe``: the probe pass (:data:`PROBES`).  A stage whose spec, input torque, speed
+    and efficiency are those of a pass before (the stages after the one whose scuffing
+    takes the last sump temperature) keeps that pass's run (``duty.memo``)."""
     runs = []
     T, n = T1, n1
     for where, _, data, eta in stages:
@@ -125,7 +127,10 @@ def _run_chain(stages, T1: float, n1: float, duty: Duty, probe: bool = False
             raise InputError.at(f"{where}: kind", kind, "not a drive stage; stages can be "
                                 + ", ".join(f'"{k}"' for k in ADAPTERS))
         adapter = PROBES.get(kind, ADAPTERS[kind]) if probe else ADAPTERS[kind]
-        run = adapter(data, T, n, duty, eta, where)
+        key = ("run", probe, where, kind, T, n, eta, repr(data))
+        run = duty.memo.get(key)
+        if run is None:
+            run = duty.memo[key] = adapter(data, T, n, duty, eta, where)
         runs.append(run)
         T, n = run.T_out, run.n_out
     return runs
