@@ -20,11 +20,11 @@ and the JSON document of its result.
 ``resource.getrusage(RUSAGE_CHILDREN)``), medians over the runs; with the bytecode kept
 (as after ``pip install``), or ``--no-bytecode``: compiled in every process.
 
-Figures (2 shared cores under load, 11 rounds, 9 cold runs, against 5a58329): drive golden
-133 → 69 ms (1.72–1.88× over four runs), two-stage GOST + ISO drive 574 → 142 ms
-(3.65–3.99×); cold drive golden / spur_plain with the bytecode kept 2.47–2.59 (473–542 /
-192–209 ms; 5a58329: 3.26–3.44), compiled in every process 1.60 (1089 / 683 ms; 5a58329:
-2.17).
+Figures (2 shared cores under load, 7-9 rounds, 7 cold runs, against 5a58329): drive golden
+136-162 -> 62-77 ms (2.08-2.26x over three runs), two-stage GOST + ISO drive 544-613 ->
+104-124 ms (5.2-5.8x); cold drive golden / spur_plain with the bytecode kept 2.04-2.21
+(379-499 / 172-245 ms; 5a58329 on the same machine: 2.55-2.80), compiled in every process
+1.60 (1089 / 683 ms; 5a58329: 2.17, measured before the probe pass went unrated).
 """
 
 from __future__ import annotations

@@ -7,7 +7,7 @@ import pytest
 
 import geardesign.core.advice as ADVICE
 import geardesign.drive.calculator as DC
-import geardesign.spur.report as SPUR_REPORT
+import geardesign.spur.calculator as SPUR_CALCULATOR
 import geardesign.spur.solve as SPUR_SOLVE
 from geardesign.core.registry import run
 from geardesign.core.result import Result
@@ -16,10 +16,11 @@ from tests.conftest import SPECS
 
 @pytest.fixture
 def counted(monkeypatch):
-    """Counts of spur solves, spur reports, passes of the stage chain and whole
-    documents written while a drive computes."""
-    n = dict(solve=0, report=0, passes=0, spur_stages=0, documents=0)
-    solve, report, chain = SPUR_SOLVE.solve, SPUR_REPORT.report, DC._run_chain
+    """Counts of spur solves, spur reports, passes of the stage chain (``probes``: the
+    probe passes among them, which take a spur stage's ratio from its geometry, unrated)
+    and whole documents written while a drive computes."""
+    n = dict(solve=0, report=0, passes=0, probes=0, spur_stages=0, documents=0)
+    solve, report, chain = SPUR_SOLVE.solve, SPUR_CALCULATOR.report, DC._run_chain
     document = Result.document
 
     def solve_(inputs):
@@ -32,6 +33,7 @@ def counted(monkeypatch):
 
     def chain_(stages, *args):
         n["passes"] += 1
+        n["probes"] += bool(args[3:4] and args[3])
         n["spur_stages"] = sum(1 for st in stages if st[2].get("kind") == "spur")
         return chain(stages, *args)
 
@@ -40,7 +42,7 @@ def counted(monkeypatch):
         return document(self)
 
     monkeypatch.setattr(SPUR_SOLVE, "solve", solve_)
-    monkeypatch.setattr(SPUR_REPORT, "report", report_)
+    monkeypatch.setattr(SPUR_CALCULATOR, "report", report_)
     monkeypatch.setattr(DC, "_run_chain", chain_)
     monkeypatch.setattr(Result, "document", document_)
     return n
@@ -52,7 +54,7 @@ def test_each_spur_stage_is_solved_once_per_pass(counted):
     res = run(SPECS / "drive_thermal_two_stage.toml")
     n = counted
     assert n["passes"] >= 3 and n["spur_stages"] == 2
-    assert n["solve"] == n["spur_stages"] * n["passes"]
+    assert n["solve"] == n["spur_stages"] * (n["passes"] - n["probes"])
     assert n["report"] == n["spur_stages"]
     assert n["documents"] == 0
     assert res.verdict == "pass"
@@ -61,11 +63,15 @@ def test_each_spur_stage_is_solved_once_per_pass(counted):
 def test_shafts_re_rate_the_iso_stage_once(counted):
     """With the shafts analysed, the ISO 6336 stage is rated once more with the
     misalignment f_sh the shafts give (its report replaces the first, which is never
-    written); everything else as above."""
+    written); a stage whose inputs did not change since the pass before is not solved
+    again; everything else as above."""
     run(SPECS / "drive_reducer_shafts_keys_thermal.toml")
     n = counted
     assert n["spur_stages"] == 2
-    assert n["solve"] == n["spur_stages"] * n["passes"] + 1
+    assert n["probes"] == 1
+    # the last pass rates stage 1's scuffing at the last sump temperature: stage 2, its
+    # spec and loads unchanged, keeps its run of the pass before
+    assert n["solve"] == n["spur_stages"] * (n["passes"] - n["probes"] - 1) + 1 + 1
     assert n["report"] == n["spur_stages"]
 
 
@@ -118,7 +124,8 @@ hardness_HB = 270.0
 def test_every_stage_kind_is_solved_once_per_pass(kind, tmp_path, monkeypatch, counted):
     """A stage of each kind and a spur stage, rated for the machine's torque (two passes:
     the ratios, then the torque carried back): each stage's calculator ``solve()`` runs
-    once per pass, from typed inputs; the stage's report is written once, and no JSON
+    once per pass, from typed inputs, but the spur stage's in the probe pass (its ratio
+    and efficiency need no rating); the stage's report is written once, and no JSON
     document inside the drive."""
     import importlib
     import shutil
@@ -150,9 +157,9 @@ file = "{name}"
 """ + SPUR_STAGE, encoding="utf-8")
     res = run(spec)
     n = counted
-    assert n["passes"] == 2 and n["spur_stages"] == 1
+    assert n["passes"] == 2 and n["probes"] == 1 and n["spur_stages"] == 1
     assert solves[kind] == n["passes"]             # this kind: once per pass
-    assert n["solve"] == n["passes"]               # the spur stage: once per pass
+    assert n["solve"] == n["passes"] - n["probes"]  # the spur stage: once per rated pass
     assert n["report"] == 1 and n["documents"] == 0
     assert [p[2].kind for p in res.parts if p[0] == "stage_reports"] == [kind, "spur"]
 
@@ -189,3 +196,38 @@ def test_reusing_a_validated_spec_changes_nothing(name, monkeypatch):
     reused = run(SPECS / name).document()
     monkeypatch.setattr(REUSE, "reloaded", lambda *args, **kwargs: None)
     assert run(SPECS / name).document() == reused
+
+
+def test_each_shaft_is_analysed_once_after_the_passes(counted, monkeypatch):
+    """The shafts' results do not feed back into the passes (their f_sh re-rates the ISO
+    stage once, after them): each shaft with steps is analysed once per run, after the
+    last pass of the chain; each pass of the heat balance rates every bearing once
+    through its typed interface; the chain runs once per pass after the first, once more
+    for the ratios (the machine's torque is given) and once more to rate the scuffing of
+    stage 1 at the sump temperature of the last balance."""
+    import geardesign.drive.shaft_analysis as SA
+    import geardesign.drive.shaft_loads as SL
+
+    at_pass: list = []
+    rated = {"bearings": 0}
+    solve, rate = SA.solve, SL.rate_bearing
+
+    def solve_(inputs):
+        at_pass.append(counted["passes"])
+        return solve(inputs)
+
+    def rate_(case, memo):
+        rated["bearings"] += 1
+        return rate(case, memo)
+
+    monkeypatch.setattr(SA, "solve", solve_)
+    monkeypatch.setattr(SL, "rate_bearing", rate_)
+    res = run(SPECS / "drive_reducer_shafts_keys_thermal.toml")
+    shafts = sum(1 for p in res.parts if p[0] == "shaft_reports")
+    bearings = sum(1 for p in res.parts if p[0] == "bearing_reports")
+    passes = next(r.value for r in res.section("thermal", "").rows if r.key == "passes")
+    assert shafts == 3 and len(at_pass) == shafts
+    assert set(at_pass) == {counted["passes"]}          # after the last pass
+    assert rated["bearings"] == bearings * passes
+    assert any(c.code == "SCUFFING_OIL_1" for c in res.checks)
+    assert counted["passes"] == passes + 2

@@ -195,7 +195,7 @@ def test_twist_of_the_gears_by_hand():
 ])
 def test_face_twist_closed_forms(T_L, T_R, want):
     """δ = −sgn(T_g)·r_b·(T_L + T_R)/2·b/(G·J), in units of r_b·T·b/(G·J)."""
-    from geardesign.drive.shaft_analysis import face_twist
+    from geardesign.drive.misalignment import face_twist
     G, J = 2.06e5 / 2.6, math.pi * 60.0 ** 4 / 32
     unit = 28.0 * 1000.0e3 * 60.0 / (G * J) * 1e3
     assert face_twist(T_L, T_R, 60.0, 60.0, 28.0, 2.06e5) == pytest.approx(want * unit,

@@ -20,10 +20,6 @@ SPLITTING = "being split (issue 28)"
 
 LONG = {
     # modules other work of issue 28 is splitting now
-    "spur/calculator.py": SPLITTING + ": spur inputs, solve and report",
-    "drive/calculator.py": SPLITTING + ": the drive composes stages through solve()",
-    "drive/lubrication.py": SPLITTING + ": the drive composes stages through solve()",
-    "drive/shaft_analysis.py": SPLITTING + ": the drive composes stages through solve()",
     "rexs/chain.py": SPLITTING + ": one reader per REXS component type (shafts, stages, "
                         "bearings, load case) apart from the spec writer",
     "rendering/figures.py": SPLITTING + ": one module of pictures per calculator kind",

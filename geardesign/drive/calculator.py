@@ -18,11 +18,12 @@ from geardesign.core.result import DataTable, Result, check
 from geardesign.core.io import confined
 from geardesign.core.spec import ValidatedSpec, load_toml
 from geardesign.drive import split as SPLIT
-from geardesign.drive.shaft_loads import _shaft_rotation, run_bearing, shaft_cases, shaft_loads
+from geardesign.drive.shaft_loads import (_shaft_rotation, bearing_report, bearing_runs,
+                                          shaft_loads)
 from geardesign.drive import stages as ST
 from geardesign.drive.bevel_stage import run_bevel
-from geardesign.drive.spur_stage import run_spur
-from geardesign.drive.stages import Duty, StageRun, values
+from geardesign.drive.spur_stage import probe_spur, run_spur
+from geardesign.drive.stages import Duty, StageRun
 
 DRIVE_KEYS = ("name", "file", "efficiency")
 
@@ -31,6 +32,11 @@ ADAPTERS = {"spur": run_spur, "worm": ST.run_worm, "novikov": ST.run_novikov,
 """The stage adapters by kind (:mod:`.spur_stage`, :mod:`.bevel_stage`, :mod:`.stages`):
 ``adapter(stage spec, T_in, n_in, duty, efficiency or None, where) -> StageRun``, the stage
 solved once from its typed inputs.  A new stage kind adds its adapter here."""
+
+PROBES = {"spur": probe_spur}
+"""Adapters of the probe pass (the ratios and efficiencies that carry the machine's torque
+back to the motor) for the kinds whose ratio and efficiency do not need the rating; the
+other kinds are solved by their :data:`ADAPTERS`."""
 
 
 def _torque_from_power(P: float, n: float) -> float:
@@ -107,7 +113,12 @@ def resolve_stages(stages: list, base: Path | None, where: str = "stage",
     return out
 
 
-def _run_chain(stages, T1: float, n1: float, duty: Duty) -> list[StageRun]:
+def _run_chain(stages, T1: float, n1: float, duty: Duty, probe: bool = False
+               ) -> list[StageRun]:
+    """The stages in order, each from the output torque and speed of the one before;
+    ``probe``: the probe pass (:data:`PROBES`).  A stage whose spec, input torque, speed
+    and efficiency are those of a pass before (the stages after the one whose scuffing
+    takes the last sump temperature) keeps that pass's run (``duty.memo``)."""
     runs = []
     T, n = T1, n1
     for where, _, data, eta in stages:
@@ -115,7 +126,11 @@ def _run_chain(stages, T1: float, n1: float, duty: Duty) -> list[StageRun]:
         if not isinstance(kind, str) or kind not in ADAPTERS:
             raise InputError.at(f"{where}: kind", kind, "not a drive stage; stages can be "
                                 + ", ".join(f'"{k}"' for k in ADAPTERS))
-        run = ADAPTERS[kind](data, T, n, duty, eta, where)
+        adapter = PROBES.get(kind, ADAPTERS[kind]) if probe else ADAPTERS[kind]
+        key = ("run", probe, where, kind, T, n, eta, repr(data))
+        run = duty.memo.get(key)
+        if run is None:
+            run = duty.memo[key] = adapter(data, T, n, duty, eta, where)
         runs.append(run)
         T, n = run.T_out, run.n_out
     return runs
@@ -169,7 +184,7 @@ def compute(spec: ValidatedSpec) -> Result:
             for i, (w, n_, data, e) in enumerate(stages)]
         if load["torque"] is not None:
             # first pass for the ratios and efficiencies, then rate for the machine's torque
-            probe = prev if prev is not None else _run_chain(st, T_m, n_m, duty)
+            probe = prev if prev is not None else _run_chain(st, T_m, n_m, duty, True)
             factor = math.prod(r.ratio * (etas[i] if etas and i in etas and st[i][3] is not None
                                           else r.efficiency) for i, r in enumerate(probe))
             T1 = load["torque"] / factor
@@ -194,7 +209,7 @@ def compute(spec: ValidatedSpec) -> Result:
     sec.add("n_out", out.n_out, "min^-1", "n_out", "output speed", "drive")
     sec.add("P_out", out.T_out * out.n_out * math.pi / 30000.0, "kW", "P_out", "output power",
             "drive")
-    bearings = _bearing_runs(d["shaft"], runs, n_m, load["life_hours"],
+    bearings = bearing_runs(d["shaft"], runs, n_m, load["life_hours"],
                              thermal.bearing_oil if thermal is not None else None) \
         if d["shaft"] else None
     layout = None
@@ -264,21 +279,25 @@ def compute(spec: ValidatedSpec) -> Result:
             f"({dev:+.2f} %)", dev, tol, "drive"))
 
     if thermal is not None:
-        LUB.report(res, thermal, stages)
-        LUB.scuffing_checks(res, thermal, stages, scuff)
-    if d["shaft"]:
-        _bearing_report(res, bearings, load["life_hours"])
-    if layout is not None:
-        from geardesign.drive import shaft_analysis as SA
+        from geardesign.drive import heat_report
 
-        SA.report(res, *layout)
+        heat_report.report(res, thermal, stages)
+        heat_report.scuffing_checks(res, thermal, stages, scuff)
+    if d["shaft"]:
+        bearing_report(res, bearings, load["life_hours"])
+    if layout is not None:
+        from geardesign.drive.shaft_report import report as shaft_report
+
+        shaft_report(res, *layout)
     return res
 
 
 def _analyse_shafts(shafts: list, stages: list, runs: list[StageRun], bearings: list,
                     n_m: float, duty: Duty, motor: dict):
     """The shafts with steps by the shaft calculator, their connections, and the spur
-    stages rated with the misalignment from the shafts (:mod:`.shaft_analysis`)."""
+    stages rated with the misalignment from the shafts (:mod:`.shaft_analysis`,
+    :mod:`.misalignment`)."""
+    from geardesign.drive import misalignment as MIS
     from geardesign.drive import shaft_analysis as SA
 
     rot = _shaft_rotation(runs)
@@ -311,65 +330,9 @@ def _analyse_shafts(shafts: list, stages: list, runs: list[StageRun], bearings: 
         brs = {side: by_side[(idx, side, f"shaft[{k}]")] for side in ("a", "b")}
         shaft_runs.append(SA.shaft_run(k, sh, gears, brs, speeds[idx - 1], rot[idx - 1],
                                        len(runs) + 1, peak, modules, duty.K_A))
-    mis = SA.misalignment({sr.idx: sr for sr in shaft_runs}, runs)
-    kh_rows = SA.rate_with_misalignment(mis, stages, runs, duty, run_spur)
+    mis = MIS.misalignment({sr.idx: sr for sr in shaft_runs}, runs)
+    kh_rows = MIS.rate_with_misalignment(mis, stages, runs, duty, run_spur)
     return shaft_runs, kh_rows, mis
-
-
-def _bearing_runs(shafts: list, runs: list[StageRun], n_m: float, L_h: float,
-                  bearing_oil=None) -> list[tuple[dict, Result]]:
-    """The bearings of the shafts by the bearing calculator: ``(case, result)``;
-    ``bearing_oil(case)`` (with [lubrication]) puts the drive's oil and its sump temperature
-    into a bearing's [lubrication] table."""
-    out = []
-    for case in shaft_cases(shafts, runs, n_m, L_h):
-        if bearing_oil is not None:
-            bearing_oil(case)
-        out.append((case, run_bearing(case)))
-    return out
-
-
-def _bearing_report(res: Result, bearings: list, L_h: float) -> None:
-    """Bearing lives of the shafts and their system life."""
-    from geardesign.bearing.life import system_life
-
-    rows, lives, balls = [], [], []
-    for case, br in bearings:
-        idx, side, name = case["shaft"], case["side"], case["name"]
-        F_r, F_a, speed = case["F_r"], case["F_a"], case["n"]
-        v = values(br)
-        life = v.get("L_sah", v.get("L_nmh", v.get("L10h")))
-        lives.append(life)
-        balls.append("ball" in str(v.get("type", "ball")))
-        rows.append(dict(shaft=idx, bearing=side.upper(), designation=v.get("designation"),
-                         F_r=F_r, F_a=F_a, n=speed, life=life,
-                         verdict=br.verdict,
-                         source=v.get("data_source") or "given in the spec"))
-        res.parts.append(("bearing_reports", f"{name}, bearing {side.upper()}", br))
-        failed = [c.code for c in br.failed]
-        res.checks.append(check(
-            f"BEARING_{idx}{side.upper()}", not failed, "error",
-            f"{name}, bearing {side.upper()} fails {', '.join(failed)} (F_r = {F_r:.0f} N, "
-            f"F_a = {F_a:.0f} N): see its report below",
-            f"{name}, bearing {side.upper()}: life {life:.0f} h (F_r = {F_r:.0f} N, "
-            f"F_a = {F_a:.0f} N)", life, L_h, "bearing calculator"))
-    res.tables.append(DataTable("bearings", "Bearings", [
-        ("shaft", "shaft", None), ("bearing", "bearing", None),
-        ("designation", "designation", None), ("F_r", "F_r", "N"), ("F_a", "F_a", "N"),
-        ("n", "n", "min^-1"), ("life", "life", "h"), ("verdict", "verdict", None),
-        ("source", "data used", None)], rows))
-    slope = 10.0 / 9.0 if any(balls) else 9.0 / 8.0
-    L_sys = system_life(lives, slope)
-    sec = res.section("drive", "Drive")
-    sec.add("L_system", L_sys, "h", "L_sys", f"system life of the {len(lives)} bearings "
-            f"(Weibull slope {slope:.3f})", "Lundberg–Palmgren")
-    res.checks.append(check(
-        "BEARING_SYSTEM_LIFE", L_sys >= L_h, "warning",
-        f"the {len(lives)} bearings together reach {L_sys:.0f} h at 90 % reliability, below the "
-        f"required {L_h:g} h: one of them fails early with that probability; take larger "
-        f"bearings for the shortest lives",
-        f"system life of the {len(lives)} bearings {L_sys:.0f} h >= {L_h:g} h", L_sys, L_h,
-        "Lundberg–Palmgren"))
 
 
 def _add_split(res: Result, split: dict, n_m: float, load: dict, stages) -> None:

@@ -1,7 +1,8 @@
 """The loads of a drive's shafts and their bearings: the sense of rotation of each shaft,
 the gears on it with their mesh forces (:class:`~geardesign.drive.shafts.GearLoad`), the
 bearing reactions (:func:`~geardesign.drive.shafts.reactions`) and the bearing calculator's
-result for each support.  Used by the drive's report (:mod:`.calculator`) and its heat
+result for each support, and the table and checks of the bearings' lives and their system
+life.  Used by the drive's report (:mod:`.calculator`) and its heat
 balance (:mod:`.lubrication`)."""
 
 from __future__ import annotations
@@ -12,9 +13,9 @@ from geardesign.core.errors import InputError, Problem
 
 from geardesign.core.records import dataclass
 from geardesign.core.registry import load_data, run_data
-from geardesign.core.result import Result
+from geardesign.core.result import DataTable, Result, check
 from geardesign.drive.shafts import GearLoad, external_loads, reactions
-from geardesign.drive.stages import StageRun
+from geardesign.drive.stages import StageRun, values
 
 
 def _shaft_rotation(runs: list[StageRun]) -> list[int]:
@@ -160,3 +161,59 @@ def _bearing_problem(where: str, p: Problem) -> Problem:
                        f"derived from the forces on the shaft: reduce them (torque, external "
                        f"loads) or move the bearings", p.value)
     return Problem(f"{where}: {p.key}", p.message, p.value)
+
+
+def bearing_runs(shafts: list, runs: list[StageRun], n_m: float, L_h: float,
+                  bearing_oil=None) -> list[tuple[dict, Result]]:
+    """The bearings of the shafts by the bearing calculator: ``(case, result)``;
+    ``bearing_oil(case)`` (with [lubrication]) puts the drive's oil and its sump temperature
+    into a bearing's [lubrication] table."""
+    out = []
+    for case in shaft_cases(shafts, runs, n_m, L_h):
+        if bearing_oil is not None:
+            bearing_oil(case)
+        out.append((case, run_bearing(case)))
+    return out
+
+
+def bearing_report(res: Result, bearings: list, L_h: float) -> None:
+    """Bearing lives of the shafts and their system life."""
+    from geardesign.bearing.life import system_life
+
+    rows, lives, balls = [], [], []
+    for case, br in bearings:
+        idx, side, name = case["shaft"], case["side"], case["name"]
+        F_r, F_a, speed = case["F_r"], case["F_a"], case["n"]
+        v = values(br)
+        life = v.get("L_sah", v.get("L_nmh", v.get("L10h")))
+        lives.append(life)
+        balls.append("ball" in str(v.get("type", "ball")))
+        rows.append(dict(shaft=idx, bearing=side.upper(), designation=v.get("designation"),
+                         F_r=F_r, F_a=F_a, n=speed, life=life,
+                         verdict=br.verdict,
+                         source=v.get("data_source") or "given in the spec"))
+        res.parts.append(("bearing_reports", f"{name}, bearing {side.upper()}", br))
+        failed = [c.code for c in br.failed]
+        res.checks.append(check(
+            f"BEARING_{idx}{side.upper()}", not failed, "error",
+            f"{name}, bearing {side.upper()} fails {', '.join(failed)} (F_r = {F_r:.0f} N, "
+            f"F_a = {F_a:.0f} N): see its report below",
+            f"{name}, bearing {side.upper()}: life {life:.0f} h (F_r = {F_r:.0f} N, "
+            f"F_a = {F_a:.0f} N)", life, L_h, "bearing calculator"))
+    res.tables.append(DataTable("bearings", "Bearings", [
+        ("shaft", "shaft", None), ("bearing", "bearing", None),
+        ("designation", "designation", None), ("F_r", "F_r", "N"), ("F_a", "F_a", "N"),
+        ("n", "n", "min^-1"), ("life", "life", "h"), ("verdict", "verdict", None),
+        ("source", "data used", None)], rows))
+    slope = 10.0 / 9.0 if any(balls) else 9.0 / 8.0
+    L_sys = system_life(lives, slope)
+    sec = res.section("drive", "Drive")
+    sec.add("L_system", L_sys, "h", "L_sys", f"system life of the {len(lives)} bearings "
+            f"(Weibull slope {slope:.3f})", "Lundberg–Palmgren")
+    res.checks.append(check(
+        "BEARING_SYSTEM_LIFE", L_sys >= L_h, "warning",
+        f"the {len(lives)} bearings together reach {L_sys:.0f} h at 90 % reliability, below the "
+        f"required {L_h:g} h: one of them fails early with that probability; take larger "
+        f"bearings for the shortest lives",
+        f"system life of the {len(lives)} bearings {L_sys:.0f} h >= {L_h:g} h", L_sys, L_h,
+        "Lundberg–Palmgren"))

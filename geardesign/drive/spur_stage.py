@@ -18,9 +18,9 @@ from geardesign.drive.stages import (
     Member,
     StageRun,
     _named,
+    _set_by_drive,
     _put,
     _table,
-    finish,
 )
 
 
@@ -127,10 +127,38 @@ def _read_spur(d: dict, where: str):
 
 
 def _spur_report(record, where: str, original: dict) -> Result:
-    """The report of a solved spur stage as its calculator gives it (:func:`.finish`)."""
-    from geardesign.spur.report import report
+    """The report of a solved spur stage as its calculator gives it
+    (:func:`geardesign.spur.calculator.advised_report`), its problems named by the stage,
+    with the loads the drive set."""
+    from geardesign.spur.calculator import advised_report
 
-    return finish("spur", record.inputs.spec, lambda: report(record), where, original)
+    try:
+        res = advised_report(record)
+    except InputError as exc:
+        raise _named(exc, where) from None
+    _set_by_drive(res, record.inputs.spec.data, original)
+    return res
+
+
+def probe_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
+               where: str) -> StageRun:
+    """The ratio and efficiency of a spur stage for the drive's probe pass (the ratios that
+    carry the machine's torque back to the motor): its typed inputs read as in
+    :func:`run_spur` (the spec validated, kept for the rated pass) and its geometry, not
+    its rating: the ratio is the geometry's, the efficiency the spec's or the handbook's,
+    neither depends on the load."""
+    from geardesign.spur.solve import geometry
+
+    inputs = spur_inputs(data, T_in, n_in, duty, where)
+    try:
+        g = inputs.geometry if getattr(inputs, "geometry", None) is not None \
+            and inputs.geometry.inp is inputs.pair else geometry(inputs.pair)
+    except InputError as exc:
+        raise _named(exc, where) from None
+    u = g.u
+    e, src = (eta, "spec") if eta is not None else (ETA_CYLINDRICAL, "assumed (handbook)")
+    return StageRun("spur", u, e, src, T_in, n_in, T_in * u * e, n_in / u,
+                    (Member(0.0, 0.0, 0.0, 0.0),) * 2, None, "", True)
 
 
 def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,

@@ -13,7 +13,7 @@ from geardesign.core.result import Result
 from geardesign.core.spec import ValidatedSpec
 from geardesign.shaft.inputs import model
 from geardesign.shaft.report import report
-from geardesign.shaft.solve import analyse
+from geardesign.shaft.solve import solve
 
 __all__ = ["compute", "model", "report"]
 
@@ -21,5 +21,4 @@ __all__ = ["compute", "model", "report"]
 def compute(spec: ValidatedSpec) -> Result:
     """The shaft report of a validated spec: inputs, solve, report."""
     m = model(spec)
-    r = analyse(m["steps"], m["loads"], m["supports"], m["material"], m["options"])
-    return report(spec, m, r)
+    return report(spec, m, solve(m))

@@ -12,7 +12,7 @@ from geardesign.core.errors import InputError, Problem, Problems, Unusable
 from geardesign.core.spec import ValidatedSpec
 from geardesign.shaft.din743 import tables as din_tables
 from geardesign.shaft.material_inputs import material, method, resolve_defaults
-from geardesign.shaft.records import Load, Options, Step, Support
+from geardesign.shaft.records import Inputs, Load, Options, Step, Support
 
 DIN_STEP = ("groove_depth", "groove_radius", "groove_width", "groove_shape", "cross_bore",
             "cross_bore_at")
@@ -276,8 +276,8 @@ def read_options(spec: ValidatedSpec) -> Options:
                    s["din743_load_case"], s["din743_hard_surface"])
 
 
-def model(spec: ValidatedSpec) -> dict:
-    """The plain data of :func:`.solve.analyse` read from the spec (every input rule): the
+def model(spec: ValidatedSpec) -> Inputs:
+    """The typed inputs of :func:`.solve.solve` read from the spec (every input rule): the
     method's defaults, the steps, the material, the loads and the supports are checked
     independently, and every problem is reported at once."""
     problems = Problems()
@@ -294,5 +294,4 @@ def model(spec: ValidatedSpec) -> dict:
     supports = problems.stage(read_supports, spec, length)
     problems.raise_all()
     mat, origin = mat
-    return dict(steps=steps, loads=loads, supports=supports, material=mat,
-                options=read_options(spec), origin=origin)
+    return Inputs(tuple(steps), tuple(loads), tuple(supports), mat, read_options(spec), origin)

@@ -9,6 +9,7 @@ Lengths mm, forces N, torques and couples N·m, stresses MPa, speeds min⁻¹, a
 from __future__ import annotations
 
 import math
+from dataclasses import field
 
 from geardesign.core.records import dataclass
 from geardesign.gears.geometry import STEEL_DENSITY
@@ -175,10 +176,12 @@ class ShaftRecord:
 @dataclass(frozen=True)
 class Inputs:
     """Everything :func:`geardesign.shaft.solve.solve` reads: the steps from the left end,
-    the loads, the supports, the material and the options."""
+    the loads, the supports, the material and the options; ``origin`` says where each
+    material property comes from (the report's sources, :func:`.inputs.model`)."""
 
     steps: tuple
     loads: tuple
     supports: tuple
     material: Material
     options: Options = Options()
+    origin: dict | None = field(default=None, compare=False)

@@ -1,6 +1,6 @@
 """The report of an analysed shaft: the material, the beam model, the diagrams along the
 shaft, the tables of supports, loads and rated places, the critical places and the checks
-(:mod:`geardesign.shaft.checks`).  ``m`` is the model read by
+(:mod:`geardesign.shaft.checks`).  ``m`` is the typed inputs read by
 :func:`geardesign.shaft.inputs.model`, ``r`` the record of
 :func:`geardesign.shaft.solve.analyse`."""
 
@@ -12,16 +12,16 @@ from geardesign.core.result import DataTable, Result
 from geardesign.core.spec import ValidatedSpec
 from geardesign.shaft import sources as S
 from geardesign.shaft.checks import shaft_checks, units_checks
-from geardesign.shaft.records import ARCMIN, ShaftRecord
+from geardesign.shaft.records import ARCMIN, Inputs, ShaftRecord
 from geardesign.shaft.scaling import scale_to_pass
 
-def report(spec: ValidatedSpec, m: dict, r: ShaftRecord) -> Result:
+def report(spec: ValidatedSpec, m: Inputs, r: ShaftRecord) -> Result:
     """Rows, tables and checks of an analysed shaft (``m`` from :func:`model`)."""
     from geardesign.shaft import CALCULATOR
 
     model_ = m
-    mat, origin, steps = m["material"], m["origin"], m["steps"]
-    loads, supports, opt = m["loads"], m["supports"], m["options"]
+    mat, origin, steps = m.material, m.origin or {}, m.steps
+    loads, supports, opt = m.loads, m.supports, m.options
     res = CALCULATOR.new_result(spec)
     lim = spec.data["shaft"]
 

@@ -10,6 +10,7 @@ from dataclasses import replace
 from geardesign.core.errors import InputError
 from geardesign.core.spec import ValidatedSpec
 from geardesign.shaft.material_inputs import material
+from geardesign.shaft.records import Inputs
 from geardesign.shaft.solve import analyse
 
 MAX_SCALE = 3.0      # the largest scale of the diameters the advice looks at
@@ -26,7 +27,7 @@ def scaled_steps(steps: list, k: float) -> list:
             for s in steps]
 
 
-def scale_to_pass(spec: ValidatedSpec, m: dict, which: str, S_req: float) -> float | None:
+def scale_to_pass(spec: ValidatedSpec, m: Inputs, which: str, S_req: float) -> float | None:
     """The least factor k (rounded up to 0.01) by which every step's diameter, bore and
     fillet radius must grow for the shaft's lowest safety ``which`` ("S": fatigue,
     "S_static": static) to reach ``S_req``, found by analysing the scaled shaft again (its
@@ -35,13 +36,13 @@ def scale_to_pass(spec: ValidatedSpec, m: dict, which: str, S_req: float) -> flo
     reach it.  The nominal stresses fall as 1/k³, so k = (S_req/S)^(1/3) is the first
     guess; the guess is repeated from the safety it reaches (at most 12 analyses, and 5 to
     check the rounding)."""
-    steps, loads, supports, opt = m["steps"], m["loads"], m["supports"], m["options"]
+    steps, loads, supports, opt = m.steps, list(m.loads), list(m.supports), m.options
     d_max = max(st.diameter for st in steps)
 
     def lowest(k: float) -> float:
         try:
             mat = material(spec.data["material"], opt.method, d_max * k)[0] \
-                if opt.method == "DIN743" else m["material"]
+                if opt.method == "DIN743" else m.material
             r = analyse(scaled_steps(steps, k), loads, supports, mat, opt)
         except InputError:
             return 0.0

@@ -138,21 +138,35 @@ def _key(f, meta, k: int | None) -> str:
     return key.format(k=k) if k is not None else key
 
 
+_LAYOUT: dict = {}
+
+
+def _layout(cls) -> list:
+    """``(field, meta, gear index or None, field name, key)`` of every reported value of a
+    section record class in report order (:func:`_runs`), computed once per class."""
+    lay = _LAYOUT.get(cls)
+    if lay is None:
+        lay = []
+        for run in _runs(cls):
+            for i in ((0, 1) if run[0][1]["gear"] else (None,)):
+                lay += [(f, meta, i, f.name, _key(f, meta, None if i is None else i + 1))
+                        for f, meta in run]
+        _LAYOUT[cls] = lay
+    return lay
+
+
 def _items(rec):
     """``(field, meta, gear index or None, key, value)`` of a section record in report
     order, the absent fields left out."""
-    for run in _runs(rec):
-        gears = (0, 1) if run[0][1]["gear"] else (None,)
-        for i in gears:
-            for f, meta in run:
-                value = getattr(rec, f.name)
-                if value is None:
-                    continue
-                if i is not None:
-                    value = value[i]
-                    if value is None:
-                        continue
-                yield f, meta, i, _key(f, meta, None if i is None else i + 1), value
+    for f, meta, i, name, key in _layout(type(rec)):
+        value = getattr(rec, name)
+        if value is None:
+            continue
+        if i is not None:
+            value = value[i]
+            if value is None:
+                continue
+        yield f, meta, i, key, value
 
 
 def values(record) -> dict:
