@@ -288,7 +288,8 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
     from_spec = frozenset(key.format(k=i + 1) for i, m in enumerate(mats)
                           for what, key in SPEC_KEYS if what in m.given)
     return GostRating(forces=fo, life=life, factors=factors, contact=contact, bending=bending,
-                      static=static, given=frozenset(given.used), from_spec=from_spec)
+                      static=static, given=frozenset(given.used), from_spec=from_spec,
+                      materials=tuple(mats))
 
 
 SPEC_KEYS = (("sigma_Hlim", "sigma_Hlim{k}"), ("sigma_Flim", "sigma_Flim{k}"),
