@@ -30,8 +30,6 @@ LONG = {
     "core/io.py": SPLITTING + ": the writers apart from the readers",
     "rexs/chain.py": SPLITTING + ": one reader per REXS component type (shafts, stages, "
                         "bearings, load case) apart from the spec writer",
-    "rendering/figures.py": SPLITTING + ": one module of pictures per calculator kind",
-    "rendering/html.py": SPLITTING + ": the first screen apart from the sections",
 }
 """Modules over :data:`MAX_LINES` lines, each with its reason."""
 
