@@ -71,7 +71,7 @@ def _tip_at_shift(g: PairGeometry, i: int, x: float) -> float:
 
 def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = False) -> list[Check]:
     """Checks of an external pair, or of an internal pair
-    (:class:`geardesign.spur.internal.InternalPairGeometry`): there the internal gear has
+    (:class:`geardesign.gears.internal.InternalPairGeometry`): there the internal gear has
     no undercut, root or span check, and the interference at both roots is that of
     :func:`internal_mesh_checks`."""
     p = g.inp
