@@ -8,8 +8,6 @@ import importlib
 import re
 from pathlib import Path
 
-import pytest
-
 ROOT = Path(__file__).resolve().parent.parent
 NAME = re.compile(r"(?<![\w/.])geardesign(?:\.[A-Za-z_]\w*)+")
 
@@ -53,10 +51,11 @@ def test_names_are_found():
     assert "geardesign.spur.strength.verdict.verdict" in CITED
 
 
-@pytest.mark.parametrize("name", sorted(CITED))
-def test_a_cited_dotted_name_resolves(name):
-    assert resolves(name), f"{name} (cited in {', '.join(CITED[name])}) names no module or " \
-                           f"attribute: correct the path"
+def test_every_cited_dotted_name_resolves():
+    stale = [f"{name} (cited in {', '.join(files)})" for name, files in sorted(CITED.items())
+             if not resolves(name)]
+    assert not stale, "names of no module or attribute: correct the paths:\n" + \
+        "\n".join(stale)
 
 
 ROLE = re.compile(r":(?:func|class|mod|data|attr|meth|exc):`~?(\.[A-Za-z_][\w.]*)`")
@@ -78,9 +77,8 @@ def _relative() -> dict[tuple[str, str], list[str]]:
 RELATIVE = _relative()
 
 
-@pytest.mark.parametrize("module,ref", sorted(RELATIVE))
-def test_a_relative_reference_resolves(module, ref):
+def test_every_relative_reference_resolves():
     """``.x.y`` names ``x.y`` in the citing module's package, or in the module itself."""
-    package = module.rsplit(".", 1)[0]
-    assert resolves(package + ref) or resolves(module + ref), \
-        f"{ref} (cited in {module}) names no module or attribute of {package}"
+    stale = [f"{ref} (cited in {module})" for module, ref in sorted(RELATIVE)
+             if not resolves(module.rsplit(".", 1)[0] + ref) and not resolves(module + ref)]
+    assert not stale, "relative references to nothing:\n" + "\n".join(stale)
