@@ -840,3 +840,32 @@ def test_ball_clutch_preload_with_a_thicker_wire(tmp_path):
     _, _, checks = _run_cli(tmp_path, "ball_clutch", data)
     c = checks["CENTRIFUGAL_RELEASE"]
     assert "fix" not in c and "increase the spring preload or rate" in c["message"]
+
+
+def test_planetary_advice_rerates_through_solve_with_typed_inputs(monkeypatch):
+    """The advice by re-rating solves each candidate from its typed inputs
+    (:func:`geardesign.planetary.solve.solve`), once per candidate rated in full: no spec
+    dict is run through the registry again."""
+    from geardesign.core import registry
+    from geardesign.planetary import calculator
+    from geardesign.planetary.advice import FULL_RERATINGS
+
+    data = _planetary()
+    data["train"]["center_distance"] = 67.5
+    calc, spec = registry.load_data(data)
+    solved = []
+    solve = calculator.solve
+
+    def counted(inp):
+        solved.append(inp)
+        return solve(inp)
+
+    def refused(*a, **k):
+        raise AssertionError("the advice ran a spec dict through the registry")
+
+    monkeypatch.setattr(calculator, "solve", counted)
+    monkeypatch.setattr(registry, "run_data", refused)
+    res = calc.compute(spec)
+    fixed = [c for c in res.checks if c.code.startswith("PLANET_RING_INTERFERENCE")]
+    assert fixed and all(c.fix for c in fixed)
+    assert 2 <= len(solved) <= 1 + FULL_RERATINGS

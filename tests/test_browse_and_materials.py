@@ -5,7 +5,7 @@ import json
 
 import pytest
 
-from geardesign.bearing import life as L
+from geardesign.bearing import rib as RB
 from geardesign.materials import gear_steel as G
 from tests.helpers_cli import cli
 from tests.reference.bearing._util import document
@@ -90,12 +90,12 @@ def test_through_hardened_yield_strength_is_flagged():
 def test_rib_capacity_formula():
     # [SKF6000] p. 518 with NJ 208 (C0 = 53 kN), Fr = 5 kN, n = 1 500 min^-1, oil:
     # F_ap = 1.5·53·10^4/(1500·120) − 0.15·5 = 3.667 kN; F_a,max = 0.0045·80^1.5 = 3.220 kN
-    r = L.rib_capacity(53000.0, 5000.0, 1500.0, 40.0, 80.0, "2")
+    r = RB.rib_capacity(53000.0, 5000.0, 1500.0, 40.0, 80.0, "2")
     assert r.F_ap == pytest.approx(3666.67, abs=0.01)
     assert r.F_a_max == pytest.approx(3219.94, abs=0.01)
-    g = L.rib_capacity(53000.0, 5000.0, 1500.0, 40.0, 80.0, "2", "grease")
+    g = RB.rib_capacity(53000.0, 5000.0, 1500.0, 40.0, 80.0, "2", "grease")
     assert g.F_ap == pytest.approx(1e4 * 53.0 / (1500.0 * 120.0) * 1000.0 - 500.0)
-    assert L.rib_capacity(53000.0, 5000.0, 1500.0, 40.0, 90.0, "3").F_a_max == \
+    assert RB.rib_capacity(53000.0, 5000.0, 1500.0, 40.0, 90.0, "3").F_a_max == \
         pytest.approx(0.0023 * 90.0 ** 1.7 * 1000.0)
 
 

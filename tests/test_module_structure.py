@@ -22,12 +22,6 @@ LONG = {
     # modules other work of issue 28 is splitting now
     "rexs/chain.py": SPLITTING + ": one reader per REXS component type (shafts, stages, "
                         "bearings, load case) apart from the spec writer",
-    "rendering/figures.py": SPLITTING + ": one module of pictures per calculator kind",
-    "rendering/html.py": SPLITTING + ": the first screen apart from the sections",
-    # a reason of its own
-    "bearing/life.py": "the ISO 281:2007 / GOST 18855 life formulas, one function per "
-                       "equation with its doctest and clause; " + SPLITTING + " by part "
-                       "(load factors, life, a_ISO, rib capacity)",
 }
 """Modules over :data:`MAX_LINES` lines, each with its reason."""
 

@@ -275,3 +275,35 @@ def test_iso_rate_on_arrays_is_rate_on_each_pair(cands, name):
             got = many[key]
             got = float(got[i]) if np.ndim(got) else float(got)
             assert math.isclose(got, float(want), rel_tol=1e-9, abs_tol=1e-9), (key, got, want)
+
+
+@settings(max_examples=10, deadline=None)
+@given(st.sampled_from(SPEC_NAMES), st.sampled_from([1.5, 2.0, 3.0, 5.0]),
+       st.integers(14, 40), st.integers(25, 150), st.sampled_from([0.0, 0.1, 0.3]),
+       st.floats(10.0, 150.0), st.booleans())
+def test_one_checks_function_judges_either_record(name, m_n, z1, z2, beta, b_w, iso):
+    """``spur.strength.checks.rating_checks`` judges a record of either method from the
+    record alone (the GOST record carries its materials, grade and peak torque): contact and
+    bending checks per gear as the verdict, the members named in the codes."""
+    from geardesign.spur.strength.checks import rating_checks
+
+    members = ("sun", "planet")
+    try:
+        if iso:
+            r = _iso_rating(name, beta=beta, m_n=m_n, z1=z1, z2=z2, b_w=b_w)
+        else:
+            r = _rating(_fixed(name), m_n=m_n, z1=z1, z2=z2, beta=beta, b_w=b_w)[1]
+    except GeometryError:
+        return
+    got = {c.code: c.passed for c in rating_checks(r, members)}
+    j = verdict(r)
+    if iso:
+        contact = (got["ISO_PITTING_SUN"], got["ISO_PITTING_PLANET"])
+        bending = (got["ISO_BENDING_SUN"], got["ISO_BENDING_PLANET"])
+    else:
+        assert len(r.materials) == 2
+        contact = (got["CONTACT_FATIGUE"],) * 2
+        bending = (got["BENDING_FATIGUE_SUN"], got["BENDING_FATIGUE_PLANET"])
+        assert ("STATIC_NOT_CHECKED" in got) == (r.static is None)
+    assert contact == tuple(bool(x) for x in j.contact_ok)
+    assert bending == tuple(bool(x) for x in j.bending_ok)

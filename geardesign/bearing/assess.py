@@ -7,6 +7,8 @@ import math
 from dataclasses import field
 
 from geardesign.bearing import life as L
+from geardesign.bearing import load_factors as LF
+from geardesign.bearing import a_iso as AI
 from geardesign.bearing import tables as T
 from geardesign.core.records import dataclass
 
@@ -68,12 +70,12 @@ class Conditions:
 @dataclass
 class BlockResult:
     block: Block
-    factors: L.LoadFactors
+    factors: LF.LoadFactors
     P: float
     L10h: float
     nu1: float | None = None
     kappa: float | None = None
-    a_iso: L.AIso | None = None
+    a_iso: AI.AIso | None = None
     life_h: float = math.nan            # adjusted life at this block
 
 
@@ -96,7 +98,7 @@ class Assessment:
     C_req: float | None = None
     margin: float | None = None
     spectrum: L.SpectrumResult | None = None
-    static: L.StaticLoad | None = None
+    static: LF.StaticLoad | None = None
     s0: float | None = None
     system_life: float | None = None
     slope: float | None = None
@@ -118,9 +120,9 @@ def assess(b: Bearing, blocks: list, c: Conditions) -> Assessment:
     V = c.V if gost else 1.0
     results = []
     for blk in blocks:
-        lf = L.load_factors(b.kind, blk.F_r, blk.F_a, rows=b.rows, alpha_deg=b.alpha, V=V,
+        lf = LF.load_factors(b.kind, blk.F_r, blk.F_a, rows=b.rows, alpha_deg=b.alpha, V=V,
                             C_0r=b.C_0r, f0=b.f0, e_given=b.e, Y_given=b.Y, Y1_given=b.Y1)
-        P = L.equivalent_load(blk.F_r, blk.F_a, lf, V, c.K_b, c.K_t, thrust)
+        P = LF.equivalent_load(blk.F_r, blk.F_a, lf, V, c.K_b, c.K_t, thrust)
         if P <= 0.0:
             raise L.BearingError("load.F_r", "the equivalent load is zero: give a radial or "
                                              "axial load")
@@ -153,9 +155,9 @@ def assess(b: Bearing, blocks: list, c: Conditions) -> Assessment:
                 r.kappa = c.kappa
                 r.nu1 = c.viscosity / c.kappa if c.viscosity is not None else None
             else:
-                r.nu1 = c.nu1 if c.nu1 is not None else L.nu1(r.block.n, b.D_pw)
+                r.nu1 = c.nu1 if c.nu1 is not None else AI.nu1(r.block.n, b.D_pw)
                 r.kappa = c.viscosity / r.nu1
-            r.a_iso = L.a_iso(b.kind, r.kappa, c.e_C, b.C_u, P_r, c.ep_additives)
+            r.a_iso = AI.a_iso(b.kind, r.kappa, c.e_C, b.C_u, P_r, c.ep_additives)
             r.life_h = a1 * r.a_iso.value * L.hours(L.basic_life(b.C_r, P_r, p), r.block.n)
         life_h = results[0].life_h if len(results) == 1 else L.miner_hours(
             [r.life_h for r in results], [r.block.share for r in results])
@@ -180,7 +182,7 @@ def assess(b: Bearing, blocks: list, c: Conditions) -> Assessment:
     if b.C_0r is not None:
         F_r0 = c.F_r0 if c.F_r0 is not None else max(x.F_r for x in blocks) * c.K_b
         F_a0 = c.F_a0 if c.F_a0 is not None else max(x.F_a for x in blocks) * c.K_b
-        out.static = L.static_load(b.kind, F_r0, F_a0, rows=b.rows, alpha_deg=b.alpha,
+        out.static = LF.static_load(b.kind, F_r0, F_a0, rows=b.rows, alpha_deg=b.alpha,
                                    e_given=b.e, Y0_given=b.Y0)
         out.s0 = b.C_0r / out.static.P0 if out.static.P0 > 0 else math.inf
     if c.system_lives:

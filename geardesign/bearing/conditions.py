@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from geardesign.bearing import life as L
+from geardesign.bearing import a_iso as AI
 from geardesign.bearing import tables as T
 from geardesign.bearing.assess import Bearing, Conditions
 from geardesign.core.errors import InputError, Problem
@@ -48,7 +48,7 @@ def resolve_conditions(spec: ValidatedSpec, bearing: Bearing) -> tuple[Condition
             if fac["conditions"] is None:
                 fac["conditions"] = "usual"
                 spec.assumed.append("factors.conditions")
-            a23 = L.a23_default(bearing.kind, fac["conditions"])
+            a23 = AI.a23_default(bearing.kind, fac["conditions"])
         if req["reliability"] > T.A1_GOST94[-1][0]:
             raise InputError.at("requirements.reliability", req["reliability"],
                                 "GOST 18855-94 tabulates a1 only up to 99 %; use method = "
@@ -62,7 +62,7 @@ def resolve_conditions(spec: ValidatedSpec, bearing: Bearing) -> tuple[Condition
             ignored.append("load.rotating_ring (ISO 281 has no rotation factor V)")
     V = T.V_OUTER if (gost and ld["rotating_ring"] == "outer"
                       and bearing.kind != "self_aligning_ball") else 1.0
-    K_t = L.k_t(fac["temperature"])
+    K_t = AI.k_t(fac["temperature"])
     viscosity = e_C = None
     ep = False
     nu1 = kappa = None
@@ -76,7 +76,7 @@ def resolve_conditions(spec: ValidatedSpec, bearing: Bearing) -> tuple[Condition
         if lub["e_C"] is not None:
             e_C = lub["e_C"]
         elif lub["contamination"] is not None:
-            e_C = L.e_c_guide(lub["contamination"], bearing.D_pw)
+            e_C = AI.e_c_guide(lub["contamination"], bearing.D_pw)
         else:
             raise InputError(Problem("lubrication.contamination", "missing; give contamination "
                                      "(one of " + ", ".join(f'"{k}"' for k in T.E_C_GUIDE) +
@@ -160,5 +160,5 @@ def with_c_u(bearing: Bearing, cond: Conditions) -> Bearing:
     if bearing.C_0r is None:
         raise InputError(Problem("bearing.C_u", "missing; required for a_ISO: give C_u (N), or "
                                                 "C_0r from which it is estimated"))
-    return replace(bearing, C_u=L.c_u_estimate(bearing.kind, bearing.C_0r, bearing.D_pw),
+    return replace(bearing, C_u=AI.c_u_estimate(bearing.kind, bearing.C_0r, bearing.D_pw),
                    C_u_estimated=True)

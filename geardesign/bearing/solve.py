@@ -11,6 +11,7 @@ from dataclasses import replace
 
 from geardesign.bearing import catalogue as CAT
 from geardesign.bearing import life as L
+from geardesign.bearing import rib as RB
 from geardesign.bearing import pair as PR
 from geardesign.bearing import tables as T
 from geardesign.bearing.assess import Assessment, Bearing, Block, Conditions, assess
@@ -35,7 +36,7 @@ class Rated:
 
     a: Assessment
     facts: Facts
-    ribs: tuple[L.RibCapacity | None, ...]
+    ribs: tuple[RB.RibCapacity | None, ...]
     better: tuple[CAT.CatalogueBearing, float] | None = None    # (row, its life [h])
 
 
@@ -73,7 +74,7 @@ def ribs(a: Assessment, facts: Facts) -> tuple:
         design = row.designation.split()[0] if row is not None else ""
         if a.bearing.kind == "cylindrical_roller" and r.block.F_a > 0 and design in ("NJ",
                                                                                    "NUP"):
-            out.append(L.rib_capacity(a.bearing.C_0r, r.block.F_r, r.block.n, row.d, row.D,
+            out.append(RB.rib_capacity(a.bearing.C_0r, r.block.F_r, r.block.n, row.d, row.D,
                                       row.series, facts.lubricant))
         else:
             out.append(None)

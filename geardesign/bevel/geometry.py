@@ -132,7 +132,7 @@ def transverse_angles(alpha_n: float, beta_m: float) -> tuple[float, float]:
 
     .. math:: \\tan α_{vt} = \\tan α_n / \\cos β_m,\\quad \\sin β_{vb} = \\sin β_m \\cos α_n
 
-    [ISO10300-1] §6 (method B1); the helical relations of ``spur.geometry``.
+    [ISO10300-1] §6 (method B1); the helical relations of ``geardesign.gears.geometry``.
     """
     from geardesign.gears.geometry import transverse_angles as helical
 

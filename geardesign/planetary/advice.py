@@ -104,15 +104,17 @@ def _errors(checks: list[Check]) -> dict:
     return {c.code: c.passed for c in checks if c.severity == "error"}
 
 
-def reconcile(spec: ValidatedSpec, meshes, checks: list[Check]) -> list[Check]:
+def reconcile(spec: ValidatedSpec, meshes, checks: list[Check], rerate) -> list[Check]:
     """``checks`` with one change appended to every failed geometry error check when two or
-    more fail (with it as their ``fix``), found by re-rating; unchanged otherwise."""
+    more fail (with it as their ``fix``), found by re-rating; unchanged otherwise.
+    ``rerate(spec)``: the checks of a candidate spec, its typed inputs solved once
+    (:func:`geardesign.planetary.calculator.rerate`)."""
     failed = [c for c in checks if c.severity == "error" and not c.passed]
     d = spec.data
     if (len(failed) < 2 or _RERATING.get() or d["train"]["working_angle"] is not None
             or d["teeth"]["planet"] is None):
         return checks
-    found = _search(spec, meshes, checks, {c.code for c in failed})
+    found = _search(spec, meshes, checks, {c.code for c in failed}, rerate)
     fix, text = found if found is not None else (
         (), f"; no change of the planet teeth (±{max(DELTA_TEETH)}) and the centre distance "
             f"(±{GRID_SPAN:g}·m) passes the failed geometry checks together")
@@ -126,9 +128,7 @@ def _with(c: Check, text: str, fix: tuple) -> Check:
     return replace(c, message=c.message + text, fix=fix)
 
 
-def _search(spec: ValidatedSpec, meshes, checks: list[Check], todo: set):
-    from geardesign.core.registry import run_data
-
+def _search(spec: ValidatedSpec, meshes, checks: list[Check], todo: set, rerate):
     d = spec.data
     passing = {k for k, ok in _errors(checks).items() if ok}
     m = d["train"]["module"]
@@ -136,7 +136,7 @@ def _search(spec: ValidatedSpec, meshes, checks: list[Check], todo: set):
     z0 = d["teeth"]["planet"]
     steps = sorted(range(-round(GRID_SPAN / GRID_STEP), round(GRID_SPAN / GRID_STEP) + 1),
                    key=abs)
-    user = _user_data(spec)
+    given = (_user_data(spec).get("shift") or {})
     full = 0
     for dz in DELTA_TEETH:
         z_p = z0 + dz
@@ -151,29 +151,34 @@ def _search(spec: ValidatedSpec, meshes, checks: list[Check], todo: set):
             if not all(now.get(k, True) for k in todo | passing):
                 continue
             fix = ([("teeth.planet", z_p)] if dz else []) + [("train.center_distance", a_w)]
-            given = user.get("shift") or {}
             fix += [(f"shift.{g}", round(x, 4)) for g, x in got[1].items()
                     if given.get(g) is not None and g != "sun"]
             if full >= FULL_RERATINGS:
                 return None
             full += 1
-            if _passes_in_full(user, fix, todo | passing, run_data):
+            if _passes_in_full(spec, z_p, a_w, fix, todo | passing, rerate):
                 return tuple(fix), (f"; one change passes this and the other failed geometry "
                                     f"checks together (re-rated): set {fix_text(fix)}")
     return None
 
 
-def _passes_in_full(user: dict, fix: list, codes: set, run_data) -> bool:
-    data = copy.deepcopy(user)
+def _passes_in_full(spec: ValidatedSpec, z_p: int, a_w: float, fix: list, codes: set,
+                    rerate) -> bool:
+    """Whether the train changed by ``fix`` (teeth.planet = ``z_p``, the centre distance
+    ``a_w`` and the shifts the user gave, as the advice prints them) fails none of the
+    error checks ``codes``: its checks by ``rerate`` (typed inputs solved once, strength
+    and power included)."""
+    d = _candidate_data(spec, z_p, a_w)
     for key, value in fix:
         table, name = key.split(".")
-        data.setdefault(table, {})[name] = value
+        d[table][name] = value
+    vs = ValidatedSpec(d, list(spec.assumed), spec.source, spec.base_dir)
     token = _RERATING.set(True)
     try:
-        res = run_data(data)
-    except InputError:
+        checks = rerate(vs)
+    except (InputError, ValueError, ZeroDivisionError, ArithmeticError):
         return False
     finally:
         _RERATING.reset(token)
-    now = _errors(res.checks)
+    now = _errors(checks)
     return all(now.get(k, True) for k in codes)

@@ -36,7 +36,7 @@ def result(spec: ValidatedSpec, inp: I.Inputs, sol) -> Result:
     if spec.data["synthesis"] is None:
         from geardesign.planetary.advice import reconcile
 
-        checks = reconcile(spec, meshes, checks)
+        checks = reconcile(spec, meshes, checks, rerate)
     if inp.lay.cutter is None:
         checks.append(check("RING_FORM_CIRCLE", True, "info", "",
                             "the rings' form circles are those of the basic rack; give [cutter] "
@@ -45,3 +45,10 @@ def result(spec: ValidatedSpec, inp: I.Inputs, sol) -> Result:
     checks += R.operation_report(res, inp, sol)
     res.checks.extend(checks)
     return res
+
+
+def rerate(spec: ValidatedSpec) -> list:
+    """The checks of a candidate train (the advice by re-rating): its typed inputs
+    (:func:`~geardesign.planetary.inputs.read`) solved once and reported."""
+    inp = I.read(spec)
+    return result(spec, inp, solve(inp)).checks

@@ -16,7 +16,7 @@ def strength_report(res: Result, inp: Inputs, st: Strength) -> list:
     """Materials and the strength section of every mesh; the checks of each mesh by the
     spur rating's check builders, named by the mesh and its members."""
     from geardesign.materials.gear_steel import data_used
-    from geardesign.spur.checks import light_load_checks, strength_checks
+    from geardesign.spur.strength.checks import light_load_checks, rating_checks
     from geardesign.core.units_guard import given
 
     d, train = inp.data, inp.train
@@ -62,14 +62,8 @@ def strength_report(res: Result, inp: Inputs, st: Strength) -> list:
         for row in rating.rows:
             sec.add(row.key, row.value, row.unit, row.symbol,
                     members_words(row.name, md.members), row.source)
-        if st.iso:
-            from geardesign.spur.strength.iso6336.rating import rating_checks
-
-            found = rating_checks(rating, bool(mesh.spec.internal), md.members)
-        else:
-            found = strength_checks(rating.v, ms.pair, mesh.geom.inp.beta > 0.0,
-                                    sd["accuracy_grade"], st.peak_ratio is not None,
-                                    members=md.members, peak_key="strength.peak_torque")
+        found = rating_checks(rating, md.members, internal=bool(mesh.spec.internal),
+                              peak_key="strength.peak_torque")
         out.extend(mesh_check(c, mesh.name) for c in found)
     if st.lightest is not None:   # a load typed in a unit a thousand times too small
         out.extend(light_load_checks(st.lightest, given(op, {"torque": "N·m", "power": "kW"},

@@ -2,9 +2,10 @@
 
 Order, as ``DESIGN.md`` ("Report") asks:
 
-1. the first screen: the title (the spec's ``title``), the spec, kind and methods; the
-   verdict; the governing margins as bars (:mod:`geardesign.rendering.margins`, worst
-   first); every failed check with its advice; the warnings;
+1. the first screen (:mod:`geardesign.rendering.first_screen`): the title (the spec's
+   ``title``), the spec, kind and methods; the verdict; the governing margins as bars
+   (:mod:`geardesign.rendering.margins`, worst first); every failed check with its advice;
+   the warnings;
 2. the table of contents;
 3. the pictures of the whole (:mod:`geardesign.rendering.figures`), the sections with their
    pictures and the tables, then the parts grouped with their real hierarchy (a drive:
@@ -19,18 +20,15 @@ what follows, table heads repeated on each page, rows and figures never split.
 
 from __future__ import annotations
 
-import re
 from typing import Any
 
 from geardesign import __version__
-from geardesign.core.result import Check, Result, Row, fix_text
+from geardesign.core.result import Check, Result, Row
 from geardesign.rendering.figures import Figure, figures
+from geardesign.rendering.first_screen import Page
+from geardesign.rendering.first_screen import advice_html as _advice
 from geardesign.rendering.margins import Margin, margins
 from geardesign.rendering.typeset import e, number_parts, symbol_html, unit_html
-
-FIRST_SCREEN_MARGINS = 8
-"""Rows of the first screen's margins: the failed checks that have no ratio (at most six),
-then the worst margins as bars (at least two); all margins are in "All margins"."""
 
 PART_GROUPS = {"stage_reports": "Stage calculations", "bearing_reports": "Bearing calculations",
                "shaft_reports": "Shaft calculations",
@@ -105,22 +103,6 @@ a{color:inherit}
 """
 
 
-class _Ids:
-    """Unique element ids from names (letters, digits, ``-``)."""
-
-    def __init__(self) -> None:
-        self.used: set[str] = set()
-
-    def __call__(self, *parts: str) -> str:
-        base = "-".join(re.sub(r"[^A-Za-z0-9]+", "-", str(p)).strip("-").lower()
-                        for p in parts if p) or "s"
-        out, n = base, 2
-        while out in self.used:
-            out, n = f"{base}-{n}", n + 1
-        self.used.add(out)
-        return out
-
-
 def _num_cell(value: Any, unit: str | None) -> tuple[str, int]:
     """A value cell: (html, length of the fraction part) for decimal alignment."""
     if isinstance(value, (int, float)) and not isinstance(value, bool) or value is None:
@@ -144,79 +126,8 @@ def _status(c: Check) -> tuple[str, str]:
         c.severity, ("st-info", "ℹ info"))
 
 
-def _advice(c: Check) -> str:
-    parts = []
-    advice = getattr(c, "advice", "")
-    if advice:
-        parts.append(e(advice))
-    if c.fix:
-        parts.append("in the spec: " + e(fix_text(c.fix)))
-    return "; ".join(parts)
-
-
-class _Doc:
-    def __init__(self) -> None:
-        self.out: list[str] = []
-        self.ids = _Ids()
-
-    def add(self, *html: str) -> None:
-        self.out.extend(html)
-
-    # ------------------------------------------------------------------ first screen
-
-    def margin_bars(self, ms: list[Margin], all_id: str, failed: list[Check] = ()) -> None:
-        self.add('<section class="margins" aria-label="governing margins">'
-                 '<h2 id="{}">Governing margins</h2>'.format(self.ids("governing")))
-        shown = {m.code for m in ms}
-        extra = [c for c in failed if c.code not in shown][:FIRST_SCREEN_MARGINS - 2]
-        for c in extra:            # a failed check without a ratio (a shift, a geometry)
-            nums = (f"{_short(c.value)} vs {_short(c.limit)}"
-                    if isinstance(c.value, (int, float)) and isinstance(c.limit, (int, float))
-                    else "")
-            self.add(f'<div class="bar-row" title="{e(c.message)}"><span class="lbl">'
-                     f'<span class="code">{e(c.code)}</span></span><span class="bar failed">'
-                     f'failed</span><span class="num">{e(nums)}</span></div>')
-        if not ms:
-            self.add('<p class="none">No safety factor or limit of this kind to compare.</p>'
-                     "</section>")
-            return
-        top = 2.5
-        room = max(2, FIRST_SCREEN_MARGINS - len(extra))
-        for m in ms[:room]:
-            width = max(0.0, min(m.ratio, top)) / top * 100
-            cls = "bad" if (m.ratio < 1 or not m.passed) else ("low" if m.ratio < 1.1 else "")
-            rel = "≥" if m.at_least else "≤"
-            where = "" if m.section == "checks" else m.section
-            label = (f'<span class="code">{e(m.label)}</span>' if m.section == "checks"
-                     else symbol_html(m.label))
-            self.add(f'<div class="bar-row" title="{e(m.name)}"><span class="lbl">{label}'
-                     f'{" <small>" + e(where) + "</small>" if where else ""}</span>'
-                     f'<span class="bar" role="img" aria-label="margin {m.ratio:.2f}">'
-                     f'<span class="fill {cls}" style="width:{width:.1f}%"></span>'
-                     f'<span class="one" style="left:{100 / top:.1f}%"></span></span>'
-                     f'<span class="num">{e(_short(m.value))} {rel} {e(_short(m.limit))}'
-                     f'</span></div>')
-        more = len(ms) - room
-        note = f"{more} more: " if more > 0 else ""
-        self.add(f'<p class="none">Bar: value against its limit (line = 1); '
-                 f'{note}<a href="#{all_id}">all margins</a>.</p></section>')
-
-    def findings(self, r: Result, checks_id: str) -> None:
-        self.add('<section class="findings" aria-label="failed checks and warnings">')
-        for title, items in (("Failed checks", r.failed), ("Warnings", r.warnings)):
-            self.add(f'<h2 id="{self.ids(title)}">{title} ({len(items)})</h2>')
-            if not items:
-                self.add('<p class="none">None.</p>')
-                continue
-            self.add("<ul>")
-            for c in items:
-                advice = _advice(c)
-                self.add(f'<li><a class="code" href="#{checks_id}-{e(c.code.lower())}">'
-                         f'{e(c.code)}</a>: {e(c.message)}'
-                         + (f'<br><span class="fix">Advice: {advice}</span>' if advice else "")
-                         + "</li>")
-            self.add("</ul>")
-        self.add("</section>")
+class _Doc(Page):
+    """The report document: the first screen (:class:`Page`), the tables and sections."""
 
     # ------------------------------------------------------------------ tables
 
@@ -379,13 +290,6 @@ class _Doc:
                 self.rows_table(part.input_rows, False, inputs=True)
                 self.add("</section>")
         return toc
-
-
-def _short(x: float) -> str:
-    """A margin's value or limit, four significant digits."""
-    if abs(x) >= 1e5:
-        return f"{x:.3g}"
-    return f"{x:.4g}"
 
 
 def _toc(entries: list) -> str:

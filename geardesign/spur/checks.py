@@ -22,7 +22,8 @@ from geardesign.spur.kinematics import Sliding
 from geardesign.spur.strength.checks import (  # noqa: F401  (the strength checks' home)
     ADVICE_FACE_MAX, ADVICE_RTOL, HB_DIFFERENCE_MIN, LOAD_INPUTS, PSI_BD_MAX,
     contact_load_fraction, face_advice_limit, face_width_beyond, face_width_fix,
-    face_width_up, least_passing, light_load_checks, reconciled_widths, strength_checks)
+    face_width_up, least_passing, light_load_checks, rating_checks, reconciled_widths,
+    strength_checks)
 
 EPS_MIN = 1.0
 EPS_WARN = 1.2
@@ -70,7 +71,7 @@ def _tip_at_shift(g: PairGeometry, i: int, x: float) -> float:
 
 def geometry_checks(g: PairGeometry, sliding: Sliding, allow_undercut: bool = False) -> list[Check]:
     """Checks of an external pair, or of an internal pair
-    (:class:`geardesign.spur.internal.InternalPairGeometry`): there the internal gear has
+    (:class:`geardesign.gears.internal.InternalPairGeometry`): there the internal gear has
     no undercut, root or span check, and the interference at both roots is that of
     :func:`internal_mesh_checks`."""
     p = g.inp

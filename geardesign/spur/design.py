@@ -58,7 +58,7 @@ def preliminary_sigma_hp(mats, duty, u: float) -> list[float]:
 def design_pair(spec: ValidatedSpec):
     """Return ``(geometry, how the shifts were set, gear settings, proposal rows)``."""
     from geardesign.spur.spec_inputs import _strength_inputs
-    from geardesign.spur.checks import geometry_checks, strength_checks
+    from geardesign.spur.checks import geometry_checks, rating_checks
     from geardesign.spur.strength import method
 
     rate = method(spec.data["options"]["method"]).rate
@@ -111,8 +111,7 @@ def design_pair(spec: ValidatedSpec):
             ok = not [c for c in geometry_checks(g, sliding_at_ends(g), False)
                       if not c.passed and c.severity == "error"]
             rating = rate(g, mats, duty, setting)
-            checks = strength_checks(rating.v, mats, helical, setting.grade,
-                                     duty.T_peak is not None)
+            checks = rating_checks(rating)
             failed = [c.code for c in checks if not c.passed and c.severity == "error"]
             ok = ok and not failed
             best = (g, how, a_w, m)

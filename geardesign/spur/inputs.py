@@ -30,7 +30,7 @@ GOST = "GOST 21354-87"
 class Strength(NamedTuple):
     """What the strength rating needs beyond the geometry: the two gears' materials
     (:class:`~geardesign.materials.gear_steel.GearMaterial`), the duty and the setting
-    (:class:`~geardesign.spur.strength.rating.Duty`, :class:`~.rating.Setting`)."""
+    (:class:`~geardesign.spur.strength.rating.Duty`, :class:`~geardesign.spur.strength.rating.Setting`)."""
 
     mats: tuple
     duty: Any

@@ -2,7 +2,7 @@
 the geometric checks and the GOST 21354-87 or ISO 6336:2019 fatigue rating, for numpy
 arrays of candidates (one call per chunk).
 
-No formula is written here: the geometry is :func:`geardesign.spur.geometry.pair_core` and
+No formula is written here: the geometry is :func:`geardesign.gears.geometry.pair_core` and
 the GOST 21354-87 rating is :func:`geardesign.spur.strength.gost21354.rating.rate` itself,
 called on a view of the candidates' arrays (:func:`pair_view`): its formulas are written
 with :mod:`geardesign.core.xp`, so one function rates one pair or a chunk.  This module
@@ -94,7 +94,7 @@ chunk: the rating's other values stay in the record)."""
 
 def pair_view(g: dict, rack=None):
     """The pair geometry of :func:`pair_core`'s arrays as the rating reads it
-    (``inp``, ``g1``, ``g2`` and the pair values, as :class:`~geardesign.spur.geometry.PairGeometry`)."""
+    (``inp``, ``g1``, ``g2`` and the pair values, as :class:`~geardesign.gears.geometry.PairGeometry`)."""
     inp = SimpleNamespace(m_n=g["m_n"], b_w=g["b_w"], beta=g["beta"], x1=g["x1"], x2=g["x2"],
                           z1=g["z1"], z2=g["z2"], rack=rack)
     gears = [SimpleNamespace(**{k: g[k + i] for k in ("z", "x", "d", "d_b", "d_w", "d_a", "d_f",

@@ -180,7 +180,7 @@ def _add_gost_strength(res: Result, geom: PairGeometry, spec, inputs, rating) ->
     duty, setting), the face-width and scale advice found by re-rating a failing pair; the
     rating's value record."""
     from geardesign.materials.gear_steel import data_used
-    from geardesign.spur.checks import strength_checks
+    from geardesign.spur.strength.checks import rating_checks
     from geardesign.spur.strength import method
 
     mats, duty, setting = inputs
@@ -238,10 +238,9 @@ def _add_gost_strength(res: Result, geom: PairGeometry, spec, inputs, rating) ->
                 face_limit)
         b_contact, b_bending = reconciled_widths(b_contact, b_bending)
     internal = getattr(geom, "internal", False)   # no re-rated advice for an internal pair
-    res.checks.extend(strength_checks(v, mats, geom.inp.beta > 0, setting.grade,
-                                      duty.T_peak is not None,
-                                      None if internal else geom.inp.b_w, b_contact,
-                                      b_bending, geom.a_w, k_contact, face_limit))
+    res.checks.extend(rating_checks(rating, found={
+        "b": (None if internal else geom.inp.b_w, b_contact, b_bending),
+        "k": (geom.a_w, k_contact, None), "face_limit": face_limit}))
     from geardesign.spur.methods_differ import GOST, advised
 
     gov = 1 if v["sigma_HP1"] <= v["sigma_HP2"] else 2

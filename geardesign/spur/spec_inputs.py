@@ -109,11 +109,11 @@ def _given(spec: ValidatedSpec, path: str) -> bool:
 
 
 def internal_input_from_spec(spec: ValidatedSpec) -> tuple[I.InternalPairInput, str]:
-    """The :class:`~geardesign.spur.internal.InternalPairInput` of a spec with
+    """The :class:`~geardesign.gears.internal.InternalPairInput` of a spec with
     ``gear.internal = true``, resolving the shifts (GOST 19274-73 sign).
 
     Without ``center_distance`` the shifts are x1, x2 (0 when absent, echoed as assumed).
-    With it, x2 − x1 follows from a_w (:func:`~geardesign.spur.internal.
+    With it, x2 − x1 follows from a_w (:func:`~geardesign.gears.internal.
     shift_difference_for_center_distance`); x1 or x2 given, the other follows; neither, x1 = 0
     (assumed).  Rules across keys are input errors naming the key."""
     g, r = spec.data["gear"], spec.data["rack"]
@@ -224,7 +224,7 @@ def _solve_internal(spec: ValidatedSpec) -> tuple[I.InternalPairGeometry, str]:
 def solve_geometry(spec: ValidatedSpec) -> tuple[PairGeometry, str]:
     """Pair geometry of a spec; impossible geometry becomes a one-line input error.  An
     internal pair (``gear.internal``) gives an
-    :class:`~geardesign.spur.internal.InternalPairGeometry`."""
+    :class:`~geardesign.gears.internal.InternalPairGeometry`."""
     gear = spec.data["gear"]
     if gear.get("internal"):
         return _solve_internal(spec)

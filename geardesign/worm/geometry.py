@@ -140,7 +140,7 @@ def profile_angles(worm_type: str, alpha: float, gamma: float) -> tuple[float, f
       tan α_n = tan α_x·cos γ;
     * ZI, ZN1, ZK1: the basic profile angle is normal, α_n = α and
       tan α_x = tan α_n / cos γ (the helical-gear relation of
-      :func:`geardesign.spur.geometry.transverse_angles` with β = γ).
+      :func:`geardesign.gears.geometry.transverse_angles` with β = γ).
 
     [GOST19036] (GOST 19036-94, GOST 18498-89).
     """
@@ -202,7 +202,7 @@ def least_shift_without_undercut(rack: BasicRack, z2: int) -> float:
 
     the rack formula of GOST 16532-70 (β = 0) with the boundary height
     h_l* − h_a* = h_a* + c* − ρ_f*(1 − sin α_x) of the generating worm
-    (:attr:`geardesign.spur.geometry.BasicRack.h_straight`).  Off the mid-plane the
+    (:attr:`geardesign.gears.geometry.BasicRack.h_straight`).  Off the mid-plane the
     teeth are undercut earlier, hence also the practice minimum z2 >= 26 (checks).
     """
     return undercut_shift_limit(z2, rack.alpha_n, 0.0, rack)

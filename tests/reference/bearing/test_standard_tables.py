@@ -20,6 +20,8 @@ import math
 import pytest
 
 from geardesign.bearing import life as L
+from geardesign.bearing import load_factors as LF
+from geardesign.bearing import a_iso as AI
 from geardesign.bearing import tables as T
 from tests.conftest import assert_ref
 
@@ -57,12 +59,12 @@ DEEP_GROOVE = [  # f0·Fa/C0r, Fa/C0r, e, Y (X = 0.56)
 def test_deep_groove_xy_at_printed_points(iso, textbook, e, Y):
     C0 = 10000.0
     # ISO form: f0 = 10, F_a = iso·C0/f0; a pure axial load selects the "> e" column
-    lf = L.load_factors("deep_groove_ball", 0.0, iso * C0 / 10.0, C_0r=C0, f0=10.0)
+    lf = LF.load_factors("deep_groove_ball", 0.0, iso * C0 / 10.0, C_0r=C0, f0=10.0)
     assert (lf.e, lf.X, lf.Y) == (e, 0.56, Y)
-    lf = L.load_factors("deep_groove_ball", 0.0, textbook * C0, C_0r=C0)
+    lf = LF.load_factors("deep_groove_ball", 0.0, textbook * C0, C_0r=C0)
     assert (lf.e, lf.X, lf.Y) == (e, 0.56, Y)
     # F_a/F_r <= e: X = 1, Y = 0
-    lf = L.load_factors("deep_groove_ball", 1e6, textbook * C0, C_0r=C0)
+    lf = LF.load_factors("deep_groove_ball", 1e6, textbook * C0, C_0r=C0)
     assert (lf.X, lf.Y) == (1.0, 0.0)
 
 
@@ -75,11 +77,11 @@ FIXED = [  # α, e, single > e (X, Y), double <= e (X, Y), double > e (X, Y)
 @pytest.mark.parametrize("row", FIXED, ids=[f"{r[0]}deg" for r in FIXED])
 def test_angular_contact_fixed_rows(row):
     a, e, xs, ys, xd1, yd1, xd2, yd2 = row
-    big = L.load_factors("angular_contact_ball", 1000.0, 10000.0, alpha_deg=a)
+    big = LF.load_factors("angular_contact_ball", 1000.0, 10000.0, alpha_deg=a)
     assert (big.e, big.X, big.Y) == (e, xs, ys)
-    small = L.load_factors("angular_contact_ball", 1000.0, 0.5 * e * 1000.0, rows=2, alpha_deg=a)
+    small = LF.load_factors("angular_contact_ball", 1000.0, 0.5 * e * 1000.0, rows=2, alpha_deg=a)
     assert (small.X, small.Y) == (xd1, yd1)
-    big2 = L.load_factors("angular_contact_ball", 1000.0, 10000.0, rows=2, alpha_deg=a)
+    big2 = LF.load_factors("angular_contact_ball", 1000.0, 10000.0, rows=2, alpha_deg=a)
     assert (big2.X, big2.Y) == (xd2, yd2)
 
 
@@ -87,7 +89,7 @@ def test_angular_contact_fixed_rows(row):
 def test_angular_contact_variable_rows_first_point(alpha):
     # i·f0·Fa/C0r = 0.172: α = 10°: e = 0.29, X = 0.46, Y = 1.88; 15°: 0.38, 0.44, 1.47
     e, X, Y = {10.0: (0.29, 0.46, 1.88), 15.0: (0.38, 0.44, 1.47)}[alpha]
-    lf = L.load_factors("angular_contact_ball", 100.0, 172.0, alpha_deg=alpha, C_0r=10000.0,
+    lf = LF.load_factors("angular_contact_ball", 100.0, 172.0, alpha_deg=alpha, C_0r=10000.0,
                         f0=10.0)
     assert (lf.e, lf.X, lf.Y) == (e, X, Y)
 
@@ -98,14 +100,14 @@ def test_roller_and_self_aligning_formulas():
     # self-aligning ball <= e: Y = 0.42 cot α, > e: X = 0.65, Y = 0.65 cot α.
     a = 15.0
     t, cot = math.tan(math.radians(a)), 1 / math.tan(math.radians(a))
-    lf = L.load_factors("tapered_roller", 1000.0, 1000.0, alpha_deg=a)
+    lf = LF.load_factors("tapered_roller", 1000.0, 1000.0, alpha_deg=a)
     assert_ref(lf.e, 1.5 * t, 1e-12, "tapered e")
     assert (lf.X, round(lf.Y, 12)) == (0.4, round(0.4 * cot, 12))
-    lf = L.load_factors("spherical_roller", 1000.0, 1.0, rows=2, alpha_deg=a)
+    lf = LF.load_factors("spherical_roller", 1000.0, 1.0, rows=2, alpha_deg=a)
     assert (lf.X, round(lf.Y, 12)) == (1.0, round(0.45 * cot, 12))
-    lf = L.load_factors("spherical_roller", 1000.0, 1000.0, rows=2, alpha_deg=a)
+    lf = LF.load_factors("spherical_roller", 1000.0, 1000.0, rows=2, alpha_deg=a)
     assert (lf.X, round(lf.Y, 12)) == (0.67, round(0.67 * cot, 12))
-    lf = L.load_factors("self_aligning_ball", 1000.0, 1000.0, alpha_deg=a)
+    lf = LF.load_factors("self_aligning_ball", 1000.0, 1000.0, alpha_deg=a)
     assert (lf.X, round(lf.Y, 12)) == (0.65, round(0.65 * cot, 12))
 
 
@@ -116,5 +118,5 @@ def test_roller_and_self_aligning_formulas():
     ("very_severe", (0.0, 0.0), (0.0, 0.0))])
 def test_e_c_guide_table(level, small, large):
     assert T.E_C_GUIDE[level] == (small, large)
-    assert_ref(L.e_c_guide(level, 60.0), sum(small) / 2, 1e-12, f"e_C {level} D_pw < 100")
-    assert_ref(L.e_c_guide(level, 150.0), sum(large) / 2, 1e-12, f"e_C {level} D_pw >= 100")
+    assert_ref(AI.e_c_guide(level, 60.0), sum(small) / 2, 1e-12, f"e_C {level} D_pw < 100")
+    assert_ref(AI.e_c_guide(level, 150.0), sum(large) / 2, 1e-12, f"e_C {level} D_pw >= 100")

@@ -9,7 +9,7 @@ It is written with :mod:`geardesign.core.xp`: the calculator rates one pair with
 the sweep kernel (:mod:`geardesign.spur.kernel`) many candidates with numpy arrays through
 the same function.
 
-An internal pair (:class:`geardesign.spur.internal.InternalPairGeometry`, whose attribute
+An internal pair (:class:`geardesign.gears.internal.InternalPairGeometry`, whose attribute
 ``internal`` is true) is rated by the same function: σ_H then uses (u − 1), the internal
 gear's tooth form factor is :func:`.formulas.y_fs_internal`, and the reduced radius of
 curvature of the informative contact rows is ρ1ρ2/(ρ2 − ρ1).
@@ -132,7 +132,7 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
     """Rate the pair: contact and bending fatigue, peak loads (GOST 21354-87).
 
     ``g`` a pair geometry of numbers, or of numpy arrays of candidates (the sweep kernel's
-    view of :func:`geardesign.spur.geometry.pair_core`); materials, duty and setting are
+    view of :func:`geardesign.gears.geometry.pair_core`); materials, duty and setting are
     shared by all candidates."""
     given = Given(s.overrides)
     p = g.inp
@@ -289,7 +289,8 @@ def rate(g: PairGeometry, mats: tuple[GearMaterial, GearMaterial], duty: Duty,
     from_spec = frozenset(key.format(k=i + 1) for i, m in enumerate(mats)
                           for what, key in SPEC_KEYS if what in m.given)
     return GostRating(forces=fo, life=life, factors=factors, contact=contact, bending=bending,
-                      static=static, given=frozenset(given.used), from_spec=from_spec)
+                      static=static, given=frozenset(given.used), from_spec=from_spec,
+                      materials=tuple(mats))
 
 
 SPEC_KEYS = (("sigma_Hlim", "sigma_Hlim{k}"), ("sigma_Flim", "sigma_Flim{k}"),

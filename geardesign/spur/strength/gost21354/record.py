@@ -237,7 +237,9 @@ class Static(Record):
 @dataclass(frozen=True, kw_only=True)
 class GostRating(Record):
     """A GOST 21354-87 rating: the section records, the keys of the factors the designer
-    gave (``given``) and of the material values taken from the spec (``from_spec``)."""
+    gave (``given``) and of the material values taken from the spec (``from_spec``), and
+    the pair's materials (pinion, wheel) that its checks judge (hardness ranges and
+    difference)."""
 
     method = "GOST 21354-87"
     forces: Forces
@@ -248,3 +250,4 @@ class GostRating(Record):
     static: Static | None = None
     given: frozenset = frozenset()
     from_spec: frozenset = frozenset()
+    materials: tuple = ()

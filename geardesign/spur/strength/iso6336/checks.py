@@ -6,7 +6,7 @@ spectrum when one is rated), the static safety factors at the peak torque, scuff
 from __future__ import annotations
 
 from geardesign.core.result import Check, check
-from geardesign.spur.strength.checks import (
+from geardesign.spur.strength.advice import (
     advised_percent, face_width_beyond, face_width_fix, face_width_up)
 from geardesign.spur.strength.iso6336 import tables as T
 from geardesign.spur.strength.iso6336.record import S2, S3, S5, S1328, IsoRating
@@ -53,38 +53,35 @@ def checks(v: dict, members: tuple[str, str] = WHO, spectrum: bool = False,
         return face_width_fix(b[0], b[kind]) if b else ()
 
     out: list[Check] = []
-    S_Hmin, S_Fmin = v["S_Hmin"], v["S_Fmin"]
     judged = verdict(v)
-    for k in (1, 2):
-        who, up = members[k - 1], members[k - 1].upper()
-        key = f"S_Hspec{k}" if spectrum else f"S_H{k}"
-        S = v[key]
-        r = S_Hmin / S
-        out.append(check(
-            f"ISO_PITTING_{up}", judged.contact_ok[k - 1], "error",
-            f"ISO 6336 pitting, {who}: S_H{k} = {S:.2f} < S_Hmin = {S_Hmin:.2f}"
-            + (" (load spectrum)" if spectrum else "") + ": "
-            + (by_rerating(1) or f"increase the centre distance by {advised_percent(r ** (2 / 3) - 1)} "
-               f"(module and face width in proportion), or the face width by {advised_percent(r * r - 1)} "
-               f"(at the present load factors)")
-            + f", or use a {who} material with σ_Hlim at least {v[f'sigma_Hlim{k}'] * r:.0f} MPa",
-            f"ISO 6336 pitting, {who}: S_H{k} = {S:.2f} >= {S_Hmin:.2f}", S, S_Hmin, S2,
-            face_fix(1)))
-    for k in (1, 2):
-        who, up = members[k - 1], members[k - 1].upper()
-        key = f"S_Fspec{k}" if spectrum else f"S_F{k}"
-        S = v[key]
-        r = S_Fmin / S
-        out.append(check(
-            f"ISO_BENDING_{up}", judged.bending_ok[k - 1], "error",
-            f"ISO 6336 tooth bending, {who}: S_F{k} = {S:.2f} < S_Fmin = {S_Fmin:.2f}"
-            + (" (load spectrum)" if spectrum else "") + f": increase the module by "
-            f"{advised_percent(r - 1)} (same centre distance, fewer teeth), or "
-            + (by_rerating(2) or f"the face width by {advised_percent(r - 1)} (at the present load "
-                                 f"factors)")
-            + f", or use a {who} material with σ_Flim at least {v[f'sigma_Flim{k}'] * r:.0f} MPa",
-            f"ISO 6336 tooth bending, {who}: S_F{k} = {S:.2f} >= {S_Fmin:.2f}", S, S_Fmin, S3,
-            face_fix(2)))
+    spec = " (load spectrum)" if spectrum else ""
+    for kind, what, lim, ok, src, fixed in (
+            ("H", "pitting", "σ_Hlim", judged.contact_ok, S2, 1),
+            ("F", "tooth bending", "σ_Flim", judged.bending_ok, S3, 2)):
+        need = v[f"S_{kind}min"]
+        for k in (1, 2):
+            who = members[k - 1]
+            S = v[f"S_{kind}spec{k}" if spectrum else f"S_{kind}{k}"]
+            r = need / S
+            if kind == "H":
+                advice = (by_rerating(1) or
+                          f"increase the centre distance by {advised_percent(r ** (2 / 3) - 1)} "
+                          f"(module and face width in proportion), or the face width by "
+                          f"{advised_percent(r * r - 1)} (at the present load factors)")
+            else:
+                advice = (f"increase the module by {advised_percent(r - 1)} (same centre "
+                          f"distance, fewer teeth), or "
+                          + (by_rerating(2) or f"the face width by {advised_percent(r - 1)} "
+                                               f"(at the present load factors)"))
+            out.append(check(
+                f"ISO_{'PITTING' if kind == 'H' else 'BENDING'}_{who.upper()}", ok[k - 1],
+                "error",
+                f"ISO 6336 {what}, {who}: S_{kind}{k} = {S:.2f} < S_{kind}min = {need:.2f}"
+                f"{spec}: {advice}, or use a {who} material with {lim} at least "
+                f"{v[f'sigma_{kind}lim{k}'] * r:.0f} MPa",
+                f"ISO 6336 {what}, {who}: S_{kind}{k} = {S:.2f} >= {need:.2f}", S, need, src,
+                face_fix(fixed)))
+    S_Hmin, S_Fmin = v["S_Hmin"], v["S_Fmin"]
     if peak:
         for kind, sym, need, src in (("PITTING", "S_Hst", S_Hmin, S2), ("BENDING", "S_Fst", S_Fmin, S3)):
             for k in (1, 2):

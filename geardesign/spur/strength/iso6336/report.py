@@ -23,7 +23,9 @@ def add_iso_strength(res, geom, spec, inputs, rating=None, iso=None) -> dict:
 
     found = None if internal or rerating() else _advice(rating.v, geom, mats, duty, setting,
                                                          iso)
-    res.checks.extend(IR.rating_checks(rating, internal, found=found))
+    from geardesign.spur.strength.checks import rating_checks
+
+    res.checks.extend(rating_checks(rating, found=found, internal=internal))
     from geardesign.spur.methods_differ import ISO, advised
 
     v = rating.v
@@ -55,7 +57,7 @@ def _advice(v: dict, geom, mats, duty, setting, iso) -> dict | None:
     from dataclasses import replace
 
     from geardesign.gears.geometry import pair_geometry
-    from geardesign.spur.strength.checks import (face_advice_limit, least_passing,
+    from geardesign.spur.strength.advice import (face_advice_limit, least_passing,
                                                   reconciled_widths)
 
     fails = [kind for kind in ("H", "F") if not IR.passes(v, kind)]

@@ -139,7 +139,7 @@ def internal_tooth_form(z: int, x: float, m_n: float, alpha_n: float, beta: floa
 
     * cutting engagement: inv α_w0 = inv α_n + 2(−x − x_0) tan α_n/(z_n − z_n0),
       a_w0 = m_n (z_n − z_n0) cos α_n/(2 cos α_w0); the cutter tip on the root circle,
-      r_a0 = r_n + (d_f − d)/2 − a_w0 (as :func:`geardesign.spur.internal.cutting_geometry`);
+      r_a0 = r_n + (d_f − d)/2 − a_w0 (as :func:`geardesign.gears.internal.cutting_geometry`);
     * the centre C of the cutter's tip rounding, tangent to its involute (ρ_s0 = ρ_a0 +
       √((r_a0 − ρ_a0)² − r_b0²) from the base circle), describes relative to the gear
       C(ψ) = a_w0 (sin ψ, cos ψ) + R(−ψ (z_n − z_n0)/z_n0) C_0, and the fillet is its
