@@ -18,11 +18,7 @@ MAX_LINES = 400
 
 SPLITTING = "being split (issue 28)"
 
-LONG = {
-    # modules other work of issue 28 is splitting now
-    "rexs/chain.py": SPLITTING + ": one reader per REXS component type (shafts, stages, "
-                        "bearings, load case) apart from the spec writer",
-}
+LONG: dict[str, str] = {}
 """Modules over :data:`MAX_LINES` lines, each with its reason."""
 
 SPLIT = ("novikov", "bearing", "planetary", "shaft", "worm")

@@ -21,7 +21,8 @@ from geardesign.rexs.model import Component, ModelError
 from geardesign.rexs.stages import spec_customs, spec_value
 
 if TYPE_CHECKING:
-    from geardesign.rexs.chain import Writer, _Reader
+    from geardesign.rexs.reader import _Reader
+    from geardesign.rexs.writer import Writer
 
 BEVEL_KEYS = (
     # spec key, member (component role), REXS attribute, unit of the attribute
@@ -66,7 +67,7 @@ ASSUMED_LIMITS = {"sigma_Hlim": 1500.0, "sigma_Flim": 500.0}
 """Long-life limits [MPa] assumed when a model states none: case-hardened wrought steel,
 quality MQ ([ISO6336-5]: σ_Hlim = 1500 MPa, σ_Flim = 500 MPa at a core hardness of 30 HRC
 or more), the steel geardesign assumes for the cylindrical gears of a model
-(:data:`geardesign.rexs.chain.DEFAULT_MATERIAL`)."""
+(:data:`geardesign.rexs.reader.DEFAULT_MATERIAL`)."""
 
 
 def _gear_data(r: _Reader, st: Component, gear: Component) -> Component | None:

@@ -6,14 +6,14 @@ does not state assumed and said (docs/rexs.md, "Planetary and worm stages")."""
 from __future__ import annotations
 
 from geardesign.rexs import stages as ST
-from geardesign.rexs.chain import (DEFAULT_LIFE_HOURS, DEFAULT_MATERIAL, ModelError, Writer,
-                                      _Reader, _material, src)
-from geardesign.rexs.model import Component
+from geardesign.rexs.common import src
+from geardesign.rexs.cylindrical import _flank, _material
+from geardesign.rexs.model import Component, ModelError
+from geardesign.rexs.reader import DEFAULT_LIFE_HOURS, DEFAULT_MATERIAL, _Reader
+from geardesign.rexs.writer import Writer
 
 
 def _shift(r: _Reader, g: Component):
-    from geardesign.rexs.chain import _flank
-
     left, right = _flank(r, g)
     for f in (left, right):
         if f is not None:
@@ -192,8 +192,6 @@ def members(r: _Reader, st: Component, kind: str) -> dict[str, Component]:
     m = r.m
     out: dict = {"stage": st}
     if kind == "spur":
-        from geardesign.rexs.chain import _flank
-
         rel = m.related("stage", stage=st.id)
         if not rel:
             raise ModelError(f"cylindrical_stage {st.id} has no stage relation")

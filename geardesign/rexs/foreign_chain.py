@@ -9,17 +9,21 @@ planetary stage is entered by the member (sun, ring, carrier) on that shaft and 
 the member whose shaft the next stage is on (the last stage: the member whose shaft carries
 the other torque-transmitting ``external_load``), the third member is held.  Every stage is
 read as its single-stage import reads it (:mod:`geardesign.rexs.foreign`,
-:mod:`geardesign.rexs.bevel`, :func:`geardesign.rexs.chain._stage`) into an inline
+:mod:`geardesign.rexs.bevel`, :func:`geardesign.rexs.cylindrical._stage`) into an inline
 ``[[stage]]``; the torque and speed a stage table states are those the drive sets.
 """
 
 from __future__ import annotations
 
 from geardesign.rexs import bevel as BV
-from geardesign.rexs.chain import (Imported, ModelError, Writer, _Reader, _assemble, _head,
-                                      _load_case, _lubricant, _shafts, _stage)
+from geardesign.rexs.chain import _assemble
+from geardesign.rexs.cylindrical import _lubricant, _stage
 from geardesign.rexs.foreign import _rest, members, planetary, worm
-from geardesign.rexs.model import Component
+from geardesign.rexs.load_case import _head, _load_case
+from geardesign.rexs.model import Component, ModelError
+from geardesign.rexs.reader import Imported, _Reader
+from geardesign.rexs.shafts import _shafts
+from geardesign.rexs.writer import Writer
 
 
 class _StageWriter(Writer):

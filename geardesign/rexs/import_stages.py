@@ -13,11 +13,15 @@ from __future__ import annotations
 
 from geardesign.rexs import bevel as BV
 from geardesign.rexs import stages as ST
-from geardesign.rexs.chain import (Imported, ModelError, Writer, _Reader,
-                                      _assemble, _head, _load_case, _lubricant,
-                                      _shafts, _stage, convert, custom, gu_of, src)
+from geardesign.rexs.chain import _assemble
+from geardesign.rexs.common import custom, src
+from geardesign.rexs.cylindrical import _lubricant, _stage
 from geardesign.rexs.foreign import _rest, members, planetary, stated, worm
-from geardesign.rexs.model import Component, number
+from geardesign.rexs.load_case import _head, _load_case
+from geardesign.rexs.model import Component, ModelError, convert, number
+from geardesign.rexs.reader import Imported, _Reader, gu_of
+from geardesign.rexs.shafts import _shafts
+from geardesign.rexs.writer import Writer
 
 KIND_OF = {"planetary_stage": "planetary", "worm_stage": "worm", "bevel_stage": "bevel"}
 """REXS stage component type → spec (and drive stage) kind."""
@@ -130,7 +134,7 @@ def _restore(r: _Reader, st: Component, kind: str) -> dict:
 def _drive(r: _Reader, label: str, ordered: list[Component]) -> Imported:
     """A drive exported by geardesign with planetary or worm stages: its stages in the
     order of ``custom_geardesign__drive__order``, each restored (spur stages as any
-    cylindrical stage, see :func:`geardesign.rexs.chain._stage`)."""
+    cylindrical stage, see :func:`geardesign.rexs.cylindrical._stage`)."""
     m = r.m
     key = f"{ST.CUSTOM}drive__order"
     ordered.sort(key=lambda c: number(c.attributes[key], f"component {c.id} ({c.type})"))

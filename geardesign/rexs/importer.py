@@ -7,10 +7,11 @@
 
 from __future__ import annotations
 
-from geardesign.rexs.chain import Imported, _Reader, gu_of, import_chain
+from geardesign.rexs.chain import import_chain
 from geardesign.rexs.common import custom
 from geardesign.rexs.import_stages import import_other, restore_spec
 from geardesign.rexs.model import Model
+from geardesign.rexs.reader import Imported, _Reader, gu_of
 
 
 def import_model(model: Model, label: str = "model") -> Imported:
