@@ -16,8 +16,6 @@ PACKAGE = Path(__file__).resolve().parent.parent / "geardesign"
 MAX_LINES = 400
 """A module longer than this mixes what should be apart (rules, physics, rows, checks)."""
 
-SPLITTING = "being split (issue 28)"
-
 LONG: dict[str, str] = {}
 """Modules over :data:`MAX_LINES` lines, each with its reason."""
 
