@@ -22,6 +22,15 @@ def inv(alpha: float) -> float:
     References
     ----------
     GOST 16532-70 (notation inv α); ISO 21771:2007 (involute function).
+
+    Examples: inv 0 = 0, and inv 20° = tan 20° − π/9 = 0.363970 − 0.349066 = 0.014904 (the
+    value of the involute tables of GOST 16532-70):
+
+    >>> import math
+    >>> inv(0.0)
+    0.0
+    >>> round(inv(math.radians(20.0)), 6)
+    0.014904
     """
     return xp.tan(alpha) - alpha
 
@@ -55,6 +64,11 @@ def inv_inverse(value: float, tol: float = 1e-12) -> float:
     ----------
     [GOST16532] table 1 (Newton start value); the function
     itself: GOST 16532-70, table 1, item "inv α_tw".
+
+    Example: the inverse of :func:`inv` (identity):
+
+    >>> round(inv_inverse(inv(0.35)), 12)
+    0.35
     """
     if not value > 0.0 or not math.isfinite(value):
         raise ValueError(f"inv θ = {value!r}: the inverse involute needs a value > 0")

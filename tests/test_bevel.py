@@ -1,13 +1,11 @@
 """Bevel pairs: the cone relations, the virtual cylindrical gear identities, forces that
 balance, safety factors that scale with the torque as the formulas say, the handbook forms
-of the GOST route, every input rule in one round (one line each, exit 2), and the formula
-doctests of the package."""
+of the GOST route, and every input rule in one round (one line each, exit 2); the formula
+doctests of the package run in tests/test_doctests.py."""
 
 from __future__ import annotations
 
 import dataclasses
-import doctest
-import importlib
 import math
 from pathlib import Path
 
@@ -29,13 +27,6 @@ SPIRAL = SPECS / "bevel_spiral_iso.toml"
 
 def _inputs(path: Path) -> I.Inputs:
     return I.read(load(path)[1].data)
-
-
-@pytest.mark.parametrize("name", ["inputs", "geometry", "rating"])
-def test_formula_doctests(name):
-    module = importlib.import_module(f"geardesign.bevel.{name}")
-    failures, tried = doctest.testmod(module, optionflags=doctest.ELLIPSIS)
-    assert tried > 0 and failures == 0
 
 
 # --------------------------------------------------------------------------- properties

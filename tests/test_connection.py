@@ -282,16 +282,6 @@ def test_key_bearing_length_inverse():
     assert math.isinf(K.standard_length(501.0, tables.key_lengths()))
 
 
-@pytest.mark.parametrize("module", ["key", "spline", "fit", "iso286", "tables"])
-def test_docstring_examples_run(module):
-    import doctest
-    import importlib
-
-    mod = importlib.import_module(f"geardesign.connection.{module}")
-    result = doctest.testmod(mod)
-    assert result.failed == 0 and (module == "tables" or result.attempted > 0)
-
-
 @pytest.mark.parametrize("how", ['designation = "40x2"', 'designation = "N 40 x 2 x 18"',
                                  "reference_diameter = 40.0\nmodule = 2.0",
                                  "reference_diameter = 40.0\nmodule = 2.0\nteeth = 18"])

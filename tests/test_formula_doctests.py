@@ -1,9 +1,8 @@
 """The worked values in the docstrings of the ISO 6336 and GOST 21354-87 formula modules
 (each marked with its source: KISSsoft reports, ISO/TR 6336-30, the standard's tables, a
-value worked from the formula) run as tests; every public formula names its reference (a key
+value worked from the formula) run as tests in tests/test_doctests.py; every public formula names its reference (a key
 of docs/references.md in brackets)."""
 
-import doctest
 import importlib
 import inspect
 import re
@@ -15,21 +14,6 @@ GOST = "geardesign.spur.strength.gost21354."
 MODULES = [ISO + m for m in ("part1", "part2", "part3", "part5", "part21", "tooth_form")] + \
     [GOST + m for m in ("contact", "bending", "load_factors")]
 FORMULAS = MODULES + [ISO + "part6"]
-
-
-@pytest.mark.parametrize("name", MODULES)
-def test_docstring_examples(name):
-    module = importlib.import_module(name)
-    finder, runner = doctest.DocTestFinder(recurse=False), doctest.DocTestRunner()
-    attempted = 0
-    for fname, obj in vars(module).items():
-        if not inspect.isfunction(obj) or fname.startswith("x_"):
-            continue
-        for test in finder.find(obj, fname, globs=vars(module)):
-            result = runner.run(test)
-            assert result.failed == 0, fname
-            attempted += result.attempted
-    assert attempted > 0
 
 
 @pytest.mark.parametrize("name", FORMULAS)

@@ -418,11 +418,3 @@ def test_drive_shafts_by_din743():
     assert all(r["S_min"] == 1.2 and r["S_static_min"] == 1.2 for r in rows)
     for part in doc["results"]["shaft_reports"]:
         assert "DIN 743-1/-2/-3 (2012)" in part["methods"]
-
-
-@pytest.mark.parametrize("mod", [P1, P2, P3])
-def test_docstring_examples_run(mod):
-    import doctest
-
-    result = doctest.testmod(mod)
-    assert result.attempted > 0 and result.failed == 0

@@ -29,6 +29,11 @@ def wahl_factor(C: float) -> float:
 
     Reference: A. M. Wahl, "Mechanical Springs"; [Wahl]; the factor used by
     the textbook examples in ``tests/reference/ball_clutch``.
+
+    Example: C = 6 gives 23/20 + 0.615/6 = 1.2525:
+
+    >>> round(wahl_factor(6.0), 4)
+    1.2525
     """
     return (4.0 * C - 1.0) / (4.0 * C - 4.0) + 0.615 / C
 
@@ -43,7 +48,13 @@ def rate(G: float, d: float, D: float, n_a: float) -> float:
 
 
 def active_coils(G: float, d: float, D: float, c: float) -> float:
-    """Active coils for a rate c [N/mm]: n_a = G·d⁴/(8·D³·c) (:func:`rate` solved)."""
+    """Active coils for a rate c [N/mm]: n_a = G·d⁴/(8·D³·c) (:func:`rate` solved).
+
+    Example: the inverse of :func:`rate` (identity):
+
+    >>> active_coils(80000.0, 2.0, 12.0, rate(80000.0, 2.0, 12.0, 8.0))
+    8.0
+    """
     return G * d ** 4 / (8.0 * D ** 3 * c)
 
 

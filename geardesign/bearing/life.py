@@ -114,7 +114,13 @@ def dynamic_rating(kind: str, Z: int, D_w: float, D_pw: float, alpha_deg: float 
 
 def basic_life(C: float, P: float, p: float) -> float:
     """Basic rating life L10 = (C/P)^p [10⁶ rev] (GOST 18855-94 / ISO 281; [GOST18855]);
-    infinite when it exceeds the float range (the caller refuses it)."""
+    infinite when it exceeds the float range (the caller refuses it).
+
+    Example: C/P = 2 for a ball bearing (p = 3) gives L10 = 8·10⁶ rev:
+
+    >>> basic_life(20.0, 10.0, 3.0)
+    8.0
+    """
     try:
         return (C / P) ** p
     except OverflowError:
@@ -122,7 +128,13 @@ def basic_life(C: float, P: float, p: float) -> float:
 
 
 def hours(L_mrev: float, n: float) -> float:
-    """Life in hours at constant speed n [min⁻¹]: L_h = 10⁶·L/(60·n) ([Haidamaka2017] eq. (2))."""
+    """Life in hours at constant speed n [min⁻¹]: L_h = 10⁶·L/(60·n) ([Haidamaka2017] eq. (2)).
+
+    Example: 10⁶ rev at 1000 min⁻¹ last 10⁶/60 000 = 16.667 h:
+
+    >>> round(hours(1.0, 1000.0), 3)
+    16.667
+    """
     return 1.0e6 * L_mrev / (60.0 * n)
 
 
@@ -146,7 +158,13 @@ def required_rating(P: float, life_h: float, n: float, p: float, a: float = 1.0)
 
 def system_life(lives, slope: float) -> float:
     """Life of several bearings that all must survive: L = (Σ L_i^−e)^(−1/e) (Weibull slope
-    e = 10/9 ball, 9/8 roller; NTN CAT. No. 2202/E formula (3.6))."""
+    e = 10/9 ball, 9/8 roller; NTN CAT. No. 2202/E formula (3.6)).
+
+    Example: a system of one bearing lives as long as that bearing (identity):
+
+    >>> round(system_life([5000.0], 9.0 / 8.0), 6)
+    5000.0
+    """
     return sum(L ** -slope for L in lives) ** (-1.0 / slope)
 
 

@@ -169,6 +169,12 @@ def transverse_angles(alpha_n: float, beta: float) -> tuple[float, float]:
     .. math:: \\tan α_t = \\tan α / \\cos β, \\qquad \\sin β_b = \\sin β \\cos α
 
     GOST 16532-70, table 1; ISO 21771:2007.
+
+    Example: a spur gear (β = 0) has α_t = α and β_b = 0 (identity):
+
+    >>> import math
+    >>> transverse_angles(math.radians(20.0), 0.0) == (math.radians(20.0), 0.0)
+    True
     """
     alpha_t = xp.atan(xp.tan(alpha_n) / xp.cos(beta))
     beta_b = xp.asin(xp.sin(beta) * math.cos(alpha_n))
@@ -183,6 +189,14 @@ def undercut_shift_limit(z: int, alpha_t: float, beta: float, rack: BasicRack) -
     h_l* − h_a* = :attr:`BasicRack.h_straight` (1 for GOST 13755-81).
     References: GOST 16532-70 (quality checks); ZPCIL ``GEOM.h`` ([ZPCIL] GEOM.h).  The worm
     calculator uses it for the wheel's mid-plane (β = 0, α_t = α_x).
+
+    Example: the GOST 13755-81 rack (h_l* − h_a* = 1.000) undercuts no spur gear of
+    z ≥ 2/sin²20° = 17.1 teeth, so x_min ≈ 0 at z = 17:
+
+    >>> import math
+    >>> a = math.radians(20.0)
+    >>> round(undercut_shift_limit(17, a, 0.0, BasicRack(a)), 3)
+    0.006
     """
     return rack.h_straight - z * xp.sin(alpha_t) ** 2 / (2.0 * xp.cos(beta))
 
@@ -199,6 +213,13 @@ def working_pressure_angle(x_sum: float, z1: int, z2: int, alpha_n: float, alpha
     GeometryError ``INV_ALPHA_TW`` if inv α_tw <= 0 (the shifts are too negative).
 
     References: GOST 16532-70, table 1 (x_Σ given).
+
+    Example: with x_Σ = 0 the pair works at the rack's angle, α_tw = α_t (identity):
+
+    >>> import math
+    >>> a = math.radians(20.0)
+    >>> abs(working_pressure_angle(0.0, 20, 40, a, a) - a) < 1e-12
+    True
     """
     value = 2.0 * x_sum * math.tan(alpha_n) / (z1 + z2) + inv(alpha_t)
     if value <= 0.0:

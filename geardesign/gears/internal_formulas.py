@@ -28,6 +28,13 @@ def working_pressure_angle(x_diff: float, z1: int, z2: int, alpha_n: float,
     is the least x2 − x1.
 
     References: GOST 19274-73 (x_d given); [GOST19274]; paper (b) eq. (21).
+
+    Example: with x2 − x1 = 0 the pair works at the rack's angle, α_tw = α_t (identity):
+
+    >>> import math
+    >>> a = math.radians(20.0)
+    >>> abs(working_pressure_angle(0.0, 20, 60, a, a) - a) < 1e-12
+    True
     """
     if z2 <= z1:
         raise GeometryError("TEETH_DIFFERENCE", f"z2 = {z2} <= z1 = {z1}: no internal pair",

@@ -26,6 +26,14 @@ def span_teeth_ideal(z: int, x: float, m_n: float, alpha_n: float, alpha_t: floa
     follows because the calliper faces are normal to the base helix: the contact point
     rolls W·cos β_b/2 from the tangency line (KISSsoft agrees, ``tests/reference``;
     the ZPCIL program, uses cos β_b).
+
+    Example: for an unshifted spur gear α_x = α and the formula reduces to z·α/π + 0.5, the
+    handbook rule k = z/9 + 0.5 for α = 20° (exact, since 20° = π/9): z = 18 gives 2.5.
+
+    >>> import math
+    >>> a = math.radians(20.0)
+    >>> round(span_teeth_ideal(18, 0.0, 1.0, a, a, 0.0, 18.0, 18.0 * math.cos(a)), 9)
+    2.5
     """
     cos_ax = d_b / (d + 2.0 * x * m_n)
     if cos_ax >= 1.0:

@@ -31,6 +31,11 @@ def crank_ratio(z: int) -> float:
     angle at P and the angle π/z at O2: R1 = a·sin(π/z), R2 = a·cos(π/z).
 
     Parameters: z number of slots (>= 3).  Reference: Geneva geometry, [Artobolevsky].
+
+    Example: four slots give λ = sin 45° = 0.7071:
+
+    >>> round(crank_ratio(4), 4)
+    0.7071
     """
     return math.sin(math.pi / z)
 
@@ -53,6 +58,12 @@ def motion_share(z: int, pins: int, internal: bool) -> float:
     never dwells (two rollers in slots at the same time).
 
     Reference: [Artobolevsky] (motion share, "with k pins: k(z − 2)/(2z) < 1").
+
+    Example: an external four-slot wheel with one pin moves a quarter of the crank's turn
+    (2·45° of 360°):
+
+    >>> motion_share(4, 1, False)
+    0.25
     """
     return pins * 2.0 * half_motion_angle(z, internal) / (2.0 * math.pi)
 

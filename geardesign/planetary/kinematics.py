@@ -228,11 +228,23 @@ def discriminant(amplitudes: list[float]) -> float:
     .. math:: S_{fz} = \\sqrt{\\textstyle\\sum_{n=1}^{5} S_{n f_z}^2}
 
     Reconstructed from Gavrilov et al. 2017, eq. (1) (illegible in the scan) so that their
-    Table 2 is reproduced exactly ([Gavrilov2017])."""
+    Table 2 is reproduced exactly ([Gavrilov2017]).
+
+    Example: amplitudes 3 and 4 give √(9 + 16) = 5:
+
+    >>> discriminant([3.0, 4.0])
+    5.0
+    """
     return math.sqrt(sum(a * a for a in amplitudes))
 
 
 def relative_growth(S: float, S0: float) -> float:
     """Dimensionless discriminant P_fz = (S_fz − S_fz0)/S_fz0 (Gavrilov et al. 2017,
-    eq. (2), reconstructed as :func:`discriminant`)."""
+    eq. (2), reconstructed as :func:`discriminant`).
+
+    Example: S = 1.5 against S0 = 1 is a growth of 0.5:
+
+    >>> relative_growth(1.5, 1.0)
+    0.5
+    """
     return (S - S0) / S0

@@ -27,6 +27,11 @@ def specific_sliding(rho1: float, rho2: float, u: float) -> tuple[float, float]:
     u : gear ratio z2/z1.
 
     References: [ISO21771]; Dobrov et al. 2017, eqs. (3) ([Dobrov2017]).
+
+    Example: at the pitch point ρ2 = u·ρ1 and both flanks roll without sliding (identity):
+
+    >>> specific_sliding(10.0, 30.0, 3.0)
+    (0.0, 0.0)
     """
     return 1.0 - rho2 / (u * rho1), 1.0 - u * rho1 / rho2
 
@@ -39,6 +44,13 @@ def relative_sliding(rho1: float, rho2: float, u: float) -> float:
 
     References: Dobrov et al. 2017, eqs. (10) and (20) ([Dobrov2017] eqs. (10), (20)), with the
     denominators read as in [Dobrov2017].
+
+    Examples: zero at the pitch point (ρ2 = u·ρ1); v_t1 = 10, v_t2 = 20/3 gives 1/3:
+
+    >>> relative_sliding(10.0, 30.0, 3.0)
+    0.0
+    >>> round(relative_sliding(10.0, 20.0, 3.0), 12)
+    0.333333333333
     """
     v1, v2 = rho1, rho2 / u
     return (v1 - v2) / max(v1, v2)

@@ -13,7 +13,13 @@ from geardesign.gears.geometry import PairGeometry
 
 
 def torque_from_power(P: float, n: float) -> float:
-    """Torque [N·m] from power P [kW] at speed n [min⁻¹]: T = 30000·P/(π·n) = 9549.3·P/n."""
+    """Torque [N·m] from power P [kW] at speed n [min⁻¹]: T = 30000·P/(π·n) = 9549.3·P/n.
+
+    Example: 10 kW at 1000 min⁻¹ is 9549.3·10/1000 = 95.49 N·m:
+
+    >>> round(torque_from_power(10.0, 1000.0), 2)
+    95.49
+    """
     return 30000.0 * P / (math.pi * n)
 
 
@@ -66,7 +72,13 @@ class Block:
 
 def cycles(n: float, c: int, L_h: float) -> float:
     """Number of load cycles N_K = 60·n·c·L_h (c meshes per revolution).
-    GOST 21354-87; [GOST21354]."""
+    GOST 21354-87; [GOST21354].
+
+    Example: 1000 min⁻¹, one mesh per revolution, 10 000 h: N_K = 6·10⁸:
+
+    >>> cycles(1000.0, 1, 10000.0)
+    600000000.0
+    """
     return 60.0 * n * c * L_h
 
 

@@ -16,6 +16,12 @@ def ratios(z_flex: int, z_rigid: int) -> tuple[float, float]:
     flexible wheel fixed, output on the rigid wheel: u = z_b/(z_b − z_g).
 
     Reference: M. N. Ivanov, "Volnovye zubchatye peredachi" (1981); [IvanovWave].
+
+    Example: z_f = 200, z_r = 202 (Δz = 2) gives −100 with the rigid gear fixed and 101 with
+    the flexwheel fixed:
+
+    >>> ratios(200, 202)
+    (-100.0, 101.0)
     """
     dz = z_rigid - z_flex
     return -z_flex / dz, z_rigid / dz

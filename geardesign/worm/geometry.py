@@ -128,7 +128,16 @@ def shift_for_center_distance(a_w: float, m: float, q: float, z2: int) -> float:
 
 
 def center_distance(m: float, q: float, z2: int, x: float) -> float:
-    """Centre distance a_w = 0.5·m·(q + z2 + 2x) (GOST 19650-97; [GOST19650])."""
+    """Centre distance a_w = 0.5·m·(q + z2 + 2x) (GOST 19650-97; [GOST19650]).
+
+    Examples: m = 5, q = 10, z2 = 40, x = 0 gives a_w = 0.5·5·50 = 125 mm; and the inverse of
+    :func:`shift_for_center_distance` (identity):
+
+    >>> center_distance(5.0, 10.0, 40, 0.0)
+    125.0
+    >>> center_distance(5.0, 10.0, 40, shift_for_center_distance(127.5, 5.0, 10.0, 40))
+    127.5
+    """
     return 0.5 * m * (q + z2 + 2.0 * x)
 
 

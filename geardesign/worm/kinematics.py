@@ -71,7 +71,13 @@ def friction(v_s: float, group: str, level: str = "mean", coefficient: float | N
 
 def mesh_efficiency(gamma_w: float, rho: float) -> float:
     """Mesh efficiency with the worm driving, η_m = tan γ_w / tan(γ_w + ρ')
-    ([Dunaev]; Pascal program; DIN 3975 form with ρ_z)."""
+    ([Dunaev]; Pascal program; DIN 3975 form with ρ_z).
+
+    Example: without friction (ρ' = 0) the mesh loses nothing (identity):
+
+    >>> mesh_efficiency(0.2, 0.0)
+    1.0
+    """
     return math.tan(gamma_w) / math.tan(gamma_w + rho)
 
 
@@ -85,7 +91,13 @@ def reverse_efficiency(gamma_w: float, rho: float) -> float:
 
 
 def is_self_locking(gamma_w: float, rho: float) -> bool:
-    """The wheel cannot drive the worm: γ_w <= ρ' ([Dunaev])."""
+    """The wheel cannot drive the worm: γ_w <= ρ' ([Dunaev]).
+
+    Example: a lead angle below the friction angle locks:
+
+    >>> is_self_locking(0.05, 0.06), is_self_locking(0.2, 0.06)
+    (True, False)
+    """
     return gamma_w <= rho
 
 
