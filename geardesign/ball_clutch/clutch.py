@@ -32,7 +32,13 @@ def ball_forces(T: float, z1: int, d4: float, z3: int, d5: float) -> tuple[float
 
 def centrifugal_force(m: float, r0: float, omega: float) -> float:
     """Centrifugal force of one safety ball (with its plunger), F_c = m·r0·ω² [N]
-    ([Malashchenko2025] eqs. (10), (15): the term m·r0·ω²)."""
+    ([Malashchenko2025] eqs. (10), (15): the term m·r0·ω²).
+
+    Example: m = 0.01 kg at r0 = 0.05 m and ω = 100 rad/s: F_c = 0.01·0.05·100² = 5 N:
+
+    >>> round(centrifugal_force(0.01, 0.05, 100.0), 9)
+    5.0
+    """
     return m * r0 * omega * omega
 
 

@@ -8,7 +8,13 @@ import math
 def effective_modulus(E1: float, nu1: float, E2: float, nu2: float) -> float:
     """E* with 1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2 [MPa].
 
-    Reference: K. L. Johnson, "Contact Mechanics" (1985), eq. (4.22)."""
+    Reference: K. L. Johnson, "Contact Mechanics" (1985), eq. (4.22).
+
+    Example: steel on steel, E = 2.1·10⁵ MPa, ν = 0.3: E* = E/(2(1 − ν²)) = 115 385 MPa:
+
+    >>> round(effective_modulus(2.1e5, 0.3, 2.1e5, 0.3))
+    115385
+    """
     return 1.0 / ((1.0 - nu1 ** 2) / E1 + (1.0 - nu2 ** 2) / E2)
 
 

@@ -13,7 +13,13 @@ from geardesign.core.records import dataclass
 def nu1(n: float, D_pw: float) -> float:
     """Reference kinematic viscosity ν1 [mm²/s] (ISO 281:2007 eq. (28)/(29), standards check §1):
     ν1 = 45000·n^−0.83·D_pw^−0.5 for n < 1000 min⁻¹, ν1 = 4500·n^−0.5·D_pw^−0.5 for n >= 1000
-    (n [min⁻¹], D_pw [mm]).  The two branches differ by ~2 % at n = 1000 (inherent)."""
+    (n [min⁻¹], D_pw [mm]).  The two branches differ by ~2 % at n = 1000 (inherent).
+
+    Example: n = 1000 min⁻¹, D_pw = 100 mm: ν1 = 4500/(√1000·√100) = 14.23 mm²/s:
+
+    >>> round(nu1(1000.0, 100.0), 2)
+    14.23
+    """
     if n < 1000.0:
         return 45000.0 * n ** -0.83 * D_pw ** -0.5
     return 4500.0 * n ** -0.5 * D_pw ** -0.5

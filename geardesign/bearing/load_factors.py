@@ -195,6 +195,11 @@ def equivalent_load(Fr: float, Fa: float, lf: LoadFactors, V: float = 1.0, K_b: 
     Radial bearings: P = (X·V·F_r + Y·F_a)·K_б·K_т (GOST 18855-94 practice, [Haidamaka2017] eq. (6));
     ISO 281: P = X·F_r + Y·F_a (V = K_б = K_т = 1 unless given as application factors).
     Thrust bearings: P_a = X·F_r + Y·F_a (α = 90°: P_a = F_a).
+
+    Example: a radial ball bearing without axial load has X = 1, Y = 0, so P = F_r:
+
+    >>> equivalent_load(1000.0, 0.0, load_factors("deep_groove_ball", 1000.0, 0.0))
+    1000.0
     """
     if thrust:
         return (lf.X * Fr + lf.Y * Fa) * K_b * K_t

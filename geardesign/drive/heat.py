@@ -242,7 +242,13 @@ def with_limit(b: Balance, m: Model, hs: TH.Housing, t_air: float, t_max: float)
 
 def shaft_diameter(T: float) -> float:
     """Preliminary shaft diameter [mm] for a torque T [N·m] from torsion alone,
-    d = (T/(0.2·[τ]))^(1/3) with [τ] = 20 MPa ([Dunaev])."""
+    d = (T/(0.2·[τ]))^(1/3) with [τ] = 20 MPa ([Dunaev]).
+
+    Example: T = 400 N·m gives d = (400 000/(0.2·20))^(1/3) = 100 000^(1/3) = 46.42 mm:
+
+    >>> round(shaft_diameter(400.0), 2)
+    46.42
+    """
     return (1000.0 * T / (0.2 * TAU_SHAFT)) ** (1.0 / 3.0)
 
 

@@ -98,6 +98,11 @@ def characteristic_value(kind: str, order: int, q: float, tol: float = 1e-13) ->
     ----------
     DLMF §28.4(ii) (recurrences); Abramowitz & Stegun 20.2.5-20.2.11; checked against the
     printed output of Zhang & Jin, Computation of Special Functions (1996), program MCVA2.
+
+    Example: at q = 0 the characteristic values are a_r = b_r = r² (identity):
+
+    >>> round(characteristic_value("a", 2, 0.0), 9), round(characteristic_value("b", 1, 0.0), 9)
+    (4.0, 1.0)
     """
     if q < 0.0:
         raise ValueError("q must be >= 0")

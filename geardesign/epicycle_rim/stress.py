@@ -89,6 +89,13 @@ def von_mises_plane(s1: float, s2: float) -> float:
     ----------
     Gutyria et al. 2017, eq. (3) (reconstructed; shear τ ≈ 0.05σ_t neglected as the paper
     states); [Gutyria2017] eq. (3).
+
+    Examples: uniaxial σ gives σ; σ1 = −σ2 (pure shear τ = σ) gives √3·σ:
+
+    >>> von_mises_plane(100.0, 0.0)
+    100.0
+    >>> round(von_mises_plane(100.0, -100.0), 4)
+    173.2051
     """
     return math.sqrt(s1 * s1 + s2 * s2 - s1 * s2)
 

@@ -38,6 +38,13 @@ def helix_for_center_distance(a_w: float, m: float, z1: int, z2: int) -> float:
 
     Raises :class:`GeometryError` when a_w ≤ m(z1+z2)/2 (no helix angle exists).
     Reference: theory of gearing; Korotkin 2017 chooses β so that a_w = 450 mm.
+
+    Example: a_w = a_0/cos 10° gives β = 10° (identity, a_0 = 5·(20 + 30)/2 = 125 mm):
+
+    >>> import math
+    >>> round(math.degrees(helix_for_center_distance(125.0 / math.cos(math.radians(10.0)),
+    ...                                               5.0, 20, 30)), 9)
+    10.0
     """
     a0 = 0.5 * m * (z1 + z2)
     if a_w <= a0:

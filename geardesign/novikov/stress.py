@@ -17,7 +17,13 @@ from geardesign.novikov.tables import SIGMA_H_CONST
 
 def reduced_modulus(E: float, nu: float) -> float:
     """E* = E/(2(1 − ν²)) of two equal elastic bodies [MPa] (Hertz; steel–steel with
-    E = 2.1·10⁵ MPa, ν = 0.3: 115 385 MPa)."""
+    E = 2.1·10⁵ MPa, ν = 0.3: 115 385 MPa).
+
+    Example: steel–steel, E = 2.1·10⁵ MPa, ν = 0.3:
+
+    >>> round(reduced_modulus(2.1e5, 0.3))
+    115385
+    """
     return E / (2.0 * (1.0 - nu * nu))
 
 

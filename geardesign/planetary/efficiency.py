@@ -134,6 +134,12 @@ def efficiency_2kh_braked_carrier(i: float, eta_h: float, w1: float, w4: float,
     numerator and denominator are positive; a numerator ≤ 0 is the paper's self-braking
     (the driven member stops or reverses).  The general solver :func:`flow` gives the same
     values (``tests/test_planetary_efficiency.py``).
+
+    Example: with the carrier at rest (ω4 = 0) the train is the fixed-carrier one, η = η^(4)
+    (identity):
+
+    >>> efficiency_2kh_braked_carrier(3.0, 0.97, 100.0, 0.0)
+    0.97
     """
     if driving == "sun":
         return eta_h * (w1 - w4 * (1.0 + i)) / (w1 - w4 * (1.0 + i * eta_h))

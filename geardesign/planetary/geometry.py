@@ -189,6 +189,12 @@ def specific_pressure(z1: int, z2: int, alpha_t: float, alpha_tw: float,
 
     "+" external, "−" internal.  Matusevich et al. 2017, eq. (34) ([Matusevich2017];
     e.g. 0.567 for their sun–planet mesh 12/46 at α_tw = 21.525°).
+
+    Example: the sun–planet mesh 12/46 of [Matusevich2017] (α_t = 20°, α_tw = 21.525°):
+
+    >>> import math
+    >>> round(specific_pressure(12, 46, math.radians(20.0), math.radians(21.525), False), 3)
+    0.567
     """
     s = -1.0 if internal else 1.0
     return 2.0 * (z2 + s * z1) / (z1 * z2 * math.cos(alpha_t) * math.tan(alpha_tw))

@@ -29,6 +29,12 @@ def expm(x):
     ----------
     [Moler2003] §3 (method 3: Padé approximation with scaling and squaring, the error bound
     and its table of (p, q)).
+
+    Example: exp(0) = I (identity):
+
+    >>> import numpy as np
+    >>> expm(np.zeros((2, 2))).tolist()
+    [[1.0, 0.0], [0.0, 1.0]]
     """
     import numpy as np
 

@@ -50,7 +50,13 @@ def curvature_factor(c: float, model: str = "thesis") -> float:
 
 def section_modulus(d: float) -> float:
     """Section modulus of the round wire in bending W = π·d³/32 [mm³] (KO-2 thesis eq. (4);
-    the thesis computes with π = 3.14 and prints 21.195 mm³ for d = 6 mm: 21.206)."""
+    the thesis computes with π = 3.14 and prints 21.195 mm³ for d = 6 mm: 21.206).
+
+    Example: d = 6 mm gives W = π·216/32 = 21.206 mm³ (the thesis, with π = 3.14: 21.195):
+
+    >>> round(section_modulus(6.0), 3)
+    21.206
+    """
     return math.pi * d ** 3 / 32.0
 
 
@@ -72,7 +78,13 @@ def min_wire_diameter(T: float, k: float, sigma_allow: float) -> float:
 
 
 def allowable_torque(sigma_allow: float, k: float, d: float) -> float:
-    """Torque at which the coils reach [σ]: T = [σ]·W/k [N·mm] (eq. (1) solved for T)."""
+    """Torque at which the coils reach [σ]: T = [σ]·W/k [N·mm] (eq. (1) solved for T).
+
+    Example: the inverse of :func:`bending_stress` (identity):
+
+    >>> round(bending_stress(allowable_torque(600.0, 1.2, 6.0), 1.2, 6.0), 9)
+    600.0
+    """
     return sigma_allow * section_modulus(d) / k
 
 

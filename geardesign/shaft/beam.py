@@ -54,7 +54,13 @@ class PlaneSolution:
 
 def element_stiffness(EI: float, L: float) -> list[list[float]]:
     """Bending stiffness matrix k_e of one element [N/mm, N, N·mm] (module docstring) of
-    bending stiffness ``EI`` [N·mm²] and length ``L`` [mm]."""
+    bending stiffness ``EI`` [N·mm²] and length ``L`` [mm].
+
+    Example: EI = 1, L = 1 gives the Euler–Bernoulli element matrix (12, 6L, 4L², 2L²):
+
+    >>> element_stiffness(1.0, 1.0)[:2]
+    [[12.0, 6.0, -12.0, 6.0], [6.0, 4.0, -6.0, 2.0]]
+    """
     c = EI / L ** 3
     return [[c * 12.0, c * (6 * L), c * -12.0, c * (6 * L)],
             [c * (6 * L), c * (4 * L * L), c * (-6 * L), c * (2 * L * L)],

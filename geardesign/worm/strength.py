@@ -67,6 +67,12 @@ def required_center_distance(T2: float, K: float, q: float, z2: int, sigma_HP: f
               \\sqrt[3]{\\Big(\\frac{170\\,q}{z_2 [σ]_H}\\Big)^2 T_2 K}
 
     (the inverse of :func:`contact_stress`; [Chernavsky]).
+
+    Example: the inverse of :func:`contact_stress` (identity):
+
+    >>> a_w = required_center_distance(500.0, 1.1, 10.0, 40, 200.0)
+    >>> round(contact_stress(500.0, 1.1, 10.0, 40, a_w), 9)
+    200.0
     """
     return (z2 / q + 1.0) * ((CONTACT_CONSTANT * q / (z2 * sigma_HP)) ** 2
                              * 1000.0 * T2 * K) ** (1.0 / 3.0)

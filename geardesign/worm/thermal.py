@@ -9,7 +9,13 @@ from geardesign.core.records import dataclass
 
 def housing_area(a_w: float) -> float:
     """Default cooling surface of the housing A ≈ 20·a_w^1.7 [m²], a_w in m ([Chernavsky]; Dunaev &
-    Lelikov)."""
+    Lelikov).
+
+    Example: a_w = 1000 mm (1 m) gives A = 20 m²:
+
+    >>> housing_area(1000.0)
+    20.0
+    """
     return 20.0 * (a_w / 1000.0) ** 1.7
 
 

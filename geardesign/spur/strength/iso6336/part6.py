@@ -20,7 +20,15 @@ damage."""
 
 def cycles_to_failure(sigma: float, sigma_G: Callable[[float], float]) -> float:
     """Cycles N at which σ_G(N) = σ (bisection on log N); ``math.inf`` when σ ≤ σ_G(10¹⁰),
-    0 when σ exceeds the static limit σ_G(1).  [ISO6336-6] (S-N curve, Miner's rule)."""
+    0 when σ exceeds the static limit σ_G(1).  [ISO6336-6] (S-N curve, Miner's rule).
+
+    Example: on the curve σ_G(N) = 1000·(N/10⁶)^−0.1 MPa the stress σ_G(10⁵) fails at
+    N = 10⁵ (identity):
+
+    >>> curve = lambda N: 1000.0 * (N / 1e6) ** -0.1
+    >>> round(cycles_to_failure(curve(1e5), curve))
+    100000
+    """
     if sigma <= sigma_G(N_MAX):
         return math.inf
     if sigma > sigma_G(N_MIN):
@@ -34,7 +42,14 @@ def cycles_to_failure(sigma: float, sigma_G: Callable[[float], float]) -> float:
 def damage(stresses: Sequence[float], cycles: Sequence[float],
            sigma_G: Callable[[float], float]) -> float:
     """Damage sum D = Σ n_i/N_i of the blocks (stress σ_i [MPa], n_i cycles).
-    [ISO6336-6] (Palmgren–Miner rule)."""
+    [ISO6336-6] (Palmgren–Miner rule).
+
+    Example: half the cycles to failure of one block is half the damage (identity):
+
+    >>> curve = lambda N: 1000.0 * (N / 1e6) ** -0.1
+    >>> round(damage([curve(1e5)], [5e4], curve), 9)
+    0.5
+    """
     D = 0.0
     for s, n in zip(stresses, cycles):
         N = cycles_to_failure(s, sigma_G)
