@@ -86,6 +86,11 @@ def k_psi(psi: float) -> float:
     .. math:: K_ψ = −1333.333333ψ^4 + 923.9999998ψ^3 − 238.8666667ψ^2 + 26.4ψ − 0.106
 
     ψ is clamped to [0.05, 0.25], the range of the five nodes the quartic interpolates.
+
+    Example: outside [0.05, 0.25] ψ is clamped, so K_ψ(0.5) = K_ψ(0.25) (identity):
+
+    >>> k_psi(0.5) == k_psi(0.25)
+    True
     """
     return _horner(KPSI_COEFFS, clamp_psi(psi))
 

@@ -51,6 +51,14 @@ def rack_space(alpha: float, h_a: float = 1.0, c: float = 0.25, rho_f: float = 0
 
     Raises ValueError when the fillet does not fit (x_c < 0).
     Reference: GOST 13755-81 basic rack; [Tkachenko2017] eqs. (4), (5).
+
+    Example: the GOST 13755-81 rack gives the standard values above, x_c = 0.0644 and a
+    tangency height of 0.25 ([Tkachenko2017]):
+
+    >>> import math
+    >>> s = rack_space(math.radians(20.0))
+    >>> round(s.x_c, 4), round(s.y_t, 2)
+    (0.0644, 0.25)
     """
     depth = h_a + c
     w0 = math.pi / 4.0 - depth * math.tan(alpha)
