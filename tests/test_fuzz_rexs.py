@@ -147,3 +147,25 @@ def test_every_attribute_non_finite_or_overflowing_is_one_line(label):
                     continue
                 bad = fuzz.bad_numbers(tomllib.loads(imported.text))
                 assert bad is None, f"{label}: {cid} {aid} = {value} {unit}: {bad}"
+
+
+@pytest.mark.parametrize("label", [lbl for lbl in LABELS if "(" not in lbl])
+def test_every_shift_at_minus_one_in_a_public_model(label):
+    """Each gear's addendum modification of a public model at −1, one at a time: a pair
+    that cannot mesh as computed in a drive with analysed shafts (GOST-rated: the drive's
+    informative ISO K_Hβ with the shafts' misalignment) is "not applicable", as the spur
+    calculator says; it rated the pair and took a square root of a negative number."""
+    base = MODELS[label]
+    for cid, c in base.components.items():
+        a = c.attributes.get("addendum_modification_coefficient")
+        if a is None or isinstance(a.value, list):
+            continue
+        m = copy.deepcopy(base)
+        m.components[cid].attributes["addendum_modification_coefficient"].value = "-1"
+        try:
+            imported = import_model(m, label)
+        except InputError:
+            continue
+        failure = fuzz.run_case(tomllib.loads(imported.text), "imported.toml", DATA,
+                                seconds=60, formats=("json",))
+        assert failure is None, f"{label}: component {cid}: {failure}"

@@ -122,3 +122,4 @@ def test_running_in_allowances_stay_within_the_deviation(dev, material, sigma_Hl
     for y in (P1.running_in_beta(dev, material, sigma_Hlim, v),
               P1.running_in_alpha(dev, material, sigma_Hlim, v)):
         assert 0.0 <= float(y) <= dev * (1 + 1e-12)
+
