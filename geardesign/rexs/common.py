@@ -4,9 +4,10 @@ attributes ``custom_geardesign__...`` that carry a spec's keys REXS has no attri
 
 from __future__ import annotations
 
+import math
 import re
 
-from geardesign.rexs.model import Component
+from geardesign.rexs.model import Component, ModelError
 
 CUSTOM = "custom_geardesign__"
 """Prefix of geardesign's own attributes (REXS leaves ``custom_`` to a program's own data)."""
@@ -72,5 +73,7 @@ def custom(c: Component) -> dict[str, tuple]:
                         v = int(v) if re.fullmatch(r"-?\d+", v.strip()) else float(v)
                     except ValueError:
                         pass
+            if isinstance(v, float) and not math.isfinite(v):
+                raise ModelError(f"{src(c, aid)} = {a.value!r} is not a finite number")
             out[aid[len(CUSTOM):]] = (v, src(c, aid))
     return out

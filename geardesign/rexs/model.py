@@ -24,6 +24,7 @@ import io
 import json
 import math
 import re
+import sys
 from dataclasses import field
 from pathlib import Path
 from typing import Any
@@ -143,8 +144,11 @@ def convert(attr: Attribute, to: str, where: str) -> float:
                          f"expected one of {', '.join(repr(u) for u in factors if u)}"
                          if to else f"{where}: attribute {attr.id} has unit \"{unit}\"; "
                          f"expected a number without unit")
-    value = number(attr, where)
-    return value * factors[unit]
+    value = number(attr, where) * factors[unit]
+    if not math.isfinite(value):
+        raise ModelError(f"{where}: attribute {attr.id} = {attr.value!r} {unit} is out of "
+                         f"range: over {sys.float_info.max / factors[unit]:.3g} {unit}")
+    return value
 
 
 def number(attr: Attribute, where: str) -> float:

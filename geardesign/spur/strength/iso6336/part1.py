@@ -99,13 +99,14 @@ def running_in_alpha(f_pb: float, material: str, sigma_Hlim: float, v: float) ->
     St, V, GGG (perl., bai.), GTS: 160/σ_Hlim·f_pb, at most 12800/σ_Hlim for 5 < v ≤ 10 m/s
     and 6400/σ_Hlim above; GG, GGG (ferr.): 0.275f_pb (≤ 22 µm, ≤ 11 µm); surface-hardened:
     0.075f_pb ≤ 3 µm.  A pair of two materials takes the mean (:func:`pair_mean`).
-    [ISO6336-1] 8.3.5 eqs. (75)–(77)."""
+    [ISO6336-1] 8.3.5 eqs. (75)–(77).  At most f_pb (as y_β at most F_βx,
+    :func:`running_in_beta`; 160/σ_Hlim > 1 for σ_Hlim < 160 N/mm²)."""
     if material in T.SURFACE_HARDENED:
         return xp.minimum(0.075 * f_pb, 3.0)
     if material in T.CAST_IRON_GREY:
         y = 0.275 * f_pb
         return xp.where(v <= 5.0, y, xp.minimum(y, xp.where(v <= 10.0, 22.0, 11.0)))
-    y = 160.0 / sigma_Hlim * f_pb
+    y = xp.minimum(160.0 / sigma_Hlim * f_pb, f_pb)
     return xp.where(v <= 5.0, y,
                     xp.minimum(y, xp.where(v <= 10.0, 12800.0, 6400.0) / sigma_Hlim))
 
@@ -115,13 +116,15 @@ def running_in_beta(F_beta_x: float, material: str, sigma_Hlim: float, v: float)
 
     St, V, GGG (perl., bai.), GTS: 320/σ_Hlim·F_βx, at most 25600/σ_Hlim for 5 < v ≤ 10 m/s
     and 12800/σ_Hlim above; GG, GGG (ferr.): 0.55F_βx (≤ 45 µm, ≤ 22 µm); surface-hardened:
-    0.15F_βx ≤ 6 µm.  [ISO6336-1] 7.6.4 eqs. (61)–(63)."""
+    0.15F_βx ≤ 6 µm.  [ISO6336-1] 7.6.4 eqs. (61)–(63).  At most F_βx: running-in wears
+    in no more than the misalignment there is (F_βy = F_βx − y_β >= 0; 320/σ_Hlim > 1 for
+    σ_Hlim < 320 N/mm², where eq. (61) would leave a negative F_βy and load factor)."""
     if material in T.SURFACE_HARDENED:
         return xp.minimum(0.15 * F_beta_x, 6.0)
     if material in T.CAST_IRON_GREY:
         y = 0.55 * F_beta_x
         return xp.where(v <= 5.0, y, xp.minimum(y, xp.where(v <= 10.0, 45.0, 22.0)))
-    y = 320.0 / sigma_Hlim * F_beta_x
+    y = xp.minimum(320.0 / sigma_Hlim * F_beta_x, F_beta_x)
     return xp.where(v <= 5.0, y,
                     xp.minimum(y, xp.where(v <= 10.0, 25600.0, 12800.0) / sigma_Hlim))
 

@@ -41,10 +41,18 @@ def add_iso_strength(res, geom, spec, inputs, rating=None, iso=None) -> dict:
 def iso_rating(spec) -> "IR.IsoRating":
     """The ISO 6336 rating record of a spur spec, without report rows or advice: for a
     caller that needs a factor of it (e.g. a drive's K_Hβ with the misalignment its shafts
-    give).  The spec must rate strength (torque and materials)."""
+    give).  The spec must rate strength (torque and materials).  A pair that cannot mesh
+    as computed (:func:`geardesign.spur.solve.ratable`, as the spur calculator rates) is
+    one :class:`InputError` naming ``gear``."""
+    from geardesign.core.errors import InputError, Problem
+    from geardesign.spur.solve import ratable
     from geardesign.spur.spec_inputs import _strength_inputs, solve_geometry
 
     geom, _ = solve_geometry(spec)
+    if not ratable(geom):
+        raise InputError(Problem("gear", "the pair cannot mesh as computed (ε_α < 1, a tip "
+                                         "beyond the mate's tangency point, or a pointed "
+                                         "tooth): not rated by ISO 6336"))
     mats, duty, setting = _strength_inputs(spec, spec.data["gear"])
     gear_checks(spec.data["iso"], geom)
     return IR.rate(geom, mats, duty, setting, iso_setting(spec))
