@@ -51,3 +51,26 @@ def test_the_record_is_frozen(kind, path):
     record = solve(inp)
     assert dataclasses.is_dataclass(record) and record.__dataclass_params__.frozen
     assert dataclasses.is_dataclass(inp) and inp.__dataclass_params__.frozen
+
+
+READERS = ("bearing", "epicycle_rim", "novikov", "planetary", "pzdn", "worm")
+"""Calculators whose ``inputs.read(spec)`` turns a validated spec into typed inputs."""
+
+READ_CASES = [(kind, p) for kind in READERS for p in sorted(SPECS.glob(f"{kind}_*.toml"))]
+
+
+@pytest.mark.parametrize("kind, path", READ_CASES, ids=[p.stem for _, p in READ_CASES])
+def test_a_spec_read_once_reads_again_alike(kind, path):
+    """The advice re-rates a copy of a spec already read (``ValidatedSpec(data, assumed)``
+    after :func:`read` dropped the defaults it does not echo): reading that copy gives the
+    same inputs, never an exception (a planetary ISO spec once raised KeyError there)."""
+    import importlib
+
+    from geardesign.core.spec import ValidatedSpec
+
+    read = importlib.import_module(f"geardesign.{kind}.inputs").read
+    _, spec = registry.load(path)
+    first = read(spec)
+    again = ValidatedSpec(copy.deepcopy(spec.data), list(spec.assumed), spec.source,
+                          spec.base_dir)
+    assert repr(read(again)) == repr(first)

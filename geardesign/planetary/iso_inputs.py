@@ -101,11 +101,12 @@ def prepare(spec, train, meshes: list) -> None:
             raise InputError(problems)
         return
     for key, message in GOST_ONLY_STRENGTH.items():
-        if f"strength.{key}" not in spec.assumed and st[key] not in (None, False):
+        # st.get: a spec read before (the advice re-rates a copy of it) lacks the default
+        if f"strength.{key}" not in spec.assumed and st.get(key) not in (None, False):
             problems.append(Problem(f"strength.{key}", message, st[key]))
         elif f"strength.{key}" in spec.assumed:     # a GOST default: not echoed as used
             spec.assumed.remove(f"strength.{key}")
-            st.pop(key)
+            st.pop(key, None)
     if d.get("iso") is None:
         d["iso"] = _validate_table(ISO, {}, "iso", problems, spec.assumed)
     iso = d["iso"]

@@ -159,9 +159,27 @@ def _stages(spec: ValidatedSpec, problems: Problems) -> Inputs | None:
     return Inputs(tuple(springs), motor, coupling, si, rg)
 
 
+def _restore_echo_keys(spec: ValidatedSpec) -> None:
+    """Put back the keys that a first :func:`read` left out of the echo (springs' keys not
+    given, the start-up defaults the closed form does not use), with their schema defaults:
+    the advice re-reads a copy of a spec already read."""
+    from geardesign.core.schema import REQUIRED, Field
+    from geardesign.pzdn.spec import SPRING, STARTUP
+
+    tables = list(spec.data.get("spring") or ()), [spec.data.get("startup")]
+    for schema, items in zip((SPRING, STARTUP), tables):
+        for item in items:
+            if item is None:
+                continue
+            for f in schema.fields:
+                if isinstance(f, Field) and f.default is not REQUIRED:
+                    item.setdefault(f.key, f.default)
+
+
 def read(spec: ValidatedSpec) -> Inputs:
     """The typed inputs of a validated spec; every independent input problem in one
     :class:`InputError`."""
+    _restore_echo_keys(spec)
     problems = Problems()
     inputs = _stages(spec, problems)
     problems.raise_all()
