@@ -230,7 +230,7 @@ def test_iso_record_is_frozen_and_sections_by_inputs():
 def test_iso_checks_read_the_record(name, m_n, z1, z2, beta, b_w):
     """rating_checks of the record judges as the verdict of its values, one check per gear
     and kind."""
-    from geardesign.spur.strength.iso6336.rating import rating_checks
+    from geardesign.spur.strength.iso6336.checks import rating_checks
 
     try:
         r = _iso_rating(name, beta=beta, m_n=m_n, z1=z1, z2=z2, b_w=b_w)

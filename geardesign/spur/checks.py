@@ -22,8 +22,7 @@ from geardesign.spur.kinematics import Sliding
 from geardesign.spur.strength.checks import (  # noqa: F401  (the strength checks' home)
     ADVICE_FACE_MAX, ADVICE_RTOL, HB_DIFFERENCE_MIN, LOAD_INPUTS, PSI_BD_MAX,
     contact_load_fraction, face_advice_limit, face_width_beyond, face_width_fix,
-    face_width_up, least_passing, light_load_checks, rating_checks, reconciled_widths,
-    strength_checks)
+    face_width_up, least_passing, light_load_checks, reconciled_widths)
 
 EPS_MIN = 1.0
 EPS_WARN = 1.2

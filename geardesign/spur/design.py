@@ -58,7 +58,8 @@ def preliminary_sigma_hp(mats, duty, u: float) -> list[float]:
 def design_pair(spec: ValidatedSpec):
     """Return ``(geometry, how the shifts were set, gear settings, proposal rows)``."""
     from geardesign.spur.spec_inputs import _strength_inputs
-    from geardesign.spur.checks import geometry_checks, rating_checks
+    from geardesign.spur.checks import geometry_checks
+    from geardesign.spur.strength.checks import rating_checks
     from geardesign.spur.strength import method
 
     rate = method(spec.data["options"]["method"]).rate

@@ -27,7 +27,7 @@ from geardesign.spur.strength.iso6336 import part3 as P3
 from geardesign.spur.strength.iso6336 import part5 as P5
 from geardesign.spur.strength.iso6336 import tables as T
 from geardesign.spur.strength.iso6336.checks import (  # noqa: F401
-    WHO, checks, passes, rating_checks)
+    WHO, checks, passes)
 from geardesign.spur.strength.iso6336.record import (  # noqa: F401
     S1328, SECTIONS, Bending, Contact, Factors, IsoRating, Materials, Static)
 from geardesign.spur.strength.iso6336.scuffing import scuffing, scuffing_checks  # noqa: F401
