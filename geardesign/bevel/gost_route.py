@@ -25,12 +25,19 @@ THETA = {  # (θ_H, θ_F) = (a_H + b_H·u, a_F + b_F·u) for circular teeth
     "one_hard": ((1.13, 0.13), (0.85, 0.043)),
     "both_hard": ((0.81, 0.15), (0.65, 0.11)),
 }
-"""Bevel factors of circular teeth θ_H, θ_F against the pair's hardness ([Dunaev] §2.6,
-table 2.6, written without the table at hand: unverified, the report's METHOD_UNVERIFIED
-warning); straight teeth: :data:`THETA_STRAIGHT`."""
+"""Bevel factors of circular teeth θ_H, θ_F against the pair's hardness (soft: up to
+350 HB; one hard: the pinion): [Dunaev] §2.6, table 2.6, written without the table at hand.
+The independent program [ConeGear] (``Unit2.pas``, TPer.PzubKon1 and TPer.PrSigF) carries
+the same table in every coefficient but one: θ_H of a hard pinion on a soft wheel, 1.23 +
+0.13u there against 1.13 + 0.13u here, a misprint in one of the two that the handbook would
+settle (tests/test_bevel_published_gost.py; the report's METHOD_UNVERIFIED warning names
+it).  No published worked example checks the table; straight teeth:
+:data:`THETA_STRAIGHT`."""
 
 THETA_STRAIGHT = 0.85
-"""θ_H = θ_F = 0.85 for straight bevel teeth ([Dunaev] §2.6; [Ivanov] ch. 4)."""
+"""θ_H = θ_F = 0.85 for straight bevel teeth ([Dunaev] §2.6; [Ivanov] ch. 4; the same in
+[ConeGear]).  [CourseBevelUA] takes 1 for contact and 0.85 for bending in its design
+formulas: another handbook's choice, not followed here."""
 
 
 @dataclass(frozen=True)
@@ -63,7 +70,8 @@ def theta_factors(spiral: bool, hardness: str, u: float) -> tuple[float, float]:
     .. math:: θ = a + b\\,u \\text{ (circular teeth, :data:`THETA`)},\\quad θ = 0.85
               \\text{ (straight teeth)}
 
-    [Dunaev] §2.6 table 2.6; [Ivanov] ch. 4.
+    [Dunaev] §2.6 table 2.6; [Ivanov] ch. 4; [ConeGear] (one coefficient disputed, see
+    :data:`THETA`).
 
     >>> theta_factors(True, "both_hard", 2.0)
     (1.11, 0.87)
@@ -84,7 +92,9 @@ def gost_rating(inp: Inputs, g: Geometry, f: Forces) -> GostRating:
     K_H = K_F = K_A K_v K_Hβ K_Hα (K_Hβ as :func:`iso_rating`), Z_H of the spur pair
     (α_n, β = 0: the circular-teeth gain is in θ_H), Z_ε = 1, z_vn = z/(cos δ cos³β_m);
     at Σ = 90° (u_v + 1)/(d_v1 u_v) = √(u² + 1)/(u d_m1), the handbook form.
-    [Dunaev] §2.6; [GOST21354].
+    [Dunaev] §2.6; [GOST21354].  Compared with the independent program [ConeGear]: σ_F the
+    same but for its rounded constant 2.7 (−0.74 % at b = 0.285 R_e), σ_H 9.0 % below its
+    constant 32 200 (tests/test_bevel_published_gost.py).
     """
     ld, mt, p = inp.load, inp.material, inp.pair
     th_H, th_F = theta_factors(p.spiral, mt.hardness, g.u)
