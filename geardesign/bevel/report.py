@@ -36,10 +36,13 @@ VERIFIED = {
 UNVERIFIED = {
     True: ("addendum/dedendum angles (standard depth, not the cutter's duplex taper), "
            "tooth thickness and chordal dimensions, the axial and radial forces, ISO 10300 "
-           "K_Hβ-be other than 1.10, and strength by GOST 21354 (θ_H, θ_F of circular teeth)"),
+           "K_Hβ-be other than 1.10, and strength by GOST 21354 (θ_H, θ_F of circular teeth: "
+           "only against an independent program, which has θ_H = 1.23 + 0.13u, not "
+           "1.13 + 0.13u, for a hard pinion on a soft wheel)"),
     False: ("tooth thickness and chordal dimensions, the axial and radial forces, ISO 10300 "
             "for straight teeth (Z_LS = 1, Y_BS = 1, "
-            "K_Hβ-be other than 1.10) and strength by GOST 21354 (θ_H = θ_F = 0.85)"),
+            "K_Hβ-be other than 1.10) and strength by GOST 21354 (θ_H = θ_F = 0.85: only "
+            "against an independent program)"),
 }
 """The parts not yet checked against a published worked example, by tooth form."""
 

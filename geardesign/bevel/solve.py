@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from geardesign.bevel import geometry, rating
+from geardesign.bevel import geometry, gost_route, rating
 from geardesign.bevel.inputs import Inputs
 from geardesign.core.records import dataclass
 
@@ -15,7 +15,7 @@ class Solution:
     geometry: geometry.Geometry
     forces: rating.Forces
     iso: rating.IsoRating | None
-    gost: rating.GostRating | None
+    gost: gost_route.GostRating | None
 
 
 def ratable(g: geometry.Geometry) -> bool:
@@ -34,4 +34,4 @@ def solve(inp: Inputs) -> Solution:
     rate = ratable(g)
     return Solution(inp, g, f,
                     rating.iso_rating(inp, g, f) if rate and inp.rating.iso else None,
-                    rating.gost_rating(inp, g, f) if rate and inp.rating.gost else None)
+                    gost_route.gost_rating(inp, g, f) if rate and inp.rating.gost else None)
