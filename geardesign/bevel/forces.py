@@ -27,6 +27,7 @@ class Forces:
     F_mt: float           # tangential force at the mean cone
     T2: float             # wheel torque [N·mm] (no losses)
     v_mt: float           # pitch line speed at the mean cone [m/s]
+    v_et: float           # pitch line speed at the outer cone [m/s] (AGMA, [Shigley] §15-1)
     pinion: MemberForces
     wheel: MemberForces
 
@@ -62,10 +63,13 @@ def member_forces(F_mt: float, alpha_n: float, beta_m: float, delta: float, s: i
 
 
 def forces(inp: Inputs, g: Geometry) -> Forces:
-    """F_mt = 2 T1/d_m1 and the members' forces (the pinion's hand, rotation, driver)."""
+    """F_mt = 2 T1/d_m1 and the members' forces (the pinion's hand, rotation, driver); the
+    pitch line speeds v = π d n1/60 000 at the mean and the outer cone.  [ISO10300-1] §5
+    (F_mt, checked by [ISOTR10300-30] sample 1); [Shigley] §15-1 (v_et, AGMA)."""
     p, ld = inp.pair, inp.load
     F_mt = 2.0 * ld.T1 / g.pinion.d_m
     s1 = thrust_sign(p.hand, ld.rotation, ld.driver == "pinion")
     return Forces(F_mt, ld.T1 * g.u, math.pi * g.pinion.d_m * ld.n1 / 60000.0,
+                  math.pi * g.pinion.d_e * ld.n1 / 60000.0,
                   member_forces(F_mt, g.alpha_n, g.beta_m, g.pinion.delta, s1),
                   member_forces(F_mt, g.alpha_n, g.beta_m, g.wheel.delta, -s1))
