@@ -103,9 +103,10 @@ def test_forces_balance_at_a_right_angle(args, rotation, driver):
 
 
 def test_hand_and_rotation_flip_the_spiral_thrust():
-    """A right-hand driving pinion turning clockwise (seen from its back) is pushed away from
-    the apex (out of mesh); reversing the rotation, the hand or the driver flips the spiral
-    term, and the two thrusts average to the straight-tooth value."""
+    """A right-hand driving pinion turning counter-clockwise (seen from its back) is pushed
+    away from the apex (out of mesh); reversing the rotation, the hand or the driver flips the
+    spiral term, and the two thrusts average to the straight-tooth value (the signs from the
+    definitions: tests/test_bevel_published_forces.py)."""
     inp = _inputs(SPIRAL)
     g = GEO.pair_geometry(inp.pair)
 
@@ -115,12 +116,12 @@ def test_hand_and_rotation_flip_the_spiral_thrust():
                                                          driver=driver))
         return FO.forces(i, g).pinion.F_a
 
-    out = F_a1("right", "cw", "pinion")
-    into = F_a1("right", "ccw", "pinion")
+    out = F_a1("right", "ccw", "pinion")
+    into = F_a1("right", "cw", "pinion")
     assert out > 0 and into < out
-    assert math.isclose(F_a1("left", "ccw", "pinion"), out)
-    assert math.isclose(F_a1("left", "cw", "pinion"), into)
-    assert math.isclose(F_a1("right", "cw", "wheel"), into)
+    assert math.isclose(F_a1("left", "cw", "pinion"), out)
+    assert math.isclose(F_a1("left", "ccw", "pinion"), into)
+    assert math.isclose(F_a1("right", "ccw", "wheel"), into)
     F_t = FO.forces(inp, g).F_mt
     straight = F_t * math.tan(g.alpha_n) * math.sin(g.pinion.delta) / math.cos(g.beta_m)
     assert math.isclose(0.5 * (out + into), straight, rel_tol=1e-12)

@@ -132,3 +132,61 @@ def test_shigley_15_1_pitch_diameter_and_speed():
     assert g.pinion.d_e / INCH == pytest.approx(5.000, abs=0.0005)
     assert f.v_et / FPM == pytest.approx(785.4, abs=0.05)
     assert math.degrees(g.pinion.delta) == pytest.approx(45.0, abs=1e-9)
+
+
+# ----------------------------------------------------------------- force signs
+
+def _flank_force(hand: str, rotation: str, driving: bool, delta: float, beta: float,
+                 alpha: float, F_t: float) -> tuple[float, float]:
+    """Axial (+ away from the apex) and radial (+ toward the axis) components of the force
+    on a member, built from the definitions only: the member's axis a from the apex to its
+    back, the mean point on the radius r, the cone's generatrix g and outward normal c, the
+    tangent t = a × r; the tooth line l = cos β g ± sin β t (right hand: the outer half of
+    the tooth inclined clockwise seen from the face, the apex side, which is +t); rotation
+    seen from the back (clockwise: about −a); the normal force perpendicular to l, inclined
+    by α_n toward the axis, its tangential part against the motion of a driving member and
+    with it for a driven one."""
+    a, r = (0.0, 0.0, 1.0), (1.0, 0.0, 0.0)
+
+    def add(*terms):
+        return tuple(sum(k * v[i] for k, v in terms) for i in range(3))
+
+    def dot(u, v):
+        return sum(x * y for x, y in zip(u, v))
+
+    def cross(u, v):
+        return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                u[0] * v[1] - u[1] * v[0])
+
+    g = add((math.cos(delta), a), (math.sin(delta), r))
+    c = add((-math.sin(delta), a), (math.cos(delta), r))
+    t = cross(a, r)
+    h = 1.0 if hand == "right" else -1.0
+    line = add((math.cos(beta), g), (h * math.sin(beta), t))
+    q = cross(c, line)
+    q = q if dot(q, t) > 0 else add((-1.0, q))
+    w = -1.0 if rotation == "cw" else 1.0
+    along = -w if driving else w
+    F_n = F_t / (math.cos(alpha) * dot(q, t))
+    F = add((F_n * along * math.cos(alpha), q), (-F_n * math.sin(alpha), c))
+    assert abs(dot(F, line)) < 1e-9 * F_n          # normal to the tooth line
+    return dot(F, a), -dot(F, r)
+
+
+@pytest.mark.parametrize("hand", ["right", "left"])
+@pytest.mark.parametrize("rotation", ["cw", "ccw"])
+@pytest.mark.parametrize("driving", [True, False])
+def test_axial_and_radial_force_signs_follow_from_the_definitions(hand, rotation, driving):
+    """No printed force figure with its signs was found (docs/bevel.md): the member forces
+    are checked against the vector construction from the definitions of the hand of spiral
+    ([ISO23509]: seen looking at the face) and of the rotation (seen from the back), in all
+    eight cases; a left hand pinion driving clockwise is pushed out of mesh."""
+    from geardesign.bevel.forces import member_forces, thrust_sign
+
+    alpha, beta, delta, F_t = math.radians(20.0), math.radians(35.0), math.radians(25.0), 1e3
+    m = member_forces(F_t, alpha, beta, delta, thrust_sign(hand, rotation, driving))
+    F_a, F_r = _flank_force(hand, rotation, driving, delta, beta, alpha, F_t)
+    assert m.F_a == pytest.approx(F_a, rel=1e-12)
+    assert m.F_r == pytest.approx(F_r, rel=1e-12)
+    if hand == "left" and rotation == "cw" and driving:
+        assert m.F_a > 0.0

@@ -33,10 +33,24 @@ class Forces:
 
 
 def thrust_sign(hand: str, rotation: str, driving: bool) -> int:
-    """+1 when the member's axial force points away from the apex: a driving member
-    with a right hand spiral turning clockwise (or left hand, counter-clockwise), seen from
-    its back; a driven member the other way.  [ISO23509] annex (force directions)."""
-    same = (hand == "right") == (rotation == "cw")
+    """+1 when the member's axial force points away from the apex (out of mesh): a driving
+    member with a right hand spiral turning counter-clockwise, or a left hand spiral turning
+    clockwise, seen from its back (the large end); a driven member the other way.
+
+    From the definitions alone: the hand of spiral as [ISO23509] defines it (right hand: the
+    outer half of a tooth inclined clockwise from the axial plane through its midpoint, seen
+    by an observer looking at the face of the gear, i.e. from the apex side), the rotation
+    seen from the back, the normal force on the flank at the mean point perpendicular to the
+    tooth line and inclined by α_n, opposing the motion of a driving member: a left hand
+    pinion driving clockwise is pushed out of mesh, the hand chosen for that in practice.
+    Checked against that vector construction in all eight cases of hand, rotation and driver
+    (tests/test_bevel_published_forces.py); no printed force figure with its signs was found
+    (docs/bevel.md, published cases).
+
+    >>> thrust_sign("left", "cw", True), thrust_sign("right", "cw", True)
+    (1, -1)
+    """
+    same = (hand == "right") == (rotation == "ccw")
     return 1 if same == driving else -1
 
 
@@ -49,8 +63,10 @@ def member_forces(F_mt: float, alpha_n: float, beta_m: float, delta: float, s: i
         F_a = \\frac{F_{mt}}{\\cos β_m}(\\tan α_n \\sin δ + s \\sin β_m \\cos δ),\\quad
         F_r = \\frac{F_{mt}}{\\cos β_m}(\\tan α_n \\cos δ - s \\sin β_m \\sin δ)
 
-    At Σ = 90° the wheel (sign −s) carries F_a2 = F_r1 and F_r2 = F_a1.  [ISO10300-1] §5;
-    [ISO23509] annex; [Dunaev] §2.6 (straight teeth: F_a1 = F_t tan α sin δ1).
+    the components of the normal force F_n = F_mt/(cos α_n cos β_m) on the flank at the mean
+    point (the vector construction of :func:`thrust_sign`).  At Σ = 90° the wheel (sign −s)
+    carries F_a2 = F_r1 and F_r2 = F_a1.  [ISO10300-1] §5 (F_mt, F_n at the mean cone);
+    [Dunaev] §2.6 (straight teeth: F_a1 = F_t tan α sin δ1, F_r1 = F_t tan α cos δ1).
 
     >>> f = member_forces(1000.0, math.radians(20), 0.0, math.radians(45), 1)
     >>> round(f.F_a, 3), round(f.F_r, 3)

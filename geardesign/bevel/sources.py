@@ -9,7 +9,8 @@ CONTACT_RATIO = "[ISO10300-1] annex A (ε_vα, ε_vβ, ε_vγ = ε_vα + ε_vβ)
 CHORD_VIRTUAL = " (chord on the virtual gear, [GOST16532] rule)"
 CHORD_ISO = "[ISO23509] 7.8, formulae (206)-(215) (mean normal section)"
 SPEED_OUTER = "[Shigley] §15-1 (AGMA pitch line speed at the outer pitch circle, π d_e n1)"
-FORCES = "[ISO10300-1] §5 (tangential force at the mean cone); [ISO23509] annex (axial, radial)"
+FORCES = ("[ISO10300-1] §5 (F_mt at the mean cone); axial and radial: components of the "
+          "normal force on the flank, hand as [ISO23509] defines it (docs/bevel.md, Forces)")
 ISO_H = "[ISO10300-2] method B1"
 ISO_F = "[ISO10300-3] method B1"
 ISO_K = "[ISO10300-1] §8 (K_Hβ = 1.5·K_Hβ-be, method C)"
