@@ -39,11 +39,11 @@ VERIFIED = {
 UNVERIFIED = {
     True: ("addendum/dedendum angles (standard depth, not the cutter's duplex taper), "
            "the chordal height h_c of the virtual gear (without the cos δ of ISO 23509's "
-           "h_amc; GOST 19326 not at hand), the axial and radial forces and their signs by "
+           "h_amc; GOST 19326 not at hand) and the constant chord s_cc, h_cc, the axial and radial forces and their signs by "
            "hand and rotation, ISO 10300 "
            "K_Hβ-be other than 1.10, and strength by GOST 21354 (θ_H, θ_F of circular teeth)"),
-    False: ("tooth thickness and chordal dimensions at the outer cone (s, s_c, h_c of "
-            "GOST 19624) and the ISO 23509 mean-section rows of straight teeth (their "
+    False: ("tooth thickness and chordal dimensions at the outer cone (s, s_c, h_c and the "
+            "constant chord s_cc, h_cc of GOST 19624) and the ISO 23509 mean-section rows of straight teeth (their "
             "formulas are checked on a spiral pair only), the axial and radial forces, "
             "ISO 10300 for straight teeth (Z_LS = 1, Y_BS = 1, "
             "K_Hβ-be other than 1.10) and strength by GOST 21354 (θ_H = θ_F = 0.85)"),
@@ -100,6 +100,8 @@ def geometry_rows(res: Result, sol: Solution) -> None:
          src + S.CHORD_VIRTUAL),
         ("h_c", "h_c", "mm", "h̄_a", "chordal height (virtual gear, no cos δ)",
          src + S.CHORD_VIRTUAL),
+        ("s_cc", "s_cc", "mm", "s̄_c", f"{where} constant chord", src + S.CHORD_CONSTANT),
+        ("h_cc", "h_cc", "mm", "h̄_c", "height to the constant chord", src + S.CHORD_CONSTANT),
         ("s_mn", "s_mn", "mm", "s_mn", "mean normal circular tooth thickness", S.CHORD_ISO),
         ("s_mt", "s_mt", "mm", "s_mt", "mean transverse circular tooth thickness",
          S.CHORD_ISO),
