@@ -12,6 +12,7 @@ AGMA), as transcribed in the unit test of [PydomeBevel].
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import pytest
@@ -38,11 +39,14 @@ def _x_sm(s_mn: float, x_hm: float) -> float:
 X_SM1, X_SM2 = _x_sm(6.465, X_HM1), _x_sm(3.511, -X_HM1)
 
 
-def _f2_geometry():
-    pair = Pair(True, 176.893 / 39, "outer", 14, 39, math.pi / 2, 25.4, math.radians(35.0),
+def _f2_pair() -> Pair:
+    return Pair(True, 176.893 / 39, "outer", 14, 39, math.pi / 2, 25.4, math.radians(35.0),
                 "left", math.radians(20.0), 1.0, 0.25, 0.8 / M_MN, X_HM1, 2.0 * X_SM1,
                 "constant_clearance", xt2=2.0 * X_SM2, rho_a02=1.2 / M_MN)
-    return pair_geometry(pair)
+
+
+def _f2_geometry():
+    return pair_geometry(_f2_pair())
 
 
 # (key, printed value, tolerance): [ISO23509] annex F.2, table F.3, formulae (206)-(215)
@@ -190,3 +194,29 @@ def test_axial_and_radial_force_signs_follow_from_the_definitions(hand, rotation
     assert m.F_r == pytest.approx(F_r, rel=1e-12)
     if hand == "left" and rotation == "cw" and driving:
         assert m.F_a > 0.0
+
+
+@pytest.mark.parametrize("hand", ["right", "left"])
+@pytest.mark.parametrize("rotation", ["cw", "ccw"])
+@pytest.mark.parametrize("driver", ["pinion", "wheel"])
+def test_wheel_forces_follow_from_the_definitions(hand, rotation, driver):
+    """The wheel of the pair (the other hand; seen from its own back it turns the other way
+    round, the pitch cones rolling on each other: v = ω1 a1 × P = ω2 a2 × P with the axes on
+    either side of the contact generatrix) carries the forces the vector construction gives
+    for it, for every hand, rotation and driver of the spiral pair of the ISO 23509 example."""
+    g = _f2_geometry()
+    g_pair = _f2_pair()
+    pair = dataclasses.replace(g_pair, hand=hand)
+    inp = Inputs(pair, Load(300e3, 1200.0, rotation, driver, 1.0, 1.0, "cantilever", 1.0),
+                 Material((1500.0, 1500.0), (480.0, 480.0), "both_hard", 210000.0, 0.3),
+                 Rating("iso10300", 1.0, 1.0))
+    assert g_pair.spiral
+    f = forces(inp, g)
+    other = {"right": "left", "left": "right"}
+    turn = {"cw": "ccw", "ccw": "cw"}
+    for m, hd, rot, drv in ((g.pinion, hand, rotation, driver == "pinion"),
+                            (g.wheel, other[hand], turn[rotation], driver == "wheel")):
+        F_a, F_r = _flank_force(hd, rot, drv, m.delta, g.beta_m, g.alpha_n, f.F_mt)
+        ours = f.pinion if m is g.pinion else f.wheel
+        assert ours.F_a == pytest.approx(F_a, rel=1e-12)
+        assert ours.F_r == pytest.approx(F_r, rel=1e-12)
