@@ -13,6 +13,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from geardesign.bevel import forces as FO
 from geardesign.bevel import geometry as GEO
 from geardesign.bevel import inputs as I
 from geardesign.bevel import rating as R
@@ -88,7 +89,7 @@ def test_forces_balance_at_a_right_angle(args, rotation, driver):
     inp = dataclasses.replace(inp, load=dataclasses.replace(inp.load, rotation=rotation,
                                                             driver=driver))
     g = GEO.pair_geometry(p)
-    f = R.forces(inp, g)
+    f = FO.forces(inp, g)
     assert math.isclose(f.pinion.F_a, f.wheel.F_r, rel_tol=1e-9, abs_tol=1e-9 * f.F_mt)
     assert math.isclose(f.pinion.F_r, f.wheel.F_a, rel_tol=1e-9, abs_tol=1e-9 * f.F_mt)
     # F_t, F_a, F_r of a member make the normal force F_t/(cos α_n cos β_m)
@@ -102,9 +103,10 @@ def test_forces_balance_at_a_right_angle(args, rotation, driver):
 
 
 def test_hand_and_rotation_flip_the_spiral_thrust():
-    """A right-hand driving pinion turning clockwise (seen from its back) is pushed away from
-    the apex (out of mesh); reversing the rotation, the hand or the driver flips the spiral
-    term, and the two thrusts average to the straight-tooth value."""
+    """A right-hand driving pinion turning counter-clockwise (seen from its back) is pushed
+    away from the apex (out of mesh); reversing the rotation, the hand or the driver flips the
+    spiral term, and the two thrusts average to the straight-tooth value (the signs from the
+    definitions: tests/test_bevel_published_forces.py)."""
     inp = _inputs(SPIRAL)
     g = GEO.pair_geometry(inp.pair)
 
@@ -112,15 +114,15 @@ def test_hand_and_rotation_flip_the_spiral_thrust():
         i = dataclasses.replace(inp, pair=dataclasses.replace(inp.pair, hand=hand),
                                 load=dataclasses.replace(inp.load, rotation=rotation,
                                                          driver=driver))
-        return R.forces(i, g).pinion.F_a
+        return FO.forces(i, g).pinion.F_a
 
-    out = F_a1("right", "cw", "pinion")
-    into = F_a1("right", "ccw", "pinion")
+    out = F_a1("right", "ccw", "pinion")
+    into = F_a1("right", "cw", "pinion")
     assert out > 0 and into < out
-    assert math.isclose(F_a1("left", "ccw", "pinion"), out)
-    assert math.isclose(F_a1("left", "cw", "pinion"), into)
-    assert math.isclose(F_a1("right", "cw", "wheel"), into)
-    F_t = R.forces(inp, g).F_mt
+    assert math.isclose(F_a1("left", "cw", "pinion"), out)
+    assert math.isclose(F_a1("left", "ccw", "pinion"), into)
+    assert math.isclose(F_a1("right", "ccw", "wheel"), into)
+    F_t = FO.forces(inp, g).F_mt
     straight = F_t * math.tan(g.alpha_n) * math.sin(g.pinion.delta) / math.cos(g.beta_m)
     assert math.isclose(0.5 * (out + into), straight, rel_tol=1e-12)
 
@@ -211,7 +213,7 @@ def test_forces_balance_at_any_shaft_angle(args, rotation, driver):
     inp = dataclasses.replace(inp, load=dataclasses.replace(inp.load, rotation=rotation,
                                                             driver=driver))
     g = GEO.pair_geometry(p)
-    f = R.forces(inp, g)
+    f = FO.forces(inp, g)
     d1, d2 = g.pinion.delta, g.wheel.delta
     axis = ((math.cos(d1), math.sin(d1)), (math.cos(d2), -math.sin(d2)))
     toward = ((-math.sin(d1), math.cos(d1)), (-math.sin(d2), -math.cos(d2)))

@@ -205,6 +205,7 @@ TR_SAMPLE1 = {
 
 def _tr_sample1():
     from geardesign.bevel import rating as R
+    from geardesign.bevel.forces import forces
     from geardesign.bevel.inputs import Inputs, Load, Material, Rating
 
     m_mn = 3.2133
@@ -215,7 +216,7 @@ def _tr_sample1():
                  Material((1500.0, 1500.0), (480.0, 480.0), "both_hard", 210000.0, 0.3),
                  Rating("iso10300", 1.0, 1.3))
     g = pair_geometry(pair)
-    f = R.forces(inp, g)
+    f = forces(inp, g)
     return g, f, R.iso_rating(inp, g, f)
 
 

@@ -24,7 +24,7 @@ import pytest
 from geardesign.bevel import geometry as GEO
 from geardesign.bevel import gost_route as GR
 from geardesign.bevel import inputs as I
-from geardesign.bevel import rating as R
+from geardesign.bevel import forces as F
 from geardesign.core.registry import load
 
 STRAIGHT = Path(__file__).resolve().parent.parent / "specs" / "bevel_straight_gost.toml"
@@ -90,7 +90,7 @@ def _case():
     R_e = GEO.modules(inp.pair, d1)[3]
     inp = dataclasses.replace(inp, pair=dataclasses.replace(inp.pair, b=K_BE * R_e))
     g = GEO.pair_geometry(inp.pair)
-    f = R.forces(inp, g)
+    f = F.forces(inp, g)
     return inp, g, GR.gost_rating(inp, g, f)
 
 

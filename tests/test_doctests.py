@@ -57,7 +57,8 @@ FORMULA_MODULES = [
     "geardesign.connection.iso286",
     # bearings, bevel pairs, drive losses and heat
     "geardesign.bearing.life", "geardesign.bearing.pair", "geardesign.bearing.rib",
-    "geardesign.bevel.geometry", "geardesign.bevel.rating", "geardesign.bevel.gost_route",
+    "geardesign.bevel.geometry", "geardesign.bevel.forces", "geardesign.bevel.rating",
+    "geardesign.bevel.gost_route",
     "geardesign.drive.losses", "geardesign.drive.thermal", "geardesign.drive.misalignment",
     "geardesign.drive.split",
     # worm, wave, Geneva, ball clutch, planetary kinematics

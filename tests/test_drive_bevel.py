@@ -57,7 +57,7 @@ def test_bevel_stage_is_the_bevel_calculator():
 def test_axial_force_on_the_shaft_follows_hand_and_rotation(rotation):
     """The pinion's axial force on its shaft is axial_sign·F_a with F_a signed by the bevel
     calculator: turning the pinion the other way flips the spiral term (out of mesh for a
-    left-hand pinion turning counter-clockwise, into mesh clockwise)."""
+    left-hand pinion turning clockwise, into mesh counter-clockwise)."""
     st = _stage()
     st["load"] = dict(st["load"], rotation=rotation)
     run = run_bevel(st, 41.762, 1455.0, DUTY, None, "stage[0]")
@@ -65,7 +65,7 @@ def test_axial_force_on_the_shaft_follows_hand_and_rotation(rotation):
         (_, _, fz), _ = gear_force(run.gear_load(which, 0.0, 0.0, sign), 1)
         assert fz == sign * run.members[which].F_a
     F_a1 = run.members[0].F_a
-    assert (F_a1 > 0) == (rotation == "ccw")
+    assert (F_a1 > 0) == (rotation == "cw")
     # at Σ = 90° the pinion's axial force is the wheel's radial force
     assert math.isclose(F_a1, run.members[1].F_r, rel_tol=1e-12)
 

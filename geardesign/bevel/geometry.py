@@ -21,6 +21,9 @@ import math
 from geardesign.bevel.inputs import Pair, pitch_angles
 from geardesign.core.records import dataclass
 from geardesign.gears.geometry import BasicRack, tip_thickness, undercut_shift_limit
+from geardesign.spur.measurement import Tooth
+from geardesign.spur.measurement import chordal as measurement_chordal
+from geardesign.spur.measurement import constant_chord as measurement_constant_chord
 
 
 @dataclass(frozen=True)
@@ -50,7 +53,15 @@ class Member:
     d_ai: float           # inner tip diameter
     s_e: float            # outer transverse circular tooth thickness (straight) / mean normal
     s_c: float            # chordal tooth thickness at the section of s_e
-    h_c: float            # chordal height at the section of s_e
+    h_c: float            # chordal height at the section of s_e (virtual gear, no cos δ)
+    s_cc: float           # constant chord at the section of s_e
+    h_cc: float           # height to the constant chord at the section of s_e
+    # mean normal section, [ISO23509] 7.8 (both tooth forms)
+    s_mn: float           # mean normal circular tooth thickness
+    s_mt: float           # mean transverse circular tooth thickness
+    d_mn: float           # mean normal diameter (virtual gear in the normal section)
+    s_mnc: float          # mean normal chordal tooth thickness
+    h_amc: float          # mean chordal addendum (with the cos δ of formula 215)
     # virtual cylindrical gear (mean section, [ISO10300-1] method B1)
     z_v: float
     z_vn: float
@@ -194,17 +205,56 @@ def relative_curvature(alpha_n: float, beta_m: float, d_v1: float, d_v2: float) 
     return rho_t * math.cos(beta_B) ** 2
 
 
-def chordal(s: float, h_a: float, d_v: float) -> tuple[float, float]:
-    """Chordal tooth thickness and chordal height on a virtual gear of diameter d_v.
+@dataclass(frozen=True)
+class Chords:
+    """Chordal dimensions of one member at one section (:func:`tooth_chords`) [mm]."""
 
-    .. math:: \\bar s = d_v \\sin\\frac{s}{d_v},\\quad
-              \\bar h_a = h_a + \\frac{d_v}{2}\\Big(1 - \\cos\\frac{s}{d_v}\\Big)
+    d_vn: float           # diameter of the virtual gear in the normal section
+    s_c: float            # chordal tooth thickness
+    h_c: float            # chordal height (virtual gear)
+    h_c_iso: float        # chordal height with the cos δ of [ISO23509] formula 215
+    s_cc: float           # constant chord
+    h_cc: float           # height to the constant chord
 
-    (≈ s − s³cos²δ/(6 d²) and h_a + s² cos δ/(4 d) with d_v = d/cos δ, the forms printed in
-    [GOST19624] table 4).
+
+def tooth_chords(z_v: float, m: float, alpha_n: float, beta: float, s: float, h_a: float,
+                 delta: float) -> Chords:
+    """Chordal tooth thickness, chordal heights and the constant chord of a bevel member on
+    its virtual cylindrical gear (z_v = z/cos δ teeth of the module m at the section of the
+    thickness s, helix β), in the normal section, by the chord functions of the spur package
+    ([ISO21771] 6.2, [GOST16532]; called):
+
+    .. math::
+        d_{vn} = \\frac{d_v}{\\cos^2 β_{vb}},\\quad ψ = \\frac{s}{d_{vn}},\\quad
+        \\bar s = d_{vn} \\sin ψ,\\quad \\bar h_a = h_a + \\tfrac12 d_{vn} (1 - \\cos ψ),\\quad
+        \\bar h_{a,ISO} = h_a + \\tfrac12 d_{vn} \\cos δ\\,(1 - \\cos ψ)
+
+    .. math:: \\bar s_c = s \\cos^2 α_n,\\quad \\bar h_c = h_a - \\tfrac14 s \\sin 2α_n
+
+    At the mean section, d_vn is the mean normal diameter d_mn = d_m/((1 − sin²β_m cos²α_n)
+    cos δ) of [ISO23509] formula (213), s̄ its mean normal chordal thickness s_mnc (214); its
+    mean chordal addendum h_amc (215) carries the factor cos δ on the rise of the arc over
+    the chord (h̄_a,ISO), which the chordal height of the virtual gear (h̄_a, the rule of
+    [GOST16532] applied to the virtual gear: for straight teeth at the outer cone
+    h̄_ae ≈ h_ae + s_e² cos δ/(4 d_e), the handbook form of [GOST19624] table 4 as applied by
+    [Dunaev]) does not.  The constant chord s̄_c, h̄_c (the measurement of [GOST19624] and
+    [GOST19326] by the constant chord, the [GOST16532] form) does not depend on the diameter.
+    Each is reported under its own key.  Checked: d_vn, s̄, h̄_a,ISO by [ISO23509] annex F.2
+    through [ISO23509Calc] (d_mn1 = 82.241, s_mnc1 = 6.458, h_amc1 = 4.955 mm); h̄_a and the
+    constant chord have no printed bevel case.
+
+    >>> c = tooth_chords(14 / math.cos(0.3446), 3.21332, math.radians(20), math.radians(35),
+    ...                  6.465, 4.836, 0.3446)
+    >>> round(c.d_vn, 2), round(c.s_c, 3), round(c.h_c, 4), round(c.h_c_iso, 4)
+    (82.24, 6.458, 4.963, 4.9555)
+    >>> round(c.s_cc, 4), round(c.h_cc, 4)
+    (5.7087, 3.7971)
     """
-    half = s / d_v
-    return d_v * math.sin(half), h_a + 0.5 * d_v * (1.0 - math.cos(half))
+    t = Tooth(z_v, m, alpha_n, beta, s, z_v * m / math.cos(beta) + 2.0 * h_a, 0.0)
+    c = measurement_chordal(t)
+    cc = measurement_constant_chord(t)
+    return Chords(t.d / math.cos(t.beta_b) ** 2, c.s_c, c.h_c,
+                  h_a + math.cos(delta) * (c.h_c - h_a), cc.s_c, cc.h_c)
 
 
 def pair_geometry(p: Pair) -> Geometry:
@@ -247,11 +297,14 @@ def pair_geometry(p: Pair) -> Geometry:
         c = math.cos(dl)
         d_ae = d_e + 2.0 * h_ae * c
         face = p.b / math.cos(th_a[i])   # the face cone's length over the face width
-        # thickness: outer transverse (straight) or mean normal (spiral), [GOST19624]
-        # table 4, [GOST19326] table 4
-        s = (0.5 * math.pi + 2.0 * x * math.tan(p.alpha_n) + xt) * m_basis
-        d_vs = (d_e if outer else d_m / math.cos(p.beta_m) ** 2) / c
-        s_c, h_c = chordal(s, h_a[i], d_vs)
+        # thickness at the section of the module: outer transverse (straight, [GOST19624]
+        # table 4) or mean normal (spiral, [GOST19326] table 4), and at the mean normal
+        # section for both ([ISO23509] 7.8, formulae 206, 211, 212)
+        k_s = 0.5 * math.pi + 2.0 * x * math.tan(p.alpha_n) + xt
+        s = k_s * m_basis
+        s_mn = k_s * m_nm
+        iso = tooth_chords(z / c, m_nm, p.alpha_n, p.beta_m, s_mn, h_am, dl)
+        basis = tooth_chords(z / c, m_te, p.alpha_n, 0.0, s, h_ae, dl) if outer else iso
         d_v = d_m / c
         z_v = z / c
         d_va, d_vf = d_v + 2.0 * h_am, d_v - 2.0 * h_fm
@@ -264,7 +317,8 @@ def pair_geometry(p: Pair) -> Geometry:
             h_am, h_fm, d_ae, d_e - 2.0 * h_fe * c, d_m + 2.0 * h_am * c,
             d_m - 2.0 * h_fm * c, R_e * c - h_ae * math.sin(dl),
             face * math.cos(dl + th_a[i]), d_ae - 2.0 * face * math.sin(dl + th_a[i]),
-            s, s_c, h_c,
+            s, basis.s_c, basis.h_c, basis.s_cc, basis.h_cc, s_mn, s_mn / math.cos(p.beta_m),
+            iso.d_vn, iso.s_c, iso.h_c_iso,
             z_v, z_v / (math.cos(beta_vb) ** 2 * math.cos(p.beta_m)), d_v, d_va,
             d_v * math.cos(alpha_vt), d_vf,
             undercut_shift_limit(z_v, alpha_vt, p.beta_m, racks[i]), s_am, s_ae))

@@ -1,4 +1,4 @@
-"""Forces on the shafts and the strength of a bevel pair, as frozen records.
+"""The strength of a bevel pair, as frozen records (the forces: :mod:`geardesign.bevel.forces`).
 
 ISO route: [ISO10300-2] / [ISO10300-3] method B1 on the virtual cylindrical gear of
 [ISO10300-1]; the factors that ISO 10300 shares with ISO 6336 are called from
@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 
+from geardesign.bevel.forces import Forces
 from geardesign.bevel.geometry import Geometry
 from geardesign.bevel.inputs import Inputs
 from geardesign.core.records import dataclass
@@ -37,66 +38,6 @@ crowning).  [ISO10300-2] method B1, formula (7); [ISOTR10300-30] sample 1."""
 Y_ST = 2.0
 """Stress correction factor of the reference test gear.  [ISO6336-3]."""
 
-# ----------------------------------------------------------------------------- forces
-
-
-@dataclass(frozen=True)
-class MemberForces:
-    """Forces on one member at the mean cone [N]: F_a > 0 points from the apex to the
-    back of the member, F_r > 0 toward its axis (separating)."""
-
-    F_t: float
-    F_a: float
-    F_r: float
-
-
-@dataclass(frozen=True)
-class Forces:
-    F_mt: float           # tangential force at the mean cone
-    T2: float             # wheel torque [N·mm] (no losses)
-    v_mt: float           # pitch line speed at the mean cone [m/s]
-    pinion: MemberForces
-    wheel: MemberForces
-
-
-def thrust_sign(hand: str, rotation: str, driving: bool) -> int:
-    """+1 when the member's axial force points away from the apex: a driving member
-    with a right hand spiral turning clockwise (or left hand, counter-clockwise), seen from
-    its back; a driven member the other way.  [ISO23509] annex (force directions)."""
-    same = (hand == "right") == (rotation == "cw")
-    return 1 if same == driving else -1
-
-
-def member_forces(F_mt: float, alpha_n: float, beta_m: float, delta: float, s: int
-                  ) -> MemberForces:
-    """Axial and radial forces of a member with pitch cone angle δ and sign s
-    (:func:`thrust_sign`).
-
-    .. math::
-        F_a = \\frac{F_{mt}}{\\cos β_m}(\\tan α_n \\sin δ + s \\sin β_m \\cos δ),\\quad
-        F_r = \\frac{F_{mt}}{\\cos β_m}(\\tan α_n \\cos δ - s \\sin β_m \\sin δ)
-
-    At Σ = 90° the wheel (sign −s) carries F_a2 = F_r1 and F_r2 = F_a1.  [ISO10300-1] §5;
-    [ISO23509] annex; [Dunaev] §2.6 (straight teeth: F_a1 = F_t tan α sin δ1).
-
-    >>> f = member_forces(1000.0, math.radians(20), 0.0, math.radians(45), 1)
-    >>> round(f.F_a, 3), round(f.F_r, 3)
-    (257.366, 257.366)
-    """
-    k = F_mt / math.cos(beta_m)
-    ta, sb = math.tan(alpha_n), math.sin(beta_m)
-    return MemberForces(F_mt, k * (ta * math.sin(delta) + s * sb * math.cos(delta)),
-                        k * (ta * math.cos(delta) - s * sb * math.sin(delta)))
-
-
-def forces(inp: Inputs, g: Geometry) -> Forces:
-    """F_mt = 2 T1/d_m1 and the members' forces (the pinion's hand, rotation, driver)."""
-    p, ld = inp.pair, inp.load
-    F_mt = 2.0 * ld.T1 / g.pinion.d_m
-    s1 = thrust_sign(p.hand, ld.rotation, ld.driver == "pinion")
-    return Forces(F_mt, ld.T1 * g.u, math.pi * g.pinion.d_m * ld.n1 / 60000.0,
-                  member_forces(F_mt, g.alpha_n, g.beta_m, g.pinion.delta, s1),
-                  member_forces(F_mt, g.alpha_n, g.beta_m, g.wheel.delta, -s1))
 
 
 # ----------------------------------------------------------------------------- ISO 10300

@@ -23,10 +23,13 @@ MEMBERS = ("pinion", "wheel")
 VERIFIED = {
     True: "the spiral pair's cones, mean-section modules, diameters and heights "
           "([ISO23509] spiral example), its virtual gears, contact ratios and the ISO 10300 "
-          "method B1 stresses ([ISOTR10300-30] sample 1; docs/bevel.md)",
+          "method B1 stresses ([ISOTR10300-30] sample 1), its mean normal tooth thickness "
+          "and chordal dimensions s_mn, s_mt, d_mn, s_mnc, h_amc ([ISO23509] annex F.2); "
+          "docs/bevel.md",
     False: "the outer-cone geometry in both depth forms (cones, cone distance, heights, "
            "addendum/dedendum and face/root angles, tip diameters, apex distance B, b_ax, "
            "d_ai, the back-cone gear: [KHK] standard and Gleason straight bevel examples), "
+           "the outer pitch diameter and pitch line speed v_et ([Shigley] example 15-1), "
            "the virtual gears and the ISO 10300 method B1 formulas shared with spiral teeth "
            "([ISOTR10300-30] sample 1, a spiral pair; docs/bevel.md)",
 }
@@ -35,14 +38,18 @@ VERIFIED = {
 
 UNVERIFIED = {
     True: ("addendum/dedendum angles (standard depth, not the cutter's duplex taper), "
-           "tooth thickness and chordal dimensions, the axial and radial forces, ISO 10300 "
-           "K_Hβ-be other than 1.10, and strength by GOST 21354 (θ_H, θ_F of circular teeth: "
-           "only against an independent program, which has θ_H = 1.23 + 0.13u, not "
-           "1.13 + 0.13u, for a hard pinion on a soft wheel)"),
-    False: ("tooth thickness and chordal dimensions, the axial and radial forces, ISO 10300 "
-            "for straight teeth (Z_LS = 1, Y_BS = 1, "
-            "K_Hβ-be other than 1.10) and strength by GOST 21354 (θ_H = θ_F = 0.85: only "
-            "against an independent program)"),
+           "the chordal height h_c of the virtual gear (without the cos δ of ISO 23509's "
+           "h_amc; GOST 19326 not at hand) and the constant chord s_cc, h_cc, the axial and "
+           "radial forces and their signs by hand and rotation, ISO 10300 K_Hβ-be other "
+           "than 1.10, and strength by GOST 21354 (θ_H, θ_F of circular teeth: only against "
+           "an independent program, which has θ_H = 1.23 + 0.13u, not 1.13 + 0.13u, for a "
+           "hard pinion on a soft wheel)"),
+    False: ("tooth thickness and chordal dimensions at the outer cone (s, s_c, h_c and the "
+            "constant chord s_cc, h_cc of GOST 19624) and the ISO 23509 mean-section rows of "
+            "straight teeth (their formulas are checked on a spiral pair only), the axial and "
+            "radial forces, ISO 10300 for straight teeth (Z_LS = 1, Y_BS = 1, K_Hβ-be other "
+            "than 1.10) and strength by GOST 21354 (θ_H = θ_F = 0.85: only against an "
+            "independent program)"),
 }
 """The parts not yet checked against a published worked example, by tooth form."""
 
@@ -92,8 +99,19 @@ def geometry_rows(res: Result, sol: Solution) -> None:
         ("b_ax", "b_ax", "mm", "b_ax", "axial length of the face cone", src),
         ("d_ai", "d_ai", "mm", "d_ai", "inner tip diameter", src),
         ("s", "s_e", "mm", "s", f"{where} circular tooth thickness", src),
-        ("s_c", "s_c", "mm", "s̄", f"{where} chordal tooth thickness", src),
-        ("h_c", "h_c", "mm", "h̄_a", "chordal height", src)))
+        ("s_c", "s_c", "mm", "s̄", f"{where} chordal tooth thickness (virtual gear)",
+         src + S.CHORD_VIRTUAL),
+        ("h_c", "h_c", "mm", "h̄_a", "chordal height (virtual gear, no cos δ)",
+         src + S.CHORD_VIRTUAL),
+        ("s_cc", "s_cc", "mm", "s̄_c", f"{where} constant chord", src + S.CHORD_CONSTANT),
+        ("h_cc", "h_cc", "mm", "h̄_c", "height to the constant chord", src + S.CHORD_CONSTANT),
+        ("s_mn", "s_mn", "mm", "s_mn", "mean normal circular tooth thickness", S.CHORD_ISO),
+        ("s_mt", "s_mt", "mm", "s_mt", "mean transverse circular tooth thickness",
+         S.CHORD_ISO),
+        ("d_mn", "d_mn", "mm", "d_mn", "mean normal diameter", S.CHORD_ISO),
+        ("s_mnc", "s_mnc", "mm", "s_mnc", "mean normal chordal tooth thickness", S.CHORD_ISO),
+        ("h_amc", "h_amc", "mm", "h_amc", "mean chordal addendum (ISO 23509, with cos δ)",
+         S.CHORD_ISO)))
 
     v = res.section("virtual", "Virtual cylindrical gears (mean section)")
     _pair_rows(v, g, (
@@ -124,6 +142,7 @@ def force_rows(res: Result, sol: Solution) -> None:
     sec.add("F_mt", f.F_mt, "N", "F_mt", "tangential force", S.FORCES)
     sec.add("T2", f.T2 / 1e3, "N·m", "T2", "wheel torque (no losses)", S.FORCES)
     sec.add("v_mt", f.v_mt, "m/s", "v_mt", "pitch line speed, mean cone", S.FORCES)
+    sec.add("v_et", f.v_et, "m/s", "v_et", "pitch line speed, outer cone", S.SPEED_OUTER)
     _member_rows(sec, (f.pinion, f.wheel), (
         ("F_a", "F_a", "N", "F_a", "axial force (+: away from the apex)", S.FORCES),
         ("F_r", "F_r", "N", "F_r", "radial force (+: toward its axis)", S.FORCES)))

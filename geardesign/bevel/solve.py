@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from geardesign.bevel import forces as shaft_forces
 from geardesign.bevel import geometry, gost_route, rating
 from geardesign.bevel.inputs import Inputs
 from geardesign.core.records import dataclass
@@ -13,7 +14,7 @@ class Solution:
 
     inputs: Inputs
     geometry: geometry.Geometry
-    forces: rating.Forces
+    forces: shaft_forces.Forces
     iso: rating.IsoRating | None
     gost: gost_route.GostRating | None
 
@@ -30,7 +31,7 @@ def solve(inp: Inputs) -> Solution:
     """Geometry, forces and the strength ratings of ``inp.rating.method`` (none for a pair
     that is not :func:`ratable`)."""
     g = geometry.pair_geometry(inp.pair)
-    f = rating.forces(inp, g)
+    f = shaft_forces.forces(inp, g)
     rate = ratable(g)
     return Solution(inp, g, f,
                     rating.iso_rating(inp, g, f) if rate and inp.rating.iso else None,

@@ -26,7 +26,8 @@ PAIR = Table("pair", "bevel gear pair geometry", (
           hint="required unless [design] proposes it"),
     Field("spiral_angle", "number", "mean spiral angle (0 for straight teeth)", "deg", "β_m",
           default=0.0, minimum=0, maximum=45),
-    Field("hand", "string", "hand of spiral of the pinion (the wheel has the other)",
+    Field("hand", "string", "hand of spiral of the pinion (right: the outer half of a tooth "
+          "inclined clockwise, seen looking at the face; the wheel has the other)",
           default="right", choices=("right", "left")),
     Field("pressure_angle", "number", "normal pressure angle of the basic rack", "deg", "α_n",
           default=20.0, minimum=10, maximum=30),

@@ -9,7 +9,7 @@ shaft angle Σ; each shaft is analysed in its own frame (its axis z, the directi
 mating gear's contact point ``mate_angle`` in its transverse plane), so the statics of
 :mod:`.shafts` hold unchanged.  The axial force of a bevel member is signed by the bevel
 calculator from the hand of spiral, the sense of rotation and the driving member
-(:func:`geardesign.bevel.rating.thrust_sign`; + from the pitch apex toward the member's
+(:func:`geardesign.bevel.forces.thrust_sign`; + from the pitch apex toward the member's
 back): on the shaft it acts along ``axial_sign``·F_a, with ``[[shaft.gear]] axial_sign`` the
 direction of the member's back along the shaft (+1: the back faces bearing B).  The sense of
 rotation of the wheel shaft keeps the pinion shaft's sign by convention (crossed axes have no
