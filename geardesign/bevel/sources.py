@@ -17,3 +17,7 @@ PRACTICE = "design practice ([Dunaev] §2.6)"
 PUBLISHED = ("[BevGear2023] ([ISO23509] spiral bevel example), [ISOTR10300-30] sample 1, "
              "[KHK] straight bevel examples; docs/bevel.md, published cases")
 DESIGN = "design mode by re-rating ([GOST9563] first-series modules), docs/bevel.md"
+LOAD_FACTORS = "[ISO10300-1] method B (K_v, K_Hα = K_Fα: the [ISO6336-1] forms, bevel ranges)"
+ISO_STATIC = ("[ISO10300-2], [ISO10300-3] at the peak torque; static limits of [ISO6336-2] "
+              "§10, [ISO6336-3] §12")
+GOST_STATIC = "[GOST21354] peak load via the virtual spur pair ([ZPCIL] SIGMAX.h)"
