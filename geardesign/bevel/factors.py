@@ -7,7 +7,7 @@ the bevel gear's own mesh stiffness, reduced mass and resonance ranges; the form
 the two standards share are the ``spur`` functions, called (running-in allowance y_α, the
 reduced mass, the resonance speed, the constants c_v1 … c_v7, the K_v of each range, the
 K_Hα before its limits).  The single pitch deviation f_pt of each member is an input: the
-tolerance formulas of ISO 17485 (f_pt from the accuracy grade, the module and the tolerance
+tolerance formulas of [ISO17485] (f_pt from the accuracy grade, the module and the tolerance
 diameter) were not reachable to check, so the deviation of the drawing (or of the
 measurement) is given, in µm.
 
