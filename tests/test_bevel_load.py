@@ -109,8 +109,8 @@ def test_no_peak_torque_no_peak_checks():
 @given(st.floats(1.0, 4.0), st.sampled_from(["iso10300", "both"]))
 @settings(max_examples=25, deadline=None)
 def test_peak_stresses_scale_with_the_torque(ratio, method):
-    """ISO: σ_H,st = σ_H √(T_max/(T K_A)), σ_F,st = σ_F T_max/(T K_A); GOST: σ_Hmax and σ_Fmax
-    by the spur formulas with the load factors at the peak (K_A = K_v = 1)."""
+    """ISO: σ_H,st = σ_H √(T_max/(T K_A)), σ_F,st = σ_F T_max/(T K_A); GOST: σ_Hmax and
+    σ_Fmax by the spur formulas with the load factors at the peak (K_A = K_v = 1)."""
     sol = solve.solve(_sample1(T_peak=300e3 * ratio, method=method))
     p, r, K_A = sol.iso_peak, sol.iso, 1.1
     assert p.sigma_H == pytest.approx(r.sigma_H * math.sqrt(ratio / K_A))

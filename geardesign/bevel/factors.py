@@ -137,7 +137,8 @@ def transverse_factor(eps_vg: float, eps_va: float, Z_LS: float, c_gamma: float,
     .. math::
         K_{Hα} = \\frac{ε_{vγ}}{2}\\Big(0.9 + 0.4 \\frac{c_γ (f_{pt} - y_α)}{F_{mtH}/b_v}\\Big)
         \\;(ε_{vγ} \\le 2),\\quad
-        0.9 + 0.4 \\sqrt{\\frac{2(ε_{vγ} - 1)}{ε_{vγ}}} \\frac{c_γ (f_{pt} - y_α)}{F_{mtH}/b_v}
+        0.9 + 0.4 \\sqrt{\\frac{2(ε_{vγ} - 1)}{ε_{vγ}}}
+        \\frac{c_γ (f_{pt} - y_α)}{F_{mtH}/b_v}
         \\;(ε_{vγ} > 2)
 
     F_mtH = F_vmt K_A K_v K_Hβ [N]; within 1 ≤ K_Hα ≤ ε_vγ/(ε_vα Z_LS²) (the [ISO6336-1]

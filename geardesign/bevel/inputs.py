@@ -205,8 +205,9 @@ def read(data: dict) -> Inputs:
     problems.raise_all()
     peak = ld.get("peak_torque")
     if peak is not None and peak < ld["torque"]:
-        problems.at("load.peak_torque", peak, f"the peak torque is at least the nominal "
-                    f"torque load.torque = {ld['torque']:g} N·m; leave it out for no peak check")
+        problems.at("load.peak_torque", peak, f"must be at least the nominal "
+                    f"torque load.torque = {ld['torque']:g} N·m (the largest short-time torque); "
+                    f"leave it out for no peak check")
     for key in ("sigma_HPmax", "sigma_FSt"):
         one = [k for k in (f"{key}1", f"{key}2") if mt.get(k) is not None]
         if len(one) == 1:

@@ -2,10 +2,10 @@
 
 A pair short of pitting or bending safety (``ISO_PITTING``, ``ISO_BENDING``,
 ``GOST_PITTING``, ``GOST_BENDING``, and the same at the peak torque: ``ISO_STATIC_PITTING``,
-``ISO_STATIC_BENDING``, ``GOST_STATIC_CONTACT``, ``GOST_STATIC_BENDING``) first gets a wider face (``pair.face_width`` up to
-1.5 times, within the R_e/2 the inputs allow), then a larger module (``pair.module``, up to
-twice): the stresses fall with b^-1/2 and b^-1 for contact and bending, with the module
-(and so d_m1 and m_nm) faster.  An undercut pinion gets the least profile shift that clears
+``ISO_STATIC_BENDING``, ``GOST_STATIC_CONTACT``, ``GOST_STATIC_BENDING``) first gets a wider
+face (``pair.face_width`` up to 1.5 times, within the R_e/2 the inputs allow), then a larger
+module (``pair.module``, up to twice): the stresses fall with b^-1/2 and b^-1 for contact and
+bending, with the module (and so d_m1 and m_nm) faster.  An undercut pinion gets the least profile shift that clears
 it (``pair.x1``, the check's limit rounded up to 0.01)."""
 
 from __future__ import annotations

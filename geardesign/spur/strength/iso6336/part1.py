@@ -223,10 +223,10 @@ def dynamic_factor(N: float, N_S: float, c_prime: float, f_pb_eff: float, f_f_ef
     super_ = cv5 * B_p + cv6 * B_f + cv7
     sub, mid = N <= N_S, N <= N_main
     inter = N < 1.5
+    width = round(1.5 - N_main, 12)        # 0.35 exactly for ISO 6336-1
     K = xp.where(sub, N * (cv1 * B_p + cv2 * B_f + cv3 * B_k) + 1.0,
                  xp.where(mid, main,
-                          xp.where(inter, super_ + (main - super_) * (1.5 - N) / round(1.5 - N_main, 12),
-                                   super_)))
+                          xp.where(inter, super_ + (main - super_) * (1.5 - N) / width, super_)))
     rng = xp.where(sub, "subcritical", xp.where(mid, "main resonance",
                                                 xp.where(inter, "intermediate", "supercritical")))
     return K, rng
