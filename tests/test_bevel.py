@@ -16,7 +16,6 @@ from hypothesis import strategies as st
 from geardesign.bevel import forces as FO
 from geardesign.bevel import geometry as GEO
 from geardesign.bevel import inputs as I
-from geardesign.bevel import rating as R
 from geardesign.bevel.solve import solve
 from geardesign.core.registry import load
 from tests.helpers_cli import run_bad

@@ -167,7 +167,9 @@ def test_every_bevel_result_says_what_is_not_verified(name):
 # [ISOTR10300-30] sample 1: the same spiral pair rated by ISO 10300 method B1, T1 = 300 N·m,
 # n1 = 1 200 min⁻¹, K_A = 1.1, one member cantilever-mounted, contact pattern checked under a
 # light test load, E = 210 000 MPa, ν = 0.3.  K_v = 1.020 and K_Hα = 1.161 are the printed
-# results of its method B (given here: geardesign takes K_v and K_Hα as inputs).  The
+# results of its method B (given here, so that the stresses are checked on their own; the
+# factors themselves are computed from the sample's pitch deviations and checked in
+# tests/test_bevel_load.py).  The
 # printed values as transcribed, with their inputs, in the open calculator [ISO10300Calc]
 # (its self-test of sample 1).  The cutter edge radius (ρ_a0 = 0.8 mm pinion, 1.2 mm wheel)
 # and the thickness modification (x_sm = 0.036 pinion, −0.055 wheel) differ per member in

@@ -24,7 +24,6 @@ import pytest
 from geardesign.bevel import geometry as GEO
 from geardesign.bevel import gost_route as GR
 from geardesign.bevel import inputs as I
-from geardesign.bevel import forces as F
 from geardesign.core.registry import load
 
 STRAIGHT = Path(__file__).resolve().parent.parent / "specs" / "bevel_straight_gost.toml"
@@ -89,9 +88,10 @@ def _case():
     d1, _ = I.pitch_angles(inp.pair.z1, inp.pair.z2, inp.pair.Sigma)
     R_e = GEO.modules(inp.pair, d1)[3]
     inp = dataclasses.replace(inp, pair=dataclasses.replace(inp.pair, b=K_BE * R_e))
-    g = GEO.pair_geometry(inp.pair)
-    f = F.forces(inp, g)
-    return inp, g, GR.gost_rating(inp, g, f)
+    from geardesign.bevel.solve import solve
+
+    sol = solve(inp)     # K_v, K_Hα as the spec leaves them (assumed 1.1, 1.0)
+    return sol.inputs, sol.geometry, sol.gost
 
 
 def test_bending_stress_against_conegear():

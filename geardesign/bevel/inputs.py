@@ -63,9 +63,10 @@ class Load:
     rotation: str         # pinion, seen from its back: "cw" | "ccw"
     driver: str           # "pinion" | "wheel"
     K_A: float
-    K_v: float
+    K_v: float | None     # given; None: by [ISO10300-1] method B or assumed (bevel.factors)
     mounting: str
-    K_alpha: float
+    K_alpha: float | None  # K_Hα = K_Fα given; None: as K_v
+    T_peak: float | None = None   # peak pinion torque [N·mm] (static checks)
 
 
 @dataclass(frozen=True)
@@ -77,6 +78,19 @@ class Material:
     hardness: str
     E: float
     nu: float
+    type: str = "Eh"      # ISO 6336-5 material type (static limits, running-in)
+    sigma_02: float | None = None             # yield strength (Y_δrelT,st of St, V)
+    sigma_HPmax: tuple[float, float] | None = None   # GOST peak limits [MPa]
+    sigma_FSt: tuple[float, float] | None = None
+
+
+@dataclass(frozen=True)
+class Accuracy:
+    """Single pitch deviations f_pt of pinion and wheel [µm] and the density [kg/mm³] for
+    K_v and K_Hα by [ISO10300-1] method B (:mod:`geardesign.bevel.factors`)."""
+
+    f_pt: tuple[float, float]
+    rho: float
 
 
 @dataclass(frozen=True)
@@ -102,6 +116,7 @@ class Inputs:
     load: Load
     material: Material
     rating: Rating
+    accuracy: Accuracy | None = None
 
 
 def pitch_angles(z1: int, z2: int, Sigma: float) -> tuple[float, float]:
@@ -188,10 +203,33 @@ def read(data: dict) -> Inputs:
                 pr.get("root_radius2"))
     problems.stage(_pair_rules, pair, pr, problems)
     problems.raise_all()
+    peak = ld.get("peak_torque")
+    if peak is not None and peak < ld["torque"]:
+        problems.at("load.peak_torque", peak, f"must be at least the nominal "
+                    f"torque load.torque = {ld['torque']:g} N·m (the largest short-time torque); "
+                    f"leave it out for no peak check")
+    for key in ("sigma_HPmax", "sigma_FSt"):
+        one = [k for k in (f"{key}1", f"{key}2") if mt.get(k) is not None]
+        if len(one) == 1:
+            problems.at(f"material.{one[0]}", mt[one[0]], f"give {key}1 and {key}2 together "
+                        f"(the GOST 21354 peak limits of both members), or neither")
+    problems.raise_all()
     load = Load(ld["torque"] * 1e3, ld["speed"], ld["rotation"], ld["driver"],
-                ld["application_factor"], ld["dynamic_factor"], ld["mounting"],
-                ld["transverse_factor"])
+                ld["application_factor"], ld.get("dynamic_factor"), ld["mounting"],
+                ld.get("transverse_factor"), None if peak is None else peak * 1e3)
     material = Material((mt["sigma_Hlim1"], mt["sigma_Hlim2"]),
                         (mt["sigma_Flim1"], mt["sigma_Flim2"]), mt["hardness"], mt["E"],
-                        mt["poisson"])
-    return Inputs(pair, load, material, Rating(rt["method"], rt["S_Hmin"], rt["S_Fmin"]))
+                        mt["poisson"], mt.get("type", "Eh"), mt.get("sigma_02"),
+                        _pair_of(mt, "sigma_HPmax"), _pair_of(mt, "sigma_FSt"))
+    acc = data.get("accuracy")
+    accuracy = None if acc is None else Accuracy((acc["f_pt1"], acc["f_pt2"]),
+                                                 acc["density"] * 1e-9)
+    return Inputs(pair, load, material, Rating(rt["method"], rt["S_Hmin"], rt["S_Fmin"]),
+                  accuracy)
+
+
+def _pair_of(mt: dict, key: str) -> tuple[float, float] | None:
+    """``(key1, key2)`` of ``[material]`` when both are given, else None (the GOST peak
+    check is then not made, and the report says so)."""
+    a, b = mt.get(f"{key}1"), mt.get(f"{key}2")
+    return None if a is None or b is None else (a, b)

@@ -196,7 +196,7 @@ def iso_rating(inp: Inputs, g: Geometry, f: Forces) -> IsoRating:
     x_sm = x_τ/2 (the tangential shift), the method of [ISO10300-3] §6.4.1.2.  [ISO10300-2], [ISO10300-3]
     method B1; [ISO10300-1] §8; every factor checked against [ISOTR10300-30] sample 1.
     """
-    ld, mt, p, rt = inp.load, inp.material, inp.pair, inp.rating
+    ld, mt, p = inp.load, inp.material, inp.pair
     K_be = MOUNTING_FACTOR[ld.mounting]
     K_Hb = 1.5 * K_be
     K_Fb = K_Hb

@@ -20,39 +20,6 @@ EPS_MIN = 1.1
 
 MEMBERS = ("pinion", "wheel")
 
-VERIFIED = {
-    True: "the spiral pair's cones, mean-section modules, diameters and heights "
-          "([ISO23509] spiral example), its virtual gears, contact ratios and the ISO 10300 "
-          "method B1 stresses ([ISOTR10300-30] sample 1), its mean normal tooth thickness "
-          "and chordal dimensions s_mn, s_mt, d_mn, s_mnc, h_amc ([ISO23509] annex F.2); "
-          "docs/bevel.md",
-    False: "the outer-cone geometry in both depth forms (cones, cone distance, heights, "
-           "addendum/dedendum and face/root angles, tip diameters, apex distance B, b_ax, "
-           "d_ai, the back-cone gear: [KHK] standard and Gleason straight bevel examples), "
-           "the outer pitch diameter and pitch line speed v_et ([Shigley] example 15-1), "
-           "the virtual gears and the ISO 10300 method B1 formulas shared with spiral teeth "
-           "([ISOTR10300-30] sample 1, a spiral pair; docs/bevel.md)",
-}
-"""What of each tooth form has been checked against a published worked example (by
-``teeth == "spiral"``); docs/bevel.md lists the cases."""
-
-UNVERIFIED = {
-    True: ("addendum/dedendum angles (standard depth, not the cutter's duplex taper), "
-           "the chordal height h_c of the virtual gear (without the cos δ of ISO 23509's "
-           "h_amc; GOST 19326 not at hand) and the constant chord s_cc, h_cc, the axial and "
-           "radial forces and their signs by hand and rotation, ISO 10300 K_Hβ-be other "
-           "than 1.10, and strength by GOST 21354 (θ_H, θ_F of circular teeth: only against "
-           "an independent program, which has θ_H = 1.23 + 0.13u, not 1.13 + 0.13u, for a "
-           "hard pinion on a soft wheel)"),
-    False: ("tooth thickness and chordal dimensions at the outer cone (s, s_c, h_c and the "
-            "constant chord s_cc, h_cc of GOST 19624) and the ISO 23509 mean-section rows of "
-            "straight teeth (their formulas are checked on a spiral pair only), the axial and "
-            "radial forces, ISO 10300 for straight teeth (Z_LS = 1, Y_BS = 1, K_Hβ-be other "
-            "than 1.10) and strength by GOST 21354 (θ_H = θ_F = 0.85: only against an "
-            "independent program)"),
-}
-"""The parts not yet checked against a published worked example, by tooth form."""
-
 
 def _member_rows(sec, members, table) -> None:
     """One row per (key, attribute, unit, symbol, name, source) of ``table`` for each member,
@@ -192,6 +159,115 @@ def iso_rows(res: Result, sol: Solution) -> None:
         ("S_F", "S_F", "-", "S_F", "bending safety", S.ISO_F)))
 
 
+def factor_rows(res: Result, sol: Solution) -> None:
+    """K_v and K_Hα as used, each marked (given), (method B) or (assumed), and the
+    intermediate values of method B when it was used (:mod:`geardesign.bevel.factors`)."""
+    lf = sol.factors
+    sec = res.section("load_factors", "Load factors K_v, K_Hα (ISO 10300-1)")
+    sec.add("K_v", lf.K_v, "-", "K_v", f"dynamic factor ({lf.K_v_src})", S.LOAD_FACTORS)
+    sec.add("K_Halpha", lf.K_Halpha, "-", "K_Hα", f"transverse load factor K_Hα = K_Fα "
+            f"({lf.K_Halpha_src})", S.LOAD_FACTORS)
+    b = lf.method_b
+    if b is None:
+        return
+    for key, value, unit, sym, name in (
+            ("f_pt", b.f_pt, "µm", "f_pt", "single pitch deviation (the larger of the pair)"),
+            ("y_alpha", b.y_alpha, "µm", "y_α", "running-in allowance"),
+            ("f_p_eff", b.f_p_eff, "µm", "f_p,eff", "effective pitch deviation"),
+            ("line_load", b.line_load, "N/mm", "F_vmt K_A/b_v", "line load"),
+            ("C_F", b.C_F, "-", "C_F", "stiffness correction (light line load)"),
+            ("c_prime", b.c_prime, "N/(mm·µm)", "c'", "single stiffness"),
+            ("c_gamma", b.c_gamma, "N/(mm·µm)", "c_γ", "mesh stiffness"),
+            ("m_red", b.m_red, "kg/mm", "m_red", "reduced mass per face width"),
+            ("n_E1", b.n_E1, "min^-1", "n_E1", "resonance speed of the pinion"),
+            ("N", b.N, "-", "N", f"resonance ratio n1/n_E1 ({b.range or 'K_v given'})"),
+            ("K_Halpha_max", b.K_Halpha_max, "-", "K_Hα,max",
+             "upper limit of K_Hα, ε_vγ/(ε_vα Z_LS²)")):
+        sec.add(key, value, unit, sym, name, S.LOAD_FACTORS)
+
+
+def peak_rows(res: Result, sol: Solution) -> None:
+    """The static strength at the peak torque (:mod:`geardesign.bevel.peak`)."""
+    p = sol.iso_peak
+    if p is not None:
+        sec = res.section("iso10300_static", "ISO 10300 static strength at the peak torque")
+        sec.add("T_peak", p.T_peak, "N·m", "T_max", "peak pinion torque (an actual torque: "
+                "K_A = 1)", S.ISO_STATIC)
+        sec.add("material_type", p.material, "-", "", "material type (ISO 6336-5)",
+                S.ISO_STATIC)
+        _pair_rows(sec, p, (
+            ("Z_NT", "-", "Z_NT,st", "life factor at the static point, contact", S.ISO_STATIC),
+            ("Y_NT", "-", "Y_NT,st", "life factor at the static point, bending", S.ISO_STATIC),
+            ("sigma_H", "MPa", "σ_H,st", "contact stress at the peak torque", S.ISO_STATIC)))
+        _member_rows(sec, (p.pinion, p.wheel), (
+            ("sigma_HG", "sigma_HG", "MPa", "σ_HG,st", "static contact limit σ_Hlim Z_NT,st Z_K",
+             S.ISO_STATIC),
+            ("S_H", "S_H", "-", "S_H,st", "static pitting safety", S.ISO_STATIC),
+            ("sigma_F", "sigma_F", "MPa", "σ_F,st", "root stress at the peak torque",
+             S.ISO_STATIC),
+            ("Y_deltarelT", "Y_deltarelT", "-", "Y_δrelT,st", "static notch sensitivity factor",
+             S.ISO_STATIC),
+            ("sigma_FG", "sigma_FG", "MPa", "σ_FG,st", "static root limit σ_Flim Y_ST Y_NT,st "
+             "Y_δrelT,st", S.ISO_STATIC),
+            ("S_F", "S_F", "-", "S_F,st", "static bending safety", S.ISO_STATIC)))
+    q = sol.gost_peak
+    if q is not None:
+        sec = res.section("gost21354_static", "GOST 21354 peak load")
+        sec.add("T_peak", q.T_peak, "N·m", "T_max", "peak pinion torque", S.GOST_STATIC)
+        _pair_rows(sec, q, (
+            ("K_Hmax", "-", "K_Hmax", "load factor at the peak torque, contact (K_A = K_v = 1)",
+             S.GOST_STATIC),
+            ("K_Fmax", "-", "K_Fmax", "load factor at the peak torque, bending (K_A = K_v = 1)",
+             S.GOST_STATIC),
+            ("sigma_Hmax", "MPa", "σ_Hmax", "contact stress at the peak torque",
+             S.GOST_STATIC)))
+        _member_rows(sec, (q.pinion, q.wheel), (
+            ("sigma_HPmax", "sigma_HPmax", "MPa", "σ_HPmax", "allowable peak contact stress",
+             S.GOST_STATIC),
+            ("sigma_Fmax", "sigma_Fmax", "MPa", "σ_Fmax", "root stress at the peak torque",
+             S.GOST_STATIC),
+            ("sigma_FPmax", "sigma_FPmax", "MPa", "σ_FPmax", "allowable peak root stress "
+             "σ_FSt/S_FSt", S.GOST_STATIC)))
+
+
+def peak_checks(res: Result, sol: Solution) -> None:
+    """The static checks at the peak torque: S_st >= S_min (ISO), σ_max <= σ_Pmax (GOST);
+    a GOST route without the material's peak limits is said so."""
+    rt, T_max = sol.inputs.rating, sol.inputs.load.T_peak
+    if T_max is None:
+        return
+    lever = "widen the face, raise the module, or limit the peak torque (a slip coupling)"
+    p = sol.iso_peak
+    for name, m in zip(MEMBERS, (p.pinion, p.wheel) if p is not None else ()):
+        for code, S_, need, what in (("ISO_STATIC_PITTING", m.S_H, rt.S_Hmin, "pitting"),
+                                     ("ISO_STATIC_BENDING", m.S_F, rt.S_Fmin, "bending")):
+            res.checks.append(check(
+                code, S_ >= need, "error",
+                f"ISO 10300: static {what} safety of the {name} at the peak torque "
+                f"{p.T_peak:.0f} N·m is {S_:.3f} < {need:g}; {lever}",
+                f"ISO 10300: static {what} safety of the {name} at the peak torque "
+                f"{S_:.3f} >= {need:g}", S_, need, S.ISO_STATIC))
+    q = sol.gost_peak
+    for name, m in zip(MEMBERS, (q.pinion, q.wheel) if q is not None else ()):
+        for code, s, lim, what in (("GOST_STATIC_CONTACT", q.sigma_Hmax, m.sigma_HPmax,
+                                    "σ_Hmax"),
+                                   ("GOST_STATIC_BENDING", m.sigma_Fmax, m.sigma_FPmax,
+                                    "σ_Fmax")):
+            res.checks.append(check(
+                code, s <= lim, "error",
+                f"GOST 21354: {what} of the {name} at the peak torque {q.T_peak:.0f} N·m is "
+                f"{s:.0f} MPa > {lim:.0f} MPa allowed; {lever}",
+                f"GOST 21354: {what} of the {name} at the peak torque {s:.0f} MPa <= "
+                f"{lim:.0f} MPa", s, lim, S.GOST_STATIC))
+    if sol.gost is not None and q is None:
+        res.checks.append(check(
+            "GOST_STATIC_NOT_RATED", False, "warning",
+            "GOST 21354: the peak load is not checked: give the material's peak limits "
+            "material.sigma_HPmax1, sigma_HPmax2, sigma_FSt1, sigma_FSt2 (GOST 21354 table: "
+            "σ_HPmax = 2.8·σ_T improved, 44·HRC case-hardened)", "", None, None,
+            S.GOST_STATIC))
+
+
 def gost_rows(res: Result, sol: Solution) -> None:
     r = sol.gost
     sec = res.section("gost21354", "GOST 21354 via the virtual spur pair")
@@ -213,10 +289,10 @@ def gost_rows(res: Result, sol: Solution) -> None:
 
 def checks(res: Result, sol: Solution) -> None:
     g, rt = sol.geometry, sol.inputs.rating
-    done = VERIFIED[g.spiral]
+    done = S.VERIFIED[g.spiral]
     res.checks.append(check(
         "METHOD_UNVERIFIED", False, "warning",
-        "not yet checked against a published worked example: " + UNVERIFIED[g.spiral]
+        "not yet checked against a published worked example: " + S.UNVERIFIED[g.spiral]
         + (f"; checked: {done}" if done else "")
         + "; compare these figures with an independent calculation before signing",
         "", None, None, S.PUBLISHED))
@@ -283,5 +359,9 @@ def report(res: Result, sol: Solution) -> Result:
         iso_rows(res, sol)
     if sol.gost is not None:
         gost_rows(res, sol)
+    if sol.factors is not None:
+        factor_rows(res, sol)
+    peak_rows(res, sol)
     checks(res, sol)
+    peak_checks(res, sol)
     return res

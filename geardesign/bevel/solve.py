@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import dataclasses
+
+from geardesign.bevel import factors, geometry, gost_route, peak, rating
 from geardesign.bevel import forces as shaft_forces
-from geardesign.bevel import geometry, gost_route, rating
 from geardesign.bevel.inputs import Inputs
 from geardesign.core.records import dataclass
 
@@ -17,6 +19,9 @@ class Solution:
     forces: shaft_forces.Forces
     iso: rating.IsoRating | None
     gost: gost_route.GostRating | None
+    factors: factors.LoadFactors | None = None    # K_v, K_Hα as used (given or method B)
+    iso_peak: peak.IsoPeak | None = None          # static checks at load.peak_torque
+    gost_peak: peak.GostPeak | None = None
 
 
 def ratable(g: geometry.Geometry) -> bool:
@@ -29,10 +34,20 @@ def ratable(g: geometry.Geometry) -> bool:
 
 def solve(inp: Inputs) -> Solution:
     """Geometry, forces and the strength ratings of ``inp.rating.method`` (none for a pair
-    that is not :func:`ratable`)."""
+    that is not :func:`ratable`), with K_v and K_Hα given or by [ISO10300-1] method B
+    (:func:`geardesign.bevel.factors.load_factors`), and the static checks at the peak
+    torque when one is given (:mod:`geardesign.bevel.peak`)."""
     g = geometry.pair_geometry(inp.pair)
     f = shaft_forces.forces(inp, g)
-    rate = ratable(g)
-    return Solution(inp, g, f,
-                    rating.iso_rating(inp, g, f) if rate and inp.rating.iso else None,
-                    gost_route.gost_rating(inp, g, f) if rate and inp.rating.gost else None)
+    if not ratable(g):
+        return Solution(inp, g, f, None, None)
+    lf = factors.load_factors(inp, g, f.F_mt, f.v_mt)
+    used = dataclasses.replace(inp, load=dataclasses.replace(inp.load, K_v=lf.K_v,
+                                                             K_alpha=lf.K_Halpha))
+    iso = rating.iso_rating(used, g, f) if inp.rating.iso else None
+    gost = gost_route.gost_rating(used, g, f) if inp.rating.gost else None
+    peaked = inp.load.T_peak is not None
+    return Solution(inp, g, f, iso, gost, lf,
+                    peak.iso_peak(used, iso) if peaked and iso is not None else None,
+                    peak.gost_peak(used, lf.K_Halpha, gost)
+                    if peaked and gost is not None else None)

@@ -5,6 +5,7 @@ bevel``)."""
 from __future__ import annotations
 
 from geardesign.core.spec import Field, SpecSchema, Table
+from geardesign.spur.strength.iso6336.tables import MATERIAL_LINES, RHO_STEEL
 
 PAIR = Table("pair", "bevel gear pair geometry", (
     Field("teeth", "string", "tooth form: straight (GOST 19624, Gleason straight) or spiral "
@@ -63,12 +64,17 @@ LOAD = Table("load", "operating load on the pinion", (
           choices=("pinion", "wheel")),
     Field("application_factor", "number", "application factor K_A", symbol="K_A",
           default=1.0, minimum=1.0, maximum=3.0),
-    Field("dynamic_factor", "number", "dynamic factor K_v", symbol="K_v", default=1.1,
-          minimum=1.0, maximum=3.0),
+    Field("dynamic_factor", "number", "dynamic factor K_v", symbol="K_v", default=None,
+          minimum=1.0, maximum=3.0, hint="leave out to compute it by ISO 10300-1 method B "
+          "from [accuracy]; without [accuracy] 1.1 is assumed"),
     Field("mounting", "string", "how the members are mounted (mounting factor K_Hβ-be)",
           default="one_straddle", choices=("both_straddle", "one_straddle", "cantilever")),
     Field("transverse_factor", "number", "transverse load factor K_Hα = K_Fα", symbol="K_Hα",
-          default=1.0, minimum=1.0, maximum=3.0),
+          default=None, minimum=1.0, maximum=3.0, hint="leave out to compute it by ISO "
+          "10300-1 method B from [accuracy]; without [accuracy] 1.0 is assumed"),
+    Field("peak_torque", "number", "largest short-time pinion torque (starting torque, "
+          "jam), for the static checks", "N·m", "T_max", default=None, gt=0, maximum=1e7,
+          hint="leave out for no peak-load check"),
 ))
 
 MATERIAL = Table("material", "strength of the flanks and roots (long-life limits)", (
@@ -87,7 +93,34 @@ MATERIAL = Table("material", "strength of the flanks and roots (long-life limits
           default=206000.0, minimum=1e4, maximum=5e5),
     Field("poisson", "number", "Poisson's ratio of both members", symbol="ν", default=0.3,
           minimum=0.1, maximum=0.5),
+    Field("type", "string", "material type of ISO 6336-5 of both members (static limits at "
+          "the peak torque, running-in of method B): Eh case-hardened, IF induction/flame "
+          "hardened, V/V_alloy through-hardened, St normalized, NT/NV nitrided, …",
+          default="Eh", choices=tuple(MATERIAL_LINES)),
+    Field("sigma_02", "number", "yield strength σ_0.2 (static notch factor Y_δrelT,st of St "
+          "and V types)", "MPa", "σ_0.2", default=None, gt=0, maximum=3000,
+          hint="600 MPa when not given"),
+    Field("sigma_HPmax1", "number", "GOST 21354 allowable contact stress at the peak load, "
+          "pinion", "MPa", "σ_HPmax1", default=None, gt=0, maximum=10000,
+          hint="2.8·σ_T improved, 44·HRC case-hardened, 3·HV nitrided"),
+    Field("sigma_HPmax2", "number", "GOST 21354 allowable contact stress at the peak load, "
+          "wheel", "MPa", "σ_HPmax2", default=None, gt=0, maximum=10000),
+    Field("sigma_FSt1", "number", "GOST 21354 limit bending stress at the peak load, pinion",
+          "MPa", "σ_FSt1", default=None, gt=0, maximum=10000),
+    Field("sigma_FSt2", "number", "GOST 21354 limit bending stress at the peak load, wheel",
+          "MPa", "σ_FSt2", default=None, gt=0, maximum=10000),
 ))
+
+ACCURACY = Table("accuracy", "single pitch deviations for K_v and K_Hα by ISO 10300-1 method B "
+                 "(leave the table out to give load.dynamic_factor and "
+                 "load.transverse_factor, or have them assumed)", (
+    Field("f_pt1", "number", "single pitch deviation of the pinion (drawing tolerance or "
+          "measured, ISO 17485)", "µm", "f_pt1", gt=0, maximum=500, example=12.0),
+    Field("f_pt2", "number", "single pitch deviation of the wheel", "µm", "f_pt2", gt=0,
+          maximum=500, example=26.0),
+    Field("density", "number", "density of both members (reduced mass)", "kg/m^3", "ρ",
+          default=round(RHO_STEEL * 1e9), minimum=1000, maximum=20000),
+), required=False)
 
 RATING = Table("rating", "rating method and required safety factors", (
     Field("method", "string", "strength method", default="both",
@@ -112,6 +145,6 @@ DESIGN = Table("design", "design mode: propose z1, z2, the module and the face w
 SCHEMA = SpecSchema(
     kind="bevel",
     description="bevel gear pair: geometry, ISO 10300 and GOST strength, shaft forces",
-    tables=(PAIR, LOAD, MATERIAL, RATING, DESIGN),
+    tables=(PAIR, LOAD, MATERIAL, ACCURACY, RATING, DESIGN),
     title_example="straight bevel pair m_te = 4, 20/50 teeth, Σ = 90°",
 )

@@ -31,11 +31,15 @@ handbook 0.96–0.98 (Dunaev & Lelikov, table 1.1; verify)."""
 
 def bevel_data(data: dict, T_in: float, n_in: float, duty: Duty, where: str) -> dict:
     """A copy of the bevel stage spec with the drive's load in it: the pinion torque and
-    speed always, the application factor where the stage gives none."""
+    speed always, the application factor where the stage gives none, and the peak torque
+    T_in·``motor.peak_ratio`` (the static checks, as for a spur stage) where the stage gives
+    none."""
     d = copy.deepcopy(data)
     load = _table(d, "load", where)
     load["torque"], load["speed"] = T_in, n_in
     _put(load, "application_factor", duty.K_A)
+    if duty.peak_ratio is not None:
+        _put(load, "peak_torque", T_in * duty.peak_ratio)
     return d
 
 

@@ -199,7 +199,8 @@ def dynamic_constants(eps_gamma: float) -> tuple[float, ...]:
 
 
 def dynamic_factor(N: float, N_S: float, c_prime: float, f_pb_eff: float, f_f_eff: float,
-                   C_a: float, line_load: float, eps_gamma: float) -> tuple[float, str]:
+                   C_a: float, line_load: float, eps_gamma: float,
+                   N_main: float = 1.15) -> tuple[float, str]:
     """Dynamic factor K_v by method B and the resonance range it was taken from.
 
     .. math::
@@ -210,7 +211,9 @@ def dynamic_factor(N: float, N_S: float, c_prime: float, f_pb_eff: float, f_f_ef
     N_S < N ≤ 1.15: C_v1 B_p + C_v2 B_f + C_v4 B_k + 1; supercritical N ≥ 1.5:
     C_v5 B_p + C_v6 B_f + C_v7; between 1.15 and 1.5 interpolated linearly.
     f_pb,eff, f_fα,eff [µm] after running-in, C_a tip relief [µm], K_A F_t/b [N/mm].
-    [ISO6336-1] 6.5.4–6.5.7 eqs. (13)–(22).
+    [ISO6336-1] 6.5.4–6.5.7 eqs. (13)–(22).  ``N_main`` the upper end of the main
+    resonance range (1.15 in [ISO6336-1]; 1.25 for bevel gears, [ISO10300-1] method B,
+    :func:`geardesign.bevel.factors.dynamic_factor`).
     """
     cv1, cv2, cv3, cv4, cv5, cv6, cv7 = dynamic_constants(eps_gamma)
     B_p = c_prime * xp.maximum(f_pb_eff, 0.0) / line_load
@@ -218,11 +221,12 @@ def dynamic_factor(N: float, N_S: float, c_prime: float, f_pb_eff: float, f_f_ef
     B_k = abs(1.0 - c_prime * C_a / line_load)
     main = cv1 * B_p + cv2 * B_f + cv4 * B_k + 1.0
     super_ = cv5 * B_p + cv6 * B_f + cv7
-    sub, mid = N <= N_S, N <= 1.15
+    sub, mid = N <= N_S, N <= N_main
     inter = N < 1.5
+    width = round(1.5 - N_main, 12)        # 0.35 exactly for ISO 6336-1
     K = xp.where(sub, N * (cv1 * B_p + cv2 * B_f + cv3 * B_k) + 1.0,
                  xp.where(mid, main,
-                          xp.where(inter, super_ + (main - super_) * (1.5 - N) / 0.35, super_)))
+                          xp.where(inter, super_ + (main - super_) * (1.5 - N) / width, super_)))
     rng = xp.where(sub, "subcritical", xp.where(mid, "main resonance",
                                                 xp.where(inter, "intermediate", "supercritical")))
     return K, rng

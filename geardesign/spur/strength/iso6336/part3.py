@@ -139,6 +139,31 @@ def y_delta_rel_static(material: str, Y_S: float, sigma_02: float | None) -> flo
     return (1.0 + k * (Y_S - 1.0)) / (1.0 + k)
 
 
+def static_limits(material: str, sigma_Hlim: float, sigma_Flim: float, Y_S: float,
+                  sigma_02: float | None = None) -> tuple[float, float, float, float, float]:
+    """Static stress limits of one gear at the peak torque: the life factors at the static
+    point of their S-N curves (N_L at or below the first point of the material's curve) and
+    the other influence factors at their static value 1 (Z_L Z_v Z_R Z_W Z_X, Y_RrelT, Y_X),
+    but for the static relative notch sensitivity factor.
+
+    .. math:: σ_{HG,st} = σ_{Hlim} Z_{NT,st},\\quad
+              σ_{FG,st} = σ_{Flim} Y_{ST} Y_{NT,st} Y_{δrelT,st}
+
+    Returns (Z_NT,st, σ_HG,st, Y_NT,st, Y_δrelT,st, σ_FG,st) [-, MPa, -, -, MPa];
+    ``material`` an ISO 6336-5 type, Y_S the stress correction factor of the tooth form,
+    σ_0.2 [MPa] the yield strength (St, V).  [ISO6336-2] §10 and [ISO6336-3] §12 (static
+    strength), the life factors by :func:`~.part2.z_nt` and :func:`y_nt` at the static point.
+    The one definition for every calculator that rates a peak torque by ISO 6336 limits
+    (spur, and bevel by [ISO10300-2], [ISO10300-3], whose life factors are these).
+    """
+    from geardesign.spur.strength.iso6336.part2 import reference_cycles_contact, z_nt
+
+    Z_NT = float(z_nt(material, reference_cycles_contact(material)[0]))
+    Y_NT = float(y_nt(material, reference_cycles_bending(material)[0]))
+    Y_d = y_delta_rel_static(material, Y_S, sigma_02)
+    return Z_NT, sigma_Hlim * Z_NT, Y_NT, Y_d, sigma_Flim * Y_ST * Y_NT * Y_d
+
+
 def y_r_rel(material: str, Rz: float) -> float:
     """Relative surface factor Y_RrelT of the root (R_z [µm], 1 ≤ R_z ≤ 40):
     V, GGG (perl., bai.), Eh, IF: 1.674 − 0.529(R_z + 1)^0.1; St: 5.306 − 4.203(R_z + 1)^0.01;

@@ -368,12 +368,9 @@ def _static(duty, types, sHlim, sFlim, mats, contact: Contact, bending: Bending,
                                "Y_deltarelTst", "sigma_FGst", "S_Fst", "YNT_st")}
     for i in range(2):
         s = contact.sigma_H[i] * math.sqrt(ratio / K_A)
-        ZNT_st = T.ZNT_CURVES[T.ZNT_GROUP[types[i]]][0][1]
-        Gs = sHlim[i] * ZNT_st          # Z_W,st = 1
         sf = bending.sigma_F[i] * ratio / K_A
-        YNT_st = T.YNT_CURVES[T.YNT_GROUP[types[i]]][0][1]
-        Yd_st = P3.y_delta_rel_static(types[i], Y_S_form[i], mats[i].sigma_T)
-        Gf = sFlim[i] * P3.Y_ST * YNT_st * Yd_st
+        ZNT_st, Gs, YNT_st, Yd_st, Gf = P3.static_limits(types[i], sHlim[i], sFlim[i],
+                                                         Y_S_form[i], mats[i].sigma_T)
         for key, x in (("sigma_Hst", s), ("sigma_HGst", Gs), ("S_Hst", Gs / s),
                        ("ZNT_st", ZNT_st), ("sigma_Fst", sf), ("Y_deltarelTst", Yd_st),
                        ("sigma_FGst", Gf), ("S_Fst", Gf / sf), ("YNT_st", YNT_st)):
