@@ -140,13 +140,11 @@ def _spur_report(record, where: str, original: dict) -> Result:
     return res
 
 
-def probe_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
-               where: str) -> StageRun:
-    """The ratio and efficiency of a spur stage for the drive's probe pass (the ratios that
-    carry the machine's torque back to the motor): its typed inputs read as in
-    :func:`run_spur` (the spec validated, kept for the rated pass) and its geometry, not
-    its rating: the ratio is the geometry's, the efficiency the spec's or the handbook's,
-    neither depends on the load."""
+def _geometry_run(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
+                  where: str) -> tuple:
+    """``(typed inputs, run)`` of a spur stage from its geometry alone (:func:`probe_spur`,
+    :func:`light_spur`): the ratio the geometry's, the efficiency the spec's or the
+    handbook's (or the one the drive gives as ``eta``), no forces."""
     from geardesign.spur.solve import geometry
 
     inputs = spur_inputs(data, T_in, n_in, duty, where)
@@ -157,8 +155,41 @@ def probe_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | No
         raise _named(exc, where) from None
     u = g.u
     e, src = (eta, "spec") if eta is not None else (ETA_CYLINDRICAL, "assumed (handbook)")
-    return StageRun("spur", u, e, src, T_in, n_in, T_in * u * e, n_in / u,
-                    (Member(0.0, 0.0, 0.0, 0.0),) * 2, None, "", True)
+    return inputs, StageRun("spur", u, e, src, T_in, n_in, T_in * u * e, n_in / u,
+                            (Member(0.0, 0.0, 0.0, 0.0),) * 2, None, "", True,
+                            spec=inputs.spec, geometry=g)
+
+
+def probe_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
+               where: str) -> StageRun:
+    """The ratio and efficiency of a spur stage for the drive's probe pass (the ratios that
+    carry the machine's torque back to the motor): its typed inputs read as in
+    :func:`run_spur` (the spec validated, kept for the rated pass) and its geometry, not
+    its rating: the ratio is the geometry's, the efficiency the spec's or the handbook's,
+    neither depends on the load."""
+    return _geometry_run(data, T_in, n_in, duty, eta, where)[1]
+
+
+def light_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
+               where: str) -> StageRun:
+    """A spur stage in a pass of the heat balance (:mod:`.lubrication`): what the losses
+    and the bearings need, none of it from the rating: the ratio and the efficiency as in
+    :func:`probe_spur`, the mesh forces from the geometry and the torque
+    (:func:`geardesign.spur.loads.mesh_forces`, the forces the rating itself gives:
+    [GOST21354] §2, [ISO6336-1] §5).  The typed inputs are read and their loads checked as
+    in :func:`run_spur`; a pair that the calculator cannot rate is refused as there."""
+    from geardesign.spur.loads import mesh_forces
+    from geardesign.spur.solve import ISO, ratable
+
+    inputs, run = _geometry_run(data, T_in, n_in, duty, eta, where)
+    g = run.geometry
+    if inputs.strength is not None and (getattr(g, "internal", False)
+                                        or ISO in inputs.methods) and not ratable(g):
+        return run_spur(data, T_in, n_in, duty, eta, where)     # refused as there
+    f = mesh_forces(g, T_in)
+    run.members = (Member(f.F_t, f.F_r, f.F_a, g.g1.d_w / 2),
+                   Member(f.F_t, f.F_r, f.F_a, g.g2.d_w / 2))
+    return run
 
 
 def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
@@ -178,7 +209,7 @@ def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
     margins = rec.margins()
     run = StageRun("spur", u, e, src, T_in, n_in, T_in * u * e, n_in / u,
                    (Member(0.0, 0.0, 0.0, 0.0),) * 2, None, "", True, rec,
-                   lambda: _spur_report(rec, where, data))
+                   lambda: _spur_report(rec, where, data), geometry=g)
     if not margins:
         # the spur calculator rates no strength for a pair that cannot mesh as computed
         # (ε_α < 1, a pointed tooth, ...): the drive has no margin and no mesh forces
