@@ -27,6 +27,7 @@ deflection 0), which leaves the other pivots exactly those of the system without
 from __future__ import annotations
 
 import math
+import operator
 
 from geardesign.core.records import dataclass
 
@@ -80,27 +81,35 @@ def element_mass(m: float, L: float) -> list[list[float]]:
 
 def _band(mats, n: int) -> list[list[float]]:
     """Upper band (row i: entries (i, i) … (i, i+3)) of the global matrix of the chain of
-    element matrices ``mats``; element e occupies the dofs 2e … 2e+3 (an entry takes at
-    most two contributions)."""
-    B = [[0.0] * (BAND + 1) for _ in range(2 * n)]
-    for e, me in enumerate(mats):
-        for a in range(4):
-            row, r = B[2 * e + a], me[a]
-            for b in range(a, 4):
-                row[b - a] += r[b]
+    element matrices ``mats`` (a list); element e occupies the dofs 2e … 2e+3, so that an
+    entry takes at most two contributions: node j's rows from the elements j−1 (its
+    entries 2…3) and j (its entries 0…1)."""
+    B = []
+    zero = (0.0,) * 4
+    left = (zero, zero, zero, zero)
+    for right in list(mats) + [(zero, zero, zero, zero)]:
+        r0, r1, l2, l3 = right[0], right[1], left[2], left[3]
+        B.append([l2[2] + r0[0], l2[3] + r0[1], r0[2], r0[3]])
+        B.append([l3[3] + r1[1], r1[2], r1[3], 0.0])
+        left = right
     return B
+
+
+def _assemble(x, EI, mass=None):
+    """:func:`assemble` and the element stiffness matrices."""
+    n = len(x)
+    L = [x[e + 1] - x[e] for e in range(n - 1)]
+    ke = [element_stiffness(EI[e], L[e]) for e in range(n - 1)]
+    M = _band([element_mass(mass[e], L[e]) for e in range(n - 1)], n) \
+        if mass is not None else None
+    return _band(ke, n), M, ke
 
 
 def assemble(x, EI, mass=None):
     """Global stiffness (and mass) matrices, as upper bands (:func:`_band`), of the chain of
     elements between the nodes ``x``; ``EI[e]`` and ``mass[e]`` belong to element
     e = (x[e], x[e+1])."""
-    n = len(x)
-    L = [x[e + 1] - x[e] for e in range(n - 1)]
-    K = _band((element_stiffness(EI[e], L[e]) for e in range(n - 1)), n)
-    M = _band((element_mass(mass[e], L[e]) for e in range(n - 1)), n) \
-        if mass is not None else None
-    return K, M
+    return _assemble(x, EI, mass)[:2]
 
 
 def dense(B: list[list[float]]) -> list[list[float]]:
@@ -114,49 +123,54 @@ def dense(B: list[list[float]]) -> list[list[float]]:
     return A
 
 
-def cholesky(B: list[list[float]]) -> list[list[float]]:
+def cholesky(B: list[list[float]]) -> list[tuple[float, float, float, float]]:
     """Banded Cholesky factor of the symmetric positive definite matrix with upper band
-    ``B``: row i of the result holds L[i][i−3 … i] ([GolubVanLoan] algorithm 4.3.5).
-    Raises :class:`NotPositiveDefinite` for a pivot that is not positive."""
-    N = len(B)
-    Lo = [[0.0] * (BAND + 1) for _ in range(N)]      # Lo[i][k] = L[i][i - BAND + k]
-    for i in range(N):
-        li = Lo[i]
-        for j in range(max(0, i - BAND), i + 1):
-            s = B[j][i - j]
-            lj = Lo[j]
-            for k in range(max(0, i - BAND), j):
-                s -= li[k - i + BAND] * lj[k - j + BAND]
-            if j == i:
-                if not s > 0.0:
-                    raise NotPositiveDefinite(i)
-                li[BAND] = math.sqrt(s)
-            else:
-                li[j - i + BAND] = s / lj[BAND]
+    ``B``: row i of the result holds L[i][i−3 … i] ([GolubVanLoan] algorithm 4.3.5, the
+    band of width 3 written out; the rows before the first count as those of the unit
+    matrix, whose zeros leave every sum as it is).  Raises :class:`NotPositiveDefinite`
+    for a pivot that is not positive."""
+    Lo = []
+    p1 = p2 = p3 = _UNIT                 # rows i-1, i-2, i-3 of the factor
+    b1 = b2 = b3 = _PAD                  # rows i-1, i-2, i-3 of the band
+    for i, b0 in enumerate(B):
+        l0 = b3[3] / p3[3]
+        l1 = (b2[2] - l0 * p2[2]) / p2[3]
+        l2 = (b1[1] - l0 * p1[1] - l1 * p1[2]) / p1[3]
+        s = b0[0] - l0 * l0 - l1 * l1 - l2 * l2
+        if not s > 0.0:
+            raise NotPositiveDefinite(i)
+        row = (l0, l1, l2, math.sqrt(s))
+        Lo.append(row)
+        p1, p2, p3, b1, b2, b3 = row, p1, p2, b0, b1, b2
     return Lo
 
 
-_PAD = [0.0] * (BAND + 1)
+_PAD = (0.0,) * (BAND + 1)
+_UNIT = (0.0,) * BAND + (1.0,)
 
 
 def _forward(Lo, b):
     """y with L·y = b (the band of width 3 written out; the factor's rows before the first
     hold zeros)."""
-    y = [0.0, 0.0, 0.0] + list(b)
-    for i, (l0, l1, l2, l3) in enumerate(Lo, 3):
-        y[i] = (y[i] - l0 * y[i - 3] - l1 * y[i - 2] - l2 * y[i - 1]) / l3
-    return y[3:]
+    y = []
+    y1 = y2 = y3 = 0.0
+    for (l0, l1, l2, l3), bi in zip(Lo, b):
+        y1, y2, y3 = (bi - l0 * y3 - l1 * y2 - l2 * y1) / l3, y1, y2
+        y.append(y1)
+    return y
 
 
 def _backward(Lo, y):
     """x with Lᵀ·x = y."""
-    N = len(y)
-    x = list(y) + [0.0, 0.0, 0.0]
-    L = list(Lo) + [_PAD, _PAD, _PAD]
-    for i in range(N - 1, -1, -1):
-        x[i] = (x[i] - L[i + 1][2] * x[i + 1] - L[i + 2][1] * x[i + 2]
-                - L[i + 3][0] * x[i + 3]) / L[i][3]
-    return x[:N]
+    x = [0.0] * len(y)
+    x1 = x2 = x3 = 0.0                   # x[i+1], x[i+2], x[i+3]
+    r1 = r2 = r3 = _PAD                  # rows i+1, i+2, i+3 of the factor
+    for i in range(len(y) - 1, -1, -1):
+        r0 = Lo[i]
+        x0 = (y[i] - r1[2] * x1 - r2[1] * x2 - r3[0] * x3) / r0[3]
+        x[i] = x0
+        x1, x2, x3, r1, r2, r3 = x0, x1, x2, r0, r1, r2
+    return x
 
 
 def _rows(B):
@@ -171,6 +185,20 @@ def _matvec(rows, v):
     w = [0.0, 0.0, 0.0] + list(v) + [0.0, 0.0, 0.0]
     return [a * w[i] + b * w[i + 1] + c * w[i + 2] + d * w[i + 3] + e * w[i + 4]
             + f * w[i + 5] + g * w[i + 6] for i, (a, b, c, d, e, f, g) in enumerate(rows)]
+
+
+def _apply(Lo, rows, q):
+    """C·q = L⁻¹·(M·(L⁻ᵀ·q)) with the factor ``Lo`` and the rows of M (:func:`_rows`):
+    :func:`_backward`, then M's product and :func:`_forward` in one sweep."""
+    w = [0.0, 0.0, 0.0] + _backward(Lo, q) + [0.0, 0.0, 0.0]
+    y = []
+    y1 = y2 = y3 = 0.0
+    for i, ((a, b, c, d, e, f, g), (l0, l1, l2, l3)) in enumerate(zip(rows, Lo)):
+        mv = (a * w[i] + b * w[i + 1] + c * w[i + 2] + d * w[i + 3] + e * w[i + 4]
+              + f * w[i + 5] + g * w[i + 6])
+        y1, y2, y3 = (mv - l0 * y3 - l1 * y2 - l2 * y1) / l3, y1, y2
+        y.append(y1)
+    return y
 
 
 def _supported(K, M, supports: list[tuple[int, float | None]]) -> set[int]:
@@ -222,7 +250,7 @@ def solve(x, EI, mass, point_masses, planes, supports: list[tuple[int, float | N
     :class:`NotPositiveDefinite`.
     """
     n = len(x)
-    K0, M = assemble(x, EI, mass)
+    K0, M, ke = _assemble(x, EI, mass)
     for i, m in enumerate(point_masses):
         M[2 * i][0] += m
     K = [list(r) for r in K0]
@@ -231,9 +259,7 @@ def solve(x, EI, mass, point_masses, planes, supports: list[tuple[int, float | N
     mu = _largest_mu(Lo, M)
     omega = math.sqrt(1000.0 / mu) if mu > 0 else math.inf
 
-    L = [x[e + 1] - x[e] for e in range(n - 1)]
-    ke = [element_stiffness(EI[e], L[e]) for e in range(n - 1)]
-    K0_rows = _rows(K0)
+    Kp = [_PAD, _PAD, _PAD] + K0 + [_PAD, _PAD, _PAD]
     out = []
     for forces, couples in planes:
         F = [0.0] * (2 * n)
@@ -241,42 +267,65 @@ def solve(x, EI, mass, point_masses, planes, supports: list[tuple[int, float | N
         F[1::2] = [float(c) for c in couples]
         b = [0.0 if g in fixed else F[g] for g in range(2 * n)]
         u = _backward(Lo, _forward(Lo, b))
-        Ku = _matvec(K0_rows, u)
-        reactions = [Ku[2 * node] - F[2 * node] if k is None else -k * u[2 * node]
-                     for node, k in supports]
+        reactions = [_row_times(Kp, u, 2 * node) - F[2 * node] if k is None
+                     else -k * u[2 * node] for node, k in supports]
         M_left, M_right, V_right = [0.0] * n, [0.0] * n, [0.0] * n
-        for e in range(n - 1):
-            ue, k = u[2 * e:2 * e + 4], ke[e]
-            f0, f1, f3 = (k[0][0] * ue[0] + k[0][1] * ue[1] + k[0][2] * ue[2] + k[0][3] * ue[3],
-                          k[1][0] * ue[0] + k[1][1] * ue[1] + k[1][2] * ue[2] + k[1][3] * ue[3],
-                          k[3][0] * ue[0] + k[3][1] * ue[1] + k[3][2] * ue[2] + k[3][3] * ue[3])
-            M_right[e] = -f1
-            M_left[e + 1] = f3
-            V_right[e] = f0
-        out.append(PlaneSolution(u[0::2], u[1::2], M_left, M_right, V_right, reactions))
+        w, th = u[0::2], u[1::2]
+        for e, (k0, k1, _, k3) in enumerate(ke):
+            u0, u1, u2, u3 = w[e], th[e], w[e + 1], th[e + 1]
+            V_right[e] = k0[0] * u0 + k0[1] * u1 + k0[2] * u2 + k0[3] * u3
+            M_right[e] = -(k1[0] * u0 + k1[1] * u1 + k1[2] * u2 + k1[3] * u3)
+            M_left[e + 1] = k3[0] * u0 + k3[1] * u1 + k3[2] * u2 + k3[3] * u3
+        out.append(PlaneSolution(w, th, M_left, M_right, V_right, reactions))
     return out, omega
 
 
+def _row_times(Bp, u, i: int) -> float:
+    """Row i of the symmetric matrix whose upper band, padded with three zero rows on each
+    side, is ``Bp``, times ``u`` (as :func:`_matvec` sums it)."""
+    a, b, c = Bp[i][3], Bp[i + 1][2], Bp[i + 2][1]
+    d, e, f, g = Bp[i + 3]
+    w = [0.0, 0.0, 0.0] + list(u) + [0.0, 0.0, 0.0]
+    return (a * w[i] + b * w[i + 1] + c * w[i + 2] + d * w[i + 3] + e * w[i + 4]
+            + f * w[i + 5] + g * w[i + 6])
+
+
 def _largest_mu(Lo, M) -> float:
-    """Largest eigenvalue of C = L⁻¹·M·L⁻ᵀ (the largest μ of M·φ = μ·K·φ, :func:`solve`):
-    power iteration with the Rayleigh quotient, else the dense problem."""
+    """Largest eigenvalue of C = L⁻¹·M·L⁻ᵀ (the largest μ of M·φ = μ·K·φ, :func:`solve`)
+    by the symmetric Lanczos process ([GolubVanLoan] §10.1): from the unit vector q₁, the
+    orthonormal q₂, q₃, … of the Krylov space with α_k = q_kᵀCq_k, β_k = ‖Cq_k − α_k q_k −
+    β_{k−1} q_{k−1}‖ span it, and the largest eigenvalue θ_k of the tridiagonal T_k
+    (diagonal α, off-diagonal β: :func:`_largest_tridiagonal`) rises to μ from below,
+    faster than the Rayleigh quotient of the power iteration (a few steps where that takes
+    ten or more); it ends when θ_k changes by less than ``POWER_TOL`` relative.  The start
+    is the static deflection under the masses' weight, φ₀ = K⁻¹·M·1 (Rayleigh's shape),
+    q₁ ∝ Lᵀφ₀ = L⁻¹·M·1.  Should the process break down before that (an invariant
+    subspace) or not settle, the dense symmetric problem."""
     rows = _rows(M)
-
-    def C(v):
-        return _forward(Lo, _matvec(rows, _backward(Lo, v)))
-
-    x = C([1.0] * len(Lo))
-    mu_old = 0.0
-    for _ in range(POWER_ITERATIONS):
-        nx = math.sqrt(math.fsum(v * v for v in x))
-        if not nx > 0:
-            break
-        x = [v / nx for v in x]
-        y = C(x)
-        mu = math.fsum(a * b for a, b in zip(x, y))
-        if abs(mu - mu_old) <= POWER_TOL * abs(mu):
-            return mu
-        mu_old, x = mu, y
+    mul = operator.mul
+    q = _forward(Lo, _matvec(rows, [1.0, 0.0] * (len(Lo) // 2)))
+    norm = math.sqrt(math.fsum(map(mul, q, q)))
+    alpha: list[float] = []
+    beta: list[float] = []
+    if norm > 0:
+        q_old, b_old, theta_old = None, 0.0, 0.0
+        q = [v / norm for v in q]
+        for _ in range(min(POWER_ITERATIONS, len(Lo))):
+            w = _apply(Lo, rows, q)
+            a = math.fsum(map(mul, q, w))
+            if q_old is None:
+                w = [wi - a * qi for wi, qi in zip(w, q)]
+            else:
+                w = [wi - a * qi - b_old * pi for wi, qi, pi in zip(w, q, q_old)]
+            alpha.append(a)
+            theta = _largest_tridiagonal(alpha, beta, theta_old)
+            if abs(theta - theta_old) <= POWER_TOL * abs(theta):
+                return theta
+            b = math.sqrt(math.fsum(map(mul, w, w)))
+            if not b > POWER_TOL * abs(theta):
+                break                   # an invariant subspace: the dense problem decides
+            beta.append(b)
+            q_old, q, b_old, theta_old = q, [v / b for v in w], b, theta
     import numpy as np
 
     Ld = np.zeros((len(Lo), len(Lo)))
@@ -286,3 +335,36 @@ def _largest_mu(Lo, M) -> float:
                 Ld[i, i - BAND + k] = v
     Cd = np.linalg.solve(Ld, np.linalg.solve(Ld, np.array(dense(M))).T)
     return float(np.linalg.eigvalsh(0.5 * (Cd + Cd.T))[-1])
+
+
+def _largest_tridiagonal(alpha: list[float], beta: list[float], below: float) -> float:
+    """Largest eigenvalue of the symmetric tridiagonal matrix of diagonal ``alpha`` and
+    off-diagonal ``beta``, at least ``below`` (the largest of its leading block, by
+    interlacing).  Newton's method on its characteristic polynomial p(θ) from above its
+    largest root, where it descends monotonically ([GolubVanLoan] §8.4.1: p_r(θ) =
+    (α_r − θ)·p_{r−1}(θ) − β_{r−1}²·p_{r−2}(θ), here as the pivots d_r = p_r/p_{r−1}, all
+    negative above the spectrum, and p'/p = Σ d_r'/d_r).  The start: the largest
+    eigenvalue of the leading block and α_k, raised by β_{k−1} (Weyl's bound)."""
+    k = len(alpha)
+    if k == 1:
+        return alpha[0]
+    theta = max(below, alpha[-1]) + beta[-1]
+    for _ in range(100):
+        d, dd = alpha[0] - theta, -1.0         # pivot and its derivative in θ
+        ratio = 0.0
+        for r in range(k):
+            if r:
+                bb = beta[r - 1] * beta[r - 1]
+                d, dd = alpha[r] - theta - bb / d, -1.0 + bb * dd / (d * d)
+            if not d < 0.0:                    # not above the spectrum: at its top
+                return theta                   # to rounding
+            ratio += dd / d
+        if not ratio > 0.0:                    # at the root to rounding
+            return theta
+        step = 1.0 / ratio                     # p/p' (> 0 above the largest root)
+        if not step > 0.0:
+            return theta
+        theta -= step
+        if step <= 1e-15 * abs(theta):         # quadratic convergence: settled
+            return theta
+    return theta
