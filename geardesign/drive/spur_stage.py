@@ -141,23 +141,27 @@ def _spur_report(record, where: str, original: dict) -> Result:
 
 
 def _geometry_run(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
-                  where: str) -> tuple:
-    """``(typed inputs, run)`` of a spur stage from its geometry alone (:func:`probe_spur`,
-    :func:`light_spur`): the ratio the geometry's, the efficiency the spec's or the
-    handbook's (or the one the drive gives as ``eta``), no forces."""
+                  where: str, read: tuple | None = None) -> tuple:
+    """``((typed inputs, geometry), run)`` of a spur stage from its geometry alone
+    (:func:`probe_spur`, :func:`light_spur`): the ratio the geometry's, the efficiency the
+    spec's or the handbook's (or the one the drive gives as ``eta``), no forces; ``read``:
+    the stage's inputs and geometry of a pass before, else read here."""
     from geardesign.spur.solve import geometry
 
-    inputs = spur_inputs(data, T_in, n_in, duty, where)
-    try:
-        g = inputs.geometry if getattr(inputs, "geometry", None) is not None \
-            and inputs.geometry.inp is inputs.pair else geometry(inputs.pair)
-    except InputError as exc:
-        raise _named(exc, where) from None
+    if read is None:
+        inputs = spur_inputs(data, T_in, n_in, duty, where)
+        try:
+            g = inputs.geometry if getattr(inputs, "geometry", None) is not None \
+                and inputs.geometry.inp is inputs.pair else geometry(inputs.pair)
+        except InputError as exc:
+            raise _named(exc, where) from None
+        read = (inputs, g)
+    inputs, g = read
     u = g.u
     e, src = (eta, "spec") if eta is not None else (ETA_CYLINDRICAL, "assumed (handbook)")
-    return inputs, StageRun("spur", u, e, src, T_in, n_in, T_in * u * e, n_in / u,
-                            (Member(0.0, 0.0, 0.0, 0.0),) * 2, None, "", True,
-                            spec=inputs.spec, geometry=g)
+    return read, StageRun("spur", u, e, src, T_in, n_in, T_in * u * e, n_in / u,
+                          (Member(0.0, 0.0, 0.0, 0.0),) * 2, None, "", True,
+                          spec=inputs.spec, geometry=g)
 
 
 def probe_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
@@ -177,12 +181,19 @@ def light_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | No
     :func:`probe_spur`, the mesh forces from the geometry and the torque
     (:func:`geardesign.spur.loads.mesh_forces`, the forces the rating itself gives:
     [GOST21354] §2, [ISO6336-1] §5).  The typed inputs are read and their loads checked as
-    in :func:`run_spur`; a pair that the calculator cannot rate is refused as there."""
+    in :func:`run_spur` in the first of these passes, which the others reuse (``duty.memo``);
+    a pair that the calculator cannot rate is refused as there."""
     from geardesign.spur.loads import mesh_forces
     from geardesign.spur.solve import ISO, ratable
 
-    inputs, run = _geometry_run(data, T_in, n_in, duty, eta, where)
-    g = run.geometry
+    from geardesign.drive import reuse
+
+    # the stage read (its loads checked) in the first of these passes: the geometry and
+    # the values the losses take from the spec do not change from pass to pass
+    key = ("light",) + reuse.fingerprint("spur", where, data, SPUR_LOADS)
+    read, run = _geometry_run(data, T_in, n_in, duty, eta, where, duty.memo.get(key))
+    duty.memo[key] = read
+    inputs, g = read
     if inputs.strength is not None and (getattr(g, "internal", False)
                                         or ISO in inputs.methods) and not ratable(g):
         return run_spur(data, T_in, n_in, duty, eta, where)     # refused as there
