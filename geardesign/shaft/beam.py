@@ -297,7 +297,8 @@ def _largest_mu(Lo, M) -> float:
     β_{k−1} q_{k−1}‖ span it, and the largest eigenvalue θ_k of the tridiagonal T_k
     (diagonal α, off-diagonal β: :func:`_largest_tridiagonal`) rises to μ from below,
     faster than the Rayleigh quotient of the power iteration (a few steps where that takes
-    ten or more); it ends when θ_k changes by less than ``POWER_TOL`` relative.  The start
+    ten or more); it ends when θ_k changes by less than ``POWER_TOL`` relative, or when
+    the changes, falling at least by half a step, leave less than that to come.  The start
     is the static deflection under the masses' weight, φ₀ = K⁻¹·M·1 (Rayleigh's shape),
     q₁ ∝ Lᵀφ₀ = L⁻¹·M·1.  Should the process break down before that (an invariant
     subspace) or not settle, the dense symmetric problem."""
@@ -308,7 +309,7 @@ def _largest_mu(Lo, M) -> float:
     alpha: list[float] = []
     beta: list[float] = []
     if norm > 0:
-        q_old, b_old, theta_old = None, 0.0, 0.0
+        q_old, b_old, theta_old, change_old = None, 0.0, 0.0, math.inf
         q = [v / norm for v in q]
         for _ in range(min(POWER_ITERATIONS, len(Lo))):
             w = _apply(Lo, rows, q)
@@ -319,8 +320,15 @@ def _largest_mu(Lo, M) -> float:
                 w = [wi - a * qi - b_old * pi for wi, qi, pi in zip(w, q, q_old)]
             alpha.append(a)
             theta = _largest_tridiagonal(alpha, beta, theta_old)
-            if abs(theta - theta_old) <= POWER_TOL * abs(theta):
+            change = abs(theta - theta_old) if len(alpha) > 1 else math.inf
+            if change <= POWER_TOL * abs(theta):
                 return theta
+            # the changes fall faster than geometrically: once they halve at least, the
+            # rest sums to below change·r/(1 − r) <= 2·change·r, r the last ratio
+            r = change / change_old if len(alpha) > 2 else math.inf
+            if r <= 0.5 and 2.0 * change * r <= POWER_TOL * abs(theta):
+                return theta
+            change_old = change
             b = math.sqrt(math.fsum(map(mul, w, w)))
             if not b > POWER_TOL * abs(theta):
                 break                   # an invariant subspace: the dense problem decides
