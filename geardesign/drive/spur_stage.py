@@ -170,8 +170,19 @@ def probe_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | No
     carry the machine's torque back to the motor): its typed inputs read as in
     :func:`run_spur` (the spec validated, kept for the rated pass) and its geometry, not
     its rating: the ratio is the geometry's, the efficiency the spec's or the handbook's,
-    neither depends on the load."""
-    return _geometry_run(data, T_in, n_in, duty, eta, where)[1]
+    neither depends on the load.  The passes of the heat balance (:func:`light_spur`)
+    reuse this reading."""
+    read, run = _geometry_run(data, T_in, n_in, duty, eta, where)
+    duty.memo[_light_key(data, where)] = read
+    return run
+
+
+def _light_key(data: dict, where: str) -> tuple:
+    """The key of a spur stage's reading for the unrated passes in ``duty.memo``: the
+    stage spec without the loads the drive sets."""
+    from geardesign.drive import reuse
+
+    return ("light",) + reuse.fingerprint("spur", where, data, SPUR_LOADS)
 
 
 def light_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
@@ -180,17 +191,16 @@ def light_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | No
     and the bearings need, none of it from the rating: the ratio and the efficiency as in
     :func:`probe_spur`, the mesh forces from the geometry and the torque
     (:func:`geardesign.spur.loads.mesh_forces`, the forces the rating itself gives:
-    [GOST21354] §2, [ISO6336-1] §5).  The typed inputs are read and their loads checked as
-    in :func:`run_spur` in the first of these passes, which the others reuse (``duty.memo``);
-    a pair that the calculator cannot rate is refused as there."""
+    [GOST21354] §2, [ISO6336-1] §5).  The typed inputs are those the probe pass read (or
+    the first of these passes, without a probe pass), reused (``duty.memo``): their loads
+    are checked again when the stage is rated; a pair that the calculator cannot rate is
+    refused as there."""
     from geardesign.spur.loads import mesh_forces
     from geardesign.spur.solve import ISO, ratable
 
-    from geardesign.drive import reuse
-
-    # the stage read (its loads checked) in the first of these passes: the geometry and
-    # the values the losses take from the spec do not change from pass to pass
-    key = ("light",) + reuse.fingerprint("spur", where, data, SPUR_LOADS)
+    # the stage as read (its loads checked) by the probe pass or the first of these
+    # passes: the geometry and the values the losses take from the spec do not change
+    key = _light_key(data, where)
     read, run = _geometry_run(data, T_in, n_in, duty, eta, where, duty.memo.get(key))
     duty.memo[key] = read
     inputs, g = read
