@@ -53,6 +53,21 @@ class PlaneSolution:
     reactions: list        # force of each support on the shaft, N
 
 
+def _stiffness_terms(EI: float, L: float) -> tuple:
+    """The distinct entries of k_e (module docstring): c·12, c·6L, −c·12, c·4L², −c·6L,
+    c·2L² with c = EI/L³."""
+    c = EI / L ** 3
+    return (c * 12.0, c * (6 * L), c * -12.0, c * (4 * L * L), c * (-6 * L), c * (2 * L * L))
+
+
+def _mass_terms(m: float, L: float) -> tuple:
+    """The distinct entries of m_e (module docstring): c·156, c·22L, c·54, −c·13L, c·4L²,
+    c·13L, −c·3L², −c·22L with c = m/420."""
+    c = m / 420.0
+    return (c * 156.0, c * (22 * L), c * 54.0, c * (-13 * L), c * (4 * L * L), c * (13 * L),
+            c * (-3 * L * L), c * (-22 * L))
+
+
 def element_stiffness(EI: float, L: float) -> list[list[float]]:
     """Bending stiffness matrix k_e of one element [N/mm, N, N·mm] (module docstring) of
     bending stiffness ``EI`` [N·mm²] and length ``L`` [mm].
@@ -62,53 +77,51 @@ def element_stiffness(EI: float, L: float) -> list[list[float]]:
     >>> element_stiffness(1.0, 1.0)[:2]
     [[12.0, 6.0, -12.0, 6.0], [6.0, 4.0, -6.0, 2.0]]
     """
-    c = EI / L ** 3
-    return [[c * 12.0, c * (6 * L), c * -12.0, c * (6 * L)],
-            [c * (6 * L), c * (4 * L * L), c * (-6 * L), c * (2 * L * L)],
-            [c * -12.0, c * (-6 * L), c * 12.0, c * (-6 * L)],
-            [c * (6 * L), c * (2 * L * L), c * (-6 * L), c * (4 * L * L)]]
+    s12, s6, m12, s4, m6, s2 = _stiffness_terms(EI, L)
+    return [[s12, s6, m12, s6], [s6, s4, m6, s2], [m12, m6, s12, m6], [s6, s2, m6, s4]]
 
 
 def element_mass(m: float, L: float) -> list[list[float]]:
     """Consistent mass matrix m_e of one element of mass ``m`` [kg] and length ``L`` [mm]
     (module docstring)."""
-    c = m / 420.0
-    return [[c * 156.0, c * (22 * L), c * 54.0, c * (-13 * L)],
-            [c * (22 * L), c * (4 * L * L), c * (13 * L), c * (-3 * L * L)],
-            [c * 54.0, c * (13 * L), c * 156.0, c * (-22 * L)],
-            [c * (-13 * L), c * (-3 * L * L), c * (-22 * L), c * (4 * L * L)]]
+    a156, a22, a54, m13, a4, a13, m3, m22 = _mass_terms(m, L)
+    return [[a156, a22, a54, m13], [a22, a4, a13, m3], [a54, a13, a156, m22],
+            [m13, m3, m22, a4]]
 
 
-def _band(mats, n: int) -> list[list[float]]:
-    """Upper band (row i: entries (i, i) … (i, i+3)) of the global matrix of the chain of
-    element matrices ``mats`` (a list); element e occupies the dofs 2e … 2e+3, so that an
-    entry takes at most two contributions: node j's rows from the elements j−1 (its
-    entries 2…3) and j (its entries 0…1)."""
-    B = []
-    zero = (0.0,) * 4
-    left = (zero, zero, zero, zero)
-    for right in list(mats) + [(zero, zero, zero, zero)]:
-        r0, r1, l2, l3 = right[0], right[1], left[2], left[3]
-        B.append([l2[2] + r0[0], l2[3] + r0[1], r0[2], r0[3]])
-        B.append([l3[3] + r1[1], r1[2], r1[3], 0.0])
-        left = right
-    return B
+_NO_ELEMENT = (0.0,) * 8
 
 
 def _assemble(x, EI, mass=None):
-    """:func:`assemble` and the element stiffness matrices."""
+    """:func:`assemble` and each element's :func:`_stiffness_terms`.  An entry of the
+    upper band takes at most two contributions: node j's rows from the elements j−1 (the
+    entries of its second node) and j (of its first)."""
     n = len(x)
     L = [x[e + 1] - x[e] for e in range(n - 1)]
-    ke = [element_stiffness(EI[e], L[e]) for e in range(n - 1)]
-    M = _band([element_mass(mass[e], L[e]) for e in range(n - 1)], n) \
-        if mass is not None else None
-    return _band(ke, n), M, ke
+    ks = [_stiffness_terms(EI[e], L[e]) for e in range(n - 1)]
+    K = []
+    left = _NO_ELEMENT
+    for right in ks + [_NO_ELEMENT]:
+        s12, s6, m12, s4, m6, s2 = right[:6]
+        K.append([left[0] + s12, left[4] + s6, m12, s6])       # k_22 + k_00, k_23 + k_01
+        K.append([left[3] + s4, m6, s2, 0.0])                   # k_33 + k_11
+        left = right
+    M = None
+    if mass is not None:
+        M = []
+        left = _NO_ELEMENT
+        for right in [_mass_terms(mass[e], L[e]) for e in range(n - 1)] + [_NO_ELEMENT]:
+            a156, a22, a54, m13, a4, a13, m3, m22 = right
+            M.append([left[0] + a156, left[7] + a22, a54, m13])
+            M.append([left[4] + a4, a13, m3, 0.0])
+            left = right
+    return K, M, ks
 
 
 def assemble(x, EI, mass=None):
-    """Global stiffness (and mass) matrices, as upper bands (:func:`_band`), of the chain of
-    elements between the nodes ``x``; ``EI[e]`` and ``mass[e]`` belong to element
-    e = (x[e], x[e+1])."""
+    """Global stiffness (and mass) matrices, as upper bands (row i: entries (i, i) …
+    (i, i+3); element e occupies the dofs 2e … 2e+3), of the chain of elements between the
+    nodes ``x``; ``EI[e]`` and ``mass[e]`` belong to element e = (x[e], x[e+1])."""
     return _assemble(x, EI, mass)[:2]
 
 
@@ -187,18 +200,34 @@ def _matvec(rows, v):
             + f * w[i + 5] + g * w[i + 6] for i, (a, b, c, d, e, f, g) in enumerate(rows)]
 
 
-def _apply(Lo, rows, q):
-    """C·q = L⁻¹·(M·(L⁻ᵀ·q)) with the factor ``Lo`` and the rows of M (:func:`_rows`):
-    :func:`_backward`, then M's product and :func:`_forward` in one sweep."""
-    w = [0.0, 0.0, 0.0] + _backward(Lo, q) + [0.0, 0.0, 0.0]
-    y = []
-    y1 = y2 = y3 = 0.0
-    for i, ((a, b, c, d, e, f, g), (l0, l1, l2, l3)) in enumerate(zip(rows, Lo)):
-        mv = (a * w[i] + b * w[i + 1] + c * w[i + 2] + d * w[i + 3] + e * w[i + 4]
-              + f * w[i + 5] + g * w[i + 6])
-        y1, y2, y3 = (mv - l0 * y3 - l1 * y2 - l2 * y1) / l3, y1, y2
-        y.append(y1)
-    return y
+def _operator(Lo, M):
+    """C·q = L⁻¹·(M·(L⁻ᵀ·q)) as a function of q, from the factor ``Lo`` and the upper band
+    of M: the backward substitution (:func:`_backward`), then M's product and the forward
+    substitution (:func:`_forward`) in one sweep; each row's coefficients gathered once."""
+    N = len(Lo)
+    Lp = list(Lo) + [_PAD, _PAD, _PAD]
+    back = [(Lp[i + 1][2], Lp[i + 2][1], Lp[i + 3][0], Lp[i][3]) for i in range(N)]
+    back.reverse()
+    sweep = [r + lo for r, lo in zip(_rows(M), Lo)]
+
+    def apply(q):
+        x = []
+        x1 = x2 = x3 = 0.0
+        for (a, b, c, d), yi in zip(back, reversed(q)):
+            x1, x2, x3 = (yi - a * x1 - b * x2 - c * x3) / d, x1, x2
+            x.append(x1)
+        x.reverse()
+        x += (0.0, 0.0, 0.0)
+        y = []
+        w0 = w1 = w2 = y1 = y2 = y3 = 0.0
+        w3, w4, w5 = x[0], x[1], x[2]
+        for (a, b, c, d, e, f, g, l0, l1, l2, l3), w6 in zip(sweep, x[3:]):
+            mv = a * w0 + b * w1 + c * w2 + d * w3 + e * w4 + f * w5 + g * w6
+            y1, y2, y3 = (mv - l0 * y3 - l1 * y2 - l2 * y1) / l3, y1, y2
+            y.append(y1)
+            w0, w1, w2, w3, w4, w5 = w1, w2, w3, w4, w5, w6
+        return y
+    return apply
 
 
 def _supported(K, M, supports: list[tuple[int, float | None]]) -> set[int]:
@@ -271,11 +300,11 @@ def solve(x, EI, mass, point_masses, planes, supports: list[tuple[int, float | N
                      else -k * u[2 * node] for node, k in supports]
         M_left, M_right, V_right = [0.0] * n, [0.0] * n, [0.0] * n
         w, th = u[0::2], u[1::2]
-        for e, (k0, k1, _, k3) in enumerate(ke):
+        for e, (s12, s6, m12, s4, m6, s2) in enumerate(ke):    # f = k_e·u_e, rows 0, 1, 3
             u0, u1, u2, u3 = w[e], th[e], w[e + 1], th[e + 1]
-            V_right[e] = k0[0] * u0 + k0[1] * u1 + k0[2] * u2 + k0[3] * u3
-            M_right[e] = -(k1[0] * u0 + k1[1] * u1 + k1[2] * u2 + k1[3] * u3)
-            M_left[e + 1] = k3[0] * u0 + k3[1] * u1 + k3[2] * u2 + k3[3] * u3
+            V_right[e] = s12 * u0 + s6 * u1 + m12 * u2 + s6 * u3
+            M_right[e] = -(s6 * u0 + s4 * u1 + m6 * u2 + s2 * u3)
+            M_left[e + 1] = s6 * u0 + s2 * u1 + m6 * u2 + s4 * u3
         out.append(PlaneSolution(w, th, M_left, M_right, V_right, reactions))
     return out, omega
 
@@ -304,6 +333,7 @@ def _largest_mu(Lo, M) -> float:
     subspace) or not settle, the dense symmetric problem."""
     rows = _rows(M)
     mul = operator.mul
+    apply = _operator(Lo, M)
     q = _forward(Lo, _matvec(rows, [1.0, 0.0] * (len(Lo) // 2)))
     norm = math.sqrt(math.fsum(map(mul, q, q)))
     alpha: list[float] = []
@@ -312,7 +342,7 @@ def _largest_mu(Lo, M) -> float:
         q_old, b_old, theta_old, change_old = None, 0.0, 0.0, math.inf
         q = [v / norm for v in q]
         for _ in range(min(POWER_ITERATIONS, len(Lo))):
-            w = _apply(Lo, rows, q)
+            w = apply(q)
             a = math.fsum(map(mul, q, w))
             if q_old is None:
                 w = [wi - a * qi for wi, qi in zip(w, q)]
