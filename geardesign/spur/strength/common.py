@@ -95,7 +95,17 @@ class Record:
 
     @property
     def v(self) -> dict:
-        return values(self)
+        """The values by report key (:func:`values`): of a frozen record collected once
+        (the rating, its checks, its report and a drive read them), each caller given its
+        own copy."""
+        params = getattr(type(self), "__dataclass_params__", None)
+        if params is None or not params.frozen:
+            return values(self)
+        got = self.__dict__.get("_values")
+        if got is None:
+            got = values(self)
+            object.__setattr__(self, "_values", got)
+        return dict(got)
 
     @property
     def rows(self) -> list[Value]:
