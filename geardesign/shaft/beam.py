@@ -19,8 +19,8 @@ V = f_1 (sagging moment positive).
 
 The global matrices are kept as their upper band (half bandwidth 3 with the dofs ordered
 w₀, θ₀, w₁, θ₁, …): the static solution by the banded Cholesky factorisation K = L·Lᵀ
-([GolubVanLoan] §4.3.5, algorithm 4.3.5), the critical speed by power iteration on
-L⁻¹·M·L⁻ᵀ (:func:`solve`).  A rigid support's dof keeps a unit row and column (its
+([GolubVanLoan] §4.3.5, algorithm 4.3.5), the critical speed by the Lanczos process on
+L⁻¹·M·L⁻ᵀ (:func:`solve`, :func:`_largest_mu`).  A rigid support's dof keeps a unit row and column (its
 deflection 0), which leaves the other pivots exactly those of the system without it.
 """
 
@@ -32,8 +32,8 @@ import operator
 from geardesign.core.records import dataclass
 
 BAND = 3                     # half bandwidth of the global matrices
-POWER_ITERATIONS = 500       # beyond: the dense eigenvalue problem
-POWER_TOL = 1e-14            # relative change of the Rayleigh quotient that ends the iteration
+POWER_ITERATIONS = 500       # steps of the Lanczos process; beyond: the dense problem
+POWER_TOL = 1e-14            # relative change of the eigenvalue that ends the process
 
 
 class NotPositiveDefinite(ArithmeticError):
@@ -273,9 +273,9 @@ def solve(x, EI, mass, point_masses, planes, supports: list[tuple[int, float | N
     With K in N/mm and M in kg, λ is in 10⁻³ s⁻² (N/(mm·kg) = 1000 s⁻²): ω = √(1000·λ).  It
     is solved as the largest μ = 1/λ of M·φ = μ·K·φ (well conditioned when the point masses
     outweigh the shaft by orders of magnitude): the largest eigenvalue of the symmetric
-    C = L⁻¹·M·L⁻ᵀ by power iteration with the Rayleigh quotient μ = xᵀCx ([GolubVanLoan]
-    §7.3, §8.2), which converges as (μ₂/μ₁)²ᵏ; should it not settle, by the dense symmetric
-    eigenvalue problem.  K not positive definite (the shaft not held) raises
+    C = L⁻¹·M·L⁻ᵀ by the Lanczos process (:func:`_largest_mu`, [GolubVanLoan] §10.1), which
+    converges faster than the power iteration's Rayleigh quotient ((μ₂/μ₁)²ᵏ); should it
+    not settle, by the dense symmetric eigenvalue problem.  K not positive definite (the shaft not held) raises
     :class:`NotPositiveDefinite`.
     """
     n = len(x)
