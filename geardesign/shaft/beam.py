@@ -193,13 +193,6 @@ def _rows(B):
             for i, r in enumerate(B)]
 
 
-def _matvec(rows, v):
-    """A·v with the rows of :func:`_rows`."""
-    w = [0.0, 0.0, 0.0] + list(v) + [0.0, 0.0, 0.0]
-    return [a * w[i] + b * w[i + 1] + c * w[i + 2] + d * w[i + 3] + e * w[i + 4]
-            + f * w[i + 5] + g * w[i + 6] for i, (a, b, c, d, e, f, g) in enumerate(rows)]
-
-
 def _operator(Lo, M):
     """C·q = L⁻¹·(M·(L⁻ᵀ·q)) as a function of q, from the factor ``Lo`` and the upper band
     of M: the backward substitution (:func:`_backward`), then M's product and the forward
@@ -217,7 +210,11 @@ def _operator(Lo, M):
             x1, x2, x3 = (yi - a * x1 - b * x2 - c * x3) / d, x1, x2
             x.append(x1)
         x.reverse()
-        x += (0.0, 0.0, 0.0)
+        return forward_of_m(x)
+
+    def forward_of_m(x):
+        """L⁻¹·(M·x)."""
+        x = x + [0.0, 0.0, 0.0]
         y = []
         w0 = w1 = w2 = y1 = y2 = y3 = 0.0
         w3, w4, w5 = x[0], x[1], x[2]
@@ -227,6 +224,7 @@ def _operator(Lo, M):
             y.append(y1)
             w0, w1, w2, w3, w4, w5 = w1, w2, w3, w4, w5, w6
         return y
+    apply.forward_of_m = forward_of_m
     return apply
 
 
@@ -311,7 +309,7 @@ def solve(x, EI, mass, point_masses, planes, supports: list[tuple[int, float | N
 
 def _row_times(Bp, u, i: int) -> float:
     """Row i of the symmetric matrix whose upper band, padded with three zero rows on each
-    side, is ``Bp``, times ``u`` (as :func:`_matvec` sums it)."""
+    side, is ``Bp``, times ``u``: Σ_k A[i][i+k]·u[i+k], k = −3 … 3 in order."""
     a, b, c = Bp[i][3], Bp[i + 1][2], Bp[i + 2][1]
     d, e, f, g = Bp[i + 3]
     w = [0.0, 0.0, 0.0] + list(u) + [0.0, 0.0, 0.0]
@@ -331,10 +329,9 @@ def _largest_mu(Lo, M) -> float:
     is the static deflection under the masses' weight, φ₀ = K⁻¹·M·1 (Rayleigh's shape),
     q₁ ∝ Lᵀφ₀ = L⁻¹·M·1.  Should the process break down before that (an invariant
     subspace) or not settle, the dense symmetric problem."""
-    rows = _rows(M)
     mul = operator.mul
     apply = _operator(Lo, M)
-    q = _forward(Lo, _matvec(rows, [1.0, 0.0] * (len(Lo) // 2)))
+    q = apply.forward_of_m([1.0, 0.0] * (len(Lo) // 2))
     norm = math.sqrt(math.fsum(map(mul, q, q)))
     alpha: list[float] = []
     beta: list[float] = []
