@@ -199,6 +199,17 @@ def test_reusing_a_validated_spec_changes_nothing(name, monkeypatch):
     assert run(SPECS / name).document() == reused
 
 
+@pytest.mark.parametrize("name", ["drive_reducer_shafts_keys_thermal.toml",
+                                  "drive_thermal_two_stage.toml"])
+def test_unrated_passes_of_the_heat_balance_change_nothing(name, monkeypatch):
+    """The passes of the heat balance take a spur stage's ratio and mesh forces from its
+    geometry, unrated, and rate the stages once after them: the document is the one that
+    rating every stage in every pass gives, to the last digit."""
+    light = run(SPECS / name).document()
+    monkeypatch.setitem(DC.PASSES, "light", {})
+    assert run(SPECS / name).document() == light
+
+
 def test_each_shaft_is_analysed_once_after_the_passes(counted, monkeypatch):
     """The shafts' results do not feed back into the passes (their f_sh re-rates the ISO
     stage once, after them): each shaft with steps is analysed once per run, after the

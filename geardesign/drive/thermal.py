@@ -149,8 +149,10 @@ def solve_increasing(f, lo: float, hi: float, tol: float = 1e-7,
     return _bisect(f, lo, hi, tol, max_iterations, f_lo, f_hi)
 
 
-NARROWING_STEPS = 16
-"""At most this many steps of the Illinois method in :func:`_narrowed`."""
+NARROWING_STEPS = 8
+"""At most this many steps of the Illinois method in :func:`_narrowed` (a heat balance
+needs 5–6; a root where f is flat would take many, and the bisection then evaluates the
+rest)."""
 
 
 def _narrowed(f, a: float, fa: float, b: float, fb: float, width: float,
