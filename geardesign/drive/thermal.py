@@ -166,8 +166,11 @@ def _narrowed(f, a: float, fa: float, b: float, fb: float, width: float,
     drive's losses instead of 40 here), this returns both ends after a bounded number of
     steps: the bisection that follows (:func:`_bisect`) is the safeguard.
 
-    >>> a, b = _narrowed(lambda x: x * x - 2.0, 1.0, -1.0, 2.0, 2.0, 1e-12)
+    >>> a, b = _narrowed(lambda x: x * x - 2.0, 1.0, -1.0, 2.0, 2.0, 1e-12, steps=12)
     >>> a < 2 ** 0.5 <= b, b - a <= 1e-12
+    (True, True)
+    >>> a, b = _narrowed(lambda x: x * x - 2.0, 1.0, -1.0, 2.0, 2.0, 1e-12)
+    >>> a < 2 ** 0.5 <= b, b - a < 1e-6           # 8 steps
     (True, True)
     """
     kept = 0                  # +1: b was kept the step before, -1: a
