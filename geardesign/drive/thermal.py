@@ -197,10 +197,10 @@ def _narrowed(f, a: float, fa: float, b: float, fb: float, width: float,
 def _bisect(f, lo: float, hi: float, tol: float, max_iterations: int, f_lo: float,
             f_hi: float) -> Root:
     """Bisection of a bracket [lo, hi] with f(lo) = ``f_lo`` < 0 <= f(hi) = ``f_hi``, f
-    increasing (the module).  Its steps are those of plain bisection; the sign of f at a step's midpoint
-    is known without evaluating f when the midpoint lies outside a bracket [a, b] of the
-    root found first (:func:`_narrowed`): f(mid) <= f(a) < 0 left of it, f(mid) >= f(b) >= 0
-    right of it.  So f is evaluated a dozen times where the bisection takes some thirty
+    increasing (the module).  Its steps are those of plain bisection; the sign of f at a
+    step's midpoint is known without evaluating f when the midpoint lies outside a bracket
+    [a, b] of the root found first (:func:`_narrowed`): f(mid) <= f(a) < 0 left of it,
+    f(mid) >= f(b) >= 0 right of it.  So f is evaluated a dozen times where the bisection takes some thirty
     steps, and the root is the bisection's to the last digit."""
     a, b = _narrowed(f, lo, f_lo, hi, f_hi, 0.125 * tol * max(1.0, abs(lo), abs(hi)))
     it = 0

@@ -20,8 +20,9 @@ V = f_1 (sagging moment positive).
 The global matrices are kept as their upper band (half bandwidth 3 with the dofs ordered
 w₀, θ₀, w₁, θ₁, …): the static solution by the banded Cholesky factorisation K = L·Lᵀ
 ([GolubVanLoan] §4.3.5, algorithm 4.3.5), the critical speed by the Lanczos process on
-L⁻¹·M·L⁻ᵀ (:func:`solve`, :func:`_largest_mu`).  A rigid support's dof keeps a unit row and column (its
-deflection 0), which leaves the other pivots exactly those of the system without it.
+L⁻¹·M·L⁻ᵀ (:func:`solve`, :func:`_largest_mu`).  A rigid support's dof keeps a unit row
+and column (its deflection 0), which leaves the other pivots exactly those of the system
+without it.
 """
 
 from __future__ import annotations
@@ -30,6 +31,7 @@ import math
 import operator
 
 from geardesign.core.records import dataclass
+from geardesign.shaft.tridiagonal import largest_eigenvalue
 
 BAND = 3                     # half bandwidth of the global matrices
 POWER_ITERATIONS = 500       # steps of the Lanczos process; beyond: the dense problem
@@ -273,8 +275,8 @@ def solve(x, EI, mass, point_masses, planes, supports: list[tuple[int, float | N
     outweigh the shaft by orders of magnitude): the largest eigenvalue of the symmetric
     C = L⁻¹·M·L⁻ᵀ by the Lanczos process (:func:`_largest_mu`, [GolubVanLoan] §10.1), which
     converges faster than the power iteration's Rayleigh quotient ((μ₂/μ₁)²ᵏ); should it
-    not settle, by the dense symmetric eigenvalue problem.  K not positive definite (the shaft not held) raises
-    :class:`NotPositiveDefinite`.
+    not settle, by the dense symmetric eigenvalue problem.  K not positive definite (the
+    shaft not held) raises :class:`NotPositiveDefinite`.
     """
     n = len(x)
     K0, M, ke = _assemble(x, EI, mass)
@@ -322,7 +324,8 @@ def _largest_mu(Lo, M) -> float:
     by the symmetric Lanczos process ([GolubVanLoan] §10.1): from the unit vector q₁, the
     orthonormal q₂, q₃, … of the Krylov space with α_k = q_kᵀCq_k, β_k = ‖Cq_k − α_k q_k −
     β_{k−1} q_{k−1}‖ span it, and the largest eigenvalue θ_k of the tridiagonal T_k
-    (diagonal α, off-diagonal β: :func:`_largest_tridiagonal`) rises to μ from below,
+    (diagonal α, off-diagonal β: :func:`~geardesign.shaft.tridiagonal.largest_eigenvalue`)
+    rises to μ from below,
     faster than the Rayleigh quotient of the power iteration (a few steps where that takes
     ten or more); it ends when θ_k changes by less than ``POWER_TOL`` relative, or when
     the changes, falling at least by half a step, leave less than that to come.  The start
@@ -346,7 +349,7 @@ def _largest_mu(Lo, M) -> float:
             else:
                 w = [wi - a * qi - b_old * pi for wi, qi, pi in zip(w, q, q_old)]
             alpha.append(a)
-            theta = _largest_tridiagonal(alpha, beta, theta_old)
+            theta = largest_eigenvalue(alpha, beta, theta_old)
             change = abs(theta - theta_old) if len(alpha) > 1 else math.inf
             if change <= POWER_TOL * abs(theta):
                 return theta
@@ -370,36 +373,3 @@ def _largest_mu(Lo, M) -> float:
                 Ld[i, i - BAND + k] = v
     Cd = np.linalg.solve(Ld, np.linalg.solve(Ld, np.array(dense(M))).T)
     return float(np.linalg.eigvalsh(0.5 * (Cd + Cd.T))[-1])
-
-
-def _largest_tridiagonal(alpha: list[float], beta: list[float], below: float) -> float:
-    """Largest eigenvalue of the symmetric tridiagonal matrix of diagonal ``alpha`` and
-    off-diagonal ``beta``, at least ``below`` (the largest of its leading block, by
-    interlacing).  Newton's method on its characteristic polynomial p(θ) from above its
-    largest root, where it descends monotonically ([GolubVanLoan] §8.4.1: p_r(θ) =
-    (α_r − θ)·p_{r−1}(θ) − β_{r−1}²·p_{r−2}(θ), here as the pivots d_r = p_r/p_{r−1}, all
-    negative above the spectrum, and p'/p = Σ d_r'/d_r).  The start: the largest
-    eigenvalue of the leading block and α_k, raised by β_{k−1} (Weyl's bound)."""
-    k = len(alpha)
-    if k == 1:
-        return alpha[0]
-    theta = max(below, alpha[-1]) + beta[-1]
-    for _ in range(100):
-        d, dd = alpha[0] - theta, -1.0         # pivot and its derivative in θ
-        ratio = 0.0
-        for r in range(k):
-            if r:
-                bb = beta[r - 1] * beta[r - 1]
-                d, dd = alpha[r] - theta - bb / d, -1.0 + bb * dd / (d * d)
-            if not d < 0.0:                    # not above the spectrum: at its top
-                return theta                   # to rounding
-            ratio += dd / d
-        if not ratio > 0.0:                    # at the root to rounding
-            return theta
-        step = 1.0 / ratio                     # p/p' (> 0 above the largest root)
-        if not step > 0.0:
-            return theta
-        theta -= step
-        if step <= 1e-15 * abs(theta):         # quadratic convergence: settled
-            return theta
-    return theta
