@@ -20,11 +20,12 @@ and the JSON document of its result.
 ``resource.getrusage(RUSAGE_CHILDREN)``), medians over the runs; with the bytecode kept
 (as after ``pip install``), or ``--no-bytecode``: compiled in every process.
 
-Figures (2 shared cores under load, 7-9 rounds, 7 cold runs, against 5a58329): drive golden
-136-162 -> 62-77 ms (2.08-2.26x over three runs), two-stage GOST + ISO drive 544-613 ->
-104-124 ms (5.2-5.8x); cold drive golden / spur_plain with the bytecode kept 2.04-2.21
-(379-499 / 172-245 ms; 5a58329 on the same machine: 2.55-2.80), compiled in every process
-1.60 (1089 / 683 ms; 5a58329: 2.17, measured before the probe pass went unrated).
+Figures (2 shared cores under load, 7-15 rounds, 7 cold runs, against 5a58329): drive
+golden 89-154 -> 28-48 ms (3.2-3.8x over seven runs at load averages of 0.8-4.6),
+two-stage GOST + ISO drive 452-707 -> 72-109 ms (5.8-6.7x); cold drive golden / spur_plain
+with the bytecode kept 2.04-2.21 (379-499 / 172-245 ms; 5a58329 on the same machine:
+2.55-2.80), compiled in every process 1.60 (1089 / 683 ms; 5a58329: 2.17, measured before
+the probe pass went unrated).
 """
 
 from __future__ import annotations

@@ -50,10 +50,13 @@ def counted(monkeypatch):
 
 def test_each_spur_stage_is_solved_once_per_pass(counted):
     """Two spur stages, the losses and the heat balance (several passes): spur solves per
-    stage per pass = 1, one report per stage, no JSON document written by the drive."""
+    stage per rated pass = 1, none in the probe pass and the passes of the heat balance
+    (a spur stage's ratio and mesh forces from its geometry), so each stage is rated once;
+    one report per stage, no JSON document written by the drive."""
     res = run(SPECS / "drive_thermal_two_stage.toml")
     n = counted
     assert n["passes"] >= 3 and n["spur_stages"] == 2
+    assert n["passes"] - n["probes"] == 1
     assert n["solve"] == n["spur_stages"] * (n["passes"] - n["probes"])
     assert n["report"] == n["spur_stages"]
     assert n["documents"] == 0
@@ -63,15 +66,13 @@ def test_each_spur_stage_is_solved_once_per_pass(counted):
 def test_shafts_re_rate_the_iso_stage_once(counted):
     """With the shafts analysed, the ISO 6336 stage is rated once more with the
     misalignment f_sh the shafts give (its report replaces the first, which is never
-    written); a stage whose inputs did not change since the pass before is not solved
-    again; everything else as above."""
+    written); the stages are rated once, after the passes of the heat balance (stage 1's
+    scuffing at the last sump temperature); everything else as above."""
     run(SPECS / "drive_reducer_shafts_keys_thermal.toml")
     n = counted
     assert n["spur_stages"] == 2
-    assert n["probes"] == 1
-    # the last pass rates stage 1's scuffing at the last sump temperature: stage 2, its
-    # spec and loads unchanged, keeps its run of the pass before
-    assert n["solve"] == n["spur_stages"] * (n["passes"] - n["probes"] - 1) + 1 + 1
+    assert n["passes"] - n["probes"] == 1
+    assert n["solve"] == n["spur_stages"] * (n["passes"] - n["probes"]) + 1
     assert n["report"] == n["spur_stages"]
 
 
@@ -198,13 +199,25 @@ def test_reusing_a_validated_spec_changes_nothing(name, monkeypatch):
     assert run(SPECS / name).document() == reused
 
 
+@pytest.mark.parametrize("name", ["drive_reducer_shafts_keys_thermal.toml",
+                                  "drive_thermal_two_stage.toml"])
+def test_unrated_passes_of_the_heat_balance_change_nothing(name, monkeypatch):
+    """The passes of the heat balance take a spur stage's ratio and mesh forces from its
+    geometry, unrated, and rate the stages once after them: the document is the one that
+    rating every stage in every pass gives, to the last digit."""
+    light = run(SPECS / name).document()
+    monkeypatch.setitem(DC.PASSES, "light", {})
+    assert run(SPECS / name).document() == light
+
+
 def test_each_shaft_is_analysed_once_after_the_passes(counted, monkeypatch):
     """The shafts' results do not feed back into the passes (their f_sh re-rates the ISO
     stage once, after them): each shaft with steps is analysed once per run, after the
     last pass of the chain; each pass of the heat balance rates every bearing once
-    through its typed interface; the chain runs once per pass after the first, once more
-    for the ratios (the machine's torque is given) and once more to rate the scuffing of
-    stage 1 at the sump temperature of the last balance."""
+    through its typed interface; the chain runs once per pass of the heat balance
+    (unrated) after the first, once more for the ratios (the machine's torque is given)
+    and once, rated, at the efficiencies of the last pass (stage 1's scuffing at the sump
+    temperature of the last balance)."""
     import geardesign.drive.shaft_analysis as SA
     import geardesign.drive.shaft_loads as SL
 

@@ -163,6 +163,69 @@ def test_solver_bounded_iterations():
     assert r.bracketed and r.x == pytest.approx(1e6, rel=1e-6) and r.iterations <= 200
 
 
+def _plain_bisection(f, lo: float, hi: float, tol: float = 1e-7, steps: int = 200):
+    """The bisection as :func:`geardesign.drive.thermal.solve_bounded` defines it, every
+    midpoint evaluated."""
+    if f(lo) >= 0.0:
+        return lo, 1
+    if f(hi) < 0.0:
+        return hi, 2
+    it = 0
+    while hi - lo > tol * max(1.0, abs(hi)) and it < steps:
+        it += 1
+        mid = 0.5 * (lo + hi)
+        if f(mid) >= 0.0:
+            hi = mid
+        else:
+            lo = mid
+    return 0.5 * (lo + hi), it
+
+
+@settings(max_examples=300, deadline=None)
+@given(root=st.floats(-50.0, 300.0), slope=st.floats(1e-3, 1e4), curve=st.floats(0.0, 5.0),
+       power=st.sampled_from([1.0, 0.5, 2.0, 3.0]), step=st.floats(0.0, 100.0))
+def test_the_narrowed_bisection_is_the_bisection(root, slope, curve, power, step):
+    """The heat balance's bisection reads the sign at a midpoint outside a bracket narrowed
+    by the Illinois method: for an increasing function (the balance's premise; here
+    smooth, steep, flat, with a jump) it returns the plain bisection's root and step count
+    to the last digit, with at most the narrowing's steps more evaluations (a root where f
+    is flat), mostly far fewer."""
+    def f(t):
+        u = t - root
+        return slope * (math.copysign(abs(u) ** power, u) + curve * u ** 3) \
+            + (step if t >= root else 0.0)
+
+    calls = []
+
+    def counted(t):
+        calls.append(t)
+        return f(t)
+
+    r = TH.solve_bounded(counted, 25.0, 250.0)
+    x, it = _plain_bisection(f, 25.0, 250.0)
+    assert (r.x, r.iterations) == (x, it)
+    assert len(calls) <= it + 2 + TH.NARROWING_STEPS
+
+
+def test_the_narrowed_bisection_evaluates_a_dozen_times():
+    """A housing's heat flow against a loss (the balance's shape, convex): the root of
+    plain bisection with less than half of its evaluations."""
+    housing = TH.Housing(0.5, 400.0, 480.0, 0.9, 0.0, 0.0, 0.0)
+    for P_V in (30.0, 300.0, 1000.0):
+        calls = []
+
+        def f(t):
+            return TH.dissipation(housing, t, 25.0).P_Q - P_V
+
+        def counted(t):
+            calls.append(t)
+            return f(t)
+
+        r = TH.solve_bounded(counted, 25.0, 250.0)
+        assert (r.x, r.iterations) == _plain_bisection(f, 25.0, 250.0)
+        assert len(calls) <= 12 < r.iterations
+
+
 # ----------------------------------------------------------------------------- the drive
 
 

@@ -74,6 +74,17 @@ def test_record_is_frozen():
         r.contact = None
 
 
+def test_values_of_a_frozen_record_are_collected_once_and_copied():
+    """``record.v`` is :func:`values` of the record, collected once; a caller that changes
+    its dict changes neither the record's next ``v`` nor another caller's."""
+    _, r = _rating(_fixed(SPEC_NAMES[0]))
+    first = r.v
+    assert first == values(r) and first is not r.v
+    first["S_H1"] = -1.0
+    first.pop("K_Hbeta")
+    assert r.v == values(r)
+
+
 pairs = st.tuples(st.sampled_from([1.5, 2.0, 3.0, 5.0, 8.0]), st.integers(14, 40),
                   st.integers(25, 150), st.floats(-0.3, 0.8), st.floats(-0.3, 0.8),
                   st.sampled_from([0.0, 0.1, 0.3, 0.5]), st.floats(10.0, 150.0))

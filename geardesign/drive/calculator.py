@@ -22,7 +22,7 @@ from geardesign.drive.shaft_loads import (_shaft_rotation, bearing_report, beari
                                           shaft_loads)
 from geardesign.drive import stages as ST
 from geardesign.drive.bevel_stage import run_bevel
-from geardesign.drive.spur_stage import probe_spur, run_spur
+from geardesign.drive.spur_stage import light_spur, probe_spur, run_spur
 from geardesign.drive.stages import Duty, StageRun
 
 DRIVE_KEYS = ("name", "file", "efficiency")
@@ -37,6 +37,14 @@ PROBES = {"spur": probe_spur}
 """Adapters of the probe pass (the ratios and efficiencies that carry the machine's torque
 back to the motor) for the kinds whose ratio and efficiency do not need the rating; the
 other kinds are solved by their :data:`ADAPTERS`."""
+
+LIGHT = {"spur": light_spur}
+"""Adapters of the passes of the heat balance (:mod:`.lubrication`: ratio, efficiency and
+mesh forces, which the losses and the bearings need) for the kinds that give them without
+the rating; the other kinds are solved by their :data:`ADAPTERS`.  The stages are rated
+once, at the efficiencies of the last pass."""
+
+PASSES = {"probe": PROBES, "light": LIGHT}
 
 
 def _torque_from_power(P: float, n: float) -> float:
@@ -113,21 +121,23 @@ def resolve_stages(stages: list, base: Path | None, where: str = "stage",
     return out
 
 
-def _run_chain(stages, T1: float, n1: float, duty: Duty, probe: bool = False
+def _run_chain(stages, T1: float, n1: float, duty: Duty, probe: bool | str = False
                ) -> list[StageRun]:
     """The stages in order, each from the output torque and speed of the one before;
-    ``probe``: the probe pass (:data:`PROBES`).  A stage whose spec, input torque, speed
-    and efficiency are those of a pass before (the stages after the one whose scuffing
-    takes the last sump temperature) keeps that pass's run (``duty.memo``)."""
+    ``probe``: an unrated pass, ``True`` or ``"probe"`` the probe pass (:data:`PROBES`),
+    ``"light"`` a pass of the heat balance (:data:`LIGHT`).  A stage whose spec, input
+    torque, speed and efficiency are those of a pass before keeps that pass's run
+    (``duty.memo``): a kind solved by its adapter in every pass is solved once."""
     runs = []
     T, n = T1, n1
+    table = PASSES["probe" if probe is True else probe] if probe else {}
     for where, _, data, eta in stages:
         kind = data.get("kind")
         if not isinstance(kind, str) or kind not in ADAPTERS:
             raise InputError.at(f"{where}: kind", kind, "not a drive stage; stages can be "
                                 + ", ".join(f'"{k}"' for k in ADAPTERS))
-        adapter = PROBES.get(kind, ADAPTERS[kind]) if probe else ADAPTERS[kind]
-        key = ("run", probe, where, kind, T, n, eta, repr(data))
+        adapter = table.get(kind, ADAPTERS[kind])
+        key = ("run", probe if kind in table else False, where, kind, T, n, eta, repr(data))
         run = duty.memo.get(key)
         if run is None:
             run = duty.memo[key] = adapter(data, T, n, duty, eta, where)
@@ -175,10 +185,12 @@ def compute(spec: ValidatedSpec) -> Result:
                 motor["peak_ratio"], load["method"])
     lub = d["lubrication"]
 
-    def chain(etas: dict | None = None, prev: list | None = None):
+    def chain(etas: dict | None = None, prev: list | None = None, light: bool = False):
         """T_in and the stage runs; ``etas`` replaces the efficiencies of the stages that
         give none, ``prev`` (the runs of the pass before) gives the ratios instead of a
-        first pass."""
+        first pass; ``light``: a pass of the heat balance, the stages unrated
+        (:data:`LIGHT`)."""
+        how = "light" if light else False
         st = stages if not etas else [
             (w, n_, data, e if e is not None else etas.get(i))
             for i, (w, n_, data, e) in enumerate(stages)]
@@ -188,11 +200,11 @@ def compute(spec: ValidatedSpec) -> Result:
             factor = math.prod(r.ratio * (etas[i] if etas and i in etas and st[i][3] is not None
                                           else r.efficiency) for i, r in enumerate(probe))
             T1 = load["torque"] / factor
-            return T1, _run_chain(st, T1, n_m, duty)
-        return T_m, _run_chain(st, T_m, n_m, duty)
+            return T1, _run_chain(st, T1, n_m, duty, how)
+        return T_m, _run_chain(st, T_m, n_m, duty, how)
 
     scuff = LUB.scuffing_oil(spec, stages) if lub is not None else {}
-    T_in, runs = chain()
+    T_in, runs = chain(light=lub is not None)
     thermal = None
     if lub is not None:
         thermal = LUB.solve(spec, stages, chain, T_in, runs, n_m, scuff, duty.memo)

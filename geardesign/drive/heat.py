@@ -121,9 +121,10 @@ class Model:
     seals: list[Seal] = field(default_factory=list)
     fixed_terms: dict = field(default_factory=dict, repr=False, compare=False)
     """Per stage, what its losses take that does not depend on the oil temperature or the
-    load scale (:func:`_fixed_terms`), computed on first use; and the losses at each
-    operating point (oil temperature, load scale) computed (:func:`stage_losses`).  The
-    model is not changed once its losses are asked for."""
+    load scale (:func:`_fixed_terms`), computed on first use; each bearing's load moment
+    M1 at each load scale; and the losses at each operating point (oil temperature, load
+    scale) computed (:func:`stage_losses`).  The model is not changed once its losses are
+    asked for."""
 
 
 def _fixed_terms(m: Model, i: int) -> tuple:
@@ -168,7 +169,8 @@ def stage_losses(m: Model, t: float, scale: float = 1.0) -> list[StageLoss]:
     if point in m.fixed_terms:
         return m.fixed_terms[point]
     oil = m.oil
-    nu, rho, eta = oil.nu(t), oil.rho(t), oil.eta(t)
+    nu, rho = oil.nu(t), oil.rho(t)
+    eta = nu * rho / 1000.0                 # Oil.eta
     out = []
     for i in range(m.n_stages):
         P = m.P_in[i] * scale
@@ -187,11 +189,15 @@ def stage_losses(m: Model, t: float, scale: float = 1.0) -> list[StageLoss]:
                                     m.V0, d.z, d.m_n, d.alpha_n)
                     for d in m.dip if d.stage == i)
         brg = 0.0
-        for b in m.bearings:
+        for k, b in enumerate(m.bearings):
             if b.stage == i:
-                M0, M1 = L.bearing_friction_moment(b.kind, b.d_m, b.n, nu, b.F_r * scale,
-                                                   b.F_a * scale, b.P0 * scale, b.C0, b.Y)
-                brg += L.moment_power(M0 + M1, b.n)
+                # L.bearing_friction_moment, its load part once per load scale
+                M1 = m.fixed_terms.get(("M1", k, scale))
+                if M1 is None:
+                    M1 = m.fixed_terms["M1", k, scale] = L.bearing_load_moment(
+                        b.kind, b.d_m, b.F_r * scale, b.F_a * scale, b.P0 * scale, b.C0, b.Y)
+                brg += L.moment_power(L.bearing_no_load_moment(b.kind, b.d_m, b.n, nu) + M1,
+                                      b.n)
         out.append(StageLoss(P, mesh, churn, brg, seals, other, mu, H))
     m.fixed_terms[point] = out
     return out

@@ -187,16 +187,29 @@ def bearing_friction_moment(kind: str, d_m: float, n: float, nu: float, F_r: flo
     >>> round(m0, 1), round(m1, 1)
     (47.7, 90.0)
     """
-    t = data()["bearing_friction"][kind]
-    f0 = t["f0"]
+    return (bearing_no_load_moment(kind, d_m, n, nu),
+            bearing_load_moment(kind, d_m, F_r, F_a, P0, C0, Y))
+
+
+def bearing_no_load_moment(kind: str, d_m: float, n: float, nu: float) -> float:
+    """M0 of :func:`bearing_friction_moment` [N·mm], the part that depends on the oil's
+    viscosity ν [mm²/s] and not on the load."""
+    f0 = data()["bearing_friction"][kind]["f0"]
     vn = nu * n
-    M0 = (1e-7 * f0 * vn ** (2.0 / 3.0) * d_m ** 3 if vn >= 2000.0
-          else 160e-7 * f0 * d_m ** 3)
+    return (1e-7 * f0 * vn ** (2.0 / 3.0) * d_m ** 3 if vn >= 2000.0
+            else 160e-7 * f0 * d_m ** 3)
+
+
+def bearing_load_moment(kind: str, d_m: float, F_r: float, F_a: float, P0: float, C0: float,
+                        Y: float | None = None) -> float:
+    """M1 = f1·P1·d_m of :func:`bearing_friction_moment` [N·mm], the part that depends on
+    the load and not on the oil."""
+    t = data()["bearing_friction"][kind]
     scale = (Y if (t["p1_uses_Y"] and Y) else 1.0)
     P1 = max(t["p1_axial"] * scale * F_a - t["p1_radial"] * F_r, F_r)
     f1 = t["f1_coefficient"] * ((P0 / C0) ** t["f1_exponent"]
                                 if t["f1_exponent"] and C0 > 0 else 1.0)
-    return M0, f1 * P1 * d_m
+    return f1 * P1 * d_m
 
 
 def moment_power(M: float, n: float) -> float:

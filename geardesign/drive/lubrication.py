@@ -5,7 +5,11 @@ The passes: the chain of stages is computed with the efficiencies of the pass be
 (first: the calculators' or 0.98), the losses are put together from its results
 (:mod:`.heat`), the sump temperature solves the heat balance, and the efficiencies follow
 from the losses at that temperature; until they change by less than 1e-6 (at most
-``MAX_PASSES`` passes).  The bearings then get the drive's oil at the sump temperature.
+``MAX_PASSES`` passes).  A pass needs of each stage its ratio, efficiency and mesh forces
+only: a spur stage gives them from its geometry, unrated (``LIGHT`` adapters of
+:mod:`.calculator`); the stages are rated once, at the efficiencies of the last pass and
+with the scuffing oil at the last sump temperature.  The bearings then get the drive's oil
+at the sump temperature.
 The report of the balance is :mod:`.heat_report`.
 """
 
@@ -75,15 +79,15 @@ def _mesh(run, stage: int) -> tuple[HEAT.Mesh | None, list[HEAT.DipGear], tuple 
     """Mesh data of a cylindrical involute stage (spur calculator), its two gears for the
     churning and (a_w, d_a1, d_a2, b) for the housing; (None, [], None) for others
     (worm, planetary, Novikov, an internal pair)."""
-    rec = run.record
-    if run.kind != "spur" or rec is None:
+    g = run.geometry
+    if run.kind != "spur" or g is None:
         return None, [], None
-    data = rec.inputs.spec.data
+    data = run.inputs
     gear = data.get("gear") or {}
-    g = rec.geometry
+    pair = g.inp
     g1, g2 = g.g1, g.g2
-    b = gear.get("face_width") or rec.inputs.pair.b_w
-    z1, z2 = rec.inputs.pair.z1, rec.inputs.pair.z2
+    b = gear.get("face_width") or pair.b_w
+    z1, z2 = pair.z1, pair.z2
     if b is None or z2 < 0 or g2.d_w <= 0 or getattr(g, "internal", False):
         return None, [], None
     # the loss model takes the angles in degrees
@@ -101,7 +105,7 @@ def _mesh(run, stage: int) -> tuple[HEAT.Mesh | None, list[HEAT.DipGear], tuple 
     Ra = sum(ras) / len(ras) if ras else None
     mesh = HEAT.Mesh(P_in, run.n_in, v["u"], z1, v["beta_b"], v["alpha_tw"], v["eps_alpha"],
                      e1, v["d_w1"], v["d_w2"], b, F_bt, Ra)
-    m_n, a_n = rec.inputs.pair.m_n, gear.get("pressure_angle", 20.0)
+    m_n, a_n = pair.m_n, gear.get("pressure_angle", 20.0)
     dip = [HEAT.DipGear(stage, "pinion", v["d_w1"] / 2, v["d_a1"] / 2, b, z1, m_n, a_n,
                         run.n_in),
            HEAT.DipGear(stage, "wheel", v["d_w2"] / 2, v["d_a2"] / 2, b, z2, m_n, a_n,
@@ -310,6 +314,7 @@ def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m, scuff: dict | Non
     oil, info = _oil(spec)
     L_h = d["load"]["life_hours"]
     etas_before = None
+    rate_as: tuple = (None, None)    # the arguments of the chain that gave ``runs``
     bal = m = hs = box = None
     seal_source = ""
     passes = 0
@@ -359,16 +364,17 @@ def solve(spec: ValidatedSpec, stages, chain, T_in, runs, n_m, scuff: dict | Non
         if not etas:
             break
         etas_before = etas
-        T_in, runs = chain(etas, runs)
-        for i in etas:
-            runs[i].efficiency_source = ETA_SOURCE
+        rate_as = (etas, runs)
+        T_in, runs = chain(etas, runs, light=True)
     else:
         oil_moved = False
     if oil_moved:
         # the stages rated for scuffing at the sump temperature of the last balance
-        T_in, runs = chain(etas_before or None, runs)
-        for i in etas_before or {}:
-            runs[i].efficiency_source = ETA_SOURCE
+        rate_as = (etas_before or None, runs)
+    # the stages rated once, as the last pass computed them (its efficiencies and ratios)
+    T_in, runs = chain(*rate_as)
+    for i in (rate_as[0] or {}):
+        runs[i].efficiency_source = ETA_SOURCE
     bal = HEAT.with_limit(bal, m, hs, t_air, t_max)
     losses = sl                      # the losses of the last model at its sump temperature
     info.update(nu40=oil.nu40, VI=oil.VI, X_L=oil.X_L)

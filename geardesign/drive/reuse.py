@@ -85,10 +85,7 @@ def reloaded(schema, spec: ValidatedSpec, raw: dict, paths: tuple[str, ...]
             if t is not None and t.get(key) is not None:
                 return None
             continue
-        member = schema.root
-        for name in tables:
-            member = member.member(name) if hasattr(member, "member") else None
-        f = member.member(key) if hasattr(member, "member") else None
+        f = _field(schema, tables, key)
         if f is None or not hasattr(f, "check") or t is None:
             return None
         value, message = f.check(values[path])
@@ -97,3 +94,21 @@ def reloaded(schema, spec: ValidatedSpec, raw: dict, paths: tuple[str, ...]
         t[key] = value
     assumed = [a for a in spec.assumed if a not in values]
     return ValidatedSpec(data, assumed, spec.source, spec.base_dir, raw)
+
+
+_FIELDS: dict = {}
+"""The schema fields of the load paths found so far, by ``(id(schema), tables, key)``
+(with the schema, so that an id is never taken for another's)."""
+
+
+def _field(schema, tables: tuple[str, ...], key: str):
+    """The field of ``schema`` at ``tables`` and ``key`` (None when it has none)."""
+    found = _FIELDS.get((id(schema), tables, key))
+    if found is not None and found[0] is schema:
+        return found[1]
+    member = schema.root
+    for name in tables:
+        member = member.member(name) if hasattr(member, "member") else None
+    f = member.member(key) if hasattr(member, "member") else None
+    _FIELDS[id(schema), tables, key] = (schema, f)
+    return f

@@ -121,10 +121,11 @@ def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed:
     span = _span(steps, start)
     for j, g in enumerate(sh["gear"]):
         _inside(span, g["position"], f"{key}.gear[{j}].position", "the gear")
+    seats = {side: _bearing_data(bearings[side]) for side in ("a", "b")}
     for side in ("a", "b"):
         z = sh[f"bearing_{side}"]
         _inside(span, z, f"{key}.bearing_{side}", f"bearing {side.upper()}")
-        d, _, des = _bearing_data(bearings[side])
+        d, _, des = seats[side]
         if d is None:
             continue
         on = _steps_at(span, z)
@@ -162,7 +163,7 @@ def shaft_run(k: int, sh: dict, gears: list[GearOnShaft], bearings: dict, speed:
         loads.append(Load(zc - start, torque=T_rest, name="coupling"))
     supports = []
     for side in ("a", "b"):
-        _, typ, _ = _bearing_data(bearings[side])
+        _, typ, _ = seats[side]
         supports.append(Support(sh[f"bearing_{side}"] - start, sh.get(f"stiffness_{side}"),
                                 typ if typ in BEARING_TYPES else "other",
                                 axial=sh["fixed"] == side, name=side.upper()))

@@ -140,25 +140,77 @@ def _spur_report(record, where: str, original: dict) -> Result:
     return res
 
 
+def _geometry_run(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
+                  where: str, read: tuple | None = None) -> tuple:
+    """``((typed inputs, geometry), run)`` of a spur stage from its geometry alone
+    (:func:`probe_spur`, :func:`light_spur`): the ratio the geometry's, the efficiency the
+    spec's or the handbook's (or the one the drive gives as ``eta``), no forces; ``read``:
+    the stage's inputs and geometry of a pass before, else read here."""
+    from geardesign.spur.solve import geometry
+
+    if read is None:
+        inputs = spur_inputs(data, T_in, n_in, duty, where)
+        try:
+            g = inputs.geometry if getattr(inputs, "geometry", None) is not None \
+                and inputs.geometry.inp is inputs.pair else geometry(inputs.pair)
+        except InputError as exc:
+            raise _named(exc, where) from None
+        read = (inputs, g)
+    inputs, g = read
+    u = g.u
+    e, src = (eta, "spec") if eta is not None else (ETA_CYLINDRICAL, "assumed (handbook)")
+    return read, StageRun("spur", u, e, src, T_in, n_in, T_in * u * e, n_in / u,
+                          (Member(0.0, 0.0, 0.0, 0.0),) * 2, None, "", True,
+                          spec=inputs.spec, geometry=g)
+
+
 def probe_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
                where: str) -> StageRun:
     """The ratio and efficiency of a spur stage for the drive's probe pass (the ratios that
     carry the machine's torque back to the motor): its typed inputs read as in
     :func:`run_spur` (the spec validated, kept for the rated pass) and its geometry, not
     its rating: the ratio is the geometry's, the efficiency the spec's or the handbook's,
-    neither depends on the load."""
-    from geardesign.spur.solve import geometry
+    neither depends on the load.  The passes of the heat balance (:func:`light_spur`)
+    reuse this reading."""
+    read, run = _geometry_run(data, T_in, n_in, duty, eta, where)
+    duty.memo[_light_key(data, where)] = read
+    return run
 
-    inputs = spur_inputs(data, T_in, n_in, duty, where)
-    try:
-        g = inputs.geometry if getattr(inputs, "geometry", None) is not None \
-            and inputs.geometry.inp is inputs.pair else geometry(inputs.pair)
-    except InputError as exc:
-        raise _named(exc, where) from None
-    u = g.u
-    e, src = (eta, "spec") if eta is not None else (ETA_CYLINDRICAL, "assumed (handbook)")
-    return StageRun("spur", u, e, src, T_in, n_in, T_in * u * e, n_in / u,
-                    (Member(0.0, 0.0, 0.0, 0.0),) * 2, None, "", True)
+
+def _light_key(data: dict, where: str) -> tuple:
+    """The key of a spur stage's reading for the unrated passes in ``duty.memo``: the
+    stage spec without the loads the drive sets."""
+    from geardesign.drive import reuse
+
+    return ("light",) + reuse.fingerprint("spur", where, data, SPUR_LOADS)
+
+
+def light_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
+               where: str) -> StageRun:
+    """A spur stage in a pass of the heat balance (:mod:`.lubrication`): what the losses
+    and the bearings need, none of it from the rating: the ratio and the efficiency as in
+    :func:`probe_spur`, the mesh forces from the geometry and the torque
+    (:func:`geardesign.spur.loads.mesh_forces`, the forces the rating itself gives:
+    [GOST21354] §2, [ISO6336-1] §5).  The typed inputs are those the probe pass read (or
+    the first of these passes, without a probe pass), reused (``duty.memo``): their loads
+    are checked again when the stage is rated; a pair that the calculator cannot rate is
+    refused as there."""
+    from geardesign.spur.loads import mesh_forces
+    from geardesign.spur.solve import ISO, ratable
+
+    # the stage as read (its loads checked) by the probe pass or the first of these
+    # passes: the geometry and the values the losses take from the spec do not change
+    key = _light_key(data, where)
+    read, run = _geometry_run(data, T_in, n_in, duty, eta, where, duty.memo.get(key))
+    duty.memo[key] = read
+    inputs, g = read
+    if inputs.strength is not None and (getattr(g, "internal", False)
+                                        or ISO in inputs.methods) and not ratable(g):
+        return run_spur(data, T_in, n_in, duty, eta, where)     # refused as there
+    f = mesh_forces(g, T_in)
+    run.members = (Member(f.F_t, f.F_r, f.F_a, g.g1.d_w / 2),
+                   Member(f.F_t, f.F_r, f.F_a, g.g2.d_w / 2))
+    return run
 
 
 def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None,
@@ -178,7 +230,7 @@ def run_spur(data: dict, T_in: float, n_in: float, duty: Duty, eta: float | None
     margins = rec.margins()
     run = StageRun("spur", u, e, src, T_in, n_in, T_in * u * e, n_in / u,
                    (Member(0.0, 0.0, 0.0, 0.0),) * 2, None, "", True, rec,
-                   lambda: _spur_report(rec, where, data))
+                   lambda: _spur_report(rec, where, data), geometry=g)
     if not margins:
         # the spur calculator rates no strength for a pair that cannot mesh as computed
         # (ε_α < 1, a pointed tooth, ...): the drive has no margin and no mesh forces

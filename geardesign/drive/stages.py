@@ -78,6 +78,9 @@ class StageRun:
     make_report: Callable[[], Result] | None = field(default=None, repr=False)
     given: Result | None = field(default=None, repr=False)
     spec: Any = field(default=None, repr=False)    # the stage's validated spec
+    geometry: Any = field(default=None, repr=False)
+    """The pair's geometry (:class:`geardesign.gears.geometry.PairGeometry`) of a
+    cylindrical stage, its ``inp`` the pair's input (the loss model's mesh)."""
 
     @property
     def result(self) -> Result:

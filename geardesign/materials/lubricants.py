@@ -129,9 +129,11 @@ def viscosity_index(nu40: float, nu100: float) -> float:
     return (10.0 ** N - 1.0) / 0.00715 + 100.0
 
 
+@lru_cache(maxsize=256)
 def nu100_from_vi(nu40: float, VI: float) -> float:
     """ν100 [mm²/s] of an oil with ν40 and viscosity index VI: the inverse of
-    :func:`viscosity_index` (VI rises with ν100 at fixed ν40), by bisection."""
+    :func:`viscosity_index` (VI rises with ν100 at fixed ν40), by bisection (a hundred
+    steps: kept for the pairs asked before)."""
     lo, hi = 2.0, nu40
     if viscosity_index(nu40, lo) > VI or viscosity_index(nu40, hi * 0.999) < VI:
         raise OilError(f"no ν100 gives VI = {VI:g} with ν40 = {nu40:g} mm²/s within ASTM "
@@ -148,6 +150,7 @@ def nu100_from_vi(nu40: float, VI: float) -> float:
 # ----------------------------------------------------------------------------- ASTM D341
 
 
+@lru_cache(maxsize=256)
 def walther(nu1: float, t1: float, nu2: float, t2: float) -> tuple[float, float]:
     """Constants A, B of ASTM D341: log10 log10(ν + 0.7) = A − B·log10(T), T in K, through
     two points (ν1 at t1, ν2 at t2; ν >= 2 mm²/s)."""

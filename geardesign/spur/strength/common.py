@@ -95,7 +95,17 @@ class Record:
 
     @property
     def v(self) -> dict:
-        return values(self)
+        """The values by report key (:func:`values`): of a frozen record collected once
+        (the rating, its checks, its report and a drive read them), each caller given its
+        own copy."""
+        params = getattr(type(self), "__dataclass_params__", None)
+        if params is None or not params.frozen:
+            return values(self)
+        got = self.__dict__.get("_values")
+        if got is None:
+            got = values(self)
+            object.__setattr__(self, "_values", got)
+        return dict(got)
 
     @property
     def rows(self) -> list[Value]:
@@ -192,13 +202,17 @@ def rows(record) -> list[Value]:
     out = []
     for section, rec in _section_records(record):
         base = {f.name: getattr(rec, f.name) for f in dataclasses.fields(rec)}
+        per_gear: dict = {}        # the context of gear i, made once per section record
         for f, meta, i, key, value in _items(rec):
             if not meta.get("row", True):
                 continue
             ctx = base
             if i is not None:
-                ctx = {n: (x[i] if isinstance(x, tuple) else x) for n, x in base.items()}
-                ctx.update(k=i + 1, who=WHO[i])
+                ctx = per_gear.get(i)
+                if ctx is None:
+                    ctx = per_gear[i] = {n: (x[i] if isinstance(x, tuple) else x)
+                                         for n, x in base.items()}
+                    ctx.update(k=i + 1, who=WHO[i])
             name, source = _text(meta["name"], ctx), _text(meta["source"], ctx)
             if key in given:
                 name, source = name + " (given)", "spec"
