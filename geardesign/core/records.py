@@ -20,30 +20,30 @@ tests/test_records.py compares both on every record of the package.
 
 from __future__ import annotations
 
+import abc
 import dataclasses
+from dataclasses import _FIELD, MISSING, Field
+from functools import lru_cache
 from operator import attrgetter
 from reprlib import recursive_repr
+from types import FunctionType, MemberDescriptorType
 
 
 def dataclass(cls=None, /, *, frozen: bool = False, kw_only: bool = False, **options):
-    """:func:`dataclasses.dataclass` with one method compiled per class instead of six
-    (see the module)."""
+    """:func:`dataclasses.dataclass` with no method compiled per class (see the module)."""
 
     def wrap(cls):
         if options or not _plain(cls):
             return dataclasses.dataclass(cls, frozen=frozen, kw_only=kw_only, **options)
         own = cls.__dict__
-        class_hash = own.get("__hash__", dataclasses.MISSING)
-        explicit_hash = not (class_hash is dataclasses.MISSING
+        class_hash = own.get("__hash__", MISSING)
+        explicit_hash = not (class_hash is MISSING
                              or (class_hash is None and "__eq__" in own))
-        documented = bool(own.get("__doc__"))
-        cls = dataclasses.dataclass(cls, init=False, repr=False, eq=False, kw_only=kw_only)
-        fields = dataclasses.fields(cls)
+        fields = _collect(cls, kw_only)
+        cls.__dataclass_params__ = _params(frozen, kw_only)
         _set(cls, "__init__", _init(cls, fields, frozen))
-        if not documented:     # as dataclasses writes it: the name and the signature
-            import inspect
-
-            cls.__doc__ = cls.__name__ + str(inspect.signature(cls)).replace(" -> None", "")
+        if "__match_args__" not in own:
+            cls.__match_args__ = tuple(f.name for f in fields if f.init and not f.kw_only)
         if "__repr__" not in own:
             _set(cls, "__repr__", _repr([f.name for f in fields if f.repr]))
         if "__eq__" not in own:
@@ -60,9 +60,11 @@ def dataclass(cls=None, /, *, frozen: bool = False, kw_only: bool = False, **opt
             names = frozenset(f.name for f in fields)
             _set(cls, "__setattr__", _frozen_setattr(cls, names))
             _set(cls, "__delattr__", _frozen_delattr(cls, names))
-        params = cls.__dataclass_params__
-        params.init = params.repr = params.eq = True
-        params.frozen = frozen
+        if not own.get("__doc__"):     # as dataclasses writes it: the name and the signature
+            import inspect
+
+            cls.__doc__ = cls.__name__ + str(inspect.signature(cls)).replace(" -> None", "")
+        abc.update_abstractmethods(cls)
         return cls
 
     return wrap if cls is None else wrap(cls)
@@ -86,28 +88,83 @@ def _plain(cls) -> bool:
     return True
 
 
-def _init(cls, fields, frozen: bool):
-    """The ``__init__`` the standard library writes for ``fields``, compiled once."""
-    scope = {"__factory": _HAS_FACTORY, "__set": object.__setattr__}
-    params, keywords, body, defaulted = [], [], [], False
-    for f in fields:
-        n = f.name
-        if f.default_factory is not dataclasses.MISSING:
-            scope[f"__f_{n}"] = f.default_factory
-            value = f"__f_{n}() if {n} is __factory else {n}" if f.init else f"__f_{n}()"
-            param = f"{n}=__factory"
-        elif f.default is not dataclasses.MISSING:
-            scope[f"__d_{n}"] = f.default
-            value = n if f.init else None       # the class attribute holds the default
-            param = f"{n}=__d_{n}"
+def _collect(cls, kw_only: bool) -> list[dataclasses.Field]:
+    """The fields of a :func:`_plain` class, as :func:`dataclasses.dataclass` collects
+    them (a ``field()`` or a plain default per annotation, the class attribute set to the
+    default or removed, a mutable default and a ``field()`` without annotation refused),
+    stored where :func:`dataclasses.fields` finds them."""
+    own = cls.__dict__
+    annotations = own.get("__annotations__", {})
+    fields = {}
+    for name, kind in annotations.items():
+        default = getattr(cls, name, MISSING)
+        if isinstance(default, Field):
+            f = default
         else:
-            value = n if f.init else None
-            param = n
-            if f.init and not f.kw_only and defaulted:
-                raise TypeError(f"non-default argument {n!r} follows default argument")
+            if isinstance(default, MemberDescriptorType):     # a __slots__ entry
+                default = MISSING
+            f = dataclasses.field(default=default)
+        f.name, f.type, f._field_type = name, kind, _FIELD
+        if f.kw_only is MISSING:
+            f.kw_only = kw_only
+        if f.default.__class__.__hash__ is None:
+            raise ValueError(f"mutable default {type(f.default)} for field {name} is not "
+                             "allowed: use default_factory")
+        fields[name] = f
+    for f in fields.values():
+        if isinstance(own.get(f.name), Field):
+            if f.default is MISSING:
+                delattr(cls, f.name)
+            else:
+                setattr(cls, f.name, f.default)
+    for name, value in own.items():
+        if isinstance(value, Field) and name not in annotations:
+            raise TypeError(f"{name!r} is a field but has no type annotation")
+    cls.__dataclass_fields__ = fields
+    return list(fields.values())
+
+
+@lru_cache(maxsize=None)
+def _params(frozen: bool, kw_only: bool):
+    """The ``__dataclass_params__`` :func:`dataclasses.dataclass` gives a record of these
+    options, taken from an empty class it makes (one for every record of the same)."""
+
+    class Probe:
+        pass
+
+    return dataclasses.dataclass(Probe, frozen=frozen, kw_only=kw_only).__dataclass_params__
+
+
+def _init(cls, fields, frozen: bool):
+    """The ``__init__`` the standard library writes for ``fields``: the code of one with
+    the same shape (field ``i`` named ``_i``), compiled once a process, with the names of
+    ``fields`` put in; defaults as the function's defaults, factories in its globals."""
+    names = {f"_{i}": f.name for i, f in enumerate(fields)}
+    scope = {"__factory": _HAS_FACTORY, "__set": object.__setattr__,
+             "__name__": cls.__module__}
+    params, keywords, body, defaults, kwdefaults = [], [], [], [], {}
+    for i, f in enumerate(fields):
+        n = f"_{i}"
+        default = MISSING
+        if f.default_factory is not MISSING:
+            scope[f"__f{n}"] = f.default_factory
+            value = f"__f{n}() if {n} is __factory else {n}" if f.init else f"__f{n}()"
+            default = _HAS_FACTORY
+        else:
+            value = n if f.init else None       # the class attribute holds a default
+            default = f.default
         if f.init:
-            (keywords if f.kw_only else params).append(param)
-            defaulted = defaulted or (param != n and not f.kw_only)
+            if f.kw_only:
+                keywords.append(n)
+                if default is not MISSING:
+                    kwdefaults[f.name] = default
+            elif default is not MISSING:
+                params.append(n)
+                defaults.append(default)
+            elif defaults:
+                raise TypeError(f"non-default argument {f.name!r} follows default argument")
+            else:
+                params.append(n)
         if value is not None:
             body.append(f"__set(self, {n!r}, {value})" if frozen else f"self.{n} = {value}")
     if keywords:
@@ -116,10 +173,24 @@ def _init(cls, fields, frozen: bool):
         body.append("self.__post_init__()")
     text = (f"def __init__(self, {', '.join(params)}):\n    "
             + "\n    ".join(body or ["pass"]) + "\n")
-    exec(text, scope)
-    fn = scope["__init__"]
+    code = _shape(text)
+    code = code.replace(
+        co_varnames=tuple(names.get(v, v) for v in code.co_varnames),
+        co_names=tuple(names.get(v, v) for v in code.co_names),
+        co_consts=tuple(names.get(c, c) if isinstance(c, str) else c
+                        for c in code.co_consts))
+    fn = FunctionType(code, scope, "__init__", tuple(defaults) or None)
+    fn.__kwdefaults__ = kwdefaults or None
     fn.__annotations__ = {**{f.name: f.type for f in fields if f.init}, "return": None}
     return fn
+
+
+@lru_cache(maxsize=None)
+def _shape(text: str):
+    """The code of ``__init__`` written in ``text`` (one compilation per shape)."""
+    scope: dict = {}
+    exec(text, scope)
+    return scope["__init__"].__code__
 
 
 class _HasFactory:
