@@ -11,6 +11,7 @@ import dataclasses
 import importlib
 import inspect
 import pkgutil
+import typing
 from dataclasses import field
 
 import pytest
@@ -25,8 +26,7 @@ def _package_records() -> list[type]:
         module = importlib.import_module(m.name)
         for obj in vars(module).values():
             if (isinstance(obj, type) and obj.__module__ == m.name
-                    and dataclasses.is_dataclass(obj)
-                    and getattr(obj.__eq__, "__code__", None) is records._eq(None).__code__):
+                    and dataclasses.is_dataclass(obj) and records.is_record(obj)):
                 out.append(obj)
     return out
 
@@ -60,6 +60,30 @@ def test_a_record_is_the_standard_librarys(cls):
     assert (cls.__hash__ is None) == (twin.__hash__ is None)
     params = cls.__dataclass_params__
     assert params.init and params.repr and params.eq
+    if "__doc__" not in vars(cls) or cls.__doc__.startswith(cls.__name__ + "("):
+        assert cls.__doc__ == twin.__doc__
+    # the fields are those the standard library would collect: no annotation of the class
+    # is a ClassVar, InitVar or KW_ONLY under any name (its own test of string annotations)
+    for name, kind in vars(cls).get("__annotations__", {}).items():
+        for marker, test in ((typing.ClassVar, dataclasses._is_classvar),
+                             (dataclasses.InitVar, dataclasses._is_initvar),
+                             (dataclasses.KW_ONLY, dataclasses._is_kw_only)):
+            module = typing if marker is typing.ClassVar else dataclasses
+            assert not test(kind, module)
+            assert not (isinstance(kind, str)
+                        and dataclasses._is_type(kind, cls, module, marker, test)), name
+
+
+def test_every_record_shape_is_compiled_with_the_package():
+    """``geardesign/core/record_shapes.py`` holds the ``__init__`` of every record's
+    shape (else that record compiles it when its module is imported): rewrite it with
+    ``python -m geardesign.core.records`` after adding a record of a new shape."""
+    missing = {records.record_shape(c) for c in RECORDS} - set(records.SHAPES)
+    assert not missing, "run `python -m geardesign.core.records`"
+    for key, code in records.SHAPES.items():       # each is the source it stands for
+        scope: dict = {}
+        exec(records.source(key), scope)
+        assert scope["__init__"].__code__.co_code == code.co_code, key
 
 
 def _make(deco):

@@ -136,44 +136,30 @@ def _params(frozen: bool, kw_only: bool):
 
 
 def _init(cls, fields, frozen: bool):
-    """The ``__init__`` the standard library writes for ``fields``: the code of one with
-    the same shape (field ``i`` named ``_i``), compiled once a process, with the names of
-    ``fields`` put in; defaults as the function's defaults, factories in its globals."""
-    names = {f"_{i}": f.name for i, f in enumerate(fields)}
+    """The ``__init__`` the standard library writes for ``fields``: the code of its
+    :func:`shape` (precompiled, :data:`SHAPES`, or compiled once a process) with the names
+    of ``fields`` put in; defaults as the function's defaults, factories in its globals."""
     scope = {"__factory": _HAS_FACTORY, "__set": object.__setattr__,
              "__name__": cls.__module__}
-    params, keywords, body, defaults, kwdefaults = [], [], [], [], {}
+    defaults, kwdefaults = [], {}
     for i, f in enumerate(fields):
-        n = f"_{i}"
-        default = MISSING
         if f.default_factory is not MISSING:
-            scope[f"__f{n}"] = f.default_factory
-            value = f"__f{n}() if {n} is __factory else {n}" if f.init else f"__f{n}()"
+            scope[f"__f_{i}"] = f.default_factory
             default = _HAS_FACTORY
         else:
-            value = n if f.init else None       # the class attribute holds a default
             default = f.default
-        if f.init:
-            if f.kw_only:
-                keywords.append(n)
-                if default is not MISSING:
-                    kwdefaults[f.name] = default
-            elif default is not MISSING:
-                params.append(n)
-                defaults.append(default)
-            elif defaults:
-                raise TypeError(f"non-default argument {f.name!r} follows default argument")
-            else:
-                params.append(n)
-        if value is not None:
-            body.append(f"__set(self, {n!r}, {value})" if frozen else f"self.{n} = {value}")
-    if keywords:
-        params += ["*", *keywords]
-    if hasattr(cls, "__post_init__"):
-        body.append("self.__post_init__()")
-    text = (f"def __init__(self, {', '.join(params)}):\n    "
-            + "\n    ".join(body or ["pass"]) + "\n")
-    code = _shape(text)
+        if not f.init:
+            continue
+        if f.kw_only:
+            if default is not MISSING:
+                kwdefaults[f.name] = default
+        elif default is not MISSING:
+            defaults.append(default)
+        elif defaults:
+            raise TypeError(f"non-default argument {f.name!r} follows default argument")
+    key = shape(fields, frozen, hasattr(cls, "__post_init__"))
+    code = SHAPES.get(key) or _compiled(key)
+    names = {f"_{i}": f.name for i, f in enumerate(fields)}
     code = code.replace(
         co_varnames=tuple(names.get(v, v) for v in code.co_varnames),
         co_names=tuple(names.get(v, v) for v in code.co_names),
@@ -185,12 +171,97 @@ def _init(cls, fields, frozen: bool):
     return fn
 
 
+def shape(fields, frozen: bool, post_init: bool) -> str:
+    """What the ``__init__`` of a record does, whatever its names: ``f`` (frozen) or ``m``,
+    then a letter a field: ``P`` a positional parameter (with or without a default, which
+    the function holds), ``K`` a keyword-only one, ``F``/``G`` the same with a
+    ``default_factory``, ``N`` a factory's value not in the signature, ``X`` nothing (a
+    field not in the signature: its default is the class attribute); ``+``:
+    ``__post_init__`` is called."""
+    letters = []
+    for f in fields:
+        factory = f.default_factory is not MISSING
+        if f.init:
+            letters.append(("G" if factory else "K") if f.kw_only else ("F" if factory else "P"))
+        else:
+            letters.append("N" if factory else "X")
+    return ("f" if frozen else "m") + "".join(letters) + ("+" if post_init else "")
+
+
+def source(key: str) -> str:
+    """The source of the ``__init__`` of :func:`shape` ``key``, field ``i`` named ``_i``:
+    the statements :func:`dataclasses.dataclass` writes, without the defaults."""
+    frozen, post_init = key[0] == "f", key.endswith("+")
+    params, keywords, body = [], [], []
+    for i, letter in enumerate(key[1:-1] if post_init else key[1:]):
+        n = f"_{i}"
+        if letter in "PF":
+            params.append(n)
+        elif letter in "KG":
+            keywords.append(n)
+        value = {"P": n, "K": n, "F": f"__f{n}() if {n} is __factory else {n}",
+                 "N": f"__f{n}()", "X": None}.get(letter, f"__f{n}() if {n} is __factory else {n}")
+        if value is not None:
+            body.append(f"__set(self, {n!r}, {value})" if frozen else f"self.{n} = {value}")
+    if keywords:
+        params += ["*", *keywords]
+    if post_init:
+        body.append("self.__post_init__()")
+    return (f"def __init__(self{''.join(', ' + p for p in params)}):\n    "
+            + "\n    ".join(body or ["pass"]) + "\n")
+
+
 @lru_cache(maxsize=None)
-def _shape(text: str):
-    """The code of ``__init__`` written in ``text`` (one compilation per shape)."""
+def _compiled(key: str):
+    """The code of :func:`source` ``key`` (a shape :data:`SHAPES` lacks: compiled once a
+    process)."""
     scope: dict = {}
-    exec(text, scope)
+    exec(source(key), scope)
     return scope["__init__"].__code__
+
+
+try:
+    from geardesign.core.record_shapes import SHAPES
+except ImportError:     # pragma: no cover - the file is written by write_shapes()
+    SHAPES = {}
+"""The code of the ``__init__`` of every :func:`shape` of the package's records, compiled
+with the package like any module (``geardesign/core/record_shapes.py``, written by
+:func:`write_shapes`; tests/test_records.py checks that it has every shape)."""
+
+
+def write_shapes() -> None:
+    """Rewrite ``record_shapes.py`` with the shapes of every record of the package."""
+    import importlib
+    import pkgutil
+    from pathlib import Path
+
+    import geardesign
+
+    found = set()
+    for m in pkgutil.walk_packages(geardesign.__path__, "geardesign."):
+        module = importlib.import_module(m.name)
+        for obj in vars(module).values():
+            if isinstance(obj, type) and obj.__module__ == m.name and is_record(obj):
+                found.add(record_shape(obj))
+    lines = ['"""The ``__init__`` of every record shape of the package '
+             '(:func:`geardesign.core.records.shape`),',
+             "compiled with the package.  Written by ``python -m geardesign.core.records``; "
+             "do not edit."'"""', "", "# fmt: off", "# ruff: noqa", "SHAPES = {}", ""]
+    for key in sorted(found, key=lambda k: (len(k), k)):
+        lines += [source(key).rstrip("\n"), f"SHAPES[{key!r}] = __init__.__code__", ""]
+    lines.append("del __init__")
+    Path(__file__).with_name("record_shapes.py").write_text("\n".join(lines) + "\n", "utf-8")
+
+
+def is_record(cls) -> bool:
+    """A class made by :func:`dataclass` here (not handed to the standard library)."""
+    return getattr(getattr(cls, "__eq__", None), "__code__", None) is _eq(None).__code__
+
+
+def record_shape(cls) -> str:
+    """The :func:`shape` of a record made here."""
+    return shape(dataclasses.fields(cls), cls.__dataclass_params__.frozen,
+                 hasattr(cls, "__post_init__"))
 
 
 class _HasFactory:
@@ -252,3 +323,9 @@ def _hash(values):
     def __hash__(self) -> int:
         return hash(values(self))
     return __hash__
+
+
+if __name__ == "__main__":
+    from geardesign.core import records
+
+    records.write_shapes()
