@@ -21,9 +21,9 @@ def _rows(name: str) -> list[dict]:
 
 @lru_cache(maxsize=None)
 def toml() -> dict:
-    import tomllib
+    from geardesign.core.data import toml_table
 
-    return tomllib.loads((HERE / "tables.toml").read_text(encoding="utf-8"))
+    return toml_table(HERE / "tables.toml")
 
 
 @dataclass(frozen=True)
