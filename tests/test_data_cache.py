@@ -116,3 +116,12 @@ def test_the_bearing_catalogue_reads_as_its_parse():
             assert b in iso[k]
         if b.gost:
             assert b in gost[catalogue._key(b.gost)]
+
+
+def test_the_oil_table_reads_as_its_parse():
+    from geardesign.materials import lubricants
+
+    text = lubricants._FILE.read_text("utf-8")
+    rows = data.parsed(lubricants._FILE, lubricants._parse)
+    assert rows == lubricants._parse(text)
+    assert [tuple(vars(o).values()) for o in lubricants.grades()] == rows

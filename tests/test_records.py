@@ -56,6 +56,7 @@ def test_the_package_makes_its_records_here():
 def test_a_record_is_the_standard_librarys(cls):
     twin = _twin(cls)
     assert str(inspect.signature(cls)) == str(inspect.signature(twin))
+    assert records._signature(cls, dataclasses.fields(cls)) == str(inspect.signature(cls))
     assert cls.__match_args__ == twin.__match_args__
     assert (cls.__hash__ is None) == (twin.__hash__ is None)
     params = cls.__dataclass_params__

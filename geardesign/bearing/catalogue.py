@@ -12,7 +12,6 @@ returned in N.
 
 from __future__ import annotations
 
-import csv
 from functools import lru_cache
 from pathlib import Path
 
@@ -82,6 +81,8 @@ def _parse(text: str) -> tuple[list[tuple], dict[str, list[int]], dict[str, list
     """The catalogue file as its rows (the fields of :class:`CatalogueBearing` in order,
     ratings in N) and two indexes of row numbers: ISO and maker designations, GOST
     designations (keys by :func:`_key`).  Kept parsed (:func:`geardesign.core.data.parsed`)."""
+    import csv
+
     lines = [line for line in text.splitlines(keepends=True) if not line.startswith("#")]
     rows, iso, gost = [], {}, {}
     kn = 1000.0

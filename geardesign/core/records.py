@@ -61,13 +61,35 @@ def dataclass(cls=None, /, *, frozen: bool = False, kw_only: bool = False, **opt
             _set(cls, "__setattr__", _frozen_setattr(cls, names))
             _set(cls, "__delattr__", _frozen_delattr(cls, names))
         if not own.get("__doc__"):     # as dataclasses writes it: the name and the signature
-            import inspect
-
-            cls.__doc__ = cls.__name__ + str(inspect.signature(cls)).replace(" -> None", "")
+            cls.__doc__ = cls.__name__ + _signature(cls, fields).replace(" -> None", "")
         abc.update_abstractmethods(cls)
         return cls
 
     return wrap if cls is None else wrap(cls)
+
+
+def _signature(cls, fields) -> str:
+    """``str(inspect.signature(cls))`` of a record whose ``__init__`` is :func:`_init`'s,
+    written from its fields (the way :class:`inspect.Signature` writes them)."""
+    import inspect
+
+    if type(cls) is not type or "__new__" in cls.__dict__:
+        return str(inspect.signature(cls))
+    params, starred = [], False
+    for f in fields:
+        if not f.init:
+            continue
+        if f.kw_only and not starred:
+            params.append("*")
+            starred = True
+        kind = repr(f.type) if isinstance(f.type, str) else inspect.formatannotation(f.type)
+        text = f"{f.name}: {kind}"
+        if f.default_factory is not MISSING:
+            text += f" = {_HAS_FACTORY!r}"
+        elif f.default is not MISSING:
+            text += f" = {f.default!r}"
+        params.append(text)
+    return f"({', '.join(params)}) -> None"
 
 
 def _plain(cls) -> bool:
