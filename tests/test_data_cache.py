@@ -54,7 +54,7 @@ def test_a_broken_or_foreign_cache_is_ignored(tmp_path, writes):
     f = tmp_path / "t.toml"
     f.write_text("a = 1\n", "utf-8")
     for junk in (b"", b"\x00garbage", marshal.dumps(("other", {"a": 2})),
-                 marshal.dumps(((0, (0, 0), None, "_toml"), {"a": 3}))):
+                 marshal.dumps(((0, (0, 0), None, (0, 0), "_toml"), {"a": 3}))):
         _cache(f).parent.mkdir(exist_ok=True)
         _cache(f).write_bytes(junk)
         assert data.toml_table(f) == {"a": 1}
@@ -125,3 +125,13 @@ def test_the_oil_table_reads_as_its_parse():
     rows = data.parsed(lubricants._FILE, lubricants._parse)
     assert rows == lubricants._parse(text)
     assert [tuple(vars(o).values()) for o in lubricants.grades()] == rows
+
+
+@pytest.mark.parametrize("path", sorted(Path(geardesign.__file__).parent.rglob("*.csv")),
+                         ids=lambda p: str(p.relative_to(Path(geardesign.__file__).parent)))
+def test_every_csv_file_of_the_package_reads_as_the_csv_module_reads_it(path):
+    import csv
+
+    with path.open(encoding="utf-8") as fh:
+        expected = list(csv.DictReader(line for line in fh if not line.startswith("#")))
+    assert data.csv_table(path) == expected

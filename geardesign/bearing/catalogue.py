@@ -81,12 +81,11 @@ def _parse(text: str) -> tuple[list[tuple], dict[str, list[int]], dict[str, list
     """The catalogue file as its rows (the fields of :class:`CatalogueBearing` in order,
     ratings in N) and two indexes of row numbers: ISO and maker designations, GOST
     designations (keys by :func:`_key`).  Kept parsed (:func:`geardesign.core.data.parsed`)."""
-    import csv
+    from geardesign.core.data import csv_rows
 
-    lines = [line for line in text.splitlines(keepends=True) if not line.startswith("#")]
     rows, iso, gost = [], {}, {}
     kn = 1000.0
-    for i, r in enumerate(csv.DictReader(lines)):
+    for i, r in enumerate(csv_rows(text)):
         rows.append((
             r["designation"], r["gost"], r["type"], r["series"], float(r["d"]), float(r["D"]),
             float(r["B"]), float(r["C_r"]) * kn, float(r["C_0r"]) * kn,

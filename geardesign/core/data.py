@@ -7,7 +7,7 @@ Parsing it costs more than the calculation that uses it (the gear steel library,
 :func:`parsed` keeps what the parser returned in the package's ``__pycache__`` folder, as
 Python keeps compiled modules there: ``<file>.<parser>.<cache tag>.data``, in
 :mod:`marshal` format, stamped with the size and modification time of the data file and of
-the module that holds the parser.  A stamp that differs, a cache that cannot be read, or a
+the modules that hold the parser.  A stamp that differs, a cache that cannot be read, or a
 value that :mod:`marshal` cannot write (only ``None``, booleans, numbers, strings, lists,
 tuples and dicts) means the file is parsed again; nothing is written when Python writes no
 bytecode (``PYTHONDONTWRITEBYTECODE``, ``-B``) or the folder is not writable, and
@@ -37,6 +37,20 @@ def _toml(text: str) -> dict:
     return tomllib.loads(text)
 
 
+def csv_table(path: Path) -> list[dict[str, str]]:
+    """The rows of the CSV data file ``path`` as dicts by the header's names (lines that
+    begin with ``#`` are comments), :func:`parsed`."""
+    return parsed(path, csv_rows)
+
+
+def csv_rows(text: str) -> list[dict[str, str]]:
+    """The rows of a CSV text as :func:`csv_table` reads them."""
+    import csv
+
+    return list(csv.DictReader(
+        line for line in text.splitlines(keepends=True) if not line.startswith("#")))
+
+
 def parsed(path: Path, parse: Callable[[str], Any]) -> Any:
     """``parse(text of path)``, from the cache beside the bytecode when it is current (see
     the module); the value is a fresh object either way (no caller shares it)."""
@@ -58,10 +72,12 @@ def parsed(path: Path, parse: Callable[[str], Any]) -> Any:
 
 
 def _stamp(path: Path, parse: Callable) -> tuple:
-    """What the cache must match: the data file and the module of the parser."""
+    """What the cache must match: the data file, the module of the parser and this one
+    (whose readers a parser may call)."""
     module = sys.modules.get(parse.__module__)
     source = getattr(module, "__file__", None)
-    return (_FORMAT, _stat(path), _stat(source) if source else None, parse.__qualname__)
+    return (_FORMAT, _stat(path), _stat(source) if source else None, _stat(__file__),
+            parse.__qualname__)
 
 
 def _stat(path) -> tuple[int, int]:

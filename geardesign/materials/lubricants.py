@@ -69,12 +69,11 @@ def _num(x: str) -> float | None:
 
 def _parse(text: str) -> list[tuple]:
     """The rows of ``lubricants.csv``: the fields of :class:`Oil` in order."""
-    import csv
+    from geardesign.core.data import csv_rows
 
-    lines = [line for line in text.splitlines(keepends=True) if not line.startswith("#")]
     return [(r["grade"], float(r["nu40"]), float(r["nu40_min"]), float(r["nu40_max"]),
              float(r["VI"]), _num(r["density_15"]), _num(r["fzg_stage"]), r["source"],
-             r["page"]) for r in csv.DictReader(lines)]
+             r["page"]) for r in csv_rows(text)]
 
 
 @lru_cache(maxsize=1)
