@@ -1,5 +1,6 @@
 """The ``__init__`` of every record shape of the package (:func:`geardesign.core.records.shape`),
-compiled with the package.  Written by ``python -m geardesign.core.records``; do not edit."""
+compiled with the package.  Written by ``python -m geardesign.core.records``; do not edit (one
+function a shape: longer than a module is meant to be, as it is generated)."""
 
 # fmt: off
 # ruff: noqa

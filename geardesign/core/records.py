@@ -268,7 +268,9 @@ def write_shapes() -> None:
     lines = ['"""The ``__init__`` of every record shape of the package '
              '(:func:`geardesign.core.records.shape`),',
              "compiled with the package.  Written by ``python -m geardesign.core.records``; "
-             "do not edit."'"""', "", "# fmt: off", "# ruff: noqa", "SHAPES = {}", ""]
+             "do not edit (one",
+             "function a shape: longer than a module is meant to be, as it is generated)."
+             '"""', "", "# fmt: off", "# ruff: noqa", "SHAPES = {}", ""]
     for key in sorted(found, key=lambda k: (len(k), k)):
         lines += [source(key).rstrip("\n"), f"SHAPES[{key!r}] = __init__.__code__", ""]
     lines.append("del __init__")
