@@ -130,8 +130,15 @@ def _make(deco):
         u: float
         w: float = 2.0
 
+    @deco(frozen=True)
+    class G(A):
+        """A record of a record: its fields after A's, c's default its own."""
+        q: int = 3
+        c: tuple = (1,)
+
     return {"A": (A, [(1.0,), (1.0, 3, (1,), [2], 5.0, 0.5)]), "B": (B, [(1,), (2, [3])]),
-            "C": (C, [(1.0,)]), "D": (D, [()]), "E": (E, [(1.0,), (2.0, 1)]), "F": (F, [()])}
+            "C": (C, [(1.0,)]), "D": (D, [()]), "E": (E, [(1.0,), (2.0, 1)]), "F": (F, [()]),
+            "G": (G, [(1.0,), (2.0, 1, (3,), [4], 5.0, 0.5, 7)])}
 
 
 OURS, THEIRS = _make(records.dataclass), _make(dataclasses.dataclass)
@@ -173,6 +180,25 @@ def test_records_behave_as_dataclasses(name):
                     setattr(obj, first, 0)
                 with pytest.raises(dataclasses.FrozenInstanceError):
                     delattr(obj, first)
+
+
+def test_a_record_of_a_record_is_made_here_and_frozenness_must_match():
+    assert records.is_record(OURS["G"][0])
+    assert [f.name for f in dataclasses.fields(OURS["G"][0])] == [
+        f.name for f in dataclasses.fields(THEIRS["G"][0])]
+    for deco in (records.dataclass, dataclasses.dataclass):
+        @deco
+        class Mutable:
+            a: int = 1
+
+        @deco(frozen=True)
+        class Frozen:
+            a: int = 1
+
+        with pytest.raises(TypeError, match="cannot inherit frozen dataclass from a non-frozen"):
+            deco(frozen=True)(type("X", (Mutable,), {"__annotations__": {"b": int}, "b": 2}))
+        with pytest.raises(TypeError, match="cannot inherit non-frozen dataclass from a frozen"):
+            deco(type("Y", (Frozen,), {"__annotations__": {"b": int}, "b": 2}))
 
 
 def test_a_missing_argument_and_a_default_before_a_plain_field_are_refused():

@@ -484,6 +484,23 @@ def __init__(self, *, _0, _1, _2, _3, _4, _5, _6, _7, _8, _9, _10, _11, _12, _13
     __set(self, '_13', _13)
 SHAPES['fKKKKKKKKKKKKKK'] = __init__.__code__
 
+def __init__(self, _0, _1, _2, _3, _4, _5, _6, _7, _9, _10, _11, _12, _13, *, _8):
+    __set(self, '_0', _0)
+    __set(self, '_1', _1)
+    __set(self, '_2', _2)
+    __set(self, '_3', _3)
+    __set(self, '_4', _4)
+    __set(self, '_5', _5)
+    __set(self, '_6', _6)
+    __set(self, '_7', _7)
+    __set(self, '_8', _8)
+    __set(self, '_9', _9)
+    __set(self, '_10', _10)
+    __set(self, '_11', _11)
+    __set(self, '_12', _12)
+    __set(self, '_13', _13)
+SHAPES['fPPPPPPPPKPPPPP'] = __init__.__code__
+
 def __init__(self, _0, _1, _2, _3, _4, _5, _6, _7, _8, _9, _10, _11, _12, _13):
     __set(self, '_0', _0)
     __set(self, '_1', _1)

@@ -3,18 +3,28 @@
 Python 3.11 builds every method of a dataclass by compiling its source text when the class
 is created: six for a frozen record (``__init__``, ``__repr__``, ``__eq__``, ``__hash__``,
 ``__setattr__``, ``__delattr__``), about 0.8 ms a record on the test machine, and a spur run
-creates some 40 records, a designed gearbox some 130 (issue 32: a quarter of a small spec's
-start-up).  Here only ``__init__`` is compiled, the same code the standard library writes
-(defaults, ``default_factory``, ``init=False`` fields, ``__post_init__``); ``__repr__``,
-``__eq__``, ``__hash__`` and a frozen record's ``__setattr__``/``__delattr__`` are shared
-functions over the record's field names that print, compare, hash and refuse exactly as the
-generated ones do (``compare``/``hash``/``repr`` of :func:`dataclasses.field` honoured,
-methods the class defines itself kept, ``__hash__`` set as :func:`dataclasses.dataclass`
-sets it), and ``__dataclass_params__`` says what the record is.  The standard library
-still collects the fields, so :func:`dataclasses.fields`, ``asdict``, ``replace`` and a
-dataclass subclass work as on any dataclass; a class with a dataclass base, an
-``InitVar``, ``ClassVar`` or ``KW_ONLY`` annotation, a field named ``self`` or ``_...``, or
-options beyond ``frozen`` and ``kw_only`` goes to :func:`dataclasses.dataclass` unchanged.
+creates some 50 records, a drive with shafts some 130 (issue 32: a quarter of a small
+spec's start-up; issue 28).  Here nothing is compiled when a record is made:
+
+* the fields are collected as :func:`dataclasses.dataclass` collects them (:func:`_collect`:
+  ``field()`` or plain defaults, those of record bases first, the same refusals), stored
+  where :func:`dataclasses.fields`, ``asdict`` and ``replace`` find them;
+* ``__init__`` is the code the standard library writes, taken by its :func:`shape` (what
+  each field does, whatever its name) from :data:`SHAPES`, compiled with the package
+  (``core/record_shapes.py``, written by ``python -m geardesign.core.records``), with the
+  field names put in; defaults are the function's own, factories in its globals; a shape
+  that file lacks is compiled once a process;
+* ``__repr__``, ``__eq__``, ``__hash__`` and a frozen record's ``__setattr__``/
+  ``__delattr__`` are shared functions over the record's field names that print, compare,
+  hash and refuse exactly as the generated ones do (``compare``/``hash``/``repr`` of
+  :func:`dataclasses.field` honoured, methods the class defines itself kept, ``__hash__``
+  set as :func:`dataclasses.dataclass` sets it); the docstring of an undocumented record is
+  the name and signature, as the standard library writes it, and ``__dataclass_params__``
+  and ``__match_args__`` say what the record is.
+
+A class with a dataclass base not made here, an ``InitVar``, ``ClassVar`` or ``KW_ONLY``
+annotation, a field named ``self`` or ``_...``, its own ``__setattr__``, or options beyond
+``frozen`` and ``kw_only`` goes to :func:`dataclasses.dataclass` unchanged.
 tests/test_records.py compares both on every record of the package.
 """
 
@@ -39,7 +49,7 @@ def dataclass(cls=None, /, *, frozen: bool = False, kw_only: bool = False, **opt
         class_hash = own.get("__hash__", MISSING)
         explicit_hash = not (class_hash is MISSING
                              or (class_hash is None and "__eq__" in own))
-        fields = _collect(cls, kw_only)
+        fields = _collect(cls, frozen, kw_only)
         cls.__dataclass_params__ = _params(frozen, kw_only)
         _set(cls, "__init__", _init(cls, fields, frozen))
         if "__match_args__" not in own:
@@ -75,29 +85,28 @@ def _signature(cls, fields) -> str:
 
     if type(cls) is not type or "__new__" in cls.__dict__:
         return str(inspect.signature(cls))
-    params, starred = [], False
+    params, keywords = [], []
     for f in fields:
         if not f.init:
             continue
-        if f.kw_only and not starred:
-            params.append("*")
-            starred = True
         kind = repr(f.type) if isinstance(f.type, str) else inspect.formatannotation(f.type)
         text = f"{f.name}: {kind}"
         if f.default_factory is not MISSING:
             text += f" = {_HAS_FACTORY!r}"
         elif f.default is not MISSING:
             text += f" = {f.default!r}"
-        params.append(text)
+        (keywords if f.kw_only else params).append(text)
+    if keywords:
+        params += ["*", *keywords]
     return f"({', '.join(params)}) -> None"
 
 
 def _plain(cls) -> bool:
-    """A class this module makes: no dataclass base (frozen or not, the standard library
-    checks the pair), no ``InitVar``, ``ClassVar`` or ``KW_ONLY`` annotation, no field
-    named like the method's own names, no ``__setattr__`` of its own; the others go to
+    """A class this module makes: dataclass bases only of this module's records, no
+    ``InitVar``, ``ClassVar`` or ``KW_ONLY`` annotation, no field named like the method's
+    own names, no ``__setattr__`` of its own; the others go to
     :func:`dataclasses.dataclass` unchanged."""
-    if any(hasattr(b, "__dataclass_fields__") for b in cls.__mro__[1:]):
+    if any(hasattr(b, "__dataclass_fields__") and not is_record(b) for b in cls.__mro__[1:]):
         return False
     own = cls.__dict__
     if "__setattr__" in own or "__delattr__" in own:
@@ -110,14 +119,24 @@ def _plain(cls) -> bool:
     return True
 
 
-def _collect(cls, kw_only: bool) -> list[dataclasses.Field]:
+def _collect(cls, frozen: bool, kw_only: bool) -> list[dataclasses.Field]:
     """The fields of a :func:`_plain` class, as :func:`dataclasses.dataclass` collects
-    them (a ``field()`` or a plain default per annotation, the class attribute set to the
-    default or removed, a mutable default and a ``field()`` without annotation refused),
-    stored where :func:`dataclasses.fields` finds them."""
+    them: those of its dataclass bases (a frozen record's bases frozen, a mutable one's
+    mutable), then a ``field()`` or a plain default per annotation of its own (one that
+    a base has keeps its place), the class attribute set to the default or removed, a
+    mutable default and a ``field()`` without annotation refused; stored where
+    :func:`dataclasses.fields` finds them."""
+    fields = {}
+    bases = frozen_base = False
+    for b in cls.__mro__[-1:0:-1]:
+        base_fields = getattr(b, "__dataclass_fields__", None)
+        if base_fields is not None:
+            bases = True
+            fields.update((f.name, f) for f in base_fields.values())
+            frozen_base = frozen_base or b.__dataclass_params__.frozen
     own = cls.__dict__
     annotations = own.get("__annotations__", {})
-    fields = {}
+    mine = []
     for name, kind in annotations.items():
         default = getattr(cls, name, MISSING)
         if isinstance(default, Field):
@@ -132,9 +151,10 @@ def _collect(cls, kw_only: bool) -> list[dataclasses.Field]:
         if f.default.__class__.__hash__ is None:
             raise ValueError(f"mutable default {type(f.default)} for field {name} is not "
                              "allowed: use default_factory")
-        fields[name] = f
-    for f in fields.values():
-        if isinstance(own.get(f.name), Field):
+        mine.append(f)
+    for f in mine:
+        fields[f.name] = f
+        if isinstance(getattr(cls, f.name, None), Field):
             if f.default is MISSING:
                 delattr(cls, f.name)
             else:
@@ -142,6 +162,10 @@ def _collect(cls, kw_only: bool) -> list[dataclasses.Field]:
     for name, value in own.items():
         if isinstance(value, Field) and name not in annotations:
             raise TypeError(f"{name!r} is a field but has no type annotation")
+    if bases and frozen_base and not frozen:
+        raise TypeError("cannot inherit non-frozen dataclass from a frozen one")
+    if bases and not frozen_base and frozen:
+        raise TypeError("cannot inherit frozen dataclass from a non-frozen one")
     cls.__dataclass_fields__ = fields
     return list(fields.values())
 
@@ -149,12 +173,17 @@ def _collect(cls, kw_only: bool) -> list[dataclasses.Field]:
 @lru_cache(maxsize=None)
 def _params(frozen: bool, kw_only: bool):
     """The ``__dataclass_params__`` :func:`dataclasses.dataclass` gives a record of these
-    options, taken from an empty class it makes (one for every record of the same)."""
+    options (``init``, ``repr`` and ``eq`` true), taken from an empty class it makes without
+    methods (one for every record of the same options)."""
 
     class Probe:
         pass
 
-    return dataclasses.dataclass(Probe, frozen=frozen, kw_only=kw_only).__dataclass_params__
+    params = dataclasses.dataclass(Probe, init=False, repr=False, eq=False,
+                                   kw_only=kw_only).__dataclass_params__
+    params.init = params.repr = params.eq = True
+    params.frozen = frozen
+    return params
 
 
 def _init(cls, fields, frozen: bool):
