@@ -177,7 +177,7 @@ def _params(frozen: bool, kw_only: bool):
     methods (one for every record of the same options)."""
 
     class Probe:
-        pass
+        """A class for its parameters (documented: no signature is read for its doc)."""
 
     params = dataclasses.dataclass(Probe, init=False, repr=False, eq=False,
                                    kw_only=kw_only).__dataclass_params__
