@@ -24,7 +24,10 @@ Figures (2 shared cores under load, 7-9 rounds, 7 cold runs, against 5a58329): d
 136-162 -> 62-77 ms (2.08-2.26x over three runs), two-stage GOST + ISO drive 544-613 ->
 104-124 ms (5.2-5.8x); cold drive golden / spur_plain with the bytecode kept 2.04-2.21
 (379-499 / 172-245 ms; 5a58329 on the same machine: 2.55-2.80), compiled in every process
-1.60 (1089 / 683 ms; 5a58329: 2.17, measured before the probe pass went unrated).
+1.60 (1089 / 683 ms; 5a58329: 2.17, measured before the probe pass went unrated).  With the
+records made without compiling, the JSON indented around the C encoder and the data files kept
+parsed (``--base fa84a7d --rounds 3 --cold 7``, bytecode kept): 224 -> 148 ms / 82 -> 69 ms,
+ratio 2.73 -> 2.14 (under a heavier load 359 -> 225 / 144 -> 101 ms, 2.50 -> 2.23).
 """
 
 from __future__ import annotations
