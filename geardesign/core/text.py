@@ -118,42 +118,39 @@ def _indented(obj, indent: int) -> str:
     def leaves(text: str) -> None:
         add(text if text.isascii() else _raw_escaped(text))
 
+    def flat(o, values, pad: str, inner: str) -> bool:
+        """Write ``o`` by the C encoder if its ``values`` are all leaves."""
+        for v in values:
+            if type(v) not in _LEAF:
+                return False
+        text = "".join(_flat(inner)(o, 0))
+        leaves(text[0] + inner + text[1:-1] + pad + text[-1])
+        return True
+
     def walk(o, pad: str) -> None:
         inner = pad + step
         if isinstance(o, dict):
             if not o:
                 add("{}")
-                return
-            for v in o.values():
-                if type(v) not in _LEAF:
-                    break
-            else:
-                leaves("{" + inner + "".join(_flat(inner)(o, 0))[1:-1] + pad + "}")
-                return
-            sep = "{" + inner
-            for k, v in o.items():
-                if type(k) is not str:
-                    raise _NotPlain
-                leaves(sep + encode_basestring(k) + ": ")
-                sep = "," + inner
-                walk(v, inner)
-            add(pad + "}")
+            elif not flat(o, o.values(), pad, inner):
+                sep = "{" + inner
+                for k, v in o.items():
+                    if type(k) is not str:
+                        raise _NotPlain
+                    leaves(sep + encode_basestring(k) + ": ")
+                    sep = "," + inner
+                    walk(v, inner)
+                add(pad + "}")
         elif isinstance(o, (list, tuple)):
             if not o:
                 add("[]")
-                return
-            for v in o:
-                if type(v) not in _LEAF:
-                    break
-            else:
-                leaves("[" + inner + "".join(_flat(inner)(o, 0))[1:-1] + pad + "]")
-                return
-            sep = "[" + inner
-            for v in o:
-                add(sep)
-                sep = "," + inner
-                walk(v, inner)
-            add(pad + "]")
+            elif not flat(o, o, pad, inner):
+                sep = "[" + inner
+                for v in o:
+                    add(sep)
+                    sep = "," + inner
+                    walk(v, inner)
+                add(pad + "]")
         elif type(o) in _LEAF:
             leaves("".join(_flat(inner)(o, 0)))
         else:
