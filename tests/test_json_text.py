@@ -67,3 +67,11 @@ def test_a_circular_document_is_refused_as_the_standard_library_does():
     doc: dict = {"a": [1.0]}
     doc["a"].append(doc)
     assert ours(doc, 2) == reference(doc, 2)
+
+
+def test_every_raw_character_is_escaped_in_keys_values_and_flat_tables():
+    for c in "\x7f\x80\x85\x9f\u061c\u200e\u200f\u202a\u202e\u2066\u2069\u2028\u2029":
+        for doc in ({c: None}, {"a": c}, [c], {"a": [c, {"b": c}]}, c):
+            for indent in (None, 0, 2):
+                assert ours(doc, indent) == reference(doc, indent)
+                assert c not in ours(doc, indent)

@@ -75,7 +75,7 @@ _RAW_IN_JSON = re.compile("[\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u206
 
 def _raw_escaped(text: str) -> str:
     """``text`` with the characters of :data:`_RAW_IN_JSON` written as ``\\uNNNN``."""
-    if text.isascii():          # a flag of the string: no scan
+    if text.isascii() and "\x7f" not in text:    # a flag of the string, a memchr: no regex
         return text
     return _RAW_IN_JSON.sub(lambda m: f"\\u{ord(m.group(0)):04x}", text)
 
@@ -116,7 +116,7 @@ def _indented(obj, indent: int) -> str:
     step = " " * indent
 
     def leaves(text: str) -> None:
-        add(text if text.isascii() else _raw_escaped(text))
+        add(_raw_escaped(text))
 
     def flat(o, values, pad: str, inner: str) -> bool:
         """Write ``o`` by the C encoder if its ``values`` are all leaves."""
