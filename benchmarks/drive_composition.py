@@ -27,7 +27,7 @@ Figures (2 shared cores under load, 7-9 rounds, 7 cold runs, against 5a58329): d
 1.60 (1089 / 683 ms; 5a58329: 2.17, measured before the probe pass went unrated).  With the
 records made without compiling, the JSON indented around the C encoder and the data files kept
 parsed (``--base fa84a7d --rounds 3 --cold 7``, bytecode kept): 224 -> 148 ms / 82 -> 69 ms,
-ratio 2.73 -> 2.14 (under a heavier load 359 -> 225 / 144 -> 101 ms, 2.50 -> 2.23).
+ratio 2.73 -> 2.14 (three runs under a varying load: 1.99-2.73 -> 1.84-2.29).
 """
 
 from __future__ import annotations
