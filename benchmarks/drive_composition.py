@@ -25,7 +25,9 @@ golden 89-154 -> 28-48 ms (3.2-3.8x over seven runs at load averages of 0.8-4.6)
 two-stage GOST + ISO drive 452-707 -> 72-109 ms (5.8-6.7x); cold drive golden / spur_plain
 with the bytecode kept 2.04-2.21 (379-499 / 172-245 ms; 5a58329 on the same machine:
 2.55-2.80), compiled in every process 1.60 (1089 / 683 ms; 5a58329: 2.17, measured before
-the probe pass went unrated).
+the probe pass went unrated).  With the records made without compiling, the JSON indented around the C encoder and the data files kept
+parsed (``--base fa84a7d --rounds 3 --cold 7``, bytecode kept): 224 -> 148 ms / 82 -> 69 ms,
+ratio 2.73 -> 2.14 (three runs under a varying load: 1.99-2.73 -> 1.84-2.29).
 """
 
 from __future__ import annotations

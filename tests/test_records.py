@@ -11,6 +11,7 @@ import dataclasses
 import importlib
 import inspect
 import pkgutil
+import typing
 from dataclasses import field
 
 import pytest
@@ -25,8 +26,7 @@ def _package_records() -> list[type]:
         module = importlib.import_module(m.name)
         for obj in vars(module).values():
             if (isinstance(obj, type) and obj.__module__ == m.name
-                    and dataclasses.is_dataclass(obj)
-                    and getattr(obj.__eq__, "__code__", None) is records._eq(None).__code__):
+                    and dataclasses.is_dataclass(obj) and records.is_record(obj)):
                 out.append(obj)
     return out
 
@@ -56,10 +56,35 @@ def test_the_package_makes_its_records_here():
 def test_a_record_is_the_standard_librarys(cls):
     twin = _twin(cls)
     assert str(inspect.signature(cls)) == str(inspect.signature(twin))
+    assert records._signature(cls, dataclasses.fields(cls)) == str(inspect.signature(cls))
     assert cls.__match_args__ == twin.__match_args__
     assert (cls.__hash__ is None) == (twin.__hash__ is None)
     params = cls.__dataclass_params__
     assert params.init and params.repr and params.eq
+    if "__doc__" not in vars(cls) or cls.__doc__.startswith(cls.__name__ + "("):
+        assert cls.__doc__ == twin.__doc__
+    # the fields are those the standard library would collect: no annotation of the class
+    # is a ClassVar, InitVar or KW_ONLY under any name (its own test of string annotations)
+    for name, kind in vars(cls).get("__annotations__", {}).items():
+        for marker, test in ((typing.ClassVar, dataclasses._is_classvar),
+                             (dataclasses.InitVar, dataclasses._is_initvar),
+                             (dataclasses.KW_ONLY, dataclasses._is_kw_only)):
+            module = typing if marker is typing.ClassVar else dataclasses
+            assert not test(kind, module)
+            assert not (isinstance(kind, str)
+                        and dataclasses._is_type(kind, cls, module, marker, test)), name
+
+
+def test_every_record_shape_is_compiled_with_the_package():
+    """``geardesign/core/record_shapes.py`` holds the ``__init__`` of every record's
+    shape (else that record compiles it when its module is imported): rewrite it with
+    ``python -m geardesign.core.records`` after adding a record of a new shape."""
+    missing = {records.record_shape(c) for c in RECORDS} - set(records.SHAPES)
+    assert not missing, "run `python -m geardesign.core.records`"
+    for key, code in records.SHAPES.items():       # each is the source it stands for
+        scope: dict = {}
+        exec(records.source(key), scope)
+        assert scope["__init__"].__code__.co_code == code.co_code, key
 
 
 def _make(deco):
@@ -105,8 +130,15 @@ def _make(deco):
         u: float
         w: float = 2.0
 
+    @deco(frozen=True)
+    class G(A):
+        """A record of a record: its fields after A's, c's default its own."""
+        q: int = 3
+        c: tuple = (1,)
+
     return {"A": (A, [(1.0,), (1.0, 3, (1,), [2], 5.0, 0.5)]), "B": (B, [(1,), (2, [3])]),
-            "C": (C, [(1.0,)]), "D": (D, [()]), "E": (E, [(1.0,), (2.0, 1)]), "F": (F, [()])}
+            "C": (C, [(1.0,)]), "D": (D, [()]), "E": (E, [(1.0,), (2.0, 1)]), "F": (F, [()]),
+            "G": (G, [(1.0,), (2.0, 1, (3,), [4], 5.0, 0.5, 7)])}
 
 
 OURS, THEIRS = _make(records.dataclass), _make(dataclasses.dataclass)
@@ -148,6 +180,25 @@ def test_records_behave_as_dataclasses(name):
                     setattr(obj, first, 0)
                 with pytest.raises(dataclasses.FrozenInstanceError):
                     delattr(obj, first)
+
+
+def test_a_record_of_a_record_is_made_here_and_frozenness_must_match():
+    assert records.is_record(OURS["G"][0])
+    assert [f.name for f in dataclasses.fields(OURS["G"][0])] == [
+        f.name for f in dataclasses.fields(THEIRS["G"][0])]
+    for deco in (records.dataclass, dataclasses.dataclass):
+        @deco
+        class Mutable:
+            a: int = 1
+
+        @deco(frozen=True)
+        class Frozen:
+            a: int = 1
+
+        with pytest.raises(TypeError, match="cannot inherit frozen dataclass from a non-frozen"):
+            deco(frozen=True)(type("X", (Mutable,), {"__annotations__": {"b": int}, "b": 2}))
+        with pytest.raises(TypeError, match="cannot inherit non-frozen dataclass from a frozen"):
+            deco(type("Y", (Frozen,), {"__annotations__": {"b": int}, "b": 2}))
 
 
 def test_a_missing_argument_and_a_default_before_a_plain_field_are_refused():

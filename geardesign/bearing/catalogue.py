@@ -12,8 +12,6 @@ returned in N.
 
 from __future__ import annotations
 
-import csv
-import difflib
 from functools import lru_cache
 from pathlib import Path
 
@@ -79,39 +77,71 @@ def _num(text: str) -> float | None:
     return float(text) if text else None
 
 
-@lru_cache(maxsize=1)
-def bearings() -> tuple[CatalogueBearing, ...]:
-    """Every catalogue row, in file order (type, maker, series, bore)."""
-    with _FILE.open(encoding="utf-8", newline="") as f:
-        lines = [line for line in f if not line.startswith("#")]
-    out = []
-    for r in csv.DictReader(lines):
-        kn = 1000.0
-        out.append(CatalogueBearing(
+def _parse(text: str) -> tuple[list[tuple], dict[str, list[int]], dict[str, list[int]]]:
+    """The catalogue file as its rows (the fields of :class:`CatalogueBearing` in order,
+    ratings in N) and two indexes of row numbers: ISO and maker designations, GOST
+    designations (keys by :func:`_key`).  Kept parsed (:func:`geardesign.core.data.parsed`)."""
+    from geardesign.core.data import csv_rows
+
+    rows, iso, gost = [], {}, {}
+    kn = 1000.0
+    for i, r in enumerate(csv_rows(text)):
+        rows.append((
             r["designation"], r["gost"], r["type"], r["series"], float(r["d"]), float(r["D"]),
             float(r["B"]), float(r["C_r"]) * kn, float(r["C_0r"]) * kn,
             _num(r["C_u"]) * kn if r["C_u"] else None, _num(r["e"]), _num(r["Y"]), r["source"],
             r["note"], r["maker"], r["maker_designation"], _num(r["Y1"]), _num(r["Y0"]),
             _num(r["f0"]), _num(r["alpha"]), _num(r["n_ref"]), _num(r["n_lim"]), _num(r["mass"]),
             r["page"]))
-    return tuple(out)
+        for k in sorted({_key(r["designation"]), _key(r["maker_designation"])} - {""}):
+            iso.setdefault(k, []).append(i)
+        if r["gost"]:
+            gost.setdefault(_key(r["gost"]), []).append(i)
+    return rows, iso, gost
+
+
+@lru_cache(maxsize=1)
+def _table() -> tuple[list[tuple], dict[str, list[int]], dict[str, list[int]]]:
+    from geardesign.core.data import parsed
+
+    return parsed(_FILE, _parse)
+
+
+@lru_cache(maxsize=None)
+def _row(i: int) -> CatalogueBearing:
+    """Row ``i`` of the file (made on first use: a look-up makes only the rows it finds)."""
+    return CatalogueBearing(*_table()[0][i])
+
+
+@lru_cache(maxsize=1)
+def bearings() -> tuple[CatalogueBearing, ...]:
+    """Every catalogue row, in file order (type, maker, series, bore)."""
+    return tuple(_row(i) for i in range(len(_table()[0])))
+
+
+_MAKER = 14
+"""Where ``maker`` is in a row of :func:`_table` (the order of the fields)."""
+
+
+class _Rows(dict):
+    """An index of :func:`_table` (key -> row numbers) that gives the rows themselves."""
+
+    def __init__(self, numbers: dict[str, list[int]]):
+        super().__init__(numbers)
+
+    def __getitem__(self, key: str) -> list[CatalogueBearing]:
+        return [_row(i) for i in super().__getitem__(key)]
 
 
 @lru_cache(maxsize=1)
 def _index() -> tuple[dict, dict]:
     """(ISO and maker designations -> rows, GOST designations -> rows)."""
-    iso: dict[str, list] = {}
-    gost: dict[str, list] = {}
-    for b in bearings():
-        for k in {_key(b.designation), _key(b.maker_designation)} - {""}:
-            iso.setdefault(k, []).append(b)
-        if b.gost:
-            gost.setdefault(_key(b.gost), []).append(b)
-    return iso, gost
+    _, iso, gost = _table()
+    return _Rows(iso), _Rows(gost)
 
 
 def makers() -> tuple[str, ...]:
-    return tuple(dict.fromkeys(b.maker for b in bearings()))
+    return tuple(dict.fromkeys(row[_MAKER] for row in _table()[0]))
 
 
 def _pick(rows: list, maker: str | None) -> CatalogueBearing | None:
@@ -249,12 +279,14 @@ def find(designation: str, maker: str | None = None) -> CatalogueBearing | None:
 
 def close_matches(designation: str, n: int = 3) -> list[str]:
     """ISO designations close to a mistyped one (GOST names only when no ISO name is close)."""
+    from difflib import get_close_matches
+
     for names in (sorted({b.designation for b in bearings()}),
                   sorted({b.gost for b in bearings() if b.gost})):
         keyed = {_key(x): x for x in names}
         k = _key(designation)
         swapped = [m for m in keyed if sorted(m) == sorted(k) and m != k]   # transposed digits
-        found = list(dict.fromkeys(swapped + difflib.get_close_matches(k, list(keyed), n, 0.5)))
+        found = list(dict.fromkeys(swapped + get_close_matches(k, list(keyed), n, 0.5)))
         found = found[:n]
         if found:
             return [keyed[m] for m in found]

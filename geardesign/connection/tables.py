@@ -4,7 +4,6 @@ counted from 1) so that a report can cite it."""
 
 from __future__ import annotations
 
-import csv
 from functools import lru_cache
 from pathlib import Path
 
@@ -14,16 +13,16 @@ HERE = Path(__file__).resolve().parent
 
 
 def _rows(name: str) -> list[dict]:
-    with (HERE / name).open(encoding="utf-8") as fh:
-        lines = [line for line in fh if not line.startswith("#")]
-    return list(csv.DictReader(lines))
+    from geardesign.core.data import csv_table
+
+    return csv_table(HERE / name)
 
 
 @lru_cache(maxsize=None)
 def toml() -> dict:
-    import tomllib
+    from geardesign.core.data import toml_table
 
-    return tomllib.loads((HERE / "tables.toml").read_text(encoding="utf-8"))
+    return toml_table(HERE / "tables.toml")
 
 
 @dataclass(frozen=True)

@@ -19,7 +19,6 @@ each check that then passes carries its own fix (at most :data:`MAX_PROPOSALS` p
 
 from __future__ import annotations
 
-import contextvars
 import copy
 import math
 import dataclasses
@@ -27,6 +26,8 @@ import re
 from collections.abc import Callable, Iterable
 
 from geardesign.core.errors import InputError
+from geardesign.core.rerating import RERATING as _RERATING
+from geardesign.core.rerating import rerating  # noqa: F401 (API)
 from geardesign.core.result import Result, fix_text
 
 MAX_TRIES = 40
@@ -98,16 +99,6 @@ def apply_fix(data: dict, fix) -> dict:
                 if last:
                     raise KeyError(key)
     return out
-
-
-_RERATING = contextvars.ContextVar("rerating", default=False)
-
-
-def rerating() -> bool:
-    """Whether the present calculation is a candidate's re-rating (:func:`rerate`): only
-    its error checks' verdicts are read, so a report may leave out what only words its
-    messages (the face width found by re-rating, a nested stage's advice)."""
-    return _RERATING.get()
 
 
 def rerate(calc, spec, fix) -> Result | None:

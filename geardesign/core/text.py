@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import re
+from functools import lru_cache
 from typing import Any
 
 _CONTROLS = re.compile(
@@ -39,14 +40,124 @@ def json_text(obj, indent: int | None = None) -> str:
     """``obj`` as JSON (UTF-8 kept, no NaN allowed) with the characters of
     :func:`escape_controls` that JSON itself leaves raw (DEL, C1 controls, bidi marks and
     overrides, line/paragraph separators) written as ``\\uNNNN``: the same string to a
-    JSON reader, inert on a terminal."""
+    JSON reader, inert on a terminal.
+
+    The text is that of ``json.dumps(obj, indent=indent, ensure_ascii=False,
+    allow_nan=False)``; with an ``indent``, plain JSON data (dicts with string keys, lists,
+    tuples, strings, numbers, booleans, ``None``) is written by :func:`_indented`, which
+    the standard library does in pure Python (its C encoder only writes without indent);
+    anything else, and every error, is the standard library's own.
+
+    >>> print(json_text({"a": [1, 2.5], "b": {}, "c": {"d": None}}, indent=1))
+    {
+     "a": [
+      1,
+      2.5
+     ],
+     "b": {},
+     "c": {
+      "d": null
+     }
+    }
+    """
+    if indent is not None and type(indent) is int:
+        try:
+            return _indented(obj, indent)
+        except (_NotPlain, ValueError, RecursionError):
+            pass        # the standard library writes it or says what is wrong
     import json
 
-    text = json.dumps(obj, indent=indent, ensure_ascii=False, allow_nan=False)
-    return _RAW_IN_JSON.sub(lambda m: f"\\u{ord(m.group(0)):04x}", text)
+    return _raw_escaped(json.dumps(obj, indent=indent, ensure_ascii=False, allow_nan=False))
 
 
 _RAW_IN_JSON = re.compile("[\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069\u2028\u2029]")
+
+
+def _raw_escaped(text: str) -> str:
+    """``text`` with the characters of :data:`_RAW_IN_JSON` written as ``\\uNNNN``."""
+    if text.isascii() and "\x7f" not in text:    # a flag of the string, a memchr: no regex
+        return text
+    return _RAW_IN_JSON.sub(lambda m: f"\\u{ord(m.group(0)):04x}", text)
+
+
+class _NotPlain(Exception):
+    """Not plain JSON data: :func:`json_text` leaves it to the standard library."""
+
+
+def _refuse(obj):
+    raise _NotPlain
+
+
+_LEAF = frozenset((str, int, float, bool, type(None)))
+
+
+@lru_cache(maxsize=None)
+def _flat(pad: str):
+    """The C encoder of the standard library writing a dict or list of leaves one item a
+    line, each line beginning with ``pad`` (a newline and the indent)."""
+    from json.encoder import c_make_encoder, encode_basestring
+
+    if c_make_encoder is None:
+        raise _NotPlain
+    return c_make_encoder(None, _refuse, encode_basestring, None, ": ", "," + pad, False,
+                          False, False)
+
+
+def _indented(obj, indent: int) -> str:
+    """``json.dumps(obj, indent=indent, ensure_ascii=False, allow_nan=False)`` with the raw
+    characters escaped (:func:`json_text`), for plain JSON data.  A dict or list whose
+    values are all leaves, most of a report, is written by the C encoder (:func:`_flat`),
+    the nesting around them here; raises :class:`_NotPlain` for anything else, and
+    ``ValueError`` for a non-finite number."""
+    from json.encoder import encode_basestring
+
+    out: list[str] = []
+    add = out.append
+    step = " " * indent
+
+    def leaves(text: str) -> None:
+        add(_raw_escaped(text))
+
+    def flat(o, values, pad: str, inner: str) -> bool:
+        """Write ``o`` by the C encoder if its ``values`` are all leaves."""
+        for v in values:
+            if type(v) not in _LEAF:
+                return False
+        text = "".join(_flat(inner)(o, 0))
+        leaves(text[0] + inner + text[1:-1] + pad + text[-1])
+        return True
+
+    def walk(o, pad: str) -> None:
+        inner = pad + step
+        if isinstance(o, dict):
+            if not o:
+                add("{}")
+            elif not flat(o, o.values(), pad, inner):
+                sep = "{" + inner
+                for k, v in o.items():
+                    if type(k) is not str:
+                        raise _NotPlain
+                    leaves(sep + encode_basestring(k) + ": ")
+                    sep = "," + inner
+                    walk(v, inner)
+                add(pad + "}")
+        elif isinstance(o, (list, tuple)):
+            if not o:
+                add("[]")
+            elif not flat(o, o, pad, inner):
+                sep = "[" + inner
+                for v in o:
+                    add(sep)
+                    sep = "," + inner
+                    walk(v, inner)
+                add(pad + "]")
+        elif type(o) in _LEAF:
+            leaves("".join(_flat(inner)(o, 0)))
+        else:
+            raise _NotPlain
+
+    walk(obj, "\n")
+    return "".join(out)
 
 
 def fmt(value: Any) -> str:

@@ -29,9 +29,9 @@ G = 9.81                    # m/s², gravitational acceleration
 @lru_cache(maxsize=1)
 def data() -> dict:
     """The tables of ``losses.toml``."""
-    import tomllib
+    from geardesign.core.data import toml_table
 
-    return tomllib.loads(Path(__file__).with_name("losses.toml").read_text(encoding="utf-8"))
+    return toml_table(Path(__file__).with_name("losses.toml"))
 
 
 # ----------------------------------------------------------------------------- tooth mesh

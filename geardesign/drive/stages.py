@@ -258,7 +258,7 @@ def finish(kind: str, spec, make: Callable[[], Result], where: str,
     import importlib
     import importlib.util
 
-    from geardesign.core.advice import rerating
+    from geardesign.core.rerating import rerating
     from geardesign.core.registry import _say_default, get
     from geardesign.core.result import guard
 

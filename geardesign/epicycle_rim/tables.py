@@ -8,9 +8,9 @@ from pathlib import Path
 
 @lru_cache(maxsize=None)
 def _data() -> dict:
-    import tomllib
+    from geardesign.core.data import toml_table
 
-    return tomllib.loads((Path(__file__).with_name("tables.toml")).read_text(encoding="utf-8"))
+    return toml_table(Path(__file__).with_name("tables.toml"))
 
 
 def loading_modes() -> dict[str, dict]:

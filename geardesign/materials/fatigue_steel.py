@@ -16,10 +16,9 @@ from pathlib import Path
 def grades() -> dict[str, dict]:
     """All grades: ``{name: {"sigma_u", "sigma_y", "sigma_m1", "hardness", "treatment",
     "source"}}`` (stresses in MPa)."""
-    import tomllib
+    from geardesign.core.data import toml_table
 
-    text = Path(__file__).with_name("fatigue_steel.toml").read_text(encoding="utf-8")
-    return tomllib.loads(text)
+    return toml_table(Path(__file__).with_name("fatigue_steel.toml"))
 
 
 def grade(name: str) -> dict:

@@ -45,11 +45,9 @@ def linear(expr: str, values: dict[str, float | None]) -> float | None:
 
 @lru_cache(maxsize=1)
 def library() -> dict:
-    try:
-        import tomllib
-    except ModuleNotFoundError:  # pragma: no cover
-        import tomli as tomllib  # type: ignore[no-redef]
-    return tomllib.loads(DATA.read_text(encoding="utf-8"))
+    from geardesign.core.data import toml_table
+
+    return toml_table(DATA)
 
 
 #: Russian grade letters written in Latin as in the library (GOST 4543 names: 40Х -> 40Kh).

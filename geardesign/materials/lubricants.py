@@ -10,8 +10,6 @@ use only.
 
 from __future__ import annotations
 
-import csv
-import difflib
 import math
 from functools import lru_cache
 from pathlib import Path
@@ -69,13 +67,20 @@ def _num(x: str) -> float | None:
     return float(x) if x else None
 
 
+def _parse(text: str) -> list[tuple]:
+    """The rows of ``lubricants.csv``: the fields of :class:`Oil` in order."""
+    from geardesign.core.data import csv_rows
+
+    return [(r["grade"], float(r["nu40"]), float(r["nu40_min"]), float(r["nu40_max"]),
+             float(r["VI"]), _num(r["density_15"]), _num(r["fzg_stage"]), r["source"],
+             r["page"]) for r in csv_rows(text)]
+
+
 @lru_cache(maxsize=1)
 def grades() -> tuple[Oil, ...]:
-    with _FILE.open(encoding="utf-8", newline="") as f:
-        lines = [line for line in f if not line.startswith("#")]
-    return tuple(Oil(r["grade"], float(r["nu40"]), float(r["nu40_min"]), float(r["nu40_max"]),
-                     float(r["VI"]), _num(r["density_15"]), _num(r["fzg_stage"]), r["source"],
-                     r["page"]) for r in csv.DictReader(lines))
+    from geardesign.core.data import parsed
+
+    return tuple(Oil(*row) for row in parsed(_FILE, _parse))
 
 
 def _key(name: str) -> str:
@@ -98,8 +103,10 @@ def close_matches(name: str, n: int = 3) -> list[str]:
     if x is not None and x > 0:
         near = sorted(grades(), key=lambda o: abs(math.log(o.nu40 / x)))[:2]
         return [o.grade for o in sorted(near, key=lambda o: o.nu40)]
+    from difflib import get_close_matches  # only to name a close match
+
     names = {_key(o.grade): o.grade for o in grades()}
-    return [names[m] for m in difflib.get_close_matches(_key(name), list(names), n, 0.6)]
+    return [names[m] for m in get_close_matches(_key(name), list(names), n, 0.6)]
 
 
 # ----------------------------------------------------------------------------- ASTM D2270

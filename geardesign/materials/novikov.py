@@ -23,10 +23,8 @@ class NovikovSteel:
 @lru_cache(maxsize=1)
 def steel() -> NovikovSteel:
     """The steel constants of ``novikov.toml``."""
-    try:
-        import tomllib
-    except ModuleNotFoundError:  # pragma: no cover - Python < 3.11
-        import tomli as tomllib  # type: ignore[no-redef]
-    s = tomllib.loads(DATA.read_text(encoding="utf-8"))["steel"]
+    from geardesign.core.data import toml_table
+
+    s = toml_table(DATA)["steel"]
     return NovikovSteel(float(s["E"]), float(s["nu"]), float(s["hardness_max_HB"]),
                         float(s["hardness_diff_min_HB"]))

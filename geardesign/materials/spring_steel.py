@@ -48,9 +48,9 @@ class SpringSteel:
 @lru_cache(maxsize=1)
 def table() -> dict[str, SpringSteel]:
     """All grades, by key."""
-    import tomllib
+    from geardesign.core.data import toml_table
 
-    raw = tomllib.loads(DATA.read_text(encoding="utf-8"))
+    raw = toml_table(DATA)
     return {k: SpringSteel(key=k, **v) for k, v in raw.items()}
 
 

@@ -64,9 +64,9 @@ class WheelMaterial:
 
 @lru_cache(maxsize=1)
 def _library() -> dict[str, WheelMaterial]:
-    import tomllib
+    from geardesign.core.data import toml_table
 
-    data = tomllib.loads(Path(__file__).with_name("worm_wheel.toml").read_text("utf-8"))
+    data = toml_table(Path(__file__).with_name("worm_wheel.toml"))
     return {
         name: WheelMaterial(name, row["description"], row["group"], row["casting"],
                             row.get("sigma_B"), row.get("sigma_T"), row.get("sigma_bu"),

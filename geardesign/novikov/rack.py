@@ -45,11 +45,9 @@ class NovikovRack:
 
 @lru_cache(maxsize=1)
 def library() -> dict:
-    try:
-        import tomllib
-    except ModuleNotFoundError:  # pragma: no cover - Python < 3.11
-        import tomli as tomllib  # type: ignore[no-redef]
-    return tomllib.loads(DATA.read_text(encoding="utf-8"))
+    from geardesign.core.data import toml_table
+
+    return toml_table(DATA)
 
 
 def standard_rack(name: str = STANDARD) -> NovikovRack:

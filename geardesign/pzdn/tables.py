@@ -10,9 +10,9 @@ DATA = Path(__file__).with_name("tables.toml")
 
 @lru_cache(maxsize=1)
 def data() -> dict:
-    import tomllib
+    from geardesign.core.data import toml_table
 
-    return tomllib.loads(DATA.read_text(encoding="utf-8"))
+    return toml_table(DATA)
 
 
 def wire_series() -> tuple[float, ...]:

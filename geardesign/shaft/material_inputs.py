@@ -6,7 +6,6 @@ strengths; with DIN 743 the DIN 743-3 steel at its blank size).  Every rule rais
 
 from __future__ import annotations
 
-import difflib
 
 from geardesign.core.errors import InputError, Problem, Problems, Unusable
 from geardesign.core.spec import ValidatedSpec
@@ -113,7 +112,9 @@ def _gost_material(m: dict) -> tuple[Material, dict]:
     if m["grade"] is not None:
         key = _grade_key(m["grade"])
         if key not in steels:
-            close = difflib.get_close_matches(key, list(steels), 3, 0.5)
+            from difflib import get_close_matches  # only to name a close match
+
+            close = get_close_matches(key, list(steels), 3, 0.5)
             hint = f" (did you mean {', '.join(repr(c) for c in close)}?)" if close else ""
             raise InputError.at("material.grade", m["grade"],
                                 f"unknown shaft steel{hint}; known: {', '.join(steels)}; or "

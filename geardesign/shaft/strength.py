@@ -26,9 +26,9 @@ from geardesign.fatigue import gost25504 as g25
 
 @lru_cache(maxsize=1)
 def tables() -> dict:
-    import tomllib
+    from geardesign.core.data import toml_table
 
-    return tomllib.loads(Path(__file__).with_name("tables.toml").read_text(encoding="utf-8"))
+    return toml_table(Path(__file__).with_name("tables.toml"))
 
 
 TABLE_D_MAX = 100.0

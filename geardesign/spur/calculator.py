@@ -52,18 +52,22 @@ def advised_report(record) -> Result:
     failed checks found by re-rating (:func:`geardesign.core.advice.advise` with the spur
     levers; left out while a re-rating reads verdicts only).  ``record.inputs.spec`` must be
     set.  Other calculators that nest a spur report (the pzdn coupling gear) call this."""
-    from geardesign.core.advice import advise, rerating
     from geardesign.core.errors import InputError
     from geardesign.core.registry import _say_default
     from geardesign.core.result import guard
-    from geardesign.spur import CALCULATOR
 
     spec = record.inputs.spec
     try:
         res = guard(report(record))
     except InputError as exc:
         raise InputError([_say_default(p, spec) for p in exc.problems]) from exc
-    if res.failed and not rerating():
+    if not res.failed:
+        return res
+    from geardesign.core.rerating import rerating
+
+    if not rerating():
+        from geardesign.core.advice import advise
+        from geardesign.spur import CALCULATOR
         from geardesign.spur.levers import LEVERS
 
         res = advise(CALCULATOR, spec, res, LEVERS)

@@ -204,7 +204,7 @@ def _add_gost_strength(res: Result, geom: PairGeometry, spec, inputs, rating) ->
     face_limit = ADVICE_FACE_MAX
     contact_fails = v["sigma_H"] > v["sigma_HP"] * (1 + 1e-12)
     bending_fails = any(v[f"S_F{k}"] < v[f"S_F{k}_min"] * (1 - 1e-12) for k in (1, 2))
-    from geardesign.core.advice import rerating
+    from geardesign.core.rerating import rerating
 
     if (contact_fails or bending_fails) and not getattr(geom, "internal", False) \
             and not rerating():   # a candidate's re-rating reads the verdicts only

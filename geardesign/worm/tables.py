@@ -19,9 +19,9 @@ from pathlib import Path
 @lru_cache(maxsize=1)
 def data() -> dict:
     """The parsed ``tables.toml``."""
-    import tomllib
+    from geardesign.core.data import toml_table
 
-    return tomllib.loads(Path(__file__).with_name("tables.toml").read_text("utf-8"))
+    return toml_table(Path(__file__).with_name("tables.toml"))
 
 
 def interp(x: float, xs: list[float], ys: list[float], extrapolate: bool = False) -> float:

@@ -21,6 +21,6 @@ from pathlib import Path
 @lru_cache(maxsize=1)
 def tables() -> dict:
     """The DIN 743 tables (``tables.toml``)."""
-    import tomllib
+    from geardesign.core.data import toml_table
 
-    return tomllib.loads(Path(__file__).with_name("tables.toml").read_text(encoding="utf-8"))
+    return toml_table(Path(__file__).with_name("tables.toml"))

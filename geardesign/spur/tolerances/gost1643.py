@@ -40,9 +40,9 @@ class ToleranceError(ValueError):
 
 @lru_cache(maxsize=None)
 def _data() -> dict:
-    import tomllib
+    from geardesign.core.data import toml_table
 
-    return tomllib.loads(Path(__file__).with_name("it_grades.toml").read_text(encoding="utf-8"))
+    return toml_table(Path(__file__).with_name("it_grades.toml"))
 
 
 def it_value(grade: int, size: float) -> float:

@@ -64,9 +64,9 @@ KEYS = ("f_pT", "F_pT", "f_HalphaT", "f_falphaT", "F_alphaT", "f_HbetaT", "f_fbe
 
 @lru_cache(maxsize=None)
 def _data() -> dict:
-    import tomllib
+    from geardesign.core.data import toml_table
 
-    return tomllib.loads(Path(__file__).with_name("iso1328.toml").read_text(encoding="utf-8"))
+    return toml_table(Path(__file__).with_name("iso1328.toml"))
 
 
 def grades(standard: str = STANDARD) -> range:

@@ -19,7 +19,7 @@ def add_iso_strength(res, geom, spec, inputs, rating=None, iso=None) -> dict:
     res.methods.append(ISO_NAME)
     add_rows(res, rating, IR.SECTIONS)
     internal = bool(getattr(geom, "internal", False))
-    from geardesign.core.advice import rerating
+    from geardesign.core.rerating import rerating
 
     found = None if internal or rerating() else _advice(rating.v, geom, mats, duty, setting,
                                                          iso)
