@@ -10,9 +10,14 @@ import copy
 import dataclasses
 import importlib
 import inspect
+import marshal
+import os
 import pkgutil
+import subprocess
+import sys
 import typing
 from dataclasses import field
+from pathlib import Path
 
 import pytest
 
@@ -75,16 +80,44 @@ def test_a_record_is_the_standard_librarys(cls):
                         and dataclasses._is_type(kind, cls, module, marker, test)), name
 
 
-def test_every_record_shape_is_compiled_with_the_package():
-    """``geardesign/core/record_shapes.py`` holds the ``__init__`` of every record's
-    shape (else that record compiles it when its module is imported): rewrite it with
-    ``python -m geardesign.core.records`` after adding a record of a new shape."""
-    missing = {records.record_shape(c) for c in RECORDS} - set(records.SHAPES)
-    assert not missing, "run `python -m geardesign.core.records`"
-    for key, code in records.SHAPES.items():       # each is the source it stands for
+def test_every_record_shape_is_the_code_of_its_source():
+    """The ``__init__`` code of each record's shape is what its source compiles to."""
+    for key in {records.record_shape(c) for c in RECORDS}:
         scope: dict = {}
         exec(records.source(key), scope)
-        assert scope["__init__"].__code__.co_code == code.co_code, key
+        assert scope["__init__"].__code__.co_code == records.shape_code(key).co_code, key
+
+
+_RUN = ("import geardesign.drive.calculator, geardesign.bevel.calculator; "
+        "from geardesign.core import records; print(len(records._NEW))")
+
+
+def _compiled_in_a_run(prefix, dont_write: bool = False) -> int:
+    env = {**os.environ, "PYTHONPYCACHEPREFIX": str(prefix)}
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
+    if dont_write:
+        env["PYTHONDONTWRITEBYTECODE"] = "1"
+    out = subprocess.run([sys.executable, "-c", _RUN], env=env, capture_output=True,
+                         text=True, check=True, cwd=Path(__file__).resolve().parent.parent)
+    return int(out.stdout)
+
+
+def test_the_shapes_compiled_once_are_kept_beside_the_bytecode(tmp_path):
+    """A run compiles the shapes it uses and keeps them with the bytecode (here under a
+    PYTHONPYCACHEPREFIX); the next run compiles none; nothing is kept when Python writes no
+    bytecode; a cache of another source of records.py is not used."""
+    assert _compiled_in_a_run(tmp_path / "none", dont_write=True) > 20
+    assert _compiled_in_a_run(tmp_path / "none", dont_write=True) > 20
+    first = _compiled_in_a_run(tmp_path / "kept")
+    assert first > 20
+    assert _compiled_in_a_run(tmp_path / "kept") == 0
+    (cache,) = (tmp_path / "kept").rglob("records.py.shapes.*.data")
+    stamp, kept = marshal.loads(cache.read_bytes())
+    assert len(kept) == first and stamp == records._shapes_stamp()
+    cache.write_bytes(marshal.dumps(((0,), kept)))        # another source: compiled again
+    assert _compiled_in_a_run(tmp_path / "kept") == first
+    cache.write_bytes(b"not marshal")                      # unreadable: compiled again
+    assert _compiled_in_a_run(tmp_path / "kept") == first
 
 
 def _make(deco):

@@ -71,6 +71,34 @@ def parsed(path: Path, parse: Callable[[str], Any]) -> Any:
     return value
 
 
+def kept(owner: Path, name: str, stamp: tuple) -> Any:
+    """The value :func:`keep` last kept for ``owner`` under ``name`` with this ``stamp``
+    (``None`` when there is none, or it was kept with another stamp, or cannot be read):
+    a cache beside the bytecode for what a module makes from its own source."""
+    cache = _cache_name(Path(owner), name)
+    if cache is None:
+        return None
+    try:
+        with open(cache, "rb") as f:
+            was, value = marshal.loads(f.read())
+    except (OSError, EOFError, ValueError, TypeError):
+        return None
+    return value if was == stamp else None
+
+
+def keep(owner: Path, name: str, stamp: tuple, value: Any) -> None:
+    """Keep ``value`` (anything :mod:`marshal` writes, code objects included) for
+    :func:`kept`; nothing is written when Python writes no bytecode."""
+    cache = _cache_name(Path(owner), name)
+    if cache is not None and not sys.dont_write_bytecode:
+        _write(cache, stamp, value)
+
+
+def stat(path) -> tuple[int, int]:
+    """The modification time [ns] and size of ``path``: the stamp of a file's content."""
+    return _stat(path)
+
+
 def _stamp(path: Path, parse: Callable) -> tuple:
     """What the cache must match: the data file, the module of the parser and this one
     (whose readers a parser may call)."""
@@ -88,10 +116,16 @@ def _stat(path) -> tuple[int, int]:
 def _cache_file(path: Path, parse: Callable) -> Path | None:
     """``__pycache__/<file>.<parser>.<cache tag>.data`` beside ``path`` (or under
     ``sys.pycache_prefix``, as the bytecode is), or ``None`` when Python keeps none."""
+    return _cache_name(path, parse.__qualname__.strip('_') or 'parse')
+
+
+def _cache_name(path: Path, what: str) -> Path | None:
+    """``__pycache__/<file>.<what>.<cache tag>.data`` beside ``path`` (see
+    :func:`_cache_file`)."""
     tag = sys.implementation.cache_tag
     if tag is None:
         return None
-    name = f"{path.name}.{parse.__qualname__.strip('_') or 'parse'}.{tag}.data"
+    name = f"{path.name}.{what}.{tag}.data"
     folder = path.resolve().parent
     if sys.pycache_prefix:
         return Path(sys.pycache_prefix, *folder.parts[1:], name)

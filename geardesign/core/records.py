@@ -9,11 +9,10 @@ spec's start-up; issue 28).  Here nothing is compiled when a record is made:
 * the fields are collected as :func:`dataclasses.dataclass` collects them (:func:`_collect`:
   ``field()`` or plain defaults, those of record bases first, the same refusals), stored
   where :func:`dataclasses.fields`, ``asdict`` and ``replace`` find them;
-* ``__init__`` is the code the standard library writes, taken by its :func:`shape` (what
-  each field does, whatever its name) from :data:`SHAPES`, compiled with the package
-  (``core/record_shapes.py``, written by ``python -m geardesign.core.records``), with the
-  field names put in; defaults are the function's own, factories in its globals; a shape
-  that file lacks is compiled once a process;
+* ``__init__`` is the code the standard library writes, compiled once for its
+  :func:`shape` (what each field does, whatever its name) and kept beside the bytecode as
+  the bytecode is (:func:`shape_code`), with the field names put in; defaults are the
+  function's own, factories in its globals;
 * ``__repr__``, ``__eq__``, ``__hash__`` and a frozen record's ``__setattr__``/
   ``__delattr__`` are shared functions over the record's field names that print, compare,
   hash and refuse exactly as the generated ones do (``compare``/``hash``/``repr`` of
@@ -35,6 +34,7 @@ import dataclasses
 from dataclasses import _FIELD, MISSING, Field
 from functools import lru_cache
 from operator import attrgetter
+from pathlib import Path
 from reprlib import recursive_repr
 from types import FunctionType, MemberDescriptorType
 
@@ -188,7 +188,7 @@ def _params(frozen: bool, kw_only: bool):
 
 def _init(cls, fields, frozen: bool):
     """The ``__init__`` the standard library writes for ``fields``: the code of its
-    :func:`shape` (precompiled, :data:`SHAPES`, or compiled once a process) with the names
+    :func:`shape` (:func:`shape_code`: kept beside the bytecode) with the names
     of ``fields`` put in; defaults as the function's defaults, factories in its globals."""
     scope = {"__factory": _HAS_FACTORY, "__set": object.__setattr__,
              "__name__": cls.__module__}
@@ -209,7 +209,7 @@ def _init(cls, fields, frozen: bool):
         elif defaults:
             raise TypeError(f"non-default argument {f.name!r} follows default argument")
     key = shape(fields, frozen, hasattr(cls, "__post_init__"))
-    code = SHAPES.get(key) or _compiled(key)
+    code = shape_code(key)
     names = {f"_{i}": f.name for i, f in enumerate(fields)}
     code = code.replace(
         co_varnames=tuple(names.get(v, v) for v in code.co_varnames),
@@ -262,48 +262,58 @@ def source(key: str) -> str:
             + "\n    ".join(body or ["pass"]) + "\n")
 
 
-@lru_cache(maxsize=None)
 def _compiled(key: str):
-    """The code of :func:`source` ``key`` (a shape :data:`SHAPES` lacks: compiled once a
-    process)."""
+    """The code of :func:`source` ``key``."""
     scope: dict = {}
     exec(source(key), scope)
     return scope["__init__"].__code__
 
 
-try:
-    from geardesign.core.record_shapes import SHAPES
-except ImportError:     # pragma: no cover - the file is written by write_shapes()
-    SHAPES = {}
-"""The code of the ``__init__`` of every :func:`shape` of the package's records, compiled
-with the package like any module (``geardesign/core/record_shapes.py``, written by
-:func:`write_shapes`; tests/test_records.py checks that it has every shape)."""
+_SHAPES: dict | None = None
+"""The code of each :func:`shape` this process has used, read from the cache beside the
+bytecode at the first record (:func:`shape_code`)."""
+
+_NEW: list[str] = []
+"""The shapes this process compiled (written to the cache when it exits)."""
 
 
-def write_shapes() -> None:
-    """Rewrite ``record_shapes.py`` with the shapes of every record of the package."""
-    import importlib
-    import pkgutil
-    from pathlib import Path
+def _shapes_stamp() -> tuple:
+    """What the kept shapes were compiled from: this module's source (:func:`source`)."""
+    from geardesign.core import data
 
-    import geardesign
+    return (1, data.stat(__file__))
 
-    found = set()
-    for m in pkgutil.walk_packages(geardesign.__path__, "geardesign."):
-        module = importlib.import_module(m.name)
-        for obj in vars(module).values():
-            if isinstance(obj, type) and obj.__module__ == m.name and is_record(obj):
-                found.add(record_shape(obj))
-    lines = ['"""The ``__init__`` of every record shape of the package '
-             '(:func:`geardesign.core.records.shape`),',
-             "compiled with the package.  Written by ``python -m geardesign.core.records``; "
-             "do not edit (one",
-             "function a shape: longer than a module is meant to be, as it is generated)."
-             '"""', "", "# fmt: off", "# ruff: noqa", "SHAPES = {}", ""]
-    for key in sorted(found, key=lambda k: (len(k), k)):
-        lines += [source(key).rstrip("\n"), f"SHAPES[{key!r}] = __init__.__code__", ""]
-    lines.append("del __init__")
-    Path(__file__).with_name("record_shapes.py").write_text("\n".join(lines) + "\n", "utf-8")
+
+def shape_code(key: str):
+    """The code of the ``__init__`` of :func:`shape` ``key``: from the cache that
+    :mod:`geardesign.core.data` keeps beside this module's bytecode, or compiled (about
+    0.05 ms a shape, a hundred shapes for a drive) and added to that cache when the process
+    exits, so that a later run compiles none.  The cache is stamped with this module's
+    source, which writes the shapes."""
+    global _SHAPES
+    if _SHAPES is None:
+        from geardesign.core import data
+
+        _SHAPES = data.kept(Path(__file__), "shapes", _shapes_stamp()) or {}
+    code = _SHAPES.get(key)
+    if code is None:
+        code = _SHAPES[key] = _compiled(key)
+        if not _NEW:
+            import atexit
+
+            atexit.register(_keep_shapes)
+        _NEW.append(key)
+    return code
+
+
+def _keep_shapes() -> None:
+    """Add the shapes compiled here to the cache (with those another process kept since)."""
+    from geardesign.core import data
+
+    stamp = _shapes_stamp()
+    merged = dict(data.kept(Path(__file__), "shapes", stamp) or {})
+    merged.update({k: _SHAPES[k] for k in _NEW})
+    data.keep(Path(__file__), "shapes", stamp, merged)
 
 
 def is_record(cls) -> bool:
@@ -377,8 +387,3 @@ def _hash(values):
         return hash(values(self))
     return __hash__
 
-
-if __name__ == "__main__":
-    from geardesign.core import records
-
-    records.write_shapes()
