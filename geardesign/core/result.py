@@ -144,6 +144,11 @@ def fix_text(fix) -> str:
 def clean_value(v: Any) -> Any:
     """JSON has no NaN or infinity: an undefined number is reported as null (``None``),
     in a list too.  The one cleaning step of every value before any renderer sees it."""
+    kind = type(v)
+    if kind is float:               # most values: tested before any isinstance
+        return v if math.isfinite(v) else None
+    if kind is str or kind is int or v is None:
+        return v
     if isinstance(v, float) and not math.isfinite(v):
         return None
     if isinstance(v, (list, tuple)):
@@ -154,9 +159,17 @@ def clean_value(v: Any) -> Any:
 _clean = clean_value
 
 
+def _kept(v: Any) -> Any:
+    """A value of a :func:`cleaned` result: clean already."""
+    return v
+
+
 def _unclean(v: Any) -> bool:
     """Whether :func:`clean_value` changes ``v`` (a non-finite float, a tuple, or a list
     holding one)."""
+    kind = type(v)
+    if kind is str or kind is int or v is None:
+        return False
     if isinstance(v, float):
         return not math.isfinite(v)
     if isinstance(v, tuple):
@@ -168,7 +181,8 @@ def cleaned(res: "Result") -> "Result":
     """A copy of ``res`` with every value (rows, inputs, table cells, check values and
     limits, parts) through :func:`clean_value`: what every renderer receives, so that the
     table, Markdown, HTML, CSV and JSON reports show the same document.  Rows and checks
-    (frozen) whose values are clean already are shared, not rebuilt."""
+    (frozen) whose values are clean already are shared, not rebuilt; the copy is marked
+    so that its :meth:`Result.document` does not clean (copy) every value again."""
     from dataclasses import replace
 
     def clean_row(r: Row) -> Row:
@@ -183,6 +197,7 @@ def cleaned(res: "Result") -> "Result":
     out.checks = [replace(c, value=clean_value(c.value), limit=clean_value(c.limit))
                   if _unclean(c.value) or _unclean(c.limit) else c for c in res.checks]
     out.parts = [(k, title, cleaned(part)) for k, title, part in res.parts]
+    out._values_clean = True      # its document() takes the values as they are
     return out
 
 
@@ -231,6 +246,8 @@ class Result:
 
     def document(self) -> dict:
         """The JSON result document (``DESIGN.md``, "JSON result document")."""
+        # the values of a cleaned result (every renderer's) are clean: not copied again
+        _clean = _kept if self.__dict__.get("_values_clean") else clean_value
         units: dict[str, str] = {}
         for row in self.input_rows:
             if row.unit is not None and (_is_number(row.value) or _is_number_list(row.value)):
