@@ -144,10 +144,9 @@ def fix_text(fix) -> str:
 def clean_value(v: Any) -> Any:
     """JSON has no NaN or infinity: an undefined number is reported as null (``None``),
     in a list too.  The one cleaning step of every value before any renderer sees it."""
-    kind = type(v)
-    if kind is float:               # most values: tested before any isinstance
+    if type(v) is float:              # most values: exact types before any isinstance
         return v if math.isfinite(v) else None
-    if kind is str or kind is int or v is None:
+    if type(v) in (str, int) or v is None:
         return v
     if isinstance(v, float) and not math.isfinite(v):
         return None
@@ -159,16 +158,10 @@ def clean_value(v: Any) -> Any:
 _clean = clean_value
 
 
-def _kept(v: Any) -> Any:
-    """A value of a :func:`cleaned` result: clean already."""
-    return v
-
-
 def _unclean(v: Any) -> bool:
     """Whether :func:`clean_value` changes ``v`` (a non-finite float, a tuple, or a list
     holding one)."""
-    kind = type(v)
-    if kind is str or kind is int or v is None:
+    if type(v) in (str, int) or v is None:
         return False
     if isinstance(v, float):
         return not math.isfinite(v)
@@ -197,7 +190,7 @@ def cleaned(res: "Result") -> "Result":
     out.checks = [replace(c, value=clean_value(c.value), limit=clean_value(c.limit))
                   if _unclean(c.value) or _unclean(c.limit) else c for c in res.checks]
     out.parts = [(k, title, cleaned(part)) for k, title, part in res.parts]
-    out._values_clean = True      # its document() takes the values as they are
+    out._values_clean = True      # its document() takes the values as they are, no copy
     return out
 
 
@@ -246,8 +239,7 @@ class Result:
 
     def document(self) -> dict:
         """The JSON result document (``DESIGN.md``, "JSON result document")."""
-        # the values of a cleaned result (every renderer's) are clean: not copied again
-        _clean = _kept if self.__dict__.get("_values_clean") else clean_value
+        _clean = (lambda v: v) if self.__dict__.get("_values_clean") else clean_value
         units: dict[str, str] = {}
         for row in self.input_rows:
             if row.unit is not None and (_is_number(row.value) or _is_number_list(row.value)):
