@@ -32,7 +32,7 @@ JSON document of a cleaned result taking its values as they are (``--base 2444eb
 --rounds 3 --cold 9``, five runs, bytecode kept, load averages 1-2): ratio 2.03-2.28
 (median 2.15) -> 2.04-2.41 (median 2.07), within the spread of the load; instructions
 counted by ``valgrind --tool=callgrind`` (no load disturbs them): drive golden 679.1 ->
-670.6 M, spur_plain 270.8 -> 271.1 M, ratio 2.51 -> 2.47.
+670.6-672.7 M, spur_plain 270.8 -> 270.8-271.1 M, ratio 2.51 -> 2.47-2.48.
 """
 
 from __future__ import annotations
