@@ -27,7 +27,12 @@ with the bytecode kept 2.04-2.21 (379-499 / 172-245 ms; 5a58329 on the same mach
 2.55-2.80), compiled in every process 1.60 (1089 / 683 ms; 5a58329: 2.17, measured before
 the probe pass went unrated).  With the records made without compiling, the JSON indented around the C encoder and the data files kept
 parsed (``--base fa84a7d --rounds 3 --cold 7``, bytecode kept): 224 -> 148 ms / 82 -> 69 ms,
-ratio 2.73 -> 2.14 (three runs under a varying load: 1.99-2.73 -> 1.84-2.29).
+ratio 2.73 -> 2.14 (three runs under a varying load: 1.99-2.73 -> 1.84-2.29).  With the
+JSON document of a cleaned result taking its values as they are (``--base 2444eba
+--rounds 3 --cold 9``, five runs, bytecode kept, load averages 1-2): ratio 2.03-2.28
+(median 2.15) -> 2.04-2.41 (median 2.07), within the spread of the load; instructions
+counted by ``valgrind --tool=callgrind`` (no load disturbs them): drive golden 679.1 ->
+670.6-672.7 M, spur_plain 270.8 -> 270.8-271.1 M, ratio 2.51 -> 2.47-2.48.
 """
 
 from __future__ import annotations

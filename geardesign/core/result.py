@@ -144,6 +144,10 @@ def fix_text(fix) -> str:
 def clean_value(v: Any) -> Any:
     """JSON has no NaN or infinity: an undefined number is reported as null (``None``),
     in a list too.  The one cleaning step of every value before any renderer sees it."""
+    if type(v) is float:              # most values: exact types before any isinstance
+        return v if math.isfinite(v) else None
+    if type(v) in (str, int) or v is None:
+        return v
     if isinstance(v, float) and not math.isfinite(v):
         return None
     if isinstance(v, (list, tuple)):
@@ -157,6 +161,8 @@ _clean = clean_value
 def _unclean(v: Any) -> bool:
     """Whether :func:`clean_value` changes ``v`` (a non-finite float, a tuple, or a list
     holding one)."""
+    if type(v) in (str, int) or v is None:
+        return False
     if isinstance(v, float):
         return not math.isfinite(v)
     if isinstance(v, tuple):
@@ -168,7 +174,8 @@ def cleaned(res: "Result") -> "Result":
     """A copy of ``res`` with every value (rows, inputs, table cells, check values and
     limits, parts) through :func:`clean_value`: what every renderer receives, so that the
     table, Markdown, HTML, CSV and JSON reports show the same document.  Rows and checks
-    (frozen) whose values are clean already are shared, not rebuilt."""
+    (frozen) whose values are clean already are shared, not rebuilt; the copy is marked
+    so that its :meth:`Result.document` does not clean (copy) every value again."""
     from dataclasses import replace
 
     def clean_row(r: Row) -> Row:
@@ -183,6 +190,7 @@ def cleaned(res: "Result") -> "Result":
     out.checks = [replace(c, value=clean_value(c.value), limit=clean_value(c.limit))
                   if _unclean(c.value) or _unclean(c.limit) else c for c in res.checks]
     out.parts = [(k, title, cleaned(part)) for k, title, part in res.parts]
+    out._values_clean = True      # its document() takes the values as they are, no copy
     return out
 
 
@@ -231,6 +239,7 @@ class Result:
 
     def document(self) -> dict:
         """The JSON result document (``DESIGN.md``, "JSON result document")."""
+        _clean = (lambda v: v) if self.__dict__.get("_values_clean") else clean_value
         units: dict[str, str] = {}
         for row in self.input_rows:
             if row.unit is not None and (_is_number(row.value) or _is_number_list(row.value)):
