@@ -344,6 +344,12 @@ def compute(spec: ValidatedSpec) -> Result:
                 f"1.25...1.5·T",
                 f"T_lim,min = {band.low:.2f} N·m >= {MARGIN_WARN}·T = {MARGIN_WARN * T:.2f} N·m",
                 band.low / T, MARGIN_WARN, S.PRACTICE))
+            from geardesign.core.units_guard import given, light_load
+
+            out += light_load(   # a rated torque typed in N·m where kN·m was meant
+                "UNITS_LOAD", T / band.low, f"the rated torque is {100 * T / band.low:.2g} % "
+                f"of what the clutch holds (T = {_f(T)} N·m against T_lim,min = "
+                f"{band.low:.2f} N·m)", given(op, {"torque": "N·m"}, "operation"), S.PRACTICE)
     if math.isfinite(p0):
         p_adm = sa["allowable_contact"]
         out.append(check(

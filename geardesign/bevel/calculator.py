@@ -30,4 +30,4 @@ def compute(spec: ValidatedSpec) -> Result:
     res = CALCULATOR.new_result(spec)
     if proposal is not None:
         report.design_rows(res, proposal, sol)
-    return report.report(res, sol)
+    return report.report(res, sol, spec.data.get("load"))

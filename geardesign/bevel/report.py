@@ -351,8 +351,38 @@ def checks(res: Result, sol: Solution) -> None:
                 m.S_F, rt.S_Fmin, sF))
 
 
-def report(res: Result, sol: Solution) -> Result:
-    """Fill ``res`` with the rows and checks of ``sol``."""
+def units_checks(sol: Solution, load: dict | None) -> list:
+    """``UNITS_LOAD`` when the pair carries less than 1 % of its contact capacity, as a
+    torque typed in N·m where kN·m was meant does (:mod:`geardesign.core.units_guard`, the
+    rule of every calculator).
+
+    .. math:: \\text{fraction} = (σ_{H0}/σ_{Hlim})^2
+
+    σ_H0 [MPa]: the nominal contact stress without load factors (ISO 10300-2 method B1 as
+    rated; the GOST route: σ_H/√K_H), σ_Hlim [MPa]: the weaker member's limit.  σ_H ∝ √T1,
+    so the square is a load ratio.  ``load``: the spec's ``[load]`` table as given (the
+    inputs the warning names).  Source: [ISO10300-2], [GOST21354]."""
+    from geardesign.core.units_guard import given, light_load
+
+    mt = sol.inputs.material
+    lim = min(mt.sigma_Hlim)
+    if sol.iso is not None:
+        sH0 = sol.iso.sigma_H0
+    elif sol.gost is not None:
+        sH0 = sol.gost.sigma_H / sol.gost.K_H ** 0.5
+    else:
+        return []
+    fraction = (sH0 / lim) ** 2
+    what = (f"the pair carries {100 * fraction:.2g} % of its contact capacity (nominal "
+            f"σ_H0 = {sH0:.3g} MPa against σ_Hlim = {lim:.0f} MPa)")
+    return light_load("UNITS_LOAD", fraction, what,
+                      given(load, {"torque": "N·m", "peak_torque": "N·m"}, "load"),
+                      S.ISO_H if sol.iso is not None else S.GOST)
+
+
+def report(res: Result, sol: Solution, load: dict | None = None) -> Result:
+    """Fill ``res`` with the rows and checks of ``sol``; ``load``: the spec's ``[load]``
+    table as given, for the unit-slip warning (:func:`units_checks`)."""
     geometry_rows(res, sol)
     force_rows(res, sol)
     if sol.iso is not None:
@@ -364,4 +394,5 @@ def report(res: Result, sol: Solution) -> Result:
     peak_rows(res, sol)
     checks(res, sol)
     peak_checks(res, sol)
+    res.checks.extend(units_checks(sol, load))
     return res

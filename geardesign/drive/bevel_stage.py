@@ -53,7 +53,7 @@ def _report(spec, proposal, sol, where: str, original: dict) -> Result:
     res = CALCULATOR.new_result(spec)
     if proposal is not None:
         design_rows(res, proposal, sol)
-    res = guard(report(res, sol))
+    res = guard(report(res, sol, spec.data.get("load")))
     _set_by_drive(res, spec.data, original)
     return res
 
