@@ -353,28 +353,22 @@ def checks(res: Result, sol: Solution) -> None:
 
 def units_checks(sol: Solution, load: dict | None) -> list:
     """``UNITS_LOAD`` when the pair carries less than 1 % of its contact capacity, as a
-    torque typed in N·m where kN·m was meant does (:mod:`geardesign.core.units_guard`, the
-    rule of every calculator).
-
-    .. math:: \\text{fraction} = (σ_{H0}/σ_{Hlim})^2
-
-    σ_H0 [MPa]: the nominal contact stress without load factors (ISO 10300-2 method B1 as
-    rated; the GOST route: σ_H/√K_H), σ_Hlim [MPa]: the weaker member's limit.  σ_H ∝ √T1,
-    so the square is a load ratio.  ``load``: the spec's ``[load]`` table as given (the
-    inputs the warning names).  Source: [ISO10300-2], [GOST21354]."""
+    torque typed in N·m where kN·m was meant does: the spur rule
+    (:func:`geardesign.spur.strength.checks.contact_load_fraction`, (σ_H0/σ_Hlim)²) on the
+    nominal σ_H0 of ISO 10300-2 method B1, or the GOST route's σ_H and K_H; ``load``: the
+    spec's ``[load]`` table as given (the inputs the warning names,
+    :mod:`geardesign.core.units_guard`)."""
     from geardesign.core.units_guard import given, light_load
+    from geardesign.spur.strength.checks import contact_load_fraction
 
-    mt = sol.inputs.material
-    lim = min(mt.sigma_Hlim)
+    lim = sol.inputs.material.sigma_Hlim
     if sol.iso is not None:
-        sH0 = sol.iso.sigma_H0
+        v = {"sigma_H0": sol.iso.sigma_H0}
     elif sol.gost is not None:
-        sH0 = sol.gost.sigma_H / sol.gost.K_H ** 0.5
+        v = {"sigma_H": sol.gost.sigma_H, "K_H": sol.gost.K_H}
     else:
         return []
-    fraction = (sH0 / lim) ** 2
-    what = (f"the pair carries {100 * fraction:.2g} % of its contact capacity (nominal "
-            f"σ_H0 = {sH0:.3g} MPa against σ_Hlim = {lim:.0f} MPa)")
+    fraction, what = contact_load_fraction({**v, "sigma_Hlim1": lim[0], "sigma_Hlim2": lim[1]})
     return light_load("UNITS_LOAD", fraction, what,
                       given(load, {"torque": "N·m", "peak_torque": "N·m"}, "load"),
                       S.ISO_H if sol.iso is not None else S.GOST)
