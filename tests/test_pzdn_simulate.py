@@ -81,3 +81,57 @@ def test_exact_linear_solution_equals_dop853(stiff, load, rise, zeta, stick):
     exact = simulate(m, motor, 0.4, zeta, stick)
     ode = simulate(m, _constant_through_the_curve(motor), 0.4, zeta, stick)
     _agree(exact, ode, 1e-7)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.integers(1, 8), st.integers(0, 300), st.integers(1, 70), st.integers(0, 2 ** 32 - 1))
+def test_orbit_equals_successive_steps(n, steps, block, seed):
+    """The block stepping (:func:`geardesign.pzdn.linear.orbit`) gives the states of n
+    successive products e·z to the rounding of the steps, whatever the block length."""
+    from geardesign.pzdn.linear import orbit
+
+    rng = np.random.default_rng(seed)
+    e = expm(rng.standard_normal((n, n)) * 0.3 / n)
+    z = rng.standard_normal(n)
+    got = orbit(e, z, steps, block)
+    assert got.shape == (steps, n)
+    want, s = [], z
+    for _ in range(steps):
+        s = e @ s
+        want.append(s)
+    if steps:
+        scale = np.abs(np.array(want)).max(axis=1, keepdims=True)
+        assert np.all(np.abs(got - np.array(want)) <= 1e-11 * np.maximum(scale, 1e-300))
+
+
+@pytest.mark.parametrize("rise, zeta, stick", [(0.0, 0.0, False), (0.015, 0.05, True),
+                                               (0.2, 0.3, True)])
+def test_events_do_not_depend_on_how_the_steps_are_grouped(monkeypatch, rise, zeta, stick):
+    """The steps of the exact path are tested for events a chunk at a time: a chunk of 3
+    steps (events found across chunk ends) gives the events and peaks of the default."""
+    import geardesign.pzdn.linear as linear
+
+    motor = Motor("constant", T1=KO2.T1, rise_time=rise)
+    whole = simulate(KO2, motor, 0.5, zeta, stick)
+    monkeypatch.setattr(linear, "_CHUNK", 3)
+    small = simulate(KO2, motor, 0.5, zeta, stick)
+    _agree(whole, small, 1e-12)
+
+
+@settings(max_examples=10, deadline=None)
+@given(st.floats(0.3, 3.0), st.floats(0.0, 0.3), st.integers(8, 400), st.booleans())
+def test_the_exact_solution_on_a_grid_is_the_exponential_at_each_time(stiff, zeta, n, ragged):
+    """A segment's solution at the times of a uniform grid (stepped by one exponential)
+    and at irregular times (one exponential per spacing) equals exp(Ã(t − t0))·z0 at each
+    time."""
+    from geardesign.pzdn.linear import _Exact, linear_system
+
+    m = ThreeMass(26.5, 4.4, 17.7, 0.038, 0.026, 0.021, 8.3 * stiff, 24.7 * stiff)
+    a = linear_system(m, (zeta, zeta), (True, True), (m.T1, 0.0))
+    z0 = np.array([0.0, 1.0, 0.0, 0.5, 0.0, 0.2, 0.01, 1.0])
+    t = np.linspace(0.02, 0.3, n)
+    if ragged:
+        t = t + np.random.default_rng(n).uniform(0.0, 1e-4, n)
+    got = _Exact(a, 0.01, z0)(t)
+    want = np.array([(expm(a * (x - 0.01)) @ z0)[:6] for x in t]).T
+    assert np.allclose(got, want, rtol=1e-10, atol=1e-10 * np.abs(want).max())
