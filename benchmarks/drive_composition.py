@@ -14,6 +14,14 @@ paired ratios old/new.  The cases: the drive golden with shafts, keys and heat b
 spur golden ``specs/spur_plain.toml`` for scale.  A run is the calculator's ``compute``
 and the JSON document of its result.
 
+``--instructions`` counts instead of timing (``valgrind --tool=callgrind``: a count no
+other load on the machine moves): the cold processes of the drive golden and
+``spur_plain`` of each version, their ratio, and the floor of that ratio for this checkout:
+the cold ``spur_plain`` process plus one warm run of the drive golden (validation,
+calculation and JSON text in a process that has imported everything already), over
+the cold ``spur_plain`` process: what the drive golden would cost if each module it
+needs beyond the spur calculator's were free to import.
+
 ``--cold N`` adds the cold ratio of the issue's acceptance: N alternating runs of
 ``python -m geardesign run SPEC -f json`` of each version, the drive golden and
 ``specs/spur_plain.toml``, each a new process; its CPU time (user + system, from
@@ -33,6 +41,11 @@ JSON document of a cleaned result taking its values as they are (``--base 2444eb
 (median 2.15) -> 2.04-2.41 (median 2.07), within the spread of the load; instructions
 counted by ``valgrind --tool=callgrind`` (no load disturbs them): drive golden 679.1 ->
 670.6-672.7 M, spur_plain 270.8 -> 270.8-271.1 M, ratio 2.51 -> 2.47-2.48.
+``--instructions`` at 2276e12: 5a58329 drive golden 2244.3 M, spur_plain 586.2 M (ratio
+3.83); this checkout 672.5 M / 271.2 M (ratio 2.48); one warm run of the drive golden
+276.1 M, so the floor of the ratio with every further module free to import is 2.02: the
+drive's own calculation and document alone cost what the whole cold spur_plain process
+costs.  Against the fixed yardstick, spur_plain at 5a58329: 672.5 / 586.2 = 1.15.
 """
 
 from __future__ import annotations
@@ -176,6 +189,53 @@ def cold(runs: int, roots: dict, bytecode: bool = True) -> None:
               f"{1e3 * s:.0f} ms, ratio {d / s:.2f}")
 
 
+WARM = """
+import sys
+from pathlib import Path
+from geardesign.core import registry
+from geardesign.core.render import render
+path = Path(sys.argv[1])
+for _ in range(int(sys.argv[2])):
+    calc, spec = registry.load(path, None)
+    render([calc.compute(spec)], "json")
+"""
+
+
+def instructions(args: list[str], root: Path) -> int:
+    """Instructions of one process ``python ARGS`` run in ``root`` with the bytecode kept,
+    counted by ``valgrind --tool=callgrind`` (after one run that writes the bytecode)."""
+    import re
+
+    env = dict(os.environ)
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
+    subprocess.run([sys.executable, *args], cwd=root, env=env, check=False,
+                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    out = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null",
+                          sys.executable, *args], cwd=root, env=env, check=False,
+                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True).stderr
+    found = re.search(r"Collected : (\d+)", out)
+    if found is None:
+        raise SystemExit(f"valgrind did not count: {out.strip()[-300:]}")
+    return int(found.group(1))
+
+
+def count(roots: dict) -> None:
+    """``--instructions``: cold drive golden / spur_plain in instructions for each version
+    (``roots``: label -> checkout), and the floor of the ratio for the last one."""
+    drive = str(SPECS / CASES[0][1])
+    for label, root in roots.items():
+        d = instructions(["-m", "geardesign", "run", drive, "-f", "json"], root)
+        s = instructions(["-m", "geardesign", "run", str(SPECS / "spur_plain.toml"), "-f",
+                          "json"], root)
+        print(f"instructions ({label}): drive golden {d / 1e6:.1f} M, spur_plain "
+              f"{s / 1e6:.1f} M, ratio {d / s:.2f}")
+    one = instructions(["-c", WARM, drive, "2"], root)
+    three = instructions(["-c", WARM, drive, "4"], root)
+    warm = (three - one) / 2
+    print(f"warm run of the drive golden ({label}): {warm / 1e6:.1f} M; floor of the cold "
+          f"ratio with every further module free to import: {(s + warm) / s:.2f}")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--base", default="5a58329")
@@ -185,12 +245,17 @@ def main() -> None:
                          "for both versions")
     ap.add_argument("--no-bytecode", action="store_true",
                     help="cold runs compile the package in every process")
+    ap.add_argument("--instructions", action="store_true",
+                    help="count instructions (valgrind) of the cold runs instead of timing")
     args = ap.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         old_root = Path(tmp) / "base"
         subprocess.run(["git", "worktree", "add", "--detach", str(old_root), args.base],
                        cwd=ROOT, check=True, capture_output=True)
         try:
+            if args.instructions:
+                count({args.base: old_root, "this checkout": ROOT})
+                return
             if args.cold:
                 cold(args.cold, {args.base: old_root, "this checkout": ROOT},
                      not args.no_bytecode)
