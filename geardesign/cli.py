@@ -96,8 +96,11 @@ def _err(line: str) -> None:
 
 def main() -> None:
     """Console entry point: never a traceback for the user."""
+    from geardesign.core.run_files import inputs_kept
+
     try:
-        _dispatch()
+        with inputs_kept():        # no output of the command replaces a file it reads
+            _dispatch()
     except SystemExit as exc:
         if exc.code == 130:       # typer ends a Ctrl-C in a command with a silent exit 130
             _err("geardesign: interrupted")

@@ -201,7 +201,7 @@ def sweep_cmd(spec: Path = typer.Argument(..., help="Sweep spec: a spur spec wit
     if plot is not None and plot.suffix.lower() not in (".png", ".svg", ".pdf"):
         _err(f"{plot}: --plot must end in .png, .svg or .pdf")
         raise Exit(2)
-    _targets(output, data, plot)
+    _targets(output, data, plot, inputs=[spec])
     cores = _cores()
     if workers > cores and not force_workers:
         if not quiet:

@@ -34,17 +34,33 @@ def _out(line: str) -> None:
     sys.stdout.write(escape_controls(line) + "\n")
 
 
-def _targets(*paths: Optional[Path]) -> None:
+def _targets(*paths: Optional[Path], inputs=()) -> None:
     """Every file to be written is looked at before the work starts
-    (:func:`geardesign.core.atomic.target_problem`): one line and exit 2 when one cannot be."""
+    (:func:`geardesign.core.atomic.target_problem`; none may be one of the ``inputs`` the
+    command reads, nor the file of another output): one line and exit 2 when one cannot
+    be."""
+    seen: list[Path] = []
     for path in paths:
         if path is not None:
             from geardesign.core.atomic import target_problem
 
-            why = target_problem(path)
+            why = target_problem(path, inputs=inputs)
+            if why is None and any(_same_file(path, other) for other in seen):
+                why = "it is given for two outputs; give each output its own file"
             if why is not None:
                 _err(f"{path}: cannot write: {why}")
                 raise Exit(2)
+            seen.append(path)
+
+
+def _same_file(a: Path, b: Path) -> bool:
+    """Whether the paths ``a`` and ``b`` name one file (links followed; a hard link)."""
+    if os.path.realpath(a) == os.path.realpath(b):
+        return True
+    try:
+        return os.path.samefile(a, b)
+    except OSError:
+        return False
 
 
 MAX_PROBLEM_LINES = 20
@@ -249,7 +265,7 @@ def _emit(paths: List[Path], fmt: Optional[str], output: Optional[Path], quiet: 
           profile: Optional[Path] = None) -> None:
     fmt_name = _choose_format(fmt, output)
     _pdf_ready(fmt_name, output)
-    _targets(output, plot, profile)
+    _targets(output, plot, profile, inputs=paths)
     results, problems = _compute_all(paths, expect_kind, mode)
     if problems:
         _report_problems(problems)

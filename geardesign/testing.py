@@ -236,7 +236,7 @@ def check_golden(spec, update: bool = False, rtol: float = RTOL,
 
     path = expected_path(spec)
     if update:                             # before the work: refused targets cost nothing
-        check_target(path, Path(spec).absolute().parent.resolve(), path.name)
+        check_target(path, Path(spec).absolute().parent.resolve(), path.name, (spec,))
     data = load_toml(spec)                 # read once: a sweep spec or a calculator's spec
     if "sweep" in data:
         from geardesign.spur.sweep import run_data as run_sweep_data

@@ -16,6 +16,7 @@ import pytest
 
 from geardesign.core import atomic
 from geardesign.core import io as gio
+from geardesign.core import run_files
 from geardesign.core.errors import InputError
 from tests.helpers_cli import cli, write_spec
 
@@ -308,3 +309,150 @@ def test_a_sweep_step_too_small_to_count_is_one_line(step):
     assert code == 2 and out == ""
     assert _one_line(err).endswith(f"sweep.gear.module.step = {step}: gives more than "
                                    f"1000000 values, the most per key: use a larger step")
+
+
+# ------------------------------------------------ no output replaces an input of the run
+
+
+def _kept(path: Path) -> tuple:
+    """What must not change: the bytes of a file and which file it is."""
+    st = path.stat()
+    return path.read_bytes(), st.st_ino
+
+
+_WRITING = [
+    ("run", "{spec}", "-f", "json", "--output", "{out}"),
+    ("spur", "{spec}", "-f", "json", "--output", "{out}"),
+    ("run", "{spec}", "-f", "json", "--plot", "{out}"),
+    ("run", "{spec}", "-f", "json", "--profile", "{out}"),
+    ("run", "{other}", "{spec}", "-f", "json", "--output", "{out}"),
+    ("export", "{spec}", "--output", "{out}"),
+    ("sweep", "{sweep}", "-f", "csv", "--output", "{out}"),
+]
+"""Every command line that writes a file under any name: the output options of run, a
+kind's command, export and sweep."""
+
+_NAMED = [
+    (("sweep", "{sweep}", "--plot", "{out}"), "out.png"),
+    (("sweep", "{sweep}", "--data", "{out}"), "out.csv"),
+    (("check", "--update", "{spec}"), "s.expected.json"),
+]
+"""Those whose file must have its own ending or name: a link or a hard link only."""
+
+
+@pytest.mark.parametrize("command, how, name", [(c, h, "out.json") for c in _WRITING
+                                                for h in ("same", "link", "hard link")]
+                         + [(c, h, name) for c, name in _NAMED for h in ("link", "hard link")])
+def test_no_output_replaces_a_file_the_command_reads(tmp_path, monkeypatch, command, how, name):
+    """Every command and option that writes a file refuses one that is a file it reads
+    (the file itself, a link or a hard link to it): one line naming both and what to do,
+    exit 2, before the work, the input unchanged."""
+    from geardesign.core import registry
+    from geardesign.spur import sweep as SW
+
+    spec = write_spec(tmp_path, PLAIN, "s.toml")
+    other = write_spec(tmp_path, PLAIN, "other.toml")
+    sweep = tmp_path / "sw.toml"
+    sweep.write_text((SPECS / "sweep_spur_reducer.toml").read_text(encoding="utf-8"),
+                     encoding="utf-8")
+    victim = sweep if command[0] == "sweep" else spec
+    out = victim if how == "same" else tmp_path / name
+    if how == "link":
+        out.symlink_to(victim.name)
+    elif how == "hard link":
+        os.link(victim, out)
+    before = _kept(victim)
+    computed = []
+    monkeypatch.setattr(registry, "load", lambda *a, **k: computed.append(1))
+    monkeypatch.setattr(SW, "run_sweep", lambda *a, **k: computed.append(1))
+    args = [a.format(spec=spec, other=other, sweep=sweep, out=out) for a in command]
+    code, stdout, err = cli(*args)
+    assert code == 2 and stdout == "" and computed == [], err
+    line = _one_line(err)
+    assert "which this run reads as an input; write the output to another file" in line
+    assert str(victim.name) in line
+    assert _kept(victim) == before
+
+
+def test_no_output_replaces_a_file_a_spec_names(tmp_path):
+    """A file read during the run (a drive's stage file) is refused when the report would
+    replace it: one line, exit 2, the stage file unchanged, nothing else written."""
+    drive = (SPECS / "drive_worm_spur.toml").read_text(encoding="utf-8")
+    (tmp_path / "d.toml").write_text(drive, encoding="utf-8")
+    stage = tmp_path / "worm_single_start_reducer.toml"
+    stage.write_text((SPECS / stage.name).read_text(encoding="utf-8"), encoding="utf-8")
+    before = _kept(stage)
+    code, out, err = cli("run", tmp_path / "d.toml", "-f", "json", "--output", stage)
+    assert code == 2 and out == ""
+    assert "which this run reads as an input" in _one_line(err)
+    assert _kept(stage) == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["d.toml", stage.name]
+    # the same report to another file is written
+    code, _, err = cli("run", tmp_path / "d.toml", "-f", "json", "--output", tmp_path / "r.json")
+    assert code == 0, err
+
+
+def test_import_refuses_to_replace_its_model(tmp_path):
+    model = tmp_path / "m.rexs"
+    model.write_bytes((ROOT / "tests" / "data" / "rexs" / "FVA_worm_stage_1-4.rexs").read_bytes())
+    before = _kept(model)
+    (tmp_path / "m.toml").symlink_to("m.rexs")
+    code, out, err = cli("import", model, "--output", tmp_path / "m.toml")
+    assert code == 2 and out == ""
+    assert "which this run reads as an input" in _one_line(err)
+    assert _kept(model) == before
+
+
+def test_outside_a_command_nothing_is_remembered(tmp_path):
+    """The library (no command running) reads without keeping a list of inputs; within a
+    command the list is the command's own and is gone after it."""
+    spec = write_spec(tmp_path, PLAIN)
+    gio.read_toml(spec)
+    assert run_files._INPUTS is None
+    assert atomic.target_problem(spec) is None
+    expected = tmp_path / "s.expected.json"
+    expected.write_text("{}")
+    with run_files.inputs_kept():
+        gio.read_toml(spec)
+        assert "reads as an input" in atomic.target_problem(spec)
+        gio.read_json(expected)        # an expected document: check --update replaces it
+        assert atomic.target_problem(expected) is None
+    assert run_files._INPUTS is None and atomic.target_problem(spec) is None
+
+
+@pytest.mark.parametrize("args", [
+    ("run", "{spec}", "-f", "json", "--output", "{d}/r.json", "--profile", "{d}/r.json"),
+    ("run", "{spec}", "-f", "json", "--output", "{d}/r.json", "--profile", "{d}/./r.json"),
+    ("run", "{spec}", "-f", "json", "--plot", "{d}/p.svg", "--profile", "{d}/link.svg"),
+    ("sweep", "{sweep}", "-f", "csv", "--output", "{d}/r.csv", "--data", "{d}/r.csv"),
+])
+def test_two_outputs_of_one_command_are_never_one_file(tmp_path, monkeypatch, args):
+    """Two outputs of a command (a report and a drawing, a report and the sweep's data)
+    written to one file, by its name, another spelling or a link: one line, exit 2, before
+    the work (the second would silently replace the first)."""
+    from geardesign.core import registry
+    from geardesign.spur import sweep as SW
+
+    spec = write_spec(tmp_path, PLAIN)
+    (tmp_path / "link.svg").symlink_to("p.svg")
+    computed = []
+    monkeypatch.setattr(registry, "load", lambda *a, **k: computed.append(1))
+    monkeypatch.setattr(SW, "run_sweep", lambda *a, **k: computed.append(1))
+    code, out, err = cli(*[a.format(spec=spec, sweep=SPECS / "sweep_spur_reducer.toml",
+                                    d=tmp_path) for a in args])
+    assert code == 2 and out == "" and computed == [], err
+    assert _one_line(err).endswith("cannot write: it is given for two outputs; give each "
+                                   "output its own file")
+
+
+def test_a_report_never_replaces_a_file_the_run_has_written(tmp_path):
+    """The plot a pzdn spec names (written during the calculation) and the report to the
+    same file: the plot stays, the report is refused in one line, exit 2."""
+    pytest.importorskip("matplotlib")
+    text = (SPECS / "pzdn_ko2_startup_comparison.toml").read_text(encoding="utf-8")
+    spec = write_spec(tmp_path, text.replace("[startup]\n", '[startup]\nplot = "r.svg"\n', 1))
+    code, out, err = cli("run", spec, "-f", "json", "--output", tmp_path / "r.svg")
+    assert code == 2 and out == ""
+    assert _one_line(err).endswith("which this run has written already; give each output "
+                                   "its own file")
+    assert (tmp_path / "r.svg").read_text(encoding="utf-8").lstrip().startswith("<?xml")

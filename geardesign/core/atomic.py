@@ -5,6 +5,11 @@ target before the work starts (the readers are :mod:`geardesign.core.io`).
 
 * the target is checked first (:func:`check_target`): a missing folder, a folder where
   a file is wanted, a folder that cannot be written is one line before the work starts;
+* no output replaces an input of the same run: a spec, a stage file, a REXS model (or a
+  link or hard link to one) named on the command line is refused before the work starts,
+  and any file read as an input during a command (:func:`geardesign.core.run_files.inputs_kept`,
+  recorded by :func:`geardesign.core.io.read_regular`) is refused when it is written; nor
+  does one output replace another written by the same command;
 * the data go to a temporary file beside the target, flushed to disk, then renamed over
   it in one step: a reader never sees half a file;
 * the temporary file is covered by the signal handlers from its creation (the signals
@@ -26,10 +31,12 @@ from typing import Iterator
 from geardesign.core.errors import InputError, Problem
 
 
-def target_problem(path: Path, inside: Path | None = None) -> str | None:
+def target_problem(path: Path, inside: Path | None = None, inputs=()) -> str | None:
     """Why ``path`` cannot be written, or ``None``.  Looked at before the work starts: the
     folder must exist and be writable, the path must not be a folder; with ``inside``, the
-    file written (a link followed) must lie in that folder."""
+    file written (a link followed) must lie in that folder; the file must not be one of
+    ``inputs`` (the paths the command was given to read) nor a file the running command
+    has read as an input (:func:`geardesign.core.run_files.inputs_kept`)."""
     path = Path(path)
     real = path.resolve() if path.is_symlink() else path
     if inside is not None:
@@ -50,6 +57,12 @@ def target_problem(path: Path, inside: Path | None = None) -> str | None:
         return "is a folder; give a file name"
     if st is not None and not stat.S_ISREG(st.st_mode):
         return None          # /dev/null, a FIFO, a terminal: written directly
+    if st is not None:
+        from geardesign.core.run_files import input_at
+
+        why = input_at(st, inputs)
+        if why is not None:
+            return why
     folder = real.parent if str(real.parent) else Path(".")
     if not folder.exists():
         return f"the folder {folder} does not exist"
@@ -60,10 +73,10 @@ def target_problem(path: Path, inside: Path | None = None) -> str | None:
     return None
 
 
-def check_target(path: Path, inside: Path | None = None, label: str = "") -> None:
+def check_target(path: Path, inside: Path | None = None, label: str = "", inputs=()) -> None:
     """Raise :class:`InputError` (one line) when :func:`target_problem` finds a reason;
     ``label`` names the file when the line's source is another (the spec)."""
-    why = target_problem(path, inside)
+    why = target_problem(path, inside, inputs)
     if why is not None:
         raise InputError(Problem("", f"{label}: cannot write: {why}" if label else why))
 
@@ -221,6 +234,12 @@ class AtomicFile:
             self.abort()
             raise
         self._forget()
+        from geardesign.core.run_files import keep_file
+
+        try:
+            keep_file(os.stat(self.path), self.path, "output")
+        except OSError:
+            pass
 
     def abort(self) -> None:
         """Remove the temporary file; the target stays as it was."""

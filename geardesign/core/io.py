@@ -15,7 +15,9 @@ Reading
       :data:`MAX_TABLE_HEADERS` table headers, counted before the parser sees the text
       (the parser's cost grows with the square of a dotted key's length);
     * JSON: nesting at most :data:`MAX_JSON_DEPTH` deep;
-    * confinement (:func:`confined`): a file a spec refers to lies inside the spec's folder.
+    * confinement (:func:`confined`): a file a spec refers to lies inside the spec's folder;
+    * within a command, each spec, stage file and model read is remembered
+      (:mod:`geardesign.core.run_files`): no output of the command replaces it.
 
 Writing: :mod:`geardesign.core.atomic` (its names are importable from here too).
 """
@@ -53,9 +55,12 @@ class FileRefused(OSError):
 
 # --------------------------------------------------------------------------- reading
 
-
-def read_regular(path: Path, limit: int, what: str = "a spec is a few kB") -> bytes:
-    """The bytes of the regular file ``path`` of at most ``limit`` bytes.
+def read_regular(path: Path, limit: int, what: str = "a spec is a few kB",
+                 source: bool = True) -> bytes:
+    """The bytes of the regular file ``path`` of at most ``limit`` bytes; ``source``: the
+    file is an input of the design (a spec, a stage file, a model), which the running
+    command must not overwrite (:func:`geardesign.core.run_files.keep_file`); an expected
+    document that ``check --update`` replaces is not.
 
     Raises :class:`FileRefused` (not a regular file, too large; ``what`` says what a
     sensible size is), ``IsADirectoryError``, ``FileNotFoundError`` or another ``OSError``."""
@@ -66,6 +71,10 @@ def read_regular(path: Path, limit: int, what: str = "a spec is a few kB") -> by
             raise IsADirectoryError(21, "Is a directory", str(path))
         if not stat.S_ISREG(st.st_mode):
             raise FileRefused("not a regular file")
+        if source:
+            from geardesign.core.run_files import keep_file
+
+            keep_file(st, path)
         too_large = FileRefused(f"larger than {_size(limit)}; {what}")
         if st.st_size > limit:
             raise too_large
@@ -164,7 +173,7 @@ def read_json(path: Path, limit: int = MAX_JSON_BYTES,
                                   else problem.message))
 
     try:
-        raw = read_regular(path, limit, what)
+        raw = read_regular(path, limit, what, source=False)
     except FileNotFoundError:
         raise
     except OSError as exc:

@@ -31,7 +31,7 @@ def register(app: typer.Typer, err, write) -> None:
         from geardesign.rexs.importer import import_model
         from geardesign.rexs.model import read_model
 
-        _target(output, err)
+        _target(output, err, model)
         try:
             imported = import_model(read_model(model), model.name)
         except InputError as exc:
@@ -55,7 +55,7 @@ def register(app: typer.Typer, err, write) -> None:
         from geardesign.core.errors import InputError
         from geardesign.rexs.exporter import export_spec
 
-        _target(output, err)
+        _target(output, err, spec)
         try:
             text = export_spec(spec, "json" if format is ExportFormat.rexs_json else "xml")
         except InputError as exc:
@@ -68,12 +68,14 @@ def register(app: typer.Typer, err, write) -> None:
             write(output, text)
 
 
-def _target(path: Optional[Path], err) -> None:
+def _target(path: Optional[Path], err, source: Path) -> None:
+    """The output ``path`` looked at before the work: one line and exit 2 when it cannot be
+    written or is the file ``source`` the command reads."""
     if path is None:
         return
     from geardesign.core.io import target_problem
 
-    why = target_problem(path)
+    why = target_problem(path, inputs=(source,))
     if why is not None:
         err(f"{path}: cannot write: {why}")
         raise typer.Exit(2)
