@@ -124,7 +124,10 @@ def _render(rows: list[dict], columns, fmt: str) -> str:
     body = [[_cell(r.get(k), unit) for k, _, unit in columns] for r in rows]
     if fmt == "markdown":
         lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-        lines += ["| " + " | ".join(c.replace("|", "\\|") for c in row) + " |" for row in body]
+        from geardesign.core.text import md_escape
+
+        lines[0] = "| " + " | ".join(md_escape(h) for h in head) + " |"
+        lines += ["| " + " | ".join(md_escape(c) for c in row) + " |" for row in body]
         return "\n".join(lines) + "\n"
     from geardesign.core.render import grid_text
 

@@ -170,3 +170,25 @@ def test_no_formatted_non_finite_number_survives_in_a_check(value, spec, before,
     c = Check("X", severity, ok, message, 1.0, 2.0)
     assert not NONFINITE.search(c.message)
     assert c.passed == (ok and severity == "info")
+
+
+def test_markdown_shows_markup_in_a_spec_as_text(tmp_path):
+    """A title, a stage name or a message holding HTML, a link or an image is shown as
+    written in the Markdown report, never run (rendered by markdown-it, the CommonMark
+    parser rich depends on): no tag, link or image comes from the spec's text."""
+    from markdown_it import MarkdownIt
+
+    title = "<script>alert(1)</script> [x](http://e) ![i](http://e/p.png) <http://e> a\\b |c"
+    text = (fuzz.SPECS / "spur_plain.toml").read_text()
+    text = re.sub(r'(?m)^title = .*$', lambda m: "title = " + json.dumps(title), text)
+    spec = write_spec(tmp_path, text, name="s[1](x).toml")
+    code, out, _ = cli("run", spec, "--format", "markdown")
+    assert code == 0
+    md = MarkdownIt("commonmark").enable("table")
+    html = md.render(out)
+    assert "<script" not in html and "<a " not in html and "<img" not in html
+    heading = md.parse(out)[1]                    # the first line, as the reader sees it
+    assert heading.type == "inline"
+    shown = "".join(c.content for c in heading.children)
+    assert all(c.type == "text" for c in heading.children)
+    assert f"— {title} [{spec}]" in shown

@@ -10,7 +10,7 @@ from typing import Any
 
 from geardesign import __version__
 from geardesign.core.result import Check, Result, Row, cleaned
-from geardesign.core.text import (FORMATS, escape_controls, fmt, json_text,  # noqa: F401 (API)
+from geardesign.core.text import (FORMATS, escape_controls, fmt, json_text, md_escape,  # noqa: F401
                                   verdict_line)
 
 
@@ -29,8 +29,14 @@ def _status(c: Check) -> tuple[str, str, str]:
 
 
 def _header(r: Result) -> str:
-    title = f" — {escape_controls(r.title)}" if r.title else ""
-    src = f" [{escape_controls(r.source)}]" if r.source else ""
+    """The report's first line: version, kind, title and spec, controls escaped."""
+    return escape_controls(_header_text(r))
+
+
+def _header_text(r: Result) -> str:
+    """The report's first line as it is (each renderer escapes it for its format)."""
+    title = f" — {r.title}" if r.title else ""
+    src = f" [{r.source}]" if r.source else ""
     return f"geardesign {__version__} · {r.kind}{title}{src}"
 
 
@@ -46,8 +52,8 @@ def to_json(results: list[Result]) -> str:
 # --------------------------------------------------------------------------- markdown
 
 
-def _md_escape(text: str) -> str:
-    return escape_controls(str(text)).replace("|", "\\|")
+def _md_escape(text) -> str:
+    return md_escape(str(text))
 
 
 def _md_rows(rows: list[Row], with_source: bool) -> list[str]:
@@ -77,7 +83,7 @@ def to_markdown(results: list[Result], level: int = 1) -> str:
     lines: list[str] = []
     h = "#" * level
     for r in results:
-        lines.append(f"{h} {_header(r)}")
+        lines.append(f"{h} {_md_escape(_header_text(r))}")
         lines.append("")
         lines.append("Methods: " + ", ".join(r.methods))
         lines.append("")
@@ -95,7 +101,7 @@ def to_markdown(results: list[Result], level: int = 1) -> str:
             lines.append(f"| {mark} {word} | {c.code} | {_md_escape(c.message)} |")
         lines += ["", f"**{verdict_line(r)}**", ""]
         for _, title, part in r.parts:
-            lines += [f"{h}# {escape_controls(title)}", ""]
+            lines += [f"{h}# {_md_escape(title)}", ""]
             lines.append(to_markdown([part], level + 1))
     return "\n".join(lines)
 

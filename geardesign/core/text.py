@@ -160,6 +160,21 @@ def _indented(obj, indent: int) -> str:
     return "".join(out)
 
 
+_MD_ACTIVE = str.maketrans({c: "\\" + c for c in "\\<>[]|"})
+"""What Markdown would read as markup in a text of the report: a backslash, raw HTML and
+autolinks (``<``, ``>``), links and images (``[``, ``]``), a table cell's end (``|``);
+each is written with a backslash escape (CommonMark §2.4), which shows the character
+itself.  Emphasis (``*``, ``_``) and code spans only change how a text looks."""
+
+
+def md_escape(text: str) -> str:
+    """``text`` for a Markdown report: controls and bidirectional overrides escaped
+    (:func:`geardesign.core.text.escape_controls`), markup characters backslash-escaped
+    (:data:`_MD_ACTIVE`), so that a title, a name or a message from a spec or a model shows
+    as written and never runs as HTML, a link or an image."""
+    return escape_controls(text).translate(_MD_ACTIVE)
+
+
 def fmt(value: Any) -> str:
     """Round a value for display (6 significant digits)."""
     if value is None:
