@@ -58,9 +58,9 @@ def target_problem(path: Path, inside: Path | None = None, inputs=()) -> str | N
     if st is not None and not stat.S_ISREG(st.st_mode):
         return None          # /dev/null, a FIFO, a terminal: written directly
     if st is not None:
-        from geardesign.core.run_files import input_at
+        from geardesign.core.run_files import overwrite_problem
 
-        why = input_at(st, inputs)
+        why = overwrite_problem(st, inputs)
         if why is not None:
             return why
     folder = real.parent if str(real.parent) else Path(".")

@@ -43,7 +43,7 @@ def keep_file(st: os.stat_result, path, role: str = "input") -> None:
         _INPUTS.setdefault((st.st_dev, st.st_ino), (str(path), role))
 
 
-def input_at(st: os.stat_result, inputs) -> str | None:
+def overwrite_problem(st: os.stat_result, inputs) -> str | None:
     """Why the file of ``st`` must not be written by the running command, or None: it is
     one of the paths ``inputs`` or a file the command has read or written already (the same
     device and inode: the file itself, a link or a hard link to it)."""
