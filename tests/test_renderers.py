@@ -192,3 +192,24 @@ def test_markdown_shows_markup_in_a_spec_as_text(tmp_path):
     shown = "".join(c.content for c in heading.children)
     assert all(c.type == "text" for c in heading.children)
     assert f"— {title} [{spec}]" in shown
+
+
+def test_a_file_name_that_is_not_utf8_is_shown_escaped_in_every_format(tmp_path):
+    """A spec and an output whose names are not UTF-8 (Python holds the bytes as lone
+    surrogates, which no encoder writes): every format is written, as valid UTF-8, with
+    the bytes shown as ``\\udcXX``; the JSON document reads back to the same name."""
+    import os
+
+    name = os.fsdecode(b"bad\xff.toml")
+    spec = write_spec(tmp_path, (fuzz.SPECS / "spur_plain.toml").read_text(), name=name)
+    for fmt, ext in (("json", "json"), ("jsonl", "jsonl"), ("csv", "csv"),
+                     ("markdown", "md"), ("html", "html"), ("table", "txt")):
+        target = tmp_path / os.fsdecode(b"out\xfe." + ext.encode())
+        code, out, err = cli("run", spec, "--format", fmt, "--output", target)
+        assert code == 0, (fmt, err)
+        text = target.read_bytes().decode("utf-8")          # valid UTF-8
+        assert "\\udcff" in text, fmt
+        if fmt == "json":
+            assert json.loads(text)["spec"] == str(spec)
+        code, out, err = cli("run", spec, "--format", fmt)
+        assert code == 0 and "\\udcff" in out and "\udcff" not in out, fmt

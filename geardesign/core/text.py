@@ -15,7 +15,8 @@ from functools import lru_cache
 from typing import Any
 
 _CONTROLS = re.compile(
-    "[\x00-\x1f\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069\u2028\u2029]")
+    "[\x00-\x1f\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069\u2028\u2029"
+    "\ud800-\udfff]")
 
 FORMATS = ("table", "json", "jsonl", "markdown", "csv", "html", "pdf")
 """The report formats (``--format``; :func:`geardesign.core.render.render`)."""
@@ -27,13 +28,41 @@ def _escape(m: re.Match) -> str:
 
 
 def escape_controls(s: str) -> str:
-    """``s`` with C0/C1 controls, DEL, bidi marks/overrides and line/paragraph separators
-    written as ``\\xNN`` / ``\\uNNNN``.
+    """``s`` with C0/C1 controls, DEL, bidi marks/overrides, line/paragraph separators and
+    lone surrogates (the bytes of a file name that is not UTF-8, as Python decodes it: no
+    encoder writes them) written as ``\\xNN`` / ``\\uNNNN``.
 
     >>> escape_controls("a\\nb\\x1b[31m")
     'a\\\\x0ab\\\\x1b[31m'
     """
     return _CONTROLS.sub(_escape, s)
+
+
+_TOML_RAW = re.compile('["\\\\\x00-\x1f\x7f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069\u2028\u2029'
+                       '\ud800-\udfff]')
+
+
+def _toml_escape(m: re.Match) -> str:
+    c = m.group(0)
+    if c in '"\\':
+        return "\\" + c
+    if "\ud800" <= c <= "\udfff":          # no TOML string holds it: its escape as text
+        return f"\\\\u{ord(c):04x}"
+    return f"\\u{ord(c):04x}"
+
+
+def toml_string(s: str) -> str:
+    """``s`` as a TOML basic string [TOML] ("String"): ``"`` and ``\\`` escaped; control
+    characters, DEL, bidi marks and overrides and line/paragraph separators as
+    ``\\uXXXX`` (the same string to a TOML reader, inert in an editor and never a line
+    break of the file); a lone surrogate (a file name that is not UTF-8), which no TOML
+    string can hold, as the text ``\\udcXX``.  The one writer of TOML strings (the sweep's
+    ``--emit-spec``, the REXS import).
+
+    >>> print(toml_string('a "b"\\nc\\\\d'))
+    "a \\"b\\"\\u000ac\\\\d"
+    """
+    return '"' + _TOML_RAW.sub(_toml_escape, s) + '"'
 
 
 def json_text(obj, indent: int | None = None) -> str:
@@ -70,7 +99,8 @@ def json_text(obj, indent: int | None = None) -> str:
     return _raw_escaped(json.dumps(obj, indent=indent, ensure_ascii=False, allow_nan=False))
 
 
-_RAW_IN_JSON = re.compile("[\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069\u2028\u2029]")
+_RAW_IN_JSON = re.compile("[\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069\u2028\u2029"
+                          "\ud800-\udfff]")
 
 
 def _raw_escaped(text: str) -> str:

@@ -28,12 +28,13 @@ def register(app: typer.Typer, err, write) -> None:
         """Read a REXS gear unit and write it as a spec (TOML) for `geardesign run`: a drive,
         or a planetary, worm or bevel stage (docs/rexs.md)."""
         from geardesign.core.errors import InputError
+        from geardesign.core.text import escape_controls
         from geardesign.rexs.importer import import_model
         from geardesign.rexs.model import read_model
 
         _target(output, err, model)
         try:
-            imported = import_model(read_model(model), model.name)
+            imported = import_model(read_model(model), escape_controls(model.name))
         except InputError as exc:
             err(exc.problems[0].line(str(model)))
             raise typer.Exit(2)

@@ -226,10 +226,32 @@ def parse(raw: bytes) -> Model:
     character)."""
     head = raw.lstrip(b"\xef\xbb\xbf \t\r\n")[:1]
     if head == b"<":
-        return _parse_xml(raw)
+        return _inert(_parse_xml(raw))
     if head == b"{":
-        return _parse_json(raw)
+        return _inert(_parse_json(raw))
     raise ModelError("not a REXS model: neither XML (<model ...>) nor JSON ({\"model\": ...})")
+
+
+def _inert(m: Model) -> Model:
+    """``m`` with every text (ids, names, units, values, program, date) escaped by
+    :func:`geardesign.core.text.escape_controls`: no line break, control, bidi override or
+    lone surrogate (JSON ``\\udcff``) of a model ends a line of the spec written from it."""
+    from dataclasses import fields, is_dataclass, replace
+
+    from geardesign.core.text import escape_controls
+
+    def clean(v):
+        if isinstance(v, str):
+            return escape_controls(v)
+        if isinstance(v, list):
+            return [clean(x) for x in v]
+        if isinstance(v, dict):
+            return {clean(k): clean(x) for k, x in v.items()}
+        if is_dataclass(v):
+            return replace(v, **{f.name: clean(getattr(v, f.name)) for f in fields(v)})
+        return v
+
+    return clean(m)
 
 
 def _check_version(version: Any) -> str:

@@ -3,6 +3,9 @@ its value in a comment."""
 
 from __future__ import annotations
 
+from geardesign.core.text import escape_controls, toml_string
+
+
 def fmt(x: float) -> str:
     """A number as TOML: integers without noise, others to 10 significant digits."""
     if float(x).is_integer() and abs(x) < 1e15:
@@ -11,9 +14,15 @@ def fmt(x: float) -> str:
 
 
 def _q(s: str) -> str:
-    import json
+    """A TOML string (:func:`geardesign.core.text.toml_string`)."""
+    return toml_string(str(s))
 
-    return json.dumps(str(s), ensure_ascii=False)
+
+def _note(text: str) -> str:
+    """A comment's text on one line: controls (a line break), bidi overrides and lone
+    surrogates escaped (:func:`geardesign.core.text.escape_controls`), so that no text of
+    a model or a file name ends the comment and writes TOML of its own."""
+    return escape_controls(str(text))
 
 
 class Writer:
@@ -22,7 +31,7 @@ class Writer:
 
     def table(self, name: str, array: bool = False, note: str | None = None) -> None:
         h = f"[[{name}]]" if array else f"[{name}]"
-        self.lines.append(h + (f"  # {note}" if note else ""))
+        self.lines.append(h + (f"  # {_note(note)}" if note else ""))
 
     def kv(self, key: str, value, source: str | None) -> None:
         if isinstance(value, bool):
@@ -38,10 +47,10 @@ class Writer:
                                 for x in value) + "]"
         else:
             v = _q(value)
-        self.lines.append(f"{key} = {v}" + (f"  # {source}" if source else ""))
+        self.lines.append(f"{key} = {v}" + (f"  # {_note(source)}" if source else ""))
 
     def comment(self, text: str) -> None:
-        self.lines.append(f"# {text}")
+        self.lines.append(f"# {_note(text)}")
 
     def blank(self) -> None:
         self.lines.append("")

@@ -79,7 +79,9 @@ def _toml_scalar(v) -> str:
     if isinstance(v, float):
         return repr(v)
     if isinstance(v, str):
-        return '"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"'
+        from geardesign.core.text import toml_string
+
+        return toml_string(v)
     if isinstance(v, list):
         return "[" + ", ".join(_toml_scalar(x) for x in v) + "]"
     raise TypeError(type(v))
@@ -113,7 +115,9 @@ def toml_text(data: dict) -> str:
 
 
 def _key(k: str) -> str:
-    return k if k.replace("_", "").replace("-", "").isalnum() else _toml_scalar(k)
+    """A bare TOML key (ASCII letters, digits, ``_``, ``-``) or a quoted one."""
+    return k if k and k.isascii() and k.replace("_", "").replace("-", "").isalnum() \
+        else _toml_scalar(k)
 
 
 def plot_front(summary: dict, sw, path: Path) -> None:
