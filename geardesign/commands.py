@@ -111,6 +111,9 @@ def _compute_all(paths: List[Path], expect_kind: Optional[str], mode: Optional[s
     without the search for the failed checks' fixes (``validate``: the same input
     problems, :class:`geardesign.core.registry.Calculator`)."""
     results, problems = [], []
+    if sum(str(p) == "-" for p in paths) > 1:
+        _err("-: standard input is given more than once; it can be read once")
+        raise Exit(2)
     for path in paths:
         try:
             calc, spec = _load(path, expect_kind)

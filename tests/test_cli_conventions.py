@@ -52,6 +52,13 @@ def test_spec_from_standard_input():
     assert json.loads(r.stdout)["spec"] == "<stdin>"
 
 
+def test_standard_input_given_twice_is_one_line_before_it_is_read():
+    for command in ("run", "validate", "spur"):
+        r = cli_process(command, "-", "-", input=PLAIN.read_text())
+        assert r.returncode == 2 and r.stdout == ""
+        assert r.stderr == "-: standard input is given more than once; it can be read once\n"
+
+
 def test_keep_going_reports_the_usable_specs_and_still_exits_2(tmp_path):
     bad = write_spec(tmp_path, 'kind = "spur"\n', "bad.toml")
     code, out, err = cli("run", PLAIN, bad, "--format", "jsonl", "--keep-going")
