@@ -5,10 +5,44 @@
 from __future__ import annotations
 
 import json
+import re
+
+_NOT_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]")
+"""What XML 1.0 cannot hold, raw or as a character reference (its ``Char`` production): C0
+controls but tab, line feed and carriage return, lone surrogates, U+FFFE and U+FFFF."""
+
+
+def _xml_chars(text) -> str:
+    """``text`` with each character XML cannot hold written as its escape ``\\xNN`` /
+    ``\\uNNNN`` (a title with an ESC exports as a well-formed model that shows it)."""
+    def esc(m: re.Match) -> str:
+        c = ord(m.group(0))
+        return f"\\x{c:02x}" if c < 0x100 else f"\\u{c:04x}"
+
+    return _NOT_XML.sub(esc, str(text))
+
+
+def _text(text) -> str:
+    """Character data of an element."""
+    from xml.sax.saxutils import escape
+
+    return escape(_xml_chars(text))
+
+
+def _attr(text) -> str:
+    """A quoted attribute value."""
+    from xml.sax.saxutils import quoteattr
+
+    return quoteattr(_xml_chars(text))
 
 
 def to_json(model: dict) -> str:
-    return json.dumps({"model": model}, indent=1, ensure_ascii=False) + "\n"
+    """The JSON document; a lone surrogate (no UTF-8 encoder writes one) as its escape."""
+    return json.dumps({"model": model}, indent=1, ensure_ascii=False).translate(_SURROGATES) \
+        + "\n"
+
+
+_SURROGATES = {c: f"\\u{c:04x}" for c in range(0xD800, 0xE000)}
 
 
 def _value_key(a: dict) -> str:
@@ -16,45 +50,45 @@ def _value_key(a: dict) -> str:
 
 
 def to_xml(model: dict) -> str:
-    from xml.sax.saxutils import escape, quoteattr
-
+    """The XML document: every text through :func:`_text` or :func:`_attr` (escaped, and
+    what XML cannot hold written as its escape)."""
     def val(a):
         k = _value_key(a)
         v = a[k]
         if k.endswith("_array"):
             return "<array>" + "".join(
-                f"<c>{escape(x) if isinstance(x, str) else _num(x)}</c>" for x in v) + "</array>"
+                f"<c>{_text(x) if isinstance(x, str) else _num(x)}</c>" for x in v) + "</array>"
         if isinstance(v, bool):
             return "true" if v else "false"
         if isinstance(v, (int, float)):
             return _num(v)
-        return escape(str(v))
+        return _text(v)
 
     def comp(c, indent):
-        lines = [f"{indent}<component id=\"{c['id']}\" name={quoteattr(c['name'])} "
-                 f"type=\"{c['type']}\">"]
+        lines = [f"{indent}<component id={_attr(c['id'])} name={_attr(c['name'])} "
+                 f"type={_attr(c['type'])}>"]
         for a in c["attributes"]:
-            lines.append(f"{indent}  <attribute id=\"{a['id']}\" unit={quoteattr(a['unit'])}>"
+            lines.append(f"{indent}  <attribute id={_attr(a['id'])} unit={_attr(a['unit'])}>"
                          f"{val(a)}</attribute>")
         lines.append(f"{indent}</component>")
         return lines
 
     out = ['<?xml version="1.0" encoding="UTF-8"?>',
-           f"<model applicationId=\"{model['applicationId']}\" applicationVersion="
-           f"{quoteattr(model['applicationVersion'])} date=\"{model['date']}\" "
-           f"version=\"{model['version']}\">", "  <relations>"]
+           f"<model applicationId={_attr(model['applicationId'])} applicationVersion="
+           f"{_attr(model['applicationVersion'])} date={_attr(model['date'])} "
+           f"version={_attr(model['version'])}>", "  <relations>"]
     for r in model["relations"]:
-        out.append(f"    <relation id=\"{r['id']}\" type=\"{r['type']}\">")
+        out.append(f"    <relation id={_attr(r['id'])} type={_attr(r['type'])}>")
         for ref in r["refs"]:
-            out.append(f"      <ref hint=\"{ref['hint']}\" id=\"{ref['id']}\" "
-                       f"role=\"{ref['role']}\"/>")
+            out.append(f"      <ref hint={_attr(ref['hint'])} id={_attr(ref['id'])} "
+                       f"role={_attr(ref['role'])}/>")
         out.append("    </relation>")
     out += ["  </relations>", "  <components>"]
     for c in model["components"]:
         out += comp(c, "    ")
     out += ["  </components>", "  <load_spectrum id=\"1\">"]
     for lc in model["load_spectrum"]["load_cases"]:
-        out.append(f"    <load_case id=\"{lc['id']}\">")
+        out.append(f"    <load_case id={_attr(lc['id'])}>")
         for c in lc["components"]:
             out += comp(c, "      ")
         out.append("    </load_case>")
