@@ -81,3 +81,47 @@ def test_no_module_of_the_package_shadows_an_api_function():
     for name in geardesign._API:
         assert callable(getattr(geardesign, name)) and not isinstance(
             getattr(geardesign, name), type(geardesign)), name
+
+
+@pytest.mark.parametrize("change, key", [
+    ({"b_w": float("nan")}, "gear.face_width (b_w)"), ({"b_w": -5.0}, "gear.face_width (b_w)"),
+    ({"m_n": 0.0}, "gear.module (m_n)"), ({"z1": 3}, "gear.z1 (z1)"),
+    ({"x1": 5.0}, "gear.x1 (x1)"), ({"beta": 1.0}, "gear.helix_angle (beta)"),
+    ({"T1": 1e30}, "load.torque1 (T1)"), ({"n1": -1.0}, "load.speed1 (n1)"),
+    ({"K_A": 0.1}, "load.application_factor (K_A)"),
+    ({"reverse_ratio": 2.0}, "load.reverse_torque_ratio (reverse_ratio)"),
+])
+def test_replace_keeps_every_value_in_its_spec_keys_domain(change, key):
+    """A study changes inputs in Python: each value is held to the domain of the spec key
+    that holds it, as reading a spec holds it (no NaN face width, no K_A of 0.1 solved)."""
+    from geardesign.core.errors import InputError
+
+    inputs = geardesign.load(SPECS / "spur_reducer_through_hardened.toml")
+    with pytest.raises(InputError) as caught:
+        inputs.replace(**change)
+    line = caught.value.problems[0].line("<python>")
+    assert line.startswith(f"<python>: {key} = ") and "must be" in line
+
+
+def test_a_study_never_sees_a_negative_margin():
+    """A variant whose formulas leave their domain (z1 = 5 with x1 = 2: a negative S_F1)
+    raises the command line's refusal, naming the quantity, instead of giving a record
+    with a negative margin; every domain-valid variant of a sweep over x1 either solves
+    with margins >= 0 or is refused so."""
+    from geardesign import spur
+    from geardesign.core.errors import InputError
+    from geardesign.gears.geometry import GeometryError
+
+    inputs = geardesign.load(SPECS / "spur_reducer_through_hardened.toml")
+    with pytest.raises(InputError) as caught:
+        spur.solve(inputs.replace(z1=5, x1=2.0))
+    assert caught.value.problems[0].message.startswith(
+        "the inputs give a negative S_F1 (results.bending.S_F1), which the method cannot "
+        "compute")
+    for z1 in (5, 9, 17):
+        for x1 in (-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0):
+            try:
+                record = spur.solve(inputs.replace(z1=z1, x1=x1))
+            except (InputError, GeometryError):
+                continue
+            assert all(m >= 0 for m in record.margins().values()), (z1, x1)

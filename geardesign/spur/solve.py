@@ -203,7 +203,30 @@ def solve(inputs) -> Record:
                 if inputs.iso_table is not None:
                     gear_checks(inputs.iso_table, g)
                 ratings[ISO] = IR.rate(g, st.mats, st.duty, st.setting, inputs.iso)
+    if inputs.spec is None:
+        _refuse_impossible(g, ratings)
     return Record(inputs, g, sl, vel, ratings, forces, rated)
+
+
+def _refuse_impossible(g, ratings: dict) -> None:
+    """Inputs built in Python (:meth:`~geardesign.spur.inputs.Inputs.replace`, a study)
+    meet the rule the report's guard applies to a spec's result
+    (:func:`geardesign.core.result.guard`): a contact ratio, a safety factor or a life
+    below zero cannot be computed, and raises
+    :class:`~geardesign.core.result.ResultDomainError` naming it, instead of a record whose
+    margins are negative."""
+    from geardesign.core.result import _has_negative, _nonneg, _refuse
+    from geardesign.spur.strength.common import rows
+
+    for key in ("eps_alpha", "eps_gamma"):
+        value = getattr(g, key, None)
+        if value is not None and _has_negative(value):
+            raise _refuse(key, f"results.geometry.{key}", "a negative")
+    for record in ratings.values():
+        for row in rows(record):
+            if _nonneg(row.key) and _has_negative(row.value):
+                raise _refuse(row.symbol or row.key, f"results.{row.section}.{row.key}",
+                              "a negative")
 
 
 from geardesign.core.modules import callable_module  # noqa: E402
