@@ -125,3 +125,20 @@ def test_a_study_never_sees_a_negative_margin():
             except (InputError, GeometryError):
                 continue
             assert all(m >= 0 for m in record.margins().values()), (z1, x1)
+
+
+def test_inputs_built_in_python_meet_the_spec_keys_domains():
+    """Typed inputs written directly (no spec read them) are held to the same domains
+    when solved."""
+    import math
+
+    from geardesign import spur
+    from geardesign.core.errors import InputError
+
+    rack = spur.BasicRack(math.radians(20.0), 1.0, 0.25, 0.38)
+    for args, key in (((3.0, 20, 40, 0.2, 0.0, 0.0, math.nan, rack), "gear.face_width (b_w)"),
+                      ((-3.0, 20, 40, 0.2, 0.0, 0.0, 30.0, rack), "gear.module (m_n)"),
+                      ((3.0, 2, 40, 0.2, 0.0, 0.0, 30.0, rack), "gear.z1 (z1)")):
+        with pytest.raises(InputError) as caught:
+            spur.solve(spur.Inputs(spur.PairInput(*args)))
+        assert caught.value.problems[0].key == key

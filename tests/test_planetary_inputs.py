@@ -270,3 +270,25 @@ def test_rules_met_late_in_the_calculation_are_reported_with_the_others(tmp_path
         "s.toml: strength.peak_torque = 10.0: smaller than the input torque 40 N·m; give the "
         "largest short-time torque",
     ]
+
+
+def test_a_widened_synthesis_that_fails_on_small_teeth_says_the_change_that_finds_a_train(
+        tmp_path):
+    """Widening the search (the fewest teeth lowered to 6) lets small, undercut tooth
+    numbers take the first ranks and the search's budget: the refusal says to raise the
+    fewest teeth to the undercut-free count, and that change finds a train (the advice is
+    tried, not guessed)."""
+    wide = spec(teeth=None, synthesis={"ratio": 3.0, "tolerance": 20.0, "sun_min": 6,
+                                       "planet_min": 6, "ring_max": 1000,
+                                       "sum_deviation": 6})
+    path = tmp_path / "s.toml"
+    path.write_text(to_toml(wide), encoding="utf-8")
+    code, out, err = cli("run", path, "-f", "json")
+    assert code == 2 and out == ""
+    assert err.strip().endswith("the smallest tooth numbers rank first and fail; raise "
+                                "synthesis.sun_min and synthesis.planet_min to 18 (no "
+                                "undercut without a shift), which finds a train")
+    wide["synthesis"].update(sun_min=18, planet_min=18)
+    path.write_text(to_toml(wide), encoding="utf-8")
+    code, out, err = cli("run", path, "-f", "json")
+    assert code in (0, 1) and out, err

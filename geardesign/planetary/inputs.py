@@ -118,6 +118,21 @@ def _material_table(d: dict, member: str) -> dict:
     return mat[member]
 
 
+def _undercut_free(lay) -> int:
+    """The fewest teeth the layout's rack cuts without undercut and without a shift:
+    z ≥ 2(h_l* − h_a*)·cos β / sin² α_t ([GOST16532]; :func:`geardesign.gears.geometry.
+    undercut_shift_limit` = 0), 18 for the GOST 13755-81 rack of a spur gear."""
+    import math
+
+    from geardesign.gears.geometry import undercut_shift_limit
+
+    alpha_t = math.atan(math.tan(lay.rack.alpha_n) / math.cos(lay.beta))
+    z = 5
+    while undercut_shift_limit(z, alpha_t, lay.beta, lay.rack) > 0.0 and z < 200:
+        z += 1
+    return z
+
+
 def _synthesis(spec: ValidatedSpec):
     from geardesign.planetary import synthesis as SY
 
@@ -152,6 +167,18 @@ def _synthesis(spec: ValidatedSpec):
                if n_cand == 0 else
                f"none of the {n_eval} best of {n_cand} tooth-number candidates passes the "
                f"geometric checks")
+        fewest = _undercut_free(lay)
+        if n_cand and min(sy["sun_min"], sy["planet_min"]) < fewest and SY.search(
+                scheme, tr["planets"], op["fixed"], op["input"], op["output"], sy["ratio"],
+                sy["tolerance"], max(sy["sun_min"], fewest), max(sy["planet_min"], fewest),
+                sy["ring_max"], sy["sum_deviation"], lay, lim["neighbour_gap"],
+                lim["tip_thickness"], lim["specific_sliding"], 1)[0]:
+            # the smallest tooth numbers rank first and fail (undercut): the search's
+            # budget goes to them; without them it finds a train (tried, not guessed)
+            raise InputError.at("synthesis.ratio", sy["ratio"],
+                                f"{why}: the smallest tooth numbers rank first and fail; "
+                                f"raise synthesis.sun_min and synthesis.planet_min to {fewest} "
+                                f"(no undercut without a shift), which finds a train")
         raise InputError.at("synthesis.ratio", sy["ratio"],
                             f"{why}; widen synthesis.tolerance, raise synthesis.ring_max or "
                             f"synthesis.sum_deviation, lower synthesis.sun_min/planet_min, or "

@@ -79,9 +79,11 @@ class Inputs:
         (``b_w``, ``m_n``, ``x1``, ...), or of the duty (``T1``, ``n1``, ``K_A``, ...;
         ``n1`` and ``speed1`` are one speed).  The copy keeps no spec (its report would echo
         values it no longer has).  Each changed value that a spec key holds is checked
-        against that key's domain (:data:`SPEC_KEYS`), as reading the spec checks it:
+        against that key's domain (:data:`geardesign.spur.domains.SPEC_KEYS`), as reading the spec checks it:
         :class:`~geardesign.core.errors.InputError` names the key, the value and what is
         allowed (a study never solves a face width of NaN or a K_A of 0.1)."""
+        from geardesign.spur.domains import check_changes
+
         check_changes(changes)
         if self.strength is not None:   # the pinion speed is the duty's n1 as well
             if "speed1" in changes:
@@ -101,45 +103,6 @@ class Inputs:
             duty = dataclasses.replace(out.strength.duty, **changes)
             out = dataclasses.replace(out, strength=out.strength._replace(duty=duty))
         return out
-
-
-SPEC_KEYS = {
-    "m_n": ("gear.module", 1.0), "z1": ("gear.z1", None), "z2": ("gear.z2", None),
-    "x1": ("gear.x1", 1.0), "x2": ("gear.x2", 1.0), "beta": ("gear.helix_angle", None),
-    "b_w": ("gear.face_width", 1.0), "T1": ("load.torque1", 1.0),
-    "n1": ("load.speed1", 1.0), "speed1": ("load.speed1", 1.0),
-    "K_A": ("load.application_factor", 1.0), "T_peak": ("load.peak_torque1", 1.0),
-    "reverse_ratio": ("load.reverse_torque_ratio", 1.0),
-}
-"""The spec key of each field :meth:`Inputs.replace` changes, and the factor to the key's
-unit (``None``: taken as it is; ``beta`` [rad] is checked in degrees)."""
-
-
-def check_changes(changes: dict) -> None:
-    """Raise :class:`~geardesign.core.errors.InputError` with every value of ``changes``
-    outside the domain of its spec key (:data:`SPEC_KEYS`; the key, the value in the key's
-    unit, what is allowed)."""
-    import math
-
-    from geardesign.core.errors import InputError, Problem
-    from geardesign.spur.spec import SCHEMA
-
-    found = []
-    for name, value in changes.items():
-        if name not in SPEC_KEYS or (value is None and name == "T_peak"):
-            continue
-        key, scale = SPEC_KEYS[name]
-        table, leaf = key.split(".")
-        shown = value
-        if name == "beta" and isinstance(value, (int, float)) and not isinstance(value, bool):
-            shown = math.degrees(value)
-        elif scale is not None and isinstance(value, float):
-            shown = value * scale
-        _, message = SCHEMA.root.member(table).member(leaf).check(shown)
-        if message:
-            found.append(Problem(f"{key} ({name})", message, shown))
-    if found:
-        raise InputError(found)
 
 
 def from_spec(spec: ValidatedSpec) -> Inputs:

@@ -174,6 +174,10 @@ def solve(inputs) -> Record:
     strength by every method of ``inputs.methods`` (with strength inputs and a pair that
     can be rated).  Raises :class:`~geardesign.core.errors.InputError` for an ISO 6336
     bore or rim outside the gear body."""
+    if inputs.spec is None:         # built in Python: the domains a spec's keys have
+        from geardesign.spur.domains import check_built
+
+        check_built(inputs)
     g = inputs.geometry
     if g is None or g.inp is not inputs.pair:
         g = geometry(inputs.pair)
