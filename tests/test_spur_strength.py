@@ -381,3 +381,32 @@ def test_span_check_names_the_narrow_face_as_the_cause():
     assert not c["passed"]
     assert "cannot be measured: the face width b_w = 12 mm is not more than W2·sin β_b" in \
         c["message"]
+
+
+DESIGN = {"kind": "spur",
+          "design": {"ratio": 4.0, "psi_ba": 0.315, "helix_angle": 12.0, "bearing_scheme": 6},
+          "load": {"speed1": 960.0, "torque1": 250.0, "life_hours": 20000.0, "regime": "III"},
+          "material": {"pinion": {"grade": "40Kh", "treatment": "improved", "hardness_HB": 285.0},
+                       "wheel": {"grade": "40Kh", "treatment": "improved", "hardness_HB": 255.0}}}
+
+
+@pytest.mark.parametrize("ratio, advice", [
+    (11.0, "widen design.ratio_tolerance to 4.9 %"),
+    (11.5, "widen design.ratio_tolerance to 9 %"),
+    (12.5, "split the ratio into two stages"),
+])
+def test_a_ratio_the_design_mode_cannot_fit_says_the_change_that_fits(ratio, advice):
+    """A ratio no standard module and whole tooth numbers fit: the refusal says why (the
+    teeth the module rule m >= 0.01·a_w leaves with z1 >= z1_min) and the change that fits
+    one; a tolerance it names makes the design mode propose a pair."""
+    data = json.loads(json.dumps(DESIGN))
+    data["design"]["ratio"] = ratio
+    with pytest.raises(InputError) as caught:
+        run_data(data, "s.toml")
+    message = caught.value.problems[0].message
+    assert message.startswith("no pair of standard module and whole tooth numbers fits this "
+                              "ratio within the tolerance: with z1 >= 17 the module rule")
+    assert advice in message
+    if "widen" in advice:
+        data["design"]["ratio_tolerance"] = float(advice.split(" to ")[1].split(" ")[0])
+        assert run_data(data, "s.toml").verdict in ("pass", "fail")

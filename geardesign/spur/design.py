@@ -31,6 +31,7 @@ from geardesign.spur.strength import tables as T
 
 MODULE_MIN_RATIO = 0.01   # m >= 0.01·a_w (handbook range 0.01…0.02 a_w, hardened up to 0.0315)
 MODULE_MAX_RATIO = 0.0315
+MAX_RATIO_TOLERANCE = 10.0   # the largest design.ratio_tolerance the spec allows [%]
 A_W_STEPS = 6
 
 
@@ -124,10 +125,8 @@ def design_pair(spec: ValidatedSpec):
         out = _result(g, how, des, a_est, a_w, sigma_HP, K_Hb, u_req, tried, True)
         return (*out, _ranked(variants))
     if best is None:
-        raise InputError.at("design.ratio", u_req,
-                            "no pair of standard module and whole tooth numbers fits this ratio "
-                            "within the tolerance; widen design.ratio_tolerance or lower "
-                            "design.z1_min")
+        raise InputError.at("design.ratio", u_req, _no_pair(series[:A_W_STEPS], u_req, des,
+                                                            beta0))
     g, how, a_w, m = best
     return (*_result(g, how, des, a_est, a_w, sigma_HP, K_Hb, u_req, tried, False),
             _ranked(variants))
@@ -160,6 +159,31 @@ def _ranked(variants: list) -> list:
     for i, r in enumerate(order, 1):
         r["rank"] = i
     return order
+
+
+def _no_pair(series, u: float, des: dict, beta0: float) -> str:
+    """Why no pair fits the ratio, and the change that makes one fit: the most teeth in all
+    the module rule leaves (m >= MODULE_MIN_RATIO·a_w, the smallest GOST 9563 module in it,
+    over the centre distances tried) give z1 = z1_min the ratio (z_Σ − z1)/z1; when the
+    tolerance the rounding then needs is allowed, widen it to that, else the stage cannot
+    have this ratio: split it (or lower the ratio)."""
+    z_sum = 0
+    for a_w in series:
+        m = min((m for m in T.MODULES_1 if m >= MODULE_MIN_RATIO * a_w - 1e-9), default=None)
+        if m is not None:
+            z_sum = max(z_sum, int(math.floor(2.0 * a_w * math.cos(beta0) / m + 1e-9)))
+    z1 = des["z1_min"]
+    u_max = (z_sum - z1) / z1 if z_sum > 2 * z1 else 0.0
+    need = (u - u_max) / u * 100.0
+    head = "no pair of standard module and whole tooth numbers fits this ratio within the tolerance"
+    if u_max >= 1.0 and need <= MAX_RATIO_TOLERANCE:
+        return (f"{head}: with z1 >= {z1} the module rule (m >= {MODULE_MIN_RATIO:g}·a_w) leaves "
+                f"at most {z_sum} teeth in all, u = {u_max:.3f}; widen design.ratio_tolerance "
+                f"to {math.ceil(need * 10.0) / 10.0:g} %")
+    return (f"{head}: with z1 >= {z1} the module rule (m >= {MODULE_MIN_RATIO:g}·a_w) leaves at "
+            f"most {z_sum} teeth in all (u = {u_max:.3f} at most, {need:.1f} % short); split "
+            f"the ratio into two stages (a drive spec; its [split] table proposes the stage "
+            f"ratios) or lower design.ratio")
 
 
 def _candidate(a_w: float, m: float, u: float, des: dict, beta0: float, helical: bool,
