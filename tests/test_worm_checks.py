@@ -298,3 +298,20 @@ def test_no_numpy_scipy_or_rich_in_a_json_run(tmp_path):
             "assert not heavy, heavy" % str(path))
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
+
+
+@pytest.mark.parametrize("ratio, says", [(5.0, True), (6.0, True), (6.5, False), (20.0, False)])
+def test_a_ratio_no_worm_pair_can_give_says_so(ratio, says):
+    """Below u = 26/4 = 6.5 no number of starts gives the wheel the 26 teeth it needs: the
+    undercut check says to use a cylindrical stage instead of asking for teeth the ratio
+    cannot have."""
+    import tomllib
+    from pathlib import Path
+
+    data = tomllib.loads((Path(__file__).resolve().parent.parent / "specs" /
+                          "worm_design.toml").read_text(encoding="utf-8"))
+    data["gear"]["ratio"] = ratio
+    checks = {c.code: c for c in run_data(data, "s.toml").checks}
+    tail = "a worm pair needs u >= 6.5, use a cylindrical stage for this ratio"
+    message = checks["UNDERCUT_WHEEL"].message
+    assert (tail in message) == says, message

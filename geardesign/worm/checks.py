@@ -26,6 +26,8 @@ from geardesign.worm.pair import Analysis, Options, WheelProps
 from geardesign.worm import tables
 
 Z2_MIN = 26
+STARTS_MAX = 4
+"""The most worm starts (GOST 2144-76: 1, 2, 4)."""
 """Fewer wheel teeth are undercut off the mid-plane and weak (Dunaev & Lelikov: 26 ... 28)."""
 Z2_POWER = (28, 80)
 """Usual wheel tooth numbers of power drives ([Dunaev]; design practice)."""
@@ -115,9 +117,14 @@ def pair_checks(a: Analysis, w: WheelProps, o: Options, self_locking: str,
         f"x nearer 0",
         f"x = {_fmt(p.x, 4)} within {lo:g} ... +{hi:g}", p.x, hi if p.x > hi else lo, S.G19650))
     if p.z2 < Z2_MIN:
+        u = p.z2 / p.z1
         ok, msg = False, (f"z2 = {p.z2} < {Z2_MIN}: the wheel teeth are undercut off the "
                           f"mid-plane and weak; use z2 >= {Z2_MIN} ({Z2_POWER[0]} or more for a "
                           f"power drive)")
+        if u * STARTS_MAX < Z2_MIN:     # no number of starts gives the ratio with z2 >= 26
+            msg += (f"; u = {_fmt(u, 3)} with at most {STARTS_MAX} starts gives z2 <= "
+                    f"{math.floor(u * STARTS_MAX + 1e-9)}: a worm pair needs u >= "
+                    f"{_fmt(Z2_MIN / STARTS_MAX, 3)}, use a cylindrical stage for this ratio")
     elif p.x < g.x_min - 1e-9:
         ok, msg = False, (f"wheel undercut in the mid-plane: x = {_fmt(p.x, 4)} < x_min = "
                           f"{_fmt(g.x_min, 4)}; "
