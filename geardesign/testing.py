@@ -230,13 +230,19 @@ def check_golden(spec, update: bool = False, rtol: float = RTOL,
     file is read and written through :mod:`geardesign.core.io`: a regular file of bounded
     size and nesting, written atomically, never through a link to a file outside the spec's
     folder."""
+    from geardesign.core.errors import InputError, Problem
     from geardesign.core.io import check_target, read_json, write_atomic
+    from geardesign.core.paths import resolved
     from geardesign.core.registry import load
     from geardesign.core.spec import load_toml
 
     path = expected_path(spec)
+    try:
+        folder = resolved(Path(spec).absolute().parent)
+    except OSError as exc:
+        raise InputError(Problem("", f"cannot be read ({exc.strerror})")) from None
     if update:                             # before the work: refused targets cost nothing
-        check_target(path, Path(spec).absolute().parent.resolve(), path.name, (spec,))
+        check_target(path, folder, path.name, (spec,))
     data = load_toml(spec)                 # read once: a sweep spec or a calculator's spec
     if "sweep" in data:
         from geardesign.spur.sweep import run_data as run_sweep_data
@@ -246,7 +252,7 @@ def check_golden(spec, update: bool = False, rtol: float = RTOL,
         calc, vspec = load(spec, data=data)
         doc = calc.compute(vspec).document()
     if update:
-        write_atomic(path, golden_text(doc), inside=Path(spec).absolute().parent.resolve())
+        write_atomic(path, golden_text(doc), inside=folder)
         return []
     expected = read_json(path, label=path.name)
     return compare_documents(doc, expected, rtol=rtol, atol=atol)

@@ -456,3 +456,33 @@ def test_a_report_never_replaces_a_file_the_run_has_written(tmp_path):
     assert _one_line(err).endswith("which this run has written already; give each output "
                                    "its own file")
     assert (tmp_path / "r.svg").read_text(encoding="utf-8").lstrip().startswith("<?xml")
+
+
+@pytest.mark.parametrize("args", [
+    ("run", "{loop}"),
+    ("run", "{spec}", "-f", "json", "--output", "{loop}"),
+    ("run", "{spec}", "-f", "json", "--plot", "{loop}"),
+    ("run", "{spec}", "-f", "json", "--profile", "{loop}"),
+    ("sweep", "{sweep}", "-f", "json", "--output", "{loop}"),
+    ("sweep", "{sweep}", "--data", "{loop}.csv"),
+    ("export", "{spec}", "--output", "{loop}"),
+    ("import", "{loop}"),
+    ("check", "{loop}"),
+    ("check", "--update", "{spec}"),
+    ("run", "{drive}", "-f", "json"),
+])
+def test_a_loop_of_links_anywhere_a_path_goes_is_one_line(tmp_path, args):
+    """A loop of symbolic links as a spec, an output, an expected file, a model or a stage
+    file a drive names: one line, exit 2 (``Path.resolve`` raised a RuntimeError, an
+    internal error)."""
+    spec = write_spec(tmp_path, PLAIN, "s.toml")
+    for a, b in (("loop", "loop2"), ("loop2", "loop"), ("loop.csv", "loop2.csv"),
+                 ("loop2.csv", "loop.csv"), ("s.expected.json", "s.expected.json")):
+        (tmp_path / a).symlink_to(b)
+    drive = (SPECS / "drive_worm_spur.toml").read_text(encoding="utf-8")
+    (tmp_path / "d.toml").write_text(drive.replace('file = "worm_single_start_reducer.toml"',
+                                                   'file = "loop"'), encoding="utf-8")
+    code, out, err = cli(*[a.format(spec=spec, loop=tmp_path / "loop", drive=tmp_path / "d.toml",
+                                    sweep=SPECS / "sweep_spur_reducer.toml") for a in args])
+    assert code == 2 and out == "", err
+    assert "symbolic links" in _one_line(err)

@@ -37,12 +37,17 @@ def target_problem(path: Path, inside: Path | None = None, inputs=()) -> str | N
     file written (a link followed) must lie in that folder; the file must not be one of
     ``inputs`` (the paths the command was given to read) nor a file the running command
     has read as an input (:func:`geardesign.core.run_files.inputs_kept`)."""
+    from geardesign.core.paths import resolved
+
     path = Path(path)
-    real = path.resolve() if path.is_symlink() else path
+    try:
+        real = resolved(path) if path.is_symlink() else path
+    except OSError as exc:
+        return f"is {exc.strerror}"
     if inside is not None:
         try:
-            real.resolve().relative_to(Path(inside).resolve())
-        except ValueError:
+            real.resolve().relative_to(resolved(inside))
+        except (ValueError, OSError):
             return (f"is a link to a file outside {inside}; remove the link or write "
                     f"that file yourself")
     try:

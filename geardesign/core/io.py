@@ -213,17 +213,21 @@ def confined(name: str, base: Path | None, root: Path | None, what: str) -> Path
     """The file ``name`` a spec refers to, relative to ``base``, resolved (links followed);
     ``ValueError`` when it is absolute or lies outside ``root`` (``..``, a link pointing
     elsewhere).  ``what`` names the folder in the message ("the drive spec's folder")."""
+    from geardesign.core.paths import resolved
+
     path = Path(name)
     if path.is_absolute():
         raise ValueError(f"must be a path relative to {what}")
     if base is not None:
         path = base / path
-    path = path.resolve()
-    if root is not None:
-        try:
-            path.relative_to(root.resolve())
-        except ValueError:
-            raise ValueError(f"must be a file inside {what}") from None
+    try:
+        path = resolved(path)
+        if root is not None:
+            path.relative_to(resolved(root))
+    except OSError as exc:
+        raise ValueError(f"cannot be used ({exc.strerror})") from None
+    except ValueError:
+        raise ValueError(f"must be a file inside {what}") from None
     return path
 
 

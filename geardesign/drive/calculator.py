@@ -65,8 +65,14 @@ def stage_path(name: str, base: Path | None, root: Path | None,
     the foreign file.
     """
     if allow_outside:
+        from geardesign.core.paths import resolved
+
         path = Path(name)
-        return (base / path if base is not None and not path.is_absolute() else path).resolve()
+        path = base / path if base is not None and not path.is_absolute() else path
+        try:
+            return resolved(path)
+        except OSError:
+            return path          # reading it says why (a loop of links)
     return confined(name, base, root, "the drive spec's folder")
 
 
