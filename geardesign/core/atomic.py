@@ -46,7 +46,7 @@ def target_problem(path: Path, inside: Path | None = None, inputs=()) -> str | N
         return f"is {exc.strerror}"
     if inside is not None:
         try:
-            real.resolve().relative_to(resolved(inside))
+            resolved(real).relative_to(resolved(inside))
         except (ValueError, OSError):
             return (f"is a link to a file outside {inside}; remove the link or write "
                     f"that file yourself")

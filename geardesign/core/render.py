@@ -52,30 +52,26 @@ def to_json(results: list[Result]) -> str:
 # --------------------------------------------------------------------------- markdown
 
 
-def _md_escape(text) -> str:
-    return md_escape(str(text))
-
-
 def _md_rows(rows: list[Row], with_source: bool) -> list[str]:
     head = "| symbol | name | value | unit |" + (" source |" if with_source else "")
     sep = "|---|---|---:|---|" + ("---|" if with_source else "")
     out = [head, sep]
     for row in rows:
         value = fmt(row.value) + (" *(assumed)*" if row.assumed else "")
-        line = (f"| {_md_escape(row.symbol)} | {_md_escape(row.name)} | {_md_escape(value)} | "
-                f"{_md_escape(row.unit or '')} |")
+        line = (f"| {md_escape(row.symbol)} | {md_escape(row.name)} | {md_escape(value)} | "
+                f"{md_escape(row.unit or '')} |")
         if with_source:
-            line += f" {_md_escape(row.source)} |"
+            line += f" {md_escape(row.source)} |"
         out.append(line)
     return out
 
 
 def _md_table(t) -> list[str]:
     heads = [h + (f" [{u}]" if u not in (None, "-") else "") for _, h, u in t.columns]
-    out = ["| " + " | ".join(_md_escape(h) for h in heads) + " |",
+    out = ["| " + " | ".join(md_escape(h) for h in heads) + " |",
            "|" + "---|" * len(t.columns)]
     for row in t.rows:
-        out.append("| " + " | ".join(_md_escape(fmt(row.get(k))) for k, _, _ in t.columns) + " |")
+        out.append("| " + " | ".join(md_escape(fmt(row.get(k))) for k, _, _ in t.columns) + " |")
     return out
 
 
@@ -83,7 +79,7 @@ def to_markdown(results: list[Result], level: int = 1) -> str:
     lines: list[str] = []
     h = "#" * level
     for r in results:
-        lines.append(f"{h} {_md_escape(_header_text(r))}")
+        lines.append(f"{h} {md_escape(_header_text(r))}")
         lines.append("")
         lines.append("Methods: " + ", ".join(r.methods))
         lines.append("")
@@ -98,10 +94,10 @@ def to_markdown(results: list[Result], level: int = 1) -> str:
         lines += ["", f"{h}# Checks", "", "| status | code | message |", "|---|---|---|"]
         for c in r.checks:
             mark, word, _ = _status(c)
-            lines.append(f"| {mark} {word} | {c.code} | {_md_escape(c.message)} |")
+            lines.append(f"| {mark} {word} | {c.code} | {md_escape(c.message)} |")
         lines += ["", f"**{verdict_line(r)}**", ""]
         for _, title, part in r.parts:
-            lines += [f"{h}# {_md_escape(title)}", ""]
+            lines += [f"{h}# {md_escape(title)}", ""]
             lines.append(to_markdown([part], level + 1))
     return "\n".join(lines)
 

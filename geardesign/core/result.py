@@ -295,10 +295,6 @@ _NONNEG_PREFIXES = ("S_", "L10", "L_", "eps_alpha", "eps_gamma", "life")
 """Result keys that can never be negative: safety factors, lives, contact ratios."""
 
 
-def _nonneg(key: str) -> bool:
-    return key.startswith(_NONNEG_PREFIXES) and not key.endswith("_min")
-
-
 def _scan(value: Any) -> str | None:
     """``"nan"``, ``"inf"`` or ``None`` for a value or a (nested) list of values."""
     if isinstance(value, float):
@@ -324,6 +320,12 @@ def _has_negative(value: Any) -> bool:
     if isinstance(value, (list, tuple)):
         return any(_has_negative(v) for v in value)
     return False
+
+
+def refuse_negative(key: str, value: Any, what: str, where: str) -> None:
+    """:class:`ResultDomainError` at ``where`` if ``key`` is never negative but ``value`` is."""
+    if key.startswith(_NONNEG_PREFIXES) and not key.endswith("_min") and _has_negative(value):
+        raise _refuse(what, where, "a negative")
 
 
 def _refuse(what: str, where: str, how: str) -> ResultDomainError:
@@ -355,8 +357,7 @@ def guard(res: "Result") -> "Result":
                 raise _refuse(row.symbol or row.key, where, "an undefined (NaN)")
             if found:
                 undefined.append(where)
-            if _nonneg(row.key) and _has_negative(row.value):
-                raise _refuse(row.symbol or row.key, where, "a negative")
+            refuse_negative(row.key, row.value, row.symbol or row.key, where)
     for t in res.tables:
         for i, row in enumerate(t.rows):
             for k, _, _ in t.columns:

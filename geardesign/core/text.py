@@ -27,6 +27,12 @@ def _escape(m: re.Match) -> str:
     return f"\\x{ord(c):02x}" if ord(c) < 0x100 else f"\\u{ord(c):04x}"
 
 
+def escape_matching(s: str, pattern: re.Pattern) -> str:
+    """``s`` with each character ``pattern`` matches written as ``\\xNN`` / ``\\uNNNN``
+    (the escape of :func:`escape_controls`, for another set of characters)."""
+    return pattern.sub(_escape, s)
+
+
 def escape_controls(s: str) -> str:
     """``s`` with C0/C1 controls, DEL, bidi marks/overrides, line/paragraph separators and
     lone surrogates (the bytes of a file name that is not UTF-8, as Python decodes it: no
@@ -47,7 +53,7 @@ def _toml_escape(m: re.Match) -> str:
     if c in '"\\':
         return "\\" + c
     if "\ud800" <= c <= "\udfff":          # no TOML string holds it: its escape as text
-        return f"\\\\u{ord(c):04x}"
+        return "\\" + _escape(m)
     return f"\\u{ord(c):04x}"
 
 
@@ -197,12 +203,12 @@ each is written with a backslash escape (CommonMark §2.4), which shows the char
 itself.  Emphasis (``*``, ``_``) and code spans only change how a text looks."""
 
 
-def md_escape(text: str) -> str:
+def md_escape(text) -> str:
     """``text`` for a Markdown report: controls and bidirectional overrides escaped
     (:func:`geardesign.core.text.escape_controls`), markup characters backslash-escaped
     (:data:`_MD_ACTIVE`), so that a title, a name or a message from a spec or a model shows
     as written and never runs as HTML, a link or an image."""
-    return escape_controls(text).translate(_MD_ACTIVE)
+    return escape_controls(str(text)).translate(_MD_ACTIVE)
 
 
 def fmt(value: Any) -> str:

@@ -27,12 +27,13 @@ def register(app: typer.Typer, err, write) -> None:
                                                     "(default: standard output).")) -> None:
         """Read a REXS gear unit and write it as a spec (TOML) for `geardesign run`: a drive,
         or a planetary, worm or bevel stage (docs/rexs.md)."""
+        from geardesign.commands import _targets
         from geardesign.core.errors import InputError
         from geardesign.core.text import escape_controls
         from geardesign.rexs.importer import import_model
         from geardesign.rexs.model import read_model
 
-        _target(output, err, model)
+        _targets(output, inputs=(model,))
         try:
             imported = import_model(read_model(model), escape_controls(model.name))
         except InputError as exc:
@@ -53,10 +54,11 @@ def register(app: typer.Typer, err, write) -> None:
                                                     "(default: standard output).")) -> None:
         """Write the gear unit of a spur, planetary, worm, bevel or drive spec as a REXS 1.5 model,
         with the computed values REXS has attributes for."""
+        from geardesign.commands import _targets
         from geardesign.core.errors import InputError
         from geardesign.rexs.exporter import export_spec
 
-        _target(output, err, spec)
+        _targets(output, inputs=(spec,))
         try:
             text = export_spec(spec, "json" if format is ExportFormat.rexs_json else "xml")
         except InputError as exc:
@@ -67,16 +69,3 @@ def register(app: typer.Typer, err, write) -> None:
             typer.echo(text, nl=False)
         else:
             write(output, text)
-
-
-def _target(path: Optional[Path], err, source: Path) -> None:
-    """The output ``path`` looked at before the work: one line and exit 2 when it cannot be
-    written or is the file ``source`` the command reads."""
-    if path is None:
-        return
-    from geardesign.core.io import target_problem
-
-    why = target_problem(path, inputs=(source,))
-    if why is not None:
-        err(f"{path}: cannot write: {why}")
-        raise typer.Exit(2)

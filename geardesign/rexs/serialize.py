@@ -4,7 +4,6 @@
 
 from __future__ import annotations
 
-import json
 import re
 
 _NOT_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]")
@@ -15,11 +14,9 @@ controls but tab, line feed and carriage return, lone surrogates, U+FFFE and U+F
 def _xml_chars(text) -> str:
     """``text`` with each character XML cannot hold written as its escape ``\\xNN`` /
     ``\\uNNNN`` (a title with an ESC exports as a well-formed model that shows it)."""
-    def esc(m: re.Match) -> str:
-        c = ord(m.group(0))
-        return f"\\x{c:02x}" if c < 0x100 else f"\\u{c:04x}"
+    from geardesign.core.text import escape_matching
 
-    return _NOT_XML.sub(esc, str(text))
+    return escape_matching(str(text), _NOT_XML)
 
 
 def _text(text) -> str:
@@ -37,12 +34,11 @@ def _attr(text) -> str:
 
 
 def to_json(model: dict) -> str:
-    """The JSON document; a lone surrogate (no UTF-8 encoder writes one) as its escape."""
-    return json.dumps({"model": model}, indent=1, ensure_ascii=False).translate(_SURROGATES) \
-        + "\n"
+    """The JSON document (:func:`geardesign.core.text.json_text`: what JSON leaves raw and
+    no encoder writes, a lone surrogate, as its ``\\uNNNN`` escape)."""
+    from geardesign.core.text import json_text
 
-
-_SURROGATES = {c: f"\\u{c:04x}" for c in range(0xD800, 0xE000)}
+    return json_text({"model": model}, indent=1) + "\n"
 
 
 def _value_key(a: dict) -> str:

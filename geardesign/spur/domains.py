@@ -6,21 +6,19 @@ from __future__ import annotations
 
 
 SPEC_KEYS = {
-    "m_n": ("gear.module", 1.0), "z1": ("gear.z1", None), "z2": ("gear.z2", None),
-    "x1": ("gear.x1", 1.0), "x2": ("gear.x2", 1.0), "beta": ("gear.helix_angle", None),
-    "b_w": ("gear.face_width", 1.0), "T1": ("load.torque1", 1.0),
-    "n1": ("load.speed1", 1.0), "speed1": ("load.speed1", 1.0),
-    "K_A": ("load.application_factor", 1.0), "T_peak": ("load.peak_torque1", 1.0),
-    "reverse_ratio": ("load.reverse_torque_ratio", 1.0),
+    "m_n": "gear.module", "z1": "gear.z1", "z2": "gear.z2", "x1": "gear.x1", "x2": "gear.x2",
+    "beta": "gear.helix_angle", "b_w": "gear.face_width", "T1": "load.torque1",
+    "n1": "load.speed1", "speed1": "load.speed1", "K_A": "load.application_factor",
+    "T_peak": "load.peak_torque1", "reverse_ratio": "load.reverse_torque_ratio",
 }
-"""The spec key of each field :meth:`Inputs.replace` changes, and the factor to the key's
-unit (``None``: taken as it is; ``beta`` [rad] is checked in degrees)."""
+"""The spec key of each field :meth:`Inputs.replace` changes (the same units, but ``beta``:
+radians here, degrees in the spec)."""
 
 
 def check_changes(changes: dict) -> None:
     """Raise :class:`~geardesign.core.errors.InputError` with every value of ``changes``
     outside the domain of its spec key (:data:`SPEC_KEYS`; the key, the value in the key's
-    unit, what is allowed)."""
+    unit, what is allowed); ``None`` (an optional value not given) is not checked."""
     import math
 
     from geardesign.core.errors import InputError, Problem
@@ -28,18 +26,14 @@ def check_changes(changes: dict) -> None:
 
     found = []
     for name, value in changes.items():
-        if name not in SPEC_KEYS or (value is None and name == "T_peak"):
+        if name not in SPEC_KEYS or value is None:
             continue
-        key, scale = SPEC_KEYS[name]
-        table, leaf = key.split(".")
-        shown = value
         if name == "beta" and isinstance(value, (int, float)) and not isinstance(value, bool):
-            shown = math.degrees(value)
-        elif scale is not None and isinstance(value, float):
-            shown = value * scale
-        _, message = SCHEMA.root.member(table).member(leaf).check(shown)
+            value = math.degrees(value)
+        table, leaf = SPEC_KEYS[name].split(".")
+        _, message = SCHEMA.root.member(table).member(leaf).check(value)
         if message:
-            found.append(Problem(f"{key} ({name})", message, shown))
+            found.append(Problem(f"{SPEC_KEYS[name]} ({name})", message, value))
     if found:
         raise InputError(found)
 
@@ -52,6 +46,5 @@ def check_built(inputs) -> None:
     if inputs.strength is not None:
         duty = inputs.strength.duty
         values.update({name: getattr(duty, name) for name in SPEC_KEYS if hasattr(duty, name)})
-    if inputs.speed1 is not None:
-        values["speed1"] = inputs.speed1
+    values["speed1"] = inputs.speed1
     check_changes(values)

@@ -219,18 +219,15 @@ def _refuse_impossible(g, ratings: dict) -> None:
     below zero cannot be computed, and raises
     :class:`~geardesign.core.result.ResultDomainError` naming it, instead of a record whose
     margins are negative."""
-    from geardesign.core.result import _has_negative, _nonneg, _refuse
+    from geardesign.core.result import refuse_negative
     from geardesign.spur.strength.common import rows
 
     for key in ("eps_alpha", "eps_gamma"):
-        value = getattr(g, key, None)
-        if value is not None and _has_negative(value):
-            raise _refuse(key, f"results.geometry.{key}", "a negative")
+        refuse_negative(key, getattr(g, key, None), key, f"results.geometry.{key}")
     for record in ratings.values():
         for row in rows(record):
-            if _nonneg(row.key) and _has_negative(row.value):
-                raise _refuse(row.symbol or row.key, f"results.{row.section}.{row.key}",
-                              "a negative")
+            refuse_negative(row.key, row.value, row.symbol or row.key,
+                            f"results.{row.section}.{row.key}")
 
 
 from geardesign.core.modules import callable_module  # noqa: E402
