@@ -171,7 +171,7 @@ def _no_pair(series, u: float, des: dict, beta0: float) -> str:
     for a_w in series:
         m = min((m for m in T.MODULES_1 if m >= MODULE_MIN_RATIO * a_w - 1e-9), default=None)
         if m is not None:
-            z_sum = max(z_sum, int(math.floor(2.0 * a_w * math.cos(beta0) / m + 1e-9)))
+            z_sum = max(z_sum, _teeth_sum(a_w, m, beta0))
     z1 = des["z1_min"]
     u_max = (z_sum - z1) / z1 if z_sum > 2 * z1 else 0.0
     need = (u - u_max) / u * 100.0
@@ -186,9 +186,16 @@ def _no_pair(series, u: float, des: dict, beta0: float) -> str:
             f"ratios) or lower design.ratio")
 
 
+def _teeth_sum(a_w: float, m: float, beta: float) -> int:
+    """The most teeth in all at centre distance ``a_w``, module ``m`` and helix angle
+    ``beta``: z_Σ = ⌊2·a_w·cos β / m⌋ (a_w = m·z_Σ / (2 cos β): the reference centre distance of
+    [GOST16532])."""
+    return int(math.floor(2.0 * a_w * math.cos(beta) / m + 1e-9))
+
+
 def _candidate(a_w: float, m: float, u: float, des: dict, beta0: float, helical: bool,
                psi_ba: float, rack: BasicRack):
-    z_sum = int(math.floor(2.0 * a_w * math.cos(beta0) / m + 1e-9))
+    z_sum = _teeth_sum(a_w, m, beta0)
     z1 = max(int(round(z_sum / (u + 1.0))), des["z1_min"])
     z2 = z_sum - z1
     if z2 < z1 or abs(z2 / z1 - u) / u * 100.0 > des["ratio_tolerance"]:
