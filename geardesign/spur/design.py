@@ -188,8 +188,8 @@ def _no_pair(series, u: float, des: dict, beta0: float) -> str:
 
 def _teeth_sum(a_w: float, m: float, beta: float) -> int:
     """The most teeth in all at centre distance ``a_w``, module ``m`` and helix angle
-    ``beta``: z_Σ = ⌊2·a_w·cos β / m⌋ (a_w = m·z_Σ / (2 cos β): the reference centre distance of
-    [GOST16532])."""
+    ``beta``: z_Σ = ⌊2·a_w·cos β / m⌋ (a_w = m·z_Σ / (2 cos β): the reference centre
+    distance of [GOST16532])."""
     return int(math.floor(2.0 * a_w * math.cos(beta) / m + 1e-9))
 
 
